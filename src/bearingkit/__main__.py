@@ -1,0 +1,3 @@
+from bearingkit.cli import main
+
+main()

@@ -1,0 +1,82 @@
+"""Validation helpers for frozen dataclasses and physics inputs.
+
+Each helper raises :class:`bearingkit.errors.InputError` (a ``ValueError``) with a one-line
+message that names the field, shows the value and says what was expected. Values are SI.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from bearingkit.errors import InputError
+
+
+def _fmt(value) -> str:
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 0:
+        return f"{float(arr):.6g}"
+    bad = arr.ravel()
+    return f"array(shape={arr.shape}, min={np.nanmin(bad):.6g}, max={np.nanmax(bad):.6g})"
+
+
+def finite(field: str, value, unit: str = ""):
+    """Require finite values; return ``value`` unchanged."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"{field} ({_fmt(value)} {unit}) must be finite".replace("  ", " "))
+    return value
+
+
+def positive(field: str, value, unit: str = ""):
+    """Require finite values > 0."""
+    finite(field, value, unit)
+    if not np.all(np.asarray(value, dtype=float) > 0):
+        raise InputError(f"{field} ({_fmt(value)} {unit}) must be positive".replace("  ", " "))
+    return value
+
+
+def non_negative(field: str, value, unit: str = ""):
+    """Require finite values >= 0."""
+    finite(field, value, unit)
+    if not np.all(np.asarray(value, dtype=float) >= 0):
+        raise InputError(f"{field} ({_fmt(value)} {unit}) must be non-negative".replace("  ", " "))
+    return value
+
+
+def in_range(field: str, value, low: float, high: float, unit: str = "", *, closed: bool = True):
+    """Require ``low <= value <= high`` (or strict when ``closed`` is False)."""
+    finite(field, value, unit)
+    arr = np.asarray(value, dtype=float)
+    ok = (arr >= low) & (arr <= high) if closed else (arr > low) & (arr < high)
+    if not np.all(ok):
+        br = "[]" if closed else "()"
+        raise InputError(
+            f"{field} ({_fmt(value)} {unit}) must lie in {br[0]}{low:g}, {high:g}{br[1]}".replace("  ", " ")
+        )
+    return value
+
+
+def greater(field: str, value, other_field: str, other, unit: str = ""):
+    """Require ``value > other`` elementwise, naming both fields."""
+    finite(field, value, unit)
+    if not np.all(np.asarray(value, dtype=float) > np.asarray(other, dtype=float)):
+        raise InputError(
+            f"{field} ({_fmt(value)} {unit}) must exceed {other_field} ({_fmt(other)} {unit})".replace("  ", " ")
+        )
+    return value
+
+
+def one_of(field: str, value: str, choices) -> str:
+    """Require ``value`` to be one of ``choices`` (a registry's names)."""
+    if value not in choices:
+        raise InputError(f"{field} ({value!r}) must be one of {', '.join(sorted(map(str, choices)))}")
+    return value
+
+
+def integer(field: str, value, low: int = 1) -> int:
+    """Require an integer >= ``low``."""
+    if isinstance(value, bool) or not float(value).is_integer() or value < low or math.isinf(value):
+        raise InputError(f"{field} ({value!r}) must be an integer >= {low}")
+    return int(value)
