@@ -85,7 +85,9 @@ def parse(value, dimension: str, field: str) -> float:
     try:
         q = ureg.Quantity(text)
     except Exception as exc:  # pint raises several types; one line is what the user needs
-        raise InputError(f"{field} ({value!r}) is not a quantity pint understands ({type(exc).__name__})") from None
+        raise InputError(
+            f"{field} ({value!r}) is not a quantity pint understands ({type(exc).__name__})"
+        ) from None
     if not isinstance(q, pint.Quantity):  # a bare number inside a string
         q = ureg.Quantity(float(q), "")
     if dimension == "dimensionless":
@@ -94,7 +96,8 @@ def parse(value, dimension: str, field: str) -> float:
         return _finite(float(q.to("").magnitude), field, value)
     if q.dimensionless and q.unitless:
         raise InputError(
-            f"{field} ({value!r}) has no unit; expected a {dimension.replace('_', ' ')} such as '{text} {target}'"
+            f"{field} ({value!r}) has no unit; expected a {dimension.replace('_', ' ')} "
+            f"such as '{text} {target}'"
         )
     try:
         out = float(q.to(target).magnitude)

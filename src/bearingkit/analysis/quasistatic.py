@@ -1,0 +1,420 @@
+"""Quasi-static equilibrium of the inner ring: batched, damped Newton–Raphson on up to 5 DOF.
+
+SI units. For a displacement q = (u_x, u_y, u_z, θ_x, θ_y) of the inner ring every row returns the
+generalised contact force f(q), its Jacobian and its elastic energy U(q). Equilibrium with the
+external load F is R(q) = F + Σ f(q) = 0 on the free DOFs; fixed DOFs keep prescribed values
+(displacement control) and report the reaction.
+
+Every contact law here (Hertz δ^1.5, line δ^(10/9), applied to affine or norm-convex approaches)
+makes U convex, so R = 0 is the minimum of the potential Π(q) = U(q) − F·q. The solver takes
+Newton steps on Π with a tiny Levenberg term (the Hessian is singular while no contact is closed),
+caps the step length (so a bearing with clearance first closes its gaps in bounded steps), and
+backtracks until Π decreases (Armijo). This is globally convergent for a convex Π; a load that no
+combination of contacts can carry makes Π unbounded, which is detected and reported. Cases that
+still fail are retried with load continuation (the load ramped in steps from the last iterate).
+
+Rotations are scaled by the largest pitch radius L (θ·L in metres, M/L in newtons) so the Newton
+system is well conditioned and the tolerance is one relative number: the residual must fall below
+``rtol`` times the load scale (the largest of the external load and the row forces).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.analysis.model import BearingModel
+from bearingkit.errors import ConvergenceError, InputError
+from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF, RowState
+
+
+@dataclass(frozen=True)
+class SolverOptions:
+    """Tolerances and limits of the Newton solver.
+
+    Parameters
+    ----------
+    rtol : float
+        Converged when max |residual| ≤ rtol × load scale (scaled units, see module docstring).
+    max_iterations : int
+        Newton iterations per attempt.
+    max_step : float or None [m]
+        Largest change of any scaled DOF in one step; default 2 % of the smallest element diameter.
+    continuation_steps : int
+        Load fractions tried for cases that fail the plain attempt (0 disables continuation).
+    divergence_limit : float
+        A case whose scaled displacement exceeds this fraction of the smallest element diameter is
+        declared diverged (the load cannot be carried).
+    """
+
+    rtol: float = 1e-10
+    max_iterations: int = 60
+    max_step: float | None = None
+    continuation_steps: int = 4
+    divergence_limit: float = 0.5
+
+    def __post_init__(self):
+        checks.positive("rtol", self.rtol)
+        checks.integer("max_iterations", self.max_iterations, low=1)
+        if self.max_step is not None:
+            checks.positive("max_step", self.max_step, "m")
+        checks.integer("continuation_steps", self.continuation_steps, low=0)
+        checks.positive("divergence_limit", self.divergence_limit)
+
+
+def load_vector(F_x=0.0, F_y=0.0, F_z=0.0, M_x=0.0, M_y=0.0) -> np.ndarray:
+    """External load on the inner ring (..., 5) [N, N, N, N·m, N·m] from named components (broadcast)."""
+    parts = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (F_x, F_y, F_z, M_x, M_y)))
+    return np.stack(parts, axis=-1)
+
+
+@dataclass
+class QuasiStaticResult:
+    """Solution of a batch of load cases (leading axis C).
+
+    Attributes
+    ----------
+    model : BearingModel
+    load : ndarray (C, 5) [N, N, N, N·m, N·m]
+        External load on the inner ring (for fixed DOFs: the reaction needed to hold them).
+    displacement : ndarray (C, 5) [m, m, m, rad, rad]
+    converged : ndarray (C,) of bool
+    iterations : ndarray (C,) of int
+    residual_norm : ndarray (C,)
+        Max |residual| over the free DOFs divided by the load scale (dimensionless).
+    reason : list of str or None
+        Why a case did not converge.
+    rows : list of RowState
+        Per-row, per-element results.
+    stiffness : ndarray (C, 5, 5)
+        Tangent stiffness −∂(contact force)/∂q [N/m, N, N·m/rad …] at the solution.
+    free : ndarray (5,) of bool
+    """
+
+    model: BearingModel
+    load: np.ndarray
+    displacement: np.ndarray
+    converged: np.ndarray
+    iterations: np.ndarray
+    residual_norm: np.ndarray
+    reason: list
+    rows: list[RowState]
+    stiffness: np.ndarray
+    free: np.ndarray
+    references: tuple = field(default_factory=tuple)
+
+    @property
+    def n_cases(self) -> int:
+        return self.displacement.shape[0]
+
+    def row(self, name: str) -> RowState:
+        """The row state called ``name``."""
+        for r in self.rows:
+            if r.name == name:
+                return r
+        raise InputError(f"row ({name!r}) not in result; rows are {[r.name for r in self.rows]}")
+
+    def to_dict(self, case: int | None = None) -> dict | list[dict]:
+        """JSON-ready dict (SI values, units in keys); a list over cases when ``case`` is None."""
+        if case is None:
+            return [self.to_dict(c) for c in range(self.n_cases)]
+        out = {
+            "bearing": self.model.name,
+            "converged": bool(self.converged[case]),
+            "iterations": int(self.iterations[case]),
+            "residual_norm": float(self.residual_norm[case]),
+            "reason": self.reason[case],
+            "load": {
+                f"{n}_{u}": float(v)
+                for n, u, v in zip(LOAD_NAMES, ("N",) * 3 + ("Nm",) * 2, self.load[case], strict=True)
+            },
+            "displacement": {
+                f"{n}_{u}": float(v)
+                for n, u, v in zip(DOF_NAMES, ("m",) * 3 + ("rad",) * 2, self.displacement[case], strict=True)
+            },
+            "stiffness_SI": self.stiffness[case].tolist(),
+            "rows": [],
+        }
+        for r in self.rows:
+            entry = {
+                "name": r.name,
+                "kind": r.kind,
+                "azimuth_rad": np.broadcast_to(r.azimuth, r.load.shape)[case].tolist(),
+                "loads_N": r.load[case].tolist(),
+                "contact_angle_rad": r.contact_angle[case].tolist(),
+                "max_load_N": float(r.max_load[case]),
+                "max_pressure_Pa": float(r.max_pressure[case].max()),
+                "loaded_count": int(r.loaded_count[case]),
+                "axial_load_N": float(self.row_load(r.name)[case, 2]),
+                "radial_load_N": float(np.hypot(*self.row_load(r.name)[case, :2])),
+            }
+            out["rows"].append(entry)
+        out["references"] = list(self.references)
+        return out
+
+    def row_load(self, name: str) -> np.ndarray:
+        """Force and moment (C, 5) the row carries (= −contact force on the inner ring), SI."""
+        kernel = self.model.row(name).kernel()
+        return -kernel.response(self.displacement).force
+
+    def to_pandas(self):
+        """One line per case, row and element: load, contact angle, max pressure (SI columns)."""
+        import pandas as pd
+
+        frames = []
+        for r in self.rows:
+            c, z = r.load.shape
+            frames.append(
+                pd.DataFrame(
+                    {
+                        "case": np.repeat(np.arange(c), z),
+                        "row": r.name,
+                        "kind": r.kind,
+                        "element": np.tile(np.arange(z), c),
+                        "azimuth_rad": np.broadcast_to(r.azimuth, r.load.shape).ravel(),
+                        "load_N": r.load.ravel(),
+                        "deflection_m": r.deflection.ravel(),
+                        "contact_angle_rad": r.contact_angle.ravel(),
+                        "max_pressure_Pa": r.max_pressure.ravel(),
+                    }
+                )
+            )
+        return pd.concat(frames, ignore_index=True)
+
+
+def _evaluate(kernels, q):
+    """Sum of row responses: contact force (C,5), Jacobian (C,5,5), energy (C,), largest row force."""
+    force = np.zeros_like(q)
+    jac = np.zeros((*q.shape, N_DOF))
+    energy = np.zeros(q.shape[0])
+    row_max = np.zeros_like(q)
+    for k in kernels:
+        resp = k.response(q)
+        force += resp.force
+        jac += resp.jacobian
+        energy += resp.energy
+        row_max = np.maximum(row_max, np.abs(resp.force))
+    return force, jac, energy, row_max
+
+
+class _Problem:
+    """The scaled equilibrium problem of a batch; holds kernels, loads and scaling."""
+
+    def __init__(self, model: BearingModel, load: np.ndarray, free: np.ndarray, options: SolverOptions):
+        self.kernels = [row.kernel() for row in model.rows]
+        self.length = max(k.char_length for k in self.kernels)
+        self.scale = np.array([1.0, 1.0, 1.0, 1.0 / self.length, 1.0 / self.length])  # q = scale·q̃
+        self.free = free
+        self.idx = np.flatnonzero(free)
+        d_min = min(k.deflection_scale for k in self.kernels)
+        self.max_step = options.max_step if options.max_step is not None else 0.02 * d_min
+        self.limit = options.divergence_limit * d_min
+        self.options = options
+        self.load = load
+
+    def state(self, q, load):
+        force, jac, energy, row_max = _evaluate(self.kernels, q)
+        residual = load + force
+        potential = energy - np.einsum("ci,ci->c", load[:, self.idx], q[:, self.idx])
+        s = self.scale
+        r_scaled = residual * s
+        load_scale = np.maximum(np.abs(load * s).max(axis=1), (row_max * s).max(axis=1))
+        load_scale = np.maximum(load_scale, 1e-12)
+        norm = np.abs(r_scaled[:, self.idx]).max(axis=1) / load_scale if len(self.idx) else np.zeros(len(q))
+        return dict(force=force, jac=jac, potential=potential, residual=residual, norm=norm, q=q)
+
+
+def _newton(problem: _Problem, q, load, active, iterations):
+    """Damped Newton on the active cases; returns q, converged, last state, diverged mask."""
+    opts = problem.options
+    idx, s = problem.idx, problem.scale
+    n = len(idx)
+    st = problem.state(q, load)
+    converged = st["norm"] <= opts.rtol
+    diverged = np.zeros_like(converged)
+    for _ in range(opts.max_iterations):
+        work = active & ~converged & ~diverged
+        if not work.any():
+            break
+        iterations[work] += 1
+        # Scaled gradient g̃ = −S R and Hessian H̃ = −S J S on the free DOFs.
+        g = -(st["residual"] * s)[:, idx]
+        h = -(st["jac"] * s[:, None] * s[None, :])[:, idx][:, :, idx]
+        diag = np.abs(np.diagonal(h, axis1=1, axis2=2)).max(axis=1)
+        # Levenberg term: negligible once contacts are closed; while none is, it turns the step into
+        # a (capped) move along the load.
+        mu = 1e-12 * diag + np.abs(g).max(axis=1) / (1e6 * problem.max_step) + 1e-300
+        step = np.linalg.solve(h + mu[:, None, None] * np.eye(n), -g[..., None])[..., 0]
+        big = np.abs(step).max(axis=1)
+        step *= np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300))[:, None]
+        slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
+        t = np.ones(q.shape[0])
+        pending = work.copy()
+        new_q = q.copy()
+        trial = st
+        for _ls in range(40):
+            cand = q.copy()
+            cand[:, idx] += (t[:, None] * step) * s[idx]
+            cand = np.where(pending[:, None], cand, new_q)
+            trial_state = problem.state(cand, load)
+            slack = 1e-12 * (np.abs(st["potential"]) + 1e-30)
+            ok = (trial_state["potential"] <= st["potential"] + 1e-4 * t * slope + slack) | (
+                trial_state["norm"] < 0.5 * st["norm"]
+            )
+            accept = pending & ok
+            new_q = np.where(accept[:, None], cand, new_q)
+            trial = _merge(trial, trial_state, accept)
+            pending &= ~ok
+            if not pending.any():
+                break
+            t = np.where(pending, 0.5 * t, t)
+        q = np.where(work[:, None], new_q, q)
+        st = _merge(st, trial, work)
+        converged = converged | (work & (st["norm"] <= opts.rtol))
+        diverged = diverged | (work & (np.abs(q / s).max(axis=1) > problem.limit))
+    return q, converged, st, diverged
+
+
+def _merge(old: dict, new: dict, mask: np.ndarray) -> dict:
+    """Take ``new`` where ``mask`` (per case), ``old`` elsewhere."""
+    out = {}
+    for key, a in old.items():
+        m = mask.reshape((-1,) + (1,) * (a.ndim - 1))
+        out[key] = np.where(m, new[key], a)
+    return out
+
+
+def solve(
+    model: BearingModel,
+    load,
+    *,
+    free=None,
+    displacement=None,
+    options: SolverOptions | None = None,
+    raise_on_failure: bool = False,
+) -> QuasiStaticResult:
+    """Solve the quasi-static equilibrium of a batch of load cases.
+
+    Parameters
+    ----------
+    model : BearingModel
+    load : array_like (5,) or (C, 5) [N, N, N, N·m, N·m]
+        External load (F_x, F_y, F_z, M_x, M_y) on the inner ring; use :func:`load_vector`.
+    free : array_like of 5 bool, optional
+        Which DOFs are solved for (default all). Fixed DOFs keep ``displacement``; e.g. seed 000's
+        planar model (δ_a, δ_r, θ) is ``free=[True, False, True, False, True]``.
+    displacement : array_like (5,) or (C, 5) [m, m, m, rad, rad], optional
+        Prescribed values of fixed DOFs and the starting point of free ones (default 0).
+    options : SolverOptions, optional
+    raise_on_failure : bool
+        Raise :class:`~bearingkit.errors.ConvergenceError` (carrying the result) if any case fails;
+        studies leave this False and read ``result.converged``.
+
+    Returns
+    -------
+    QuasiStaticResult
+    """
+    options = options or SolverOptions()
+    load = np.atleast_2d(np.asarray(load, dtype=float))
+    if load.shape[-1] != N_DOF:
+        raise InputError(f"load (shape {load.shape}) must have 5 components (F_x, F_y, F_z, M_x, M_y)")
+    checks.finite("load", load, "N")
+    free = np.ones(N_DOF, bool) if free is None else np.asarray(free, dtype=bool)
+    if free.shape != (N_DOF,):
+        raise InputError(f"free (shape {free.shape}) must be 5 booleans for u_x, u_y, u_z, theta_x, theta_y")
+    n_cases = load.shape[0]
+    q0 = np.zeros((n_cases, N_DOF)) if displacement is None else np.asarray(displacement, dtype=float)
+    q0 = np.array(np.broadcast_to(q0, (max(n_cases, q0.shape[0] if q0.ndim == 2 else 1), N_DOF)))
+    load = np.array(np.broadcast_to(load, q0.shape))
+    checks.finite("displacement", q0, "m")
+    n_cases = q0.shape[0]
+    problem = _Problem(model, load, free, options)
+    _check_directions(problem, load)
+
+    iterations = np.zeros(n_cases, int)
+    everyone = np.ones(n_cases, bool)
+    q, converged, st, diverged = _newton(problem, q0, load, everyone, iterations)
+    if options.continuation_steps and not converged.all():
+        # Load continuation from the unloaded start for the failed cases.
+        retry = ~converged
+        qc = np.where(retry[:, None], q0, q)
+        for frac in np.linspace(1.0 / options.continuation_steps, 1.0, options.continuation_steps):
+            ramp = np.where(retry[:, None], load * frac, load)
+            ramp[:, ~free] = load[:, ~free]
+            qc, conv_c, st_c, div_c = _newton(problem, qc, ramp, retry, iterations)
+        q = np.where(retry[:, None], qc, q)
+        st = _merge(st, st_c, retry)
+        converged = np.where(retry, conv_c, converged)
+        diverged = np.where(retry, div_c, diverged)
+
+    reasons = [None] * n_cases
+    for c in np.flatnonzero(~converged):
+        reasons[c] = _diagnose(problem, load[c], bool(diverged[c]), st["norm"][c])
+    states = [k.state(q) for k in problem.kernels]
+    reaction = load.copy()
+    reaction[:, ~free] = -st["force"][:, ~free]
+    result = QuasiStaticResult(
+        model=model,
+        load=reaction,
+        displacement=q,
+        converged=converged,
+        iterations=iterations,
+        residual_norm=st["norm"],
+        reason=reasons,
+        rows=states,
+        stiffness=-st["jac"],
+        free=free,
+        references=tuple(model.references),
+    )
+    if raise_on_failure and not converged.all():
+        bad = int(np.flatnonzero(~converged)[0])
+        raise ConvergenceError(f"case {bad} did not converge: {reasons[bad]}", result)
+    return result
+
+
+def _directions(problem: _Problem) -> np.ndarray:
+    """Contact directions (M, 5) at the unloaded geometry: columns a contact can push on."""
+    rows = []
+    for k in problem.kernels:
+        if hasattr(k, "G"):
+            rows.append(k.G[0])
+        else:  # ball: B_jᵀ n₀ with n₀ the free contact direction
+            n0 = k.s0 / np.linalg.norm(k.s0, axis=-1, keepdims=True)
+            rows.append(np.einsum("...zij,...zi->...zj", k.B, np.broadcast_to(n0, k.B.shape[:-1]))[0])
+    return np.concatenate(rows, axis=0)
+
+
+def _check_directions(problem: _Problem, load: np.ndarray) -> None:
+    """Refuse, before solving, a load on a free DOF that no contact acts on at all."""
+    g = _directions(problem) * problem.scale
+    reach = np.abs(g).max(axis=0)
+    for i in problem.idx:
+        if reach[i] <= 1e-12 * reach.max() and np.any(np.abs(load[:, i]) > 0):
+            raise InputError(
+                f"load {LOAD_NAMES[i]} ({np.abs(load[:, i]).max():.6g}) acts on a DOF no row of this bearing "
+                f"can carry ({DOF_NAMES[i]}); fix that DOF or remove the load"
+            )
+
+
+def _diagnose(problem: _Problem, load: np.ndarray, diverged: bool, norm: float) -> str:
+    """One-line reason for a failed case, using the cone of contact directions."""
+    from scipy.optimize import nnls
+
+    g = (_directions(problem) * problem.scale)[:, problem.idx]
+    f = (load * problem.scale)[problem.idx]
+    _, miss = nnls(g.T, f)
+    size = max(np.linalg.norm(f), 1e-300)
+    if miss > 1e-3 * size:
+        comp = (f - g.T @ nnls(g.T, f)[0]) / size
+        worst = LOAD_NAMES[problem.idx[int(np.argmax(np.abs(comp)))]]
+        return (
+            f"the load cannot be carried: no combination of contact forces balances it (unbalanced mainly in "
+            f"{worst})"
+        )
+    if diverged:
+        return (
+            "displacement diverged beyond half an element diameter: the load exceeds what the contacts carry"
+        )
+    return f"Newton did not reach the tolerance (residual {norm:.3g} of the load scale)"

@@ -1,0 +1,210 @@
+"""Builders of standard bearing types from their internal geometry. SI units.
+
+Each builder returns a :class:`~bearingkit.analysis.model.BearingModel`. Internal geometry (ball or
+roller diameter, pitch diameter, count, conformities, clearance) is what the mechanics needs;
+catalogue boundary dimensions alone do not determine it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.analysis.model import BearingModel
+from bearingkit.bearings.common import e_reduced_of
+from bearingkit.rows.ball import BallRow
+from bearingkit.rows.cylindrical import CylindricalRow
+
+
+def deep_groove_ball(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    pitch_diameter: float,
+    conformity_inner: float = 0.52,
+    conformity_outer: float = 0.53,
+    clearance_radial: float = 0.0,
+    material=None,
+    name: str = "deep groove ball bearing",
+) -> BearingModel:
+    """Single-row deep groove ball bearing (free contact angle from the radial clearance)."""
+    row = BallRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        pitch_diameter=pitch_diameter,
+        contact_angle=0.0,
+        conformity_inner=conformity_inner,
+        conformity_outer=conformity_outer,
+        clearance=clearance_radial,
+        e_reduced=e_reduced_of(material),
+        name="balls",
+    )
+    return BearingModel((row,), name=name, references=("harris2007",))
+
+
+def angular_contact_ball(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    pitch_diameter: float,
+    contact_angle: float,
+    conformity_inner: float = 0.52,
+    conformity_outer: float = 0.53,
+    clearance: float = 0.0,
+    material=None,
+    name: str = "angular contact ball bearing",
+) -> BearingModel:
+    """Single-row angular contact ball bearing; carries +F_z (contact_angle > 0) and radial load."""
+    checks.in_range("contact_angle", contact_angle, 0.0, np.pi / 2, "rad", closed=False)
+    row = BallRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        pitch_diameter=pitch_diameter,
+        contact_angle=contact_angle,
+        conformity_inner=conformity_inner,
+        conformity_outer=conformity_outer,
+        clearance=clearance,
+        e_reduced=e_reduced_of(material),
+        name="balls",
+    )
+    return BearingModel((row,), name=name, references=("harris2007",))
+
+
+#: Signs of the contact angles (row at −z, row at +z) for paired angular contact bearings. Back-to-back
+#: (DB, "O"): contact lines diverge outwards, the pressure centres lie outside the pair; face-to-face
+#: (DF, "X"): they converge; tandem (DT): both rows carry the same axial direction.
+PAIR_ARRANGEMENTS = {"DB": (+1, -1), "DF": (-1, +1), "DT": (+1, +1)}
+
+
+def angular_contact_pair(
+    *,
+    arrangement: str,
+    n_elements: int,
+    element_diameter: float,
+    pitch_diameter: float,
+    contact_angle: float,
+    row_spacing: float,
+    axial_clearance: float = 0.0,
+    conformity_inner: float = 0.52,
+    conformity_outer: float = 0.53,
+    material=None,
+    name: str | None = None,
+) -> BearingModel:
+    """A pair of identical angular contact ball bearings, DB, DF or DT.
+
+    Parameters
+    ----------
+    arrangement : str
+        ``"DB"`` back-to-back, ``"DF"`` face-to-face, ``"DT"`` tandem.
+    row_spacing : float [m]
+        Axial distance between the two ball rows.
+    axial_clearance : float [m]
+        Axial play of the pair (negative = axial preload as an interference). Each row gets the
+        contact-line clearance s_a·sin α₀ (the inner ring moving by s_a/2 closes one row's gap).
+        Ignored for DT (tandem rows are not set against each other).
+    """
+    checks.one_of("arrangement", arrangement, PAIR_ARRANGEMENTS)
+    checks.in_range("contact_angle", contact_angle, 0.0, np.pi / 2, "rad", closed=False)
+    checks.positive("row_spacing", row_spacing, "m")
+    e_red = e_reduced_of(material)
+    signs = PAIR_ARRANGEMENTS[arrangement]
+    clearance = 0.0 if arrangement == "DT" else axial_clearance * np.sin(contact_angle)
+    rows = tuple(
+        BallRow(
+            n_elements=n_elements,
+            element_diameter=element_diameter,
+            pitch_diameter=pitch_diameter,
+            contact_angle=sign * contact_angle,
+            conformity_inner=conformity_inner,
+            conformity_outer=conformity_outer,
+            clearance=clearance,
+            axial_position=z,
+            e_reduced=e_red,
+            name=f"balls_{label}",
+        )
+        for sign, z, label in zip(signs, (-row_spacing / 2, row_spacing / 2), ("A", "B"), strict=True)
+    )
+    return BearingModel(
+        rows, name=name or f"angular contact ball pair {arrangement}", references=("harris2007",)
+    )
+
+
+def thrust_ball(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    pitch_diameter: float,
+    conformity: float = 0.54,
+    material=None,
+    name: str = "thrust ball bearing",
+) -> BearingModel:
+    """Single-direction thrust ball bearing (α = 90°) carrying +F_z and moments with it."""
+    row = BallRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        pitch_diameter=pitch_diameter,
+        contact_angle=np.pi / 2,
+        conformity_inner=conformity,
+        conformity_outer=conformity,
+        e_reduced=e_reduced_of(material),
+        name="balls",
+    )
+    return BearingModel((row,), name=name, references=("harris2007",))
+
+
+def cylindrical_roller(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    effective_length: float,
+    pitch_diameter: float,
+    clearance_radial: float = 0.0,
+    n_slices: int = 20,
+    profile=None,
+    line_law: str = "kunert",
+    material=None,
+    name: str = "cylindrical roller bearing",
+) -> BearingModel:
+    """Radial cylindrical roller bearing (rollers sliced; carries F_x, F_y and, through the slices, M)."""
+    row = CylindricalRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        effective_length=effective_length,
+        pitch_diameter=pitch_diameter,
+        orientation="radial",
+        clearance=clearance_radial,
+        n_slices=n_slices,
+        profile=profile,
+        line_law=line_law,
+        e_reduced=e_reduced_of(material),
+        name="rollers",
+    )
+    return BearingModel((row,), name=name, references=("harris2007", "kunert1961"))
+
+
+def cylindrical_roller_thrust(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    effective_length: float,
+    pitch_diameter: float,
+    n_slices: int = 20,
+    profile=None,
+    line_law: str = "kunert",
+    material=None,
+    name: str = "cylindrical roller thrust bearing",
+) -> BearingModel:
+    """Single-direction cylindrical roller thrust bearing carrying +F_z (and moments with it)."""
+    row = CylindricalRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        effective_length=effective_length,
+        pitch_diameter=pitch_diameter,
+        orientation="thrust_up",
+        n_slices=n_slices,
+        profile=profile,
+        line_law=line_law,
+        e_reduced=e_reduced_of(material),
+        name="rollers",
+    )
+    return BearingModel((row,), name=name, references=("harris2007", "kunert1961"))

@@ -1,0 +1,200 @@
+"""Ball rows: radial, angular-contact and thrust (α = 90°) rows of balls in grooves.
+
+SI units. Each ball sits between an inner and an outer groove. The loaded contact angle follows
+from the positions of the two groove curvature centres (Jones; Harris & Kotzalas 2007, §7 and
+§8.1): their unloaded distance is A₀ − c with A₀ = (f_i + f_o − 1) D_w and c the gap per element,
+along the free contact angle α₀. The inner-ring displacement moves the inner groove centre, the
+distance becomes A = |s|, the contact approach is δ = A − A₀, and the ball load (both contacts in
+series, Hertz) is Q = K_n δ^1.5 along s, so the contact angle α = atan2(s_a, s_r) changes with load.
+
+Centrifugal force and gyroscopic moments are neglected (quasi-static, low speed: the seeds'
+turntable and composite bearings run at ≤ 90 rpm). K_n is evaluated at the free contact angle α₀;
+its change with the operating angle is of second order (ISO/TS 16281 does the same) and keeping it
+constant keeps the Jacobian exact.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.rows.base import RowResponse, RowState, axial_row, azimuths, radial_row, validate_common
+
+#: Hertz point-contact load exponent (Q = K δ^n), Hertz 1881 / Harris & Kotzalas 2007 eq. 6.43.
+POINT_EXPONENT = 1.5
+
+
+@dataclass(frozen=True)
+class BallRow:
+    """A row of Z balls.
+
+    Parameters
+    ----------
+    n_elements : int
+        Number of balls Z.
+    element_diameter : float [m]
+        Ball diameter D_w.
+    pitch_diameter : float [m]
+        Pitch diameter d_m (ball centres).
+    contact_angle : float [rad]
+        Free contact angle α₀ of the line from the outer to the inner groove centre, measured from
+        the radial plane; its sign is the row's axial direction (α₀ > 0: the row resists +u_z of the
+        inner ring). 0 for a radial row, ±π/2 for a thrust row.
+    conformity_inner, conformity_outer : float
+        Groove radius over ball diameter f = r/D_w (> 0.5).
+    clearance : float [m]
+        The row's clearance measured along the contact line, counted twice (diametral for a radial
+        row, total axial play for a thrust row: seed 000 writes δ = δ_a − 0.5 u_a0). Negative = preload.
+        Each ball sees a gap c = clearance/2.
+    axial_position : float [m]
+        Axial position z of the ball centres.
+    azimuth_phase : float [rad]
+        Azimuth of ball 0.
+    e_reduced : float [Pa]
+        Reduced modulus E′ of the ball/raceway pair (steel–steel by default, from the materials).
+    hertz_method : str
+        ``"exact"`` or ``"hamrock_brewe"`` (see :mod:`bearingkit.physics.hertz`).
+    name : str
+        The row's name in its bearing.
+
+    Geometry fields may be arrays of shape (C,) to batch many designs of the same topology.
+    """
+
+    kind: ClassVar[str] = "ball"
+
+    n_elements: int
+    element_diameter: float
+    pitch_diameter: float
+    contact_angle: float = 0.0
+    conformity_inner: float = 0.52
+    conformity_outer: float = 0.53
+    clearance: float = 0.0
+    axial_position: float = 0.0
+    azimuth_phase: float = 0.0
+    e_reduced: float | None = None
+    hertz_method: str = "exact"
+    name: str = "ball"
+
+    def __post_init__(self):
+        validate_common(self)
+        checks.in_range("contact_angle", self.contact_angle, -np.pi / 2, np.pi / 2, "rad")
+        for f in ("conformity_inner", "conformity_outer"):
+            val = np.asarray(getattr(self, f), dtype=float)
+            checks.finite(f, val)
+            if np.any(val <= 0.5):
+                raise checks.InputError(
+                    f"{f} ({np.min(val):.6g}) must exceed 0.5: the groove radius must exceed half the ball "
+                    "diameter"
+                )
+        if self.e_reduced is not None:
+            checks.positive("e_reduced", self.e_reduced, "Pa")
+        from bearingkit.physics.hertz import POINT_METHODS
+
+        checks.one_of("hertz_method", self.hertz_method, POINT_METHODS)
+        spare = (np.asarray(self.conformity_inner) + np.asarray(self.conformity_outer) - 1.0) * np.asarray(
+            self.element_diameter
+        ) - np.asarray(self.clearance) / 2
+        if np.any(spare <= 0):
+            raise checks.InputError(
+                f"clearance ({np.max(self.clearance):.6g} m) is larger than twice the groove-centre distance "
+                f"(f_i + f_o − 1)·D_w; expected a clearance below "
+                f"{2 * np.min(spare + self.clearance / 2):.6g} m"
+            )
+
+    # -- derived, used by the solver -------------------------------------------------------------
+    def kernel(self) -> BallKernel:
+        """Precompute the arrays the solver needs (done once per solve)."""
+        return BallKernel(self)
+
+
+def _steel_e_reduced() -> float:
+    from bearingkit.materials import e_reduced, get_material
+
+    steel = get_material("GCr15")
+    return float(e_reduced(steel, steel))
+
+
+class BallKernel:
+    """Precomputed geometry and stiffness of a :class:`BallRow` for fast repeated evaluation."""
+
+    def __init__(self, row: BallRow):
+        from bearingkit.physics import hertz
+
+        self.row = row
+
+        def col(v):  # (C,)|() -> (C|1, 1), broadcast over the elements
+            return np.asarray(v, dtype=float).reshape(-1, 1)
+
+        d, dm = col(row.element_diameter), col(row.pitch_diameter)
+        alpha0 = col(row.contact_angle)
+        fi, fo = col(row.conformity_inner), col(row.conformity_outer)
+        self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
+        self.psi = azimuths(row.n_elements, row.azimuth_phase)  # (C|1, Z)
+        self.a0 = (fi + fo - 1.0) * d  # groove-centre distance at first touch
+        gap = col(row.clearance) / 2.0
+        unit0 = np.stack([np.cos(alpha0), np.sin(alpha0)], axis=-1)  # (C|1, 1, 2) from outer to inner centre
+        self.s0 = (self.a0 - gap)[..., None] * unit0  # unloaded centre separation (C|1, 1, 2)
+        # The inner groove centre sits (f_i − ½)D_w from the ball centre along the contact line.
+        offset = ((fi - 0.5) * d)[..., None] * unit0
+        r_c = dm / 2 + offset[..., 0]
+        z_c = col(row.axial_position) + offset[..., 1]
+        self.B = np.stack([radial_row(self.psi, z_c), axial_row(self.psi, r_c)], axis=-2)  # (C|1, Z, 2, 5)
+        # Series stiffness of the two contacts, at the free contact angle.
+        k = []
+        for side, f in (("inner", fi), ("outer", fo)):
+            sr, fr = hertz.ball_raceway_curvature(d, dm, np.abs(alpha0), f * d, side)
+            k.append(hertz.point_stiffness(sr, fr, self.e_reduced, method=row.hertz_method))
+        self.k_n = hertz.series_stiffness(k[0], k[1], exponent=POINT_EXPONENT)  # (C|1, 1)
+        self.pitch_radius = dm / 2
+        self.char_length = float(np.max(dm) / 2)
+        self.deflection_scale = float(np.min(d))
+
+    def _geometry(self, q):
+        u = np.einsum("...zij,...zj->...zi", self.B, q[:, None, :])  # (C, Z, 2) local displacement
+        s = self.s0 + u
+        a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
+        return u, s, a
+
+    def response(self, q: np.ndarray) -> RowResponse:
+        """Generalised force, Jacobian and energy for displacements q (C, 5)."""
+        _, s, a = self._geometry(q)
+        delta = np.maximum(a - self.a0, 0.0)
+        root = np.sqrt(delta)
+        load = self.k_n * delta * root  # K δ^1.5
+        stiff = 1.5 * self.k_n * root  # dQ/dδ
+        n = s / a[..., None]
+        f_local = -load[..., None] * n  # on the inner ring, towards the outer groove centre
+        force = np.einsum("...zij,...zi->...j", self.B, f_local)
+        # d f_local / d u = −[Q' n nᵀ + (Q/A)(I − n nᵀ)]
+        nn = n[..., :, None] * n[..., None, :]
+        eye = np.eye(2)
+        k_local = -(stiff[..., None, None] * nn + (load / a)[..., None, None] * (eye - nn))
+        jac = np.einsum("...zai,...zab,...zbj->...ij", self.B, k_local, self.B)
+        energy = (self.k_n * delta * delta * root / 2.5).sum(axis=-1)
+        return RowResponse(force, jac, energy)
+
+    def state(self, q: np.ndarray) -> RowState:
+        """Per-ball results at displacements q (C, 5): loads, operating contact angles, pressures."""
+        from bearingkit.physics import hertz
+
+        row = self.row
+        _, s, a = self._geometry(q)
+        delta = np.maximum(a - self.a0, 0.0)
+        load = self.k_n * delta**POINT_EXPONENT
+        alpha = np.arctan2(s[..., 1], s[..., 0])
+        d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1)
+        dm = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1)
+        extras, p_max = {}, np.zeros_like(load)
+        for side, f in (("inner", row.conformity_inner), ("outer", row.conformity_outer)):
+            f = np.asarray(f, dtype=float).reshape(-1, 1)
+            sr, fr = hertz.ball_raceway_curvature(d, dm, np.abs(alpha), f * d, side)
+            contact = hertz.point_contact(load, sr, fr, self.e_reduced, method=row.hertz_method)
+            extras[f"semi_major_{side}"] = contact.semi_major
+            extras[f"semi_minor_{side}"] = contact.semi_minor
+            extras[f"max_pressure_{side}"] = contact.max_pressure
+            p_max = np.maximum(p_max, contact.max_pressure)
+        psi = np.broadcast_to(self.psi, load.shape)
+        return RowState("ball", row.name, psi, load, delta, alpha, p_max, None, extras)

@@ -1,0 +1,137 @@
+"""What every row shares: element placement, the rigid-ring kinematics, and the row response.
+
+SI units. Frame (design.md §3): bearing axis z, x and y radial. The inner ring is a rigid body
+displaced by q = (u_x, u_y, u_z, θ_x, θ_y) relative to the fixed outer ring. A point of the inner
+ring at azimuth ψ, radius r and axial position z moves (small rotations) by
+
+    radial  u_r = (u_x + θ_y z) cos ψ + (u_y − θ_x z) sin ψ
+    axial   u_a = u_z + r (θ_x sin ψ − θ_y cos ψ)
+
+and the raceway tilts in the element's radial–axial plane by θ_t = θ_x sin ψ − θ_y cos ψ. These
+are rows of a matrix B(ψ, r, z) with u = B q, so a contact law written in the element's local
+(radial, axial) frame maps to the ring by virtual work: f = Bᵀ f_local, ∂f/∂q = Bᵀ (∂f_local/∂u) B.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from bearingkit import checks
+
+#: Names of the five rigid-body degrees of freedom of the inner ring, in order.
+DOF_NAMES = ("u_x", "u_y", "u_z", "theta_x", "theta_y")
+#: Names of the matching generalised loads.
+LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
+N_DOF = 5
+
+
+def azimuths(n_elements: int, azimuth_phase=0.0) -> np.ndarray:
+    """Element azimuths ψ_j = phase + 2πj/Z [rad], shape (C|1, Z) for a phase of shape (C,) or scalar."""
+    j = np.arange(n_elements)
+    return np.asarray(azimuth_phase, dtype=float).reshape(-1, 1) + 2.0 * np.pi * j / n_elements
+
+
+def radial_row(psi, z):
+    """Row of B giving the radial displacement at azimuth ψ and axial position z; shape (..., 5)."""
+    c, s = np.cos(psi), np.sin(psi)
+    zeros = np.zeros(np.broadcast(psi, z).shape)
+    z = np.broadcast_to(z, zeros.shape)
+    return np.stack([c + zeros, s + zeros, zeros, -z * s, z * c], axis=-1)
+
+
+def axial_row(psi, r):
+    """Row of B giving the axial displacement at azimuth ψ and radius r; shape (..., 5)."""
+    c, s = np.cos(psi), np.sin(psi)
+    zeros = np.zeros(np.broadcast(psi, r).shape)
+    r = np.broadcast_to(r, zeros.shape)
+    return np.stack([zeros, zeros, 1.0 + zeros, r * s, -r * c], axis=-1)
+
+
+def tilt_row(psi):
+    """Row of B giving the raceway tilt θ_t in the element's radial–axial plane; shape (..., 5)."""
+    c, s = np.cos(psi), np.sin(psi)
+    zeros = np.zeros(np.shape(psi))
+    return np.stack([zeros, zeros, zeros, s, -c], axis=-1)
+
+
+@dataclass
+class RowResponse:
+    """The response of one row to a batch of inner-ring displacements (internal, per iteration).
+
+    Attributes
+    ----------
+    force : ndarray (C, 5)
+        Generalised force of the contacts on the inner ring [N, N, N, N·m, N·m].
+    jacobian : ndarray (C, 5, 5)
+        ∂force/∂q (negative semi-definite: the contacts resist displacement).
+    energy : ndarray (C,)
+        Elastic energy stored in the row's contacts [J]; force = −∂energy/∂q.
+    """
+
+    force: np.ndarray
+    jacobian: np.ndarray
+    energy: np.ndarray
+
+
+@dataclass
+class RowState:
+    """Per-element results of a row at the solution (all arrays carry the leading case axis C).
+
+    Attributes
+    ----------
+    kind, name : str
+        Row kind (``"ball"``, ``"cylindrical"`` …) and the row's name in its bearing.
+    azimuth : ndarray (C|1, Z) [rad]
+    load : ndarray (C, Z) [N]
+        Element contact load (normal load for balls, sum of slice loads for rollers).
+    deflection : ndarray (C, Z) [m]
+        Total elastic approach of the element (for rollers: at the most compressed slice).
+    contact_angle : ndarray (C, Z) [rad]
+        Operating contact angle (constant for roller rows).
+    max_pressure : ndarray (C, Z) [Pa]
+        Largest Hertz pressure over the element's contacts (inner and outer; all slices).
+    slice_load : ndarray (C, Z, n_s) [N] or None
+    extras : dict
+        Row-kind specific arrays (contact ellipse semi-axes, slice pressures, …).
+    """
+
+    kind: str
+    name: str
+    azimuth: np.ndarray
+    load: np.ndarray
+    deflection: np.ndarray
+    contact_angle: np.ndarray
+    max_pressure: np.ndarray
+    slice_load: np.ndarray | None = None
+    extras: dict = field(default_factory=dict)
+
+    @property
+    def loaded_count(self) -> np.ndarray:
+        """Number of elements carrying load (C,)."""
+        return np.count_nonzero(self.load > 0.0, axis=-1)
+
+    @property
+    def max_load(self) -> np.ndarray:
+        """Largest element load (C,) [N]."""
+        return self.load.max(axis=-1)
+
+
+def validate_common(row) -> None:
+    """Checks shared by every row kind (field names as in docs/nomenclature.md)."""
+    checks.integer("n_elements", row.n_elements, low=1)
+    checks.positive("element_diameter", row.element_diameter, "m")
+    checks.positive("pitch_diameter", row.pitch_diameter, "m")
+    checks.greater("pitch_diameter", row.pitch_diameter, "element_diameter", row.element_diameter, "m")
+    checks.finite("axial_position", row.axial_position, "m")
+    checks.finite("azimuth_phase", row.azimuth_phase, "rad")
+    checks.finite("clearance", row.clearance, "m")
+    # Elements must fit on the pitch circle without overlapping (ball/roller circumferential width).
+    gap = np.pi * np.asarray(row.pitch_diameter) / row.n_elements - np.asarray(row.element_diameter)
+    if np.any(gap < -1e-12):
+        raise checks.InputError(
+            f"n_elements ({row.n_elements}) do not fit on the pitch circle: π·pitch_diameter/Z "
+            f"({np.min(np.pi * np.asarray(row.pitch_diameter) / row.n_elements):.6g} m) must be at least "
+            f"element_diameter ({np.max(row.element_diameter):.6g} m)"
+        )

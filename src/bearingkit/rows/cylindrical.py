@@ -1,0 +1,210 @@
+"""Cylindrical roller rows, radial or thrust, sliced along the roller (the slice method).
+
+SI units. A roller of effective length l is cut into n_s slices of width w = l/n_s whose centres
+lie at x_k from the roller middle. Each slice is a line contact with both raceways in series;
+its approach is the ring approach at the slice, minus the gap, minus twice the crown drop
+(the drop is on the roller radius and relieves both contacts; Tian et al. 2025 eqs. 3–4, 9):
+
+    radial row  δ_jk = u_r,j − x_k θ_t,j − c − 2C(x_k)          (roller axis along z)
+    thrust row  δ_jk = σ (u_a,j + x_k θ_t,j) − c − 2C(x_k)       (roller axis along the radius,
+                                                                  σ = ±1 the row's direction)
+
+with c = clearance/2, and slice load q_jk = c_s ⟨δ_jk⟩^(10/9), c_s = c_l·w/l (Kunert/Palmgren or
+ISO/TS 16281 line law, :mod:`bearingkit.physics.hertz`). The slice approach is affine in q, so the
+whole row is two matrix products per Newton iteration: δ = q Gᵀ + δ₀, f = −q_s G, J = −Gᵀ diag(q_s′) G.
+
+The roller is rigid and held between two rigid raceways, as in the seed papers; roller tilting
+inside the gap does not change the slice approach of two equal contacts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.rows.base import (
+    RowResponse,
+    RowState,
+    axial_row,
+    azimuths,
+    radial_row,
+    tilt_row,
+    validate_common,
+)
+
+#: Exponent of the line-contact law q ∝ δ^(10/9) (Kunert 1961; ISO/TS 16281:2008 eq. 38).
+LINE_EXPONENT = 10.0 / 9.0
+#: Allowed row orientations: radial, thrust pushing up (+z), thrust pushing down (−z).
+ORIENTATIONS = {"radial": 0, "thrust_up": 1, "thrust_down": -1}
+
+
+@dataclass(frozen=True)
+class CylindricalRow:
+    """A row of Z cylindrical rollers, radial or thrust.
+
+    Parameters
+    ----------
+    n_elements : int
+        Number of rollers Z.
+    element_diameter : float [m]
+        Roller diameter D_w.
+    effective_length : float [m]
+        Effective contact length l.
+    pitch_diameter : float [m]
+        Pitch diameter d_m (roller centres; for a thrust row the diameter of the roller middles).
+    orientation : str
+        ``"radial"``, ``"thrust_up"`` (the row resists +u_z of the inner ring) or ``"thrust_down"``.
+    clearance : float [m]
+        Row clearance counted twice (diametral radial clearance u_r0 for a radial row, total axial
+        play u_a0 for a thrust row, as in seed 000); each roller sees c = clearance/2. Negative = preload.
+    n_slices : int
+        Slices per roller (≥ 1).
+    profile : Profile or None
+        Crowning profile (:mod:`bearingkit.physics.profiles`); None = straight roller.
+    line_law : str
+        ``"kunert"`` or ``"iso16281"``.
+    axial_position : float [m]
+        Axial position of the roller middles (radial row) or of the contact plane (thrust row).
+    azimuth_phase : float [rad]
+    e_reduced : float [Pa] or None
+        Reduced modulus E′ (steel–steel by default).
+    name : str
+    """
+
+    kind: ClassVar[str] = "cylindrical"
+
+    n_elements: int
+    element_diameter: float
+    effective_length: float
+    pitch_diameter: float
+    orientation: str = "radial"
+    clearance: float = 0.0
+    n_slices: int = 20
+    profile: object | None = None
+    line_law: str = "kunert"
+    axial_position: float = 0.0
+    azimuth_phase: float = 0.0
+    e_reduced: float | None = None
+    name: str = "roller"
+
+    def __post_init__(self):
+        validate_common(self)
+        checks.positive("effective_length", self.effective_length, "m")
+        checks.one_of("orientation", self.orientation, ORIENTATIONS)
+        checks.integer("n_slices", self.n_slices, low=1)
+        if self.e_reduced is not None:
+            checks.positive("e_reduced", self.e_reduced, "Pa")
+        from bearingkit.physics.hertz import LINE_LAWS
+
+        checks.one_of("line_law", self.line_law, LINE_LAWS)
+        if self.orientation != "radial":
+            inner = np.asarray(self.pitch_diameter) / 2 - np.asarray(self.effective_length) / 2
+            if np.any(inner <= 0):
+                raise checks.InputError(
+                    f"effective_length ({np.max(self.effective_length):.6g} m) of a thrust row "
+                    "must be shorter "
+                    f"than the pitch_diameter ({np.min(self.pitch_diameter):.6g} m)"
+                )
+
+    @property
+    def direction(self) -> int:
+        """σ = +1/−1 for thrust rows, 0 for a radial row."""
+        return ORIENTATIONS[self.orientation]
+
+    def kernel(self) -> CylindricalKernel:
+        """Precompute the arrays the solver needs (done once per solve)."""
+        return CylindricalKernel(self)
+
+
+class CylindricalKernel:
+    """Precomputed slice geometry of a :class:`CylindricalRow`: δ = q Gᵀ + δ₀ per slice."""
+
+    def __init__(self, row: CylindricalRow):
+        from bearingkit.physics import hertz
+        from bearingkit.rows.ball import _steel_e_reduced
+
+        self.row = row
+        z_el, n_s = row.n_elements, row.n_slices
+        length = np.asarray(row.effective_length, dtype=float)
+        x, width = hertz.slice_grid(length, n_s)  # (C|…, n_s)
+        x = np.asarray(x, dtype=float).reshape(-1, n_s)  # (C|1, n_s)
+        self.x = x
+        self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
+        psi = azimuths(z_el, row.azimuth_phase)  # (C|1, Z)
+        self.psi = psi
+        r = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1) / 2
+        z = np.asarray(row.axial_position, dtype=float).reshape(-1, 1)
+        sigma = row.direction
+        if sigma == 0:  # radial: u_r at axial position z + x_k
+            g = radial_row(psi[..., None], z[..., None] + x[:, None, :])
+        else:  # thrust: σ·u_a at radius r + x_k
+            g = sigma * axial_row(psi[..., None], r[..., None] + x[:, None, :])
+        self.G = g.reshape(g.shape[0], z_el * n_s, 5)  # (C|1, M, 5), M = Z·n_s
+        self.tilt_B = tilt_row(psi)
+        drop = np.zeros_like(x) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
+        gap = np.asarray(row.clearance, dtype=float).reshape(-1, 1) / 2
+        delta0 = -gap - 2.0 * drop  # (C|1, n_s)
+        self.delta0 = np.broadcast_to(delta0[:, None, :], (delta0.shape[0], z_el, n_s)).reshape(
+            -1, z_el * n_s
+        )
+        # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
+        k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
+        k_pair = hertz.series_stiffness(k_contact, k_contact, exponent=LINE_EXPONENT)
+        self.c_s = np.asarray(k_pair * np.asarray(width) / length, dtype=float).reshape(-1, 1)  # (C|1, 1)
+        # G_m G_mᵀ flattened, so the Jacobian is one matrix product.
+        self.GG = (self.G[..., :, None] * self.G[..., None, :]).reshape(self.G.shape[0], -1, 25)
+        self.char_length = float(np.max(r) + np.max(length) / 2)
+        self.deflection_scale = float(np.min(row.element_diameter))
+        self.shape = (z_el, n_s)
+
+    def _delta(self, q):
+        if self.G.shape[0] == 1:
+            return q @ self.G[0].T + self.delta0
+        return np.einsum("cmd,cd->cm", self.G, q) + self.delta0
+
+    def response(self, q: np.ndarray) -> RowResponse:
+        """Generalised force, Jacobian and energy for displacements q (C, 5)."""
+        delta = np.maximum(self._delta(q), 0.0)
+        t = delta ** (1.0 / 9.0)
+        load = self.c_s * delta * t  # c_s δ^(10/9)
+        stiff = (10.0 / 9.0) * self.c_s * t
+        if self.G.shape[0] == 1:
+            force = -(load @ self.G[0])
+            jac = -(stiff @ self.GG[0]).reshape(-1, 5, 5)
+        else:
+            force = -np.einsum("cm,cmd->cd", load, self.G)
+            jac = -np.einsum("cm,cmk->ck", stiff, self.GG).reshape(-1, 5, 5)
+        energy = (load * delta).sum(axis=-1) / (1.0 + LINE_EXPONENT)
+        return RowResponse(force, jac, energy)
+
+    def state(self, q: np.ndarray) -> RowState:
+        """Per-roller and per-slice results at displacements q (C, 5)."""
+        from bearingkit.physics import hertz
+
+        row = self.row
+        z_el, n_s = self.shape
+        delta = np.maximum(self._delta(q), 0.0).reshape(-1, z_el, n_s)
+        c_s = self.c_s[..., None]
+        q_slice = c_s * delta**LINE_EXPONENT
+        load = q_slice.sum(axis=-1)
+        d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1, 1)
+        dm = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1, 1)
+        width = np.asarray(row.effective_length, dtype=float).reshape(-1, 1, 1) / n_s
+        if row.direction == 0:  # radial: the inner contact (convex–convex) has the smaller R_x
+            radius_x = {"inner": d / 2 * (1 - d / dm), "outer": d / 2 * (1 + d / dm)}
+        else:  # thrust: roller on flat washers
+            radius_x = {"inner": d / 2 + 0 * dm, "outer": d / 2 + 0 * dm}
+        extras, p_max = {}, np.zeros_like(q_slice)
+        for side, rx in radius_x.items():
+            contact = hertz.line_contact(q_slice, width, rx, self.e_reduced)
+            extras[f"slice_pressure_{side}"] = contact.max_pressure
+            p_max = np.maximum(p_max, contact.max_pressure)
+        extras["slice_position"] = np.broadcast_to(self.x[:, None, :], q_slice.shape)
+        alpha = np.full(load.shape, 0.0 if row.direction == 0 else row.direction * np.pi / 2)
+        psi = np.broadcast_to(self.psi, load.shape)
+        return RowState(
+            "cylindrical", row.name, psi, load, delta.max(axis=-1), alpha, p_max.max(axis=-1), q_slice, extras
+        )
