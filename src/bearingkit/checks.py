@@ -63,7 +63,9 @@ def greater(field: str, value, other_field: str, other, unit: str = ""):
     finite(field, value, unit)
     if not np.all(np.asarray(value, dtype=float) > np.asarray(other, dtype=float)):
         raise InputError(
-            f"{field} ({_fmt(value)} {unit}) must exceed {other_field} ({_fmt(other)} {unit})".replace("  ", " ")
+            f"{field} ({_fmt(value)} {unit}) must exceed {other_field} ({_fmt(other)} {unit})".replace(
+                "  ", " "
+            )
         )
     return value
 

@@ -188,9 +188,11 @@ class BallKernel:
         d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1)
         dm = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1)
         extras, p_max = {}, np.zeros_like(load)
+        # The curvatures depend on cos α only; a thrust contact leaning past 90° uses |cos α|.
+        alpha_geo = np.arccos(np.clip(np.abs(np.cos(alpha)), 0.0, 1.0))
         for side, f in (("inner", row.conformity_inner), ("outer", row.conformity_outer)):
             f = np.asarray(f, dtype=float).reshape(-1, 1)
-            sr, fr = hertz.ball_raceway_curvature(d, dm, np.abs(alpha), f * d, side)
+            sr, fr = hertz.ball_raceway_curvature(d, dm, alpha_geo, f * d, side)
             contact = hertz.point_contact(load, sr, fr, self.e_reduced, method=row.hertz_method)
             extras[f"semi_major_{side}"] = contact.semi_major
             extras[f"semi_minor_{side}"] = contact.semi_minor
