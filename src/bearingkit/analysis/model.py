@@ -7,6 +7,7 @@ SI units. Builders in :mod:`bearingkit.bearings` return a :class:`BearingModel`;
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from bearingkit import checks
 from bearingkit.errors import InputError
@@ -44,6 +45,11 @@ class BearingModel:
             if not hasattr(r, "kernel"):
                 raise InputError(f"rows entry {r!r} is not a row (expected BallRow, CylindricalRow, …)")
         checks.finite("n_rows", len(self.rows))
+
+    @cached_property
+    def kernels(self) -> tuple:
+        """Precomputed solver kernels of the rows (built once per model; the model is immutable)."""
+        return tuple(row.kernel() for row in self.rows)
 
     def row(self, name: str):
         """The row called ``name``."""

@@ -87,7 +87,8 @@ class QuasiStaticResult:
     reason : list of str or None
         Why a case did not converge.
     rows : list of RowState
-        Per-row, per-element results.
+        Per-row, per-element results (computed on first access: studies that need only the
+        displacement or the row forces skip the per-contact Hertz post-processing).
     stiffness : ndarray (C, 5, 5)
         Tangent stiffness −∂(contact force)/∂q [N/m, N, N·m/rad …] at the solution.
     free : ndarray (5,) of bool
@@ -100,10 +101,16 @@ class QuasiStaticResult:
     iterations: np.ndarray
     residual_norm: np.ndarray
     reason: list
-    rows: list[RowState]
     stiffness: np.ndarray
     free: np.ndarray
     references: tuple = field(default_factory=tuple)
+    _rows: list | None = field(default=None, repr=False)
+
+    @property
+    def rows(self) -> list[RowState]:
+        if self._rows is None:
+            self._rows = [k.state(self.displacement) for k in self.model.kernels]
+        return self._rows
 
     @property
     def n_cases(self) -> int:
@@ -156,7 +163,7 @@ class QuasiStaticResult:
 
     def row_load(self, name: str) -> np.ndarray:
         """Force and moment (C, 5) the row carries (= −contact force on the inner ring), SI."""
-        kernel = self.model.row(name).kernel()
+        kernel = self.model.kernels[[r.name for r in self.model.rows].index(name)]
         return -kernel.response(self.displacement).force
 
     def to_pandas(self):
@@ -203,7 +210,7 @@ class _Problem:
     """The scaled equilibrium problem of a batch; holds kernels, loads and scaling."""
 
     def __init__(self, model: BearingModel, load: np.ndarray, free: np.ndarray, options: SolverOptions):
-        self.kernels = [row.kernel() for row in model.rows]
+        self.kernels = model.kernels
         self.length = max(k.char_length for k in self.kernels)
         self.scale = np.array([1.0, 1.0, 1.0, 1.0 / self.length, 1.0 / self.length])  # q = scale·q̃
         self.free = free
@@ -224,6 +231,32 @@ class _Problem:
         load_scale = np.maximum(load_scale, 1e-12)
         norm = np.abs(r_scaled[:, self.idx]).max(axis=1) / load_scale if len(self.idx) else np.zeros(len(q))
         return dict(force=force, jac=jac, potential=potential, residual=residual, norm=norm, q=q)
+
+
+def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """A starting displacement of the right size: every contact closed with one common approach δ.
+
+    With all contacts closed, the tangent stiffness is Σ_rows n c δ^(n−1) Σ g gᵀ; solve K(δ) q = F on
+    the free DOFs and update δ to the largest contact approach q produces (a few fixed-point sweeps
+    of a 5×5 system). Clearances and crowning are ignored: this only sizes the first Newton step.
+    """
+    idx = problem.idx
+    if len(idx) == 0:
+        return q
+    s = problem.scale
+    mats = [(k.start_matrix * s[:, None] * s[None, :], k.start_exponent) for k in problem.kernels]
+    f = (load * s)[:, idx]
+    delta = np.full(load.shape[0], 1e-4 * problem.max_step / 0.02)  # 1e-4 D: a typical approach
+    qt = np.zeros_like(f)
+    for _ in range(6):
+        k = sum(n * delta[:, None, None] ** (n - 1) * m[idx][:, idx] for m, n in mats)
+        k = k + 1e-12 * np.abs(k).max(axis=(1, 2))[:, None, None] * np.eye(len(idx))
+        qt = np.linalg.solve(k, f[..., None])[..., 0]
+        approach = np.abs(qt).max(axis=1)
+        delta = np.sqrt(delta * np.maximum(approach, 1e-3 * delta))
+    out = q.copy()
+    out[:, idx] = q[:, idx] + qt * s[idx]
+    return out
 
 
 def _newton(problem: _Problem, q, load, active, iterations):
@@ -264,6 +297,9 @@ def _newton(problem: _Problem, q, load, active, iterations):
                 trial_state["norm"] < 0.5 * st["norm"]
             )
             accept = pending & ok
+            if accept.all():  # the usual Newton step: nothing to mix
+                new_q, trial = cand, trial_state
+                break
             new_q = np.where(accept[:, None], cand, new_q)
             trial = _merge(trial, trial_state, accept)
             pending &= ~ok
@@ -279,6 +315,10 @@ def _newton(problem: _Problem, q, load, active, iterations):
 
 def _merge(old: dict, new: dict, mask: np.ndarray) -> dict:
     """Take ``new`` where ``mask`` (per case), ``old`` elsewhere."""
+    if mask.all():
+        return new
+    if not mask.any():
+        return old
     out = {}
     for key, a in old.items():
         m = mask.reshape((-1,) + (1,) * (a.ndim - 1))
@@ -335,7 +375,8 @@ def solve(
 
     iterations = np.zeros(n_cases, int)
     everyone = np.ones(n_cases, bool)
-    q, converged, st, diverged = _newton(problem, q0, load, everyone, iterations)
+    start = q0 if displacement is not None else _starting_point(problem, load, q0)
+    q, converged, st, diverged = _newton(problem, start, load, everyone, iterations)
     if options.continuation_steps and not converged.all():
         # Load continuation from the unloaded start for the failed cases.
         retry = ~converged
@@ -352,7 +393,6 @@ def solve(
     reasons = [None] * n_cases
     for c in np.flatnonzero(~converged):
         reasons[c] = _diagnose(problem, load[c], bool(diverged[c]), st["norm"][c])
-    states = [k.state(q) for k in problem.kernels]
     reaction = load.copy()
     reaction[:, ~free] = -st["force"][:, ~free]
     result = QuasiStaticResult(
@@ -363,7 +403,6 @@ def solve(
         iterations=iterations,
         residual_norm=st["norm"],
         reason=reasons,
-        rows=states,
         stiffness=-st["jac"],
         free=free,
         references=tuple(model.references),
@@ -376,14 +415,7 @@ def solve(
 
 def _directions(problem: _Problem) -> np.ndarray:
     """Contact directions (M, 5) at the unloaded geometry: columns a contact can push on."""
-    rows = []
-    for k in problem.kernels:
-        if hasattr(k, "G"):
-            rows.append(k.G[0])
-        else:  # ball: B_jᵀ n₀ with n₀ the free contact direction
-            n0 = k.s0 / np.linalg.norm(k.s0, axis=-1, keepdims=True)
-            rows.append(np.einsum("...zij,...zi->...zj", k.B, np.broadcast_to(n0, k.B.shape[:-1]))[0])
-    return np.concatenate(rows, axis=0)
+    return np.concatenate([k.G[0] if hasattr(k, "G") else k.directions[0] for k in problem.kernels], axis=0)
 
 
 def _check_directions(problem: _Problem, load: np.ndarray) -> None:

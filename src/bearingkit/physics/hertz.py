@@ -291,13 +291,26 @@ def _f_of_log_kappa(u):
     return f, dfdm * 2.0 * p
 
 
+_START_TABLE: list = []
+
+
+def _start_table():
+    """F(ρ) on a dense grid of u = ln κ (built once): interpolating it starts Newton within ~1e-6."""
+    if not _START_TABLE:
+        u = np.concatenate(
+            [np.linspace(0.0, 0.05, 200), np.linspace(0.05, np.log(MAX_ELLIPTICITY), 3000)[1:]]
+        )
+        _START_TABLE.extend([_f_of_log_kappa(u)[0], u])
+    return _START_TABLE
+
+
 def _exact_kappa(curvature_difference):
     """Solve F(rho) = 1 - 2(K - E)/((kappa^2 - 1) E) for kappa (vectorised safeguarded Newton)."""
     target = np.asarray(curvature_difference, float)
     lo = np.zeros_like(target)
     hi = np.full_like(target, np.log(MAX_ELLIPTICITY))
-    kappa_hb = _hb_kappa(target)
-    u = np.clip(np.log(kappa_hb), lo, hi)
+    f_grid, u_grid = _start_table()
+    u = np.clip(np.interp(target, f_grid, u_grid), lo, hi)
     for _ in range(_ELLIPTICITY_MAX_ITER):
         f, dfdu = _f_of_log_kappa(u)
         resid = f - target

@@ -148,12 +148,25 @@ class BallKernel:
             sr, fr = hertz.ball_raceway_curvature(d, dm, np.abs(alpha0), f * d, side)
             k.append(hertz.point_stiffness(sr, fr, self.e_reduced, method=row.hertz_method))
         self.k_n = hertz.series_stiffness(k[0], k[1], exponent=POINT_EXPONENT)  # (C|1, 1)
+        # Flattened forms so the hot path is matrix products: u = q B̃ᵀ, f = f_local B̃, J = k_local BB.
+        z_el = row.n_elements
+        self.Bf = self.B.reshape(self.B.shape[0], z_el * 2, 5)
+        self.BB = np.einsum("...zai,...zbj->...zabij", self.B, self.B).reshape(self.B.shape[0], z_el * 4, 25)
+        n0 = np.broadcast_to(self.s0 / np.linalg.norm(self.s0, axis=-1, keepdims=True), self.B.shape[:-1])
+        self.directions = np.einsum("...zij,...zi->...zj", self.B, n0)  # (C|1, Z, 5) contact normals
+        g0 = self.directions[0]
+        k0 = np.broadcast_to(self.k_n, self.directions.shape[:2])[0]
+        self.start_matrix = np.einsum("z,zi,zj->ij", k0, g0, g0)
+        self.start_exponent = POINT_EXPONENT
         self.pitch_radius = dm / 2
         self.char_length = float(np.max(dm) / 2)
         self.deflection_scale = float(np.min(d))
 
     def _geometry(self, q):
-        u = np.einsum("...zij,...zj->...zi", self.B, q[:, None, :])  # (C, Z, 2) local displacement
+        if self.Bf.shape[0] == 1:
+            u = (q @ self.Bf[0].T).reshape(q.shape[0], -1, 2)  # (C, Z, 2) local displacement
+        else:
+            u = np.einsum("czij,cj->czi", self.B, q)
         s = self.s0 + u
         a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
         return u, s, a
@@ -167,12 +180,17 @@ class BallKernel:
         stiff = 1.5 * self.k_n * root  # dQ/dδ
         n = s / a[..., None]
         f_local = -load[..., None] * n  # on the inner ring, towards the outer groove centre
-        force = np.einsum("...zij,...zi->...j", self.B, f_local)
         # d f_local / d u = −[Q' n nᵀ + (Q/A)(I − n nᵀ)]
         nn = n[..., :, None] * n[..., None, :]
         eye = np.eye(2)
         k_local = -(stiff[..., None, None] * nn + (load / a)[..., None, None] * (eye - nn))
-        jac = np.einsum("...zai,...zab,...zbj->...ij", self.B, k_local, self.B)
+        c = q.shape[0]
+        if self.Bf.shape[0] == 1:
+            force = f_local.reshape(c, -1) @ self.Bf[0]
+            jac = (k_local.reshape(c, -1) @ self.BB[0]).reshape(c, 5, 5)
+        else:
+            force = np.einsum("czi,czij->cj", f_local.reshape(c, -1, 1)[..., 0].reshape(c, -1, 2), self.B)
+            jac = np.einsum("cm,cmk->ck", k_local.reshape(c, -1), self.BB).reshape(c, 5, 5)
         energy = (self.k_n * delta * delta * root / 2.5).sum(axis=-1)
         return RowResponse(force, jac, energy)
 

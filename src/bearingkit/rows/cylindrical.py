@@ -39,6 +39,12 @@ from bearingkit.rows.base import (
 LINE_EXPONENT = 10.0 / 9.0
 #: Allowed row orientations: radial, thrust pushing up (+z), thrust pushing down (−z).
 ORIENTATIONS = {"radial": 0, "thrust_up": 1, "thrust_down": -1}
+#: How the two raceway contacts of a slice share the total approach δ between the raceways.
+#: "series": two line contacts in series, δ = δ_inner + δ_outer (physical; ISO/TS 16281 c_L is this).
+#: "total_approach": the one-contact law applied to the total approach — Tian et al. 2025 eqs. (3)–(5)
+#: read literally (q = w A^-1.11 l^-0.11 δ^1.11 with δ the raceway-to-raceway approach); stiffer by
+#: 2^(10/9) ≈ 2.16 in load at equal approach. Offered so the seed-000 model can be reproduced as written.
+PAIRINGS = ("series", "total_approach")
 
 
 @dataclass(frozen=True)
@@ -66,6 +72,8 @@ class CylindricalRow:
         Crowning profile (:mod:`bearingkit.physics.profiles`); None = straight roller.
     line_law : str
         ``"kunert"`` or ``"iso16281"``.
+    pairing : str
+        ``"series"`` (default) or ``"total_approach"``, see :data:`PAIRINGS`.
     axial_position : float [m]
         Axial position of the roller middles (radial row) or of the contact plane (thrust row).
     azimuth_phase : float [rad]
@@ -85,6 +93,7 @@ class CylindricalRow:
     n_slices: int = 20
     profile: object | None = None
     line_law: str = "kunert"
+    pairing: str = "series"
     axial_position: float = 0.0
     azimuth_phase: float = 0.0
     e_reduced: float | None = None
@@ -100,6 +109,7 @@ class CylindricalRow:
         from bearingkit.physics.hertz import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
+        checks.one_of("pairing", self.pairing, PAIRINGS)
         if self.orientation != "radial":
             inner = np.asarray(self.pitch_diameter) / 2 - np.asarray(self.effective_length) / 2
             if np.any(inner <= 0):
@@ -152,10 +162,18 @@ class CylindricalKernel:
         )
         # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
         k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
-        k_pair = hertz.series_stiffness(k_contact, k_contact, exponent=LINE_EXPONENT)
+        if row.pairing == "series":
+            k_pair = hertz.series_stiffness(k_contact, k_contact, exponent=LINE_EXPONENT)
+        else:
+            k_pair = k_contact
         self.c_s = np.asarray(k_pair * np.asarray(width) / length, dtype=float).reshape(-1, 1)  # (C|1, 1)
         # G_m G_mᵀ flattened, so the Jacobian is one matrix product.
         self.GG = (self.G[..., :, None] * self.G[..., None, :]).reshape(self.G.shape[0], -1, 25)
+        # For the solver's starting point: Σ c_s g gᵀ over all slices, as if every slice were in contact.
+        self.start_matrix = np.einsum("cm,cmk->ck", np.broadcast_to(self.c_s, self.G.shape[:2]), self.GG)[
+            0
+        ].reshape(5, 5)
+        self.start_exponent = LINE_EXPONENT
         self.char_length = float(np.max(r) + np.max(length) / 2)
         self.deflection_scale = float(np.min(row.element_diameter))
         self.shape = (z_el, n_s)
