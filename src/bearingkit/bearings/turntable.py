@@ -12,7 +12,12 @@ Geometry the paper does not give, and the values chosen (stated in docs and the 
   ball grooves;
 - slice count: ``DEFAULT_SLICES``;
 - crowning dimensions: those of :mod:`bearingkit.physics.profiles` defaults;
-- material: GCr15 on GCr15.
+- material: GCr15 on GCr15;
+- roller slice law: Kunert, applied as the paper writes it (``pairing="total_approach"``: the one-contact
+  law on the raceway-to-raceway approach, eqs. 3–5). ``pairing="series"`` puts the two raceway
+  contacts in series (physically softer by 2^(10/9) in load at equal approach); the §6.1.1 mechanism
+  "at roller clearance −2 µm both axial roller rows carry load" needs the paper's reading (or straight
+  rollers) — see docs/seed000.md.
 """
 
 from __future__ import annotations
@@ -32,6 +37,9 @@ from bearingkit.rows.cylindrical import CylindricalRow
 AXIAL_ROW_OFFSET = 0.012
 #: Slices per roller; the issue asks for ≥ 20 (Tian et al. do not state n).
 DEFAULT_SLICES = 20
+#: How the roller slice law is applied in the seed-000 bearings: as Tian et al. 2025 write it
+#: (eqs. 3–5, the one-contact Kunert law on the total approach). See CylindricalRow.pairing.
+SEED000_PAIRING = "total_approach"
 
 
 @dataclass(frozen=True)
@@ -61,6 +69,7 @@ class CompositeTurntableGeometry:
     clearance_radial: float = 0.0
     crowning: str = "a"  # seed-000 letter a–e or a profile registry name
     n_slices: int = DEFAULT_SLICES
+    pairing: str = SEED000_PAIRING
 
     def __post_init__(self):
         checks.positive("bore", self.bore, "m")
@@ -119,6 +128,7 @@ def composite_turntable(
                 clearance=g.clearance_axial_roller,
                 n_slices=g.n_slices,
                 profile=axial_profile,
+                pairing=g.pairing,
                 axial_position=z,
                 e_reduced=e_red,
                 name=f"roller_{side}",
@@ -149,6 +159,7 @@ def composite_turntable(
             clearance=g.clearance_radial,
             n_slices=g.n_slices,
             profile=radial_profile,
+            pairing=g.pairing,
             e_reduced=e_red,
             name="roller_radial",
         )
@@ -183,6 +194,7 @@ class YRTGeometry:
     clearance_radial: float = 0.0
     crowning: str = "a"
     n_slices: int = DEFAULT_SLICES
+    pairing: str = SEED000_PAIRING
 
 
 def yrt_turntable(geometry: YRTGeometry | None = None, *, material=None, **overrides) -> BearingModel:
@@ -203,6 +215,7 @@ def yrt_turntable(geometry: YRTGeometry | None = None, *, material=None, **overr
             clearance=g.clearance_axial_roller,
             n_slices=g.n_slices,
             profile=axial_profile,
+            pairing=g.pairing,
             axial_position=z,
             e_reduced=e_red,
             name=f"roller_{side}",
@@ -222,6 +235,7 @@ def yrt_turntable(geometry: YRTGeometry | None = None, *, material=None, **overr
             clearance=g.clearance_radial,
             n_slices=g.n_slices,
             profile=radial_profile,
+            pairing=g.pairing,
             e_reduced=e_red,
             name="roller_radial",
         )

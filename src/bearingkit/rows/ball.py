@@ -57,6 +57,10 @@ class BallRow:
         Reduced modulus E′ of the ball/raceway pair (steel–steel by default, from the materials).
     hertz_method : str
         ``"exact"`` or ``"hamrock_brewe"`` (see :mod:`bearingkit.physics.hertz`).
+    one_sided : bool or None
+        The grooves have a shoulder on the loaded side only (angular contact and thrust rows): a
+        contact whose operating angle changes sign would run over the relieved shoulder, so it does
+        not exist. Default: True when α₀ ≠ 0, False for a radial (deep groove) row.
     name : str
         The row's name in its bearing.
 
@@ -76,6 +80,7 @@ class BallRow:
     azimuth_phase: float = 0.0
     e_reduced: float | None = None
     hertz_method: str = "exact"
+    one_sided: bool | None = None
     name: str = "ball"
 
     def __post_init__(self):
@@ -152,12 +157,15 @@ class BallKernel:
         z_el = row.n_elements
         self.Bf = self.B.reshape(self.B.shape[0], z_el * 2, 5)
         self.BB = np.einsum("...zai,...zbj->...zabij", self.B, self.B).reshape(self.B.shape[0], z_el * 4, 25)
-        n0 = np.broadcast_to(self.s0 / np.linalg.norm(self.s0, axis=-1, keepdims=True), self.B.shape[:-1])
+        n0 = self.s0 / np.linalg.norm(self.s0, axis=-1, keepdims=True)
+        n0 = np.broadcast_to(n0, np.broadcast_shapes(n0.shape, self.B.shape[:-1]))
         self.directions = np.einsum("...zij,...zi->...zj", self.B, n0)  # (C|1, Z, 5) contact normals
         g0 = self.directions[0]
         k0 = np.broadcast_to(self.k_n, self.directions.shape[:2])[0]
         self.start_matrix = np.einsum("z,zi,zj->ij", k0, g0, g0)
         self.start_exponent = POINT_EXPONENT
+        one_sided = row.one_sided if row.one_sided is not None else bool(np.any(alpha0 != 0.0))
+        self.side = np.sign(alpha0) if one_sided else np.zeros_like(alpha0)  # (C|1, 1): 0 = both sides
         self.pitch_radius = dm / 2
         self.char_length = float(np.max(dm) / 2)
         self.deflection_scale = float(np.min(d))
@@ -171,10 +179,15 @@ class BallKernel:
         a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
         return u, s, a
 
+    def _approach(self, s, a):
+        """Contact approach δ ≥ 0; zero where a one-sided groove would be loaded on its relieved side."""
+        delta = np.maximum(a - self.a0, 0.0)
+        return np.where(self.side * s[..., 1] < 0.0, 0.0, delta)
+
     def response(self, q: np.ndarray) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5)."""
         _, s, a = self._geometry(q)
-        delta = np.maximum(a - self.a0, 0.0)
+        delta = self._approach(s, a)
         root = np.sqrt(delta)
         load = self.k_n * delta * root  # K δ^1.5
         stiff = 1.5 * self.k_n * root  # dQ/dδ
@@ -200,7 +213,7 @@ class BallKernel:
 
         row = self.row
         _, s, a = self._geometry(q)
-        delta = np.maximum(a - self.a0, 0.0)
+        delta = self._approach(s, a)
         load = self.k_n * delta**POINT_EXPONENT
         alpha = np.arctan2(s[..., 1], s[..., 0])
         d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1)

@@ -1,0 +1,226 @@
+"""Quasi-static solver: equilibrium, symmetry, monotonicity, planar vs 5-DOF, batching, bad input."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.bearings.common import eccentric_axial_load
+from bearingkit.bearings.standard import (
+    angular_contact_ball,
+    angular_contact_pair,
+    cylindrical_roller,
+    deep_groove_ball,
+    thrust_ball,
+)
+from bearingkit.bearings.turntable import composite_turntable
+from bearingkit.errors import ConvergenceError, InputError
+
+
+@pytest.fixture(scope="module")
+def composite():
+    return composite_turntable(clearance_axial_roller=-1e-6, clearance_axial_ball=-5e-6)
+
+
+def _residual(result):
+    """Max |F + Σ row forces| over the free DOFs, relative to the load scale (independent re-evaluation)."""
+    force = sum(k.response(result.displacement).force for k in result.model.kernels)
+    scale = np.array([1, 1, 1, 1 / 0.09, 1 / 0.09])
+    r = (result.load + force)[:, result.free] * scale[result.free]
+    ref = np.maximum(np.abs(result.load * scale).max(axis=1), 1.0)
+    return np.abs(r).max(axis=1) / ref
+
+
+def test_equilibrium_residual_combined_load(composite):
+    loads = eccentric_axial_load(3000.0, np.linspace(0.0, 0.6, 7), radial_load=3000.0)
+    res = solve(composite, loads)
+    assert res.converged.all()
+    assert (_residual(res) <= 1e-9).all()
+    # The contact forces balance the load: row loads add up to the external load.
+    total = sum(res.row_load(r.name) for r in composite.rows)
+    np.testing.assert_allclose(total, loads, atol=1e-6 * np.abs(loads).max())
+
+
+def test_radial_load_symmetric_about_its_line():
+    model = deep_groove_ball(
+        n_elements=12, element_diameter=0.0127, pitch_diameter=0.065, clearance_radial=10e-6
+    )
+    res = solve(model, load_vector(F_x=5000.0), free=[True, True, False, False, False])
+    loads = res.rows[0].load[0]
+    # element j at ψ_j and element Z−j at −ψ_j carry equal loads; u_y stays zero
+    np.testing.assert_allclose(loads[1:], loads[1:][::-1], rtol=1e-9, atol=1e-9)
+    assert abs(res.displacement[0, 1]) < 1e-12
+    assert loads.argmax() == 0
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.floats(100.0, 20000.0), st.floats(1.05, 3.0))
+def test_load_deflection_monotone(force, factor):
+    model = angular_contact_ball(
+        n_elements=14, element_diameter=0.0119, pitch_diameter=0.0655, contact_angle=np.deg2rad(40)
+    )
+    res = solve(model, load_vector(F_z=[force, factor * force]))
+    assert res.converged.all()
+    uz = res.displacement[:, 2]
+    assert uz[1] > uz[0] > 0
+    assert res.rows[0].max_load[1] > res.rows[0].max_load[0]
+
+
+def test_planar_model_equals_five_dof(composite):
+    """Seed 000's planar (δ_a, δ_r, θ) model is the 5-DOF model with u_y, θ_x fixed at 0."""
+    loads = eccentric_axial_load(3000.0, [0.0, 0.2, 0.5], radial_load=3000.0)
+    full = solve(composite, loads)
+    planar = solve(composite, loads, free=[True, False, True, False, True])
+    np.testing.assert_allclose(planar.displacement, full.displacement, atol=1e-13, rtol=1e-8)
+    for a, b in zip(planar.rows, full.rows, strict=True):
+        np.testing.assert_allclose(a.load, b.load, rtol=1e-7, atol=1e-6)
+
+
+def test_batch_equals_single_solves(composite):
+    loads = load_vector(F_z=[1000.0, 5000.0, 8000.0], F_x=[0.0, 2000.0, 500.0], M_y=[0.0, -900.0, -300.0])
+    batch = solve(composite, loads)
+    for c in range(3):
+        one = solve(composite, loads[c])
+        np.testing.assert_allclose(one.displacement[0], batch.displacement[c], rtol=1e-8, atol=1e-14)
+
+
+def test_displacement_control_reports_reactions(composite):
+    q = np.array([1e-6, 0.0, 2e-6, 0.0, -1e-5])
+    res = solve(composite, np.zeros(5), free=[False] * 5, displacement=q)
+    force = sum(k.response(q[None]).force for k in composite.kernels)
+    np.testing.assert_allclose(res.load[0], -force[0])
+    # and solving with that load recovers the displacement
+    back = solve(composite, res.load[0])
+    np.testing.assert_allclose(back.displacement[0], q, atol=1e-12)
+
+
+def test_stiffness_matches_finite_difference_of_solution():
+    model = angular_contact_pair(
+        arrangement="DB",
+        n_elements=15,
+        element_diameter=0.0119,
+        pitch_diameter=0.0655,
+        contact_angle=np.deg2rad(25),
+        row_spacing=0.02,
+        axial_clearance=-10e-6,
+    )
+    f0 = load_vector(F_x=2000.0, F_z=1000.0, M_y=20.0)
+    df = 1.0
+    a = solve(model, f0)
+    b = solve(model, f0 + np.array([0, 0, df, 0, 0]))
+    compliance = np.linalg.inv(a.stiffness[0])
+    np.testing.assert_allclose(
+        b.displacement[0] - a.displacement[0], compliance[:, 2] * df, rtol=2e-3, atol=1e-13
+    )
+
+
+def test_preloaded_pair_carries_no_net_load_at_zero_load():
+    model = angular_contact_pair(
+        arrangement="DF",
+        n_elements=15,
+        element_diameter=0.0119,
+        pitch_diameter=0.0655,
+        contact_angle=np.deg2rad(25),
+        row_spacing=0.02,
+        axial_clearance=-10e-6,
+    )
+    res = solve(model, np.zeros(5))
+    assert res.converged.all()
+    a, b = (res.rows[0].load[0], res.rows[1].load[0])
+    assert a.min() > 0 and b.min() > 0  # preload: every ball loaded
+    np.testing.assert_allclose(a, b, rtol=1e-9)
+
+
+def test_tandem_pair_shares_axial_load_equally():
+    model = angular_contact_pair(
+        arrangement="DT",
+        n_elements=15,
+        element_diameter=0.0119,
+        pitch_diameter=0.0655,
+        contact_angle=np.deg2rad(25),
+        row_spacing=0.02,
+    )
+    res = solve(model, load_vector(F_z=4000.0), free=[False, False, True, False, False])
+    np.testing.assert_allclose(res.row_load("balls_A")[0, 2], 2000.0, rtol=1e-9)
+
+
+def test_uncarriable_load_on_unreached_dof_is_refused_before_solving():
+    model = thrust_ball(n_elements=18, element_diameter=0.01, pitch_diameter=0.08)
+    with pytest.raises(InputError, match="F_x"):
+        solve(model, load_vector(F_x=100.0, F_z=1000.0))
+
+
+def test_uncarriable_direction_reports_reason():
+    model = angular_contact_ball(
+        n_elements=14, element_diameter=0.0119, pitch_diameter=0.0655, contact_angle=np.deg2rad(40)
+    )
+    res = solve(model, load_vector(F_z=[1000.0, -1000.0]), options=SolverOptions(max_iterations=30))
+    assert res.converged[0] and not res.converged[1]
+    assert "cannot be carried" in res.reason[1]
+    assert np.isfinite(res.displacement).all()
+    with pytest.raises(ConvergenceError) as err:
+        solve(model, load_vector(F_z=-1000.0), raise_on_failure=True)
+    assert err.value.result is not None and not err.value.result.converged[0]
+
+
+def test_large_clearance_is_closed():
+    model = cylindrical_roller(
+        n_elements=16,
+        element_diameter=0.011,
+        effective_length=0.011,
+        pitch_diameter=0.0655,
+        clearance_radial=60e-6,
+    )
+    res = solve(model, load_vector(F_x=[100.0, 30000.0]), free=[True, True, False, False, False])
+    assert res.converged.all()
+    assert res.displacement[0, 0] > 30e-6  # the ring first crosses half the clearance
+    assert res.rows[0].loaded_count[0] < res.rows[0].loaded_count[1]
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        (dict(conformity_inner=0.5), "conformity_inner"),
+        (dict(n_elements=0), "n_elements"),
+        (dict(element_diameter=-0.01), "element_diameter"),
+        (dict(n_elements=40), "n_elements"),  # 40 balls of 12.7 mm do not fit on a 65 mm circle
+    ],
+)
+def test_bad_geometry_is_refused(kwargs, field):
+    base = dict(n_elements=9, element_diameter=0.0127, pitch_diameter=0.065)
+    with pytest.raises(InputError, match=field):
+        deep_groove_ball(**{**base, **kwargs})
+
+
+def test_model_needs_rows_with_unique_names():
+    with pytest.raises(InputError, match="rows"):
+        BearingModel(())
+    m = deep_groove_ball(n_elements=9, element_diameter=0.0127, pitch_diameter=0.065)
+    with pytest.raises(InputError, match="duplicate"):
+        BearingModel((m.rows[0], m.rows[0]))
+
+
+def test_non_finite_load_is_refused(composite):
+    with pytest.raises(InputError, match="load"):
+        solve(composite, load_vector(F_z=np.nan))
+
+
+def test_result_exports(composite):
+    res = solve(composite, eccentric_axial_load(3000.0, 0.2, radial_load=3000.0))
+    d = res.to_dict(0)
+    assert d["converged"] and set(d["displacement"]) == {
+        "u_x_m",
+        "u_y_m",
+        "u_z_m",
+        "theta_x_rad",
+        "theta_y_rad",
+    }
+    row = {r["name"]: r for r in d["rows"]}["ball_upper"]
+    assert row["loaded_count"] == int(np.count_nonzero(res.row("ball_upper").load[0]))
+    assert row["max_pressure_Pa"] > 1e8
+    df = res.to_pandas()
+    assert len(df) == composite.n_elements and np.isclose(
+        df["load_N"].sum(), sum(r.load.sum() for r in res.rows)
+    )
