@@ -20,6 +20,9 @@ from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable
 
+#: Seed 000 §6.1.1 ball clearance range 0 … −6 µm [m] and §6.1.3 eccentricities 0 … 0.6 m [m].
+BALL_CLEARANCES = tuple(np.linspace(0.0, -6e-6, 7))
+ECCENTRICITIES = tuple(np.linspace(0.0, 0.6, 7))
 ROWS = ("roller_upper", "ball_upper", "roller_lower", "ball_lower", "roller_radial")
 
 
@@ -41,7 +44,7 @@ def _row_table(result, extra: dict) -> dict:
 
 def clearance_map(
     roller_clearances=(0.0, -1e-6, -2e-6),
-    ball_clearances=tuple(np.linspace(0.0, -6e-6, 7)),
+    ball_clearances=BALL_CLEARANCES,
     axial_load: float = 5000.0,
     **geometry,
 ):
@@ -70,7 +73,7 @@ def clearance_map(
 
 
 def eccentricity_sweep(
-    eccentricities=tuple(np.linspace(0.0, 0.6, 7)),
+    eccentricities=ECCENTRICITIES,
     axial_load: float = 3000.0,
     radial_load: float = 3000.0,
     clearance_axial_roller: float = -1e-6,
