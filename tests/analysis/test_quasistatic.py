@@ -224,3 +224,43 @@ def test_result_exports(composite):
     assert len(df) == composite.n_elements and np.isclose(
         df["load_N"].sum(), sum(r.load.sum() for r in res.rows)
     )
+
+
+def test_raceway_shift_moves_the_solution_rigidly():
+    from bearingkit.rows.base import RacewayOffset
+
+    model = angular_contact_pair(
+        arrangement="DB",
+        n_elements=15,
+        element_diameter=0.0119,
+        pitch_diameter=0.0655,
+        contact_angle=np.deg2rad(25),
+        row_spacing=0.02,
+        axial_clearance=-5e-6,
+    )
+    load = load_vector(F_x=2000.0, F_z=800.0)
+    shift = np.array([[3e-6, -1e-6, 2e-6, 1e-5, -2e-5]])
+    base = solve(model, load)
+    moved = solve(model, load, raceway_offsets={r.name: RacewayOffset(shift=shift) for r in model.rows})
+    np.testing.assert_allclose(moved.displacement, base.displacement + shift, atol=1e-13)
+    np.testing.assert_allclose(moved.rows[0].load, base.rows[0].load, rtol=1e-7)
+
+
+def test_uniform_radial_raceway_deflection_acts_as_clearance():
+    from bearingkit.rows.base import RacewayOffset
+
+    kw = dict(n_elements=16, element_diameter=0.011, effective_length=0.011, pitch_diameter=0.0655)
+    w = 3e-6
+    flexible = cylindrical_roller(**kw)
+    offset = {"rollers": RacewayOffset(radial=np.full((1, 16), w))}
+    a = solve(
+        flexible, load_vector(F_x=5000.0), free=[True, True, False, False, False], raceway_offsets=offset
+    )
+    b = solve(
+        cylindrical_roller(**kw, clearance_radial=2 * w),
+        load_vector(F_x=5000.0),
+        free=[True, True, False, False, False],
+    )
+    np.testing.assert_allclose(a.rows[0].load, b.rows[0].load, rtol=1e-8, atol=1e-8)
+    with pytest.raises(InputError, match="not in the bearing"):
+        solve(flexible, load_vector(F_x=1.0), raceway_offsets={"nope": RacewayOffset()})

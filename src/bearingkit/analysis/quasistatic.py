@@ -104,12 +104,16 @@ class QuasiStaticResult:
     stiffness: np.ndarray
     free: np.ndarray
     references: tuple = field(default_factory=tuple)
+    offsets: list | None = field(default=None, repr=False)
     _rows: list | None = field(default=None, repr=False)
 
     @property
     def rows(self) -> list[RowState]:
         if self._rows is None:
-            self._rows = [k.state(self.displacement) for k in self.model.kernels]
+            offs = self.offsets or [None] * len(self.model.kernels)
+            self._rows = [
+                k.state(self.displacement, o) for k, o in zip(self.model.kernels, offs, strict=True)
+            ]
         return self._rows
 
     @property
@@ -163,8 +167,9 @@ class QuasiStaticResult:
 
     def row_load(self, name: str) -> np.ndarray:
         """Force and moment (C, 5) the row carries (= −contact force on the inner ring), SI."""
-        kernel = self.model.kernels[[r.name for r in self.model.rows].index(name)]
-        return -kernel.response(self.displacement).force
+        i = [r.name for r in self.model.rows].index(name)
+        offset = self.offsets[i] if self.offsets else None
+        return -self.model.kernels[i].response(self.displacement, offset).force
 
     def to_pandas(self):
         """One line per case, row and element: load, contact angle, max pressure (SI columns)."""
@@ -191,14 +196,14 @@ class QuasiStaticResult:
         return pd.concat(frames, ignore_index=True)
 
 
-def _evaluate(kernels, q):
+def _evaluate(kernels, q, offsets=None):
     """Sum of row responses: contact force (C,5), Jacobian (C,5,5), energy (C,), largest row force."""
     force = np.zeros_like(q)
     jac = np.zeros((*q.shape, N_DOF))
     energy = np.zeros(q.shape[0])
     row_max = np.zeros_like(q)
-    for k in kernels:
-        resp = k.response(q)
+    for i, k in enumerate(kernels):
+        resp = k.response(q, offsets[i]) if offsets else k.response(q)
         force += resp.force
         jac += resp.jacobian
         energy += resp.energy
@@ -209,8 +214,11 @@ def _evaluate(kernels, q):
 class _Problem:
     """The scaled equilibrium problem of a batch; holds kernels, loads and scaling."""
 
-    def __init__(self, model: BearingModel, load: np.ndarray, free: np.ndarray, options: SolverOptions):
+    def __init__(
+        self, model: BearingModel, load: np.ndarray, free: np.ndarray, options: SolverOptions, offsets=None
+    ):
         self.kernels = model.kernels
+        self.offsets = offsets
         self.length = max(k.char_length for k in self.kernels)
         self.scale = np.array([1.0, 1.0, 1.0, 1.0 / self.length, 1.0 / self.length])  # q = scale·q̃
         self.free = free
@@ -222,7 +230,7 @@ class _Problem:
         self.load = load
 
     def state(self, q, load):
-        force, jac, energy, row_max = _evaluate(self.kernels, q)
+        force, jac, energy, row_max = _evaluate(self.kernels, q, self.offsets)
         residual = load + force
         potential = energy - np.einsum("ci,ci->c", load[:, self.idx], q[:, self.idx])
         s = self.scale
@@ -334,6 +342,7 @@ def solve(
     displacement=None,
     options: SolverOptions | None = None,
     raise_on_failure: bool = False,
+    raceway_offsets: dict | None = None,
 ) -> QuasiStaticResult:
     """Solve the quasi-static equilibrium of a batch of load cases.
 
@@ -351,6 +360,9 @@ def solve(
     raise_on_failure : bool
         Raise :class:`~bearingkit.errors.ConvergenceError` (carrying the result) if any case fails;
         studies leave this False and read ``result.converged``.
+    raceway_offsets : dict of str to RacewayOffset, optional
+        Imposed outer-raceway deflections per row name (flexible rings; see
+        :mod:`bearingkit.analysis.flexible`). Rows not named are rigid.
 
     Returns
     -------
@@ -370,7 +382,8 @@ def solve(
     load = np.array(np.broadcast_to(load, q0.shape))
     checks.finite("displacement", q0, "m")
     n_cases = q0.shape[0]
-    problem = _Problem(model, load, free, options)
+    offsets = _offsets_for(model, raceway_offsets)
+    problem = _Problem(model, load, free, options, offsets)
     _check_directions(problem, load)
 
     iterations = np.zeros(n_cases, int)
@@ -406,11 +419,23 @@ def solve(
         stiffness=-st["jac"],
         free=free,
         references=tuple(model.references),
+        offsets=offsets,
     )
     if raise_on_failure and not converged.all():
         bad = int(np.flatnonzero(~converged)[0])
         raise ConvergenceError(f"case {bad} did not converge: {reasons[bad]}", result)
     return result
+
+
+def _offsets_for(model: BearingModel, raceway_offsets: dict | None):
+    """Raceway offsets as a list aligned with the model's rows (None when every ring is rigid)."""
+    if not raceway_offsets:
+        return None
+    names = [r.name for r in model.rows]
+    unknown = set(raceway_offsets) - set(names)
+    if unknown:
+        raise InputError(f"raceway_offsets names rows {sorted(unknown)} not in the bearing; rows are {names}")
+    return [raceway_offsets.get(n) for n in names]
 
 
 def _directions(problem: _Problem) -> np.ndarray:

@@ -21,7 +21,16 @@ from typing import ClassVar
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.rows.base import RowResponse, RowState, axial_row, azimuths, radial_row, validate_common
+from bearingkit.rows.base import (
+    RacewayOffset,
+    RowResponse,
+    RowState,
+    axial_row,
+    azimuths,
+    radial_row,
+    relative_displacement,
+    validate_common,
+)
 
 #: Hertz point-contact load exponent (Q = K δ^n), Hertz 1881 / Harris & Kotzalas 2007 eq. 6.43.
 POINT_EXPONENT = 1.5
@@ -170,12 +179,15 @@ class BallKernel:
         self.char_length = float(np.max(dm) / 2)
         self.deflection_scale = float(np.min(d))
 
-    def _geometry(self, q):
+    def _geometry(self, q, offset: RacewayOffset | None = None):
+        q = relative_displacement(q, offset)
         if self.Bf.shape[0] == 1:
             u = (q @ self.Bf[0].T).reshape(q.shape[0], -1, 2)  # (C, Z, 2) local displacement
         else:
             u = np.einsum("czij,cj->czi", self.B, q)
         s = self.s0 + u
+        if offset is not None and offset.radial is not None:  # outer groove centre moves outward
+            s = s - np.stack([offset.radial, np.zeros_like(offset.radial)], axis=-1)
         a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
         return u, s, a
 
@@ -184,9 +196,9 @@ class BallKernel:
         delta = np.maximum(a - self.a0, 0.0)
         return np.where(self.side * s[..., 1] < 0.0, 0.0, delta)
 
-    def response(self, q: np.ndarray) -> RowResponse:
-        """Generalised force, Jacobian and energy for displacements q (C, 5)."""
-        _, s, a = self._geometry(q)
+    def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
+        """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""
+        _, s, a = self._geometry(q, offset)
         delta = self._approach(s, a)
         root = np.sqrt(delta)
         load = self.k_n * delta * root  # K δ^1.5
@@ -207,12 +219,12 @@ class BallKernel:
         energy = (self.k_n * delta * delta * root / 2.5).sum(axis=-1)
         return RowResponse(force, jac, energy)
 
-    def state(self, q: np.ndarray) -> RowState:
+    def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-ball results at displacements q (C, 5): loads, operating contact angles, pressures."""
         from bearingkit.physics import hertz
 
         row = self.row
-        _, s, a = self._geometry(q)
+        _, s, a = self._geometry(q, offset)
         delta = self._approach(s, a)
         load = self.k_n * delta**POINT_EXPONENT
         alpha = np.arctan2(s[..., 1], s[..., 0])

@@ -56,6 +56,31 @@ def tilt_row(psi):
     return np.stack([zeros, zeros, zeros, s, -c], axis=-1)
 
 
+@dataclass(frozen=True)
+class RacewayOffset:
+    """Deflection of a row's outer raceway, imposed on the contact geometry (flexible rings).
+
+    Attributes
+    ----------
+    shift : ndarray (C, 5) or None [m, m, m, rad, rad]
+        Rigid-body displacement of the outer raceway at this row (e.g. the outer ring's beam
+        deflection and end rotation between housing supports); the contacts see q − shift.
+    radial : ndarray (C, Z) or None [m]
+        Outward radial deflection of the outer raceway at each element (thin-ring bending); it
+        opens the radial gap, reducing the element's approach by its radial component.
+    """
+
+    shift: np.ndarray | None = None
+    radial: np.ndarray | None = None
+
+
+def relative_displacement(q: np.ndarray, offset: RacewayOffset | None) -> np.ndarray:
+    """q − shift: the inner ring's displacement relative to the (moved) outer raceway of a row."""
+    if offset is None or offset.shift is None:
+        return q
+    return q - offset.shift
+
+
 @dataclass
 class RowResponse:
     """The response of one row to a batch of inner-ring displacements (internal, per iteration).

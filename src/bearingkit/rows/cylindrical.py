@@ -26,11 +26,13 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.rows.base import (
+    RacewayOffset,
     RowResponse,
     RowState,
     axial_row,
     azimuths,
     radial_row,
+    relative_displacement,
     tilt_row,
     validate_common,
 )
@@ -178,14 +180,20 @@ class CylindricalKernel:
         self.deflection_scale = float(np.min(row.element_diameter))
         self.shape = (z_el, n_s)
 
-    def _delta(self, q):
+    def _delta(self, q, offset: RacewayOffset | None = None):
+        q = relative_displacement(q, offset)
         if self.G.shape[0] == 1:
-            return q @ self.G[0].T + self.delta0
-        return np.einsum("cmd,cd->cm", self.G, q) + self.delta0
+            delta = q @ self.G[0].T + self.delta0
+        else:
+            delta = np.einsum("cmd,cd->cm", self.G, q) + self.delta0
+        if offset is not None and offset.radial is not None and self.row.direction == 0:
+            # an outward raceway deflection opens every slice of that roller (radial rows only)
+            delta = delta - np.repeat(offset.radial, self.shape[1], axis=-1)
+        return delta
 
-    def response(self, q: np.ndarray) -> RowResponse:
-        """Generalised force, Jacobian and energy for displacements q (C, 5)."""
-        delta = np.maximum(self._delta(q), 0.0)
+    def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
+        """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""
+        delta = np.maximum(self._delta(q, offset), 0.0)
         t = delta ** (1.0 / 9.0)
         load = self.c_s * delta * t  # c_s δ^(10/9)
         stiff = (10.0 / 9.0) * self.c_s * t
@@ -198,13 +206,13 @@ class CylindricalKernel:
         energy = (load * delta).sum(axis=-1) / (1.0 + LINE_EXPONENT)
         return RowResponse(force, jac, energy)
 
-    def state(self, q: np.ndarray) -> RowState:
+    def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller and per-slice results at displacements q (C, 5)."""
         from bearingkit.physics import hertz
 
         row = self.row
         z_el, n_s = self.shape
-        delta = np.maximum(self._delta(q), 0.0).reshape(-1, z_el, n_s)
+        delta = np.maximum(self._delta(q, offset), 0.0).reshape(-1, z_el, n_s)
         c_s = self.c_s[..., None]
         q_slice = c_s * delta**LINE_EXPONENT
         load = q_slice.sum(axis=-1)
