@@ -25,6 +25,12 @@ REFERENCES: dict[str, str] = {
     "Flächenpressungsverteilung über einer rechteckigen Druckfläche. Forsch. Ing.-Wes. 27:165-174.",
     "palmgren1959": "Palmgren A. (1959) Ball and Roller Bearing Engineering, 3rd ed., SKF Industries.",
     "stribeck1901": "Stribeck R. (1901) Kugellager für beliebige Belastungen. Z. VDI 45:73-125.",
+    "iso_tr1281_1": "ISO/TR 1281-1:2021 Rolling bearings - Explanatory notes on ISO 281 - Part 1: Basic "
+    "dynamic load rating and basic rating life.",
+    "lundberg1947": "Lundberg G., Palmgren A. (1947) Dynamic capacity of rolling bearings. Acta Polytech. "
+    "Mech. Eng. Ser. 1(3).",
+    "smith2015": "Smith W.A., Randall R.B. (2015) Rolling element bearing diagnostics using the Case Western "
+    "Reserve University data: a benchmark study. MSSP 64-65:100-131. doi:10.1016/j.ymssp.2015.04.021",
     "lundberg1939": "Lundberg G. (1939) Elastische Berührung zweier Halbräume. "
     "Forsch. Ing.-Wes. 10(5):201-211.",
     "johns1981": "Johns P.M., Gohar R. (1981) Roller bearings under radial and eccentric loads. "
