@@ -20,6 +20,9 @@ system is well conditioned and the tolerance is one relative number: the residua
 
 from __future__ import annotations
 
+import copy
+import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -240,6 +243,14 @@ class _Problem:
         norm = np.abs(r_scaled[:, self.idx]).max(axis=1) / load_scale if len(self.idx) else np.zeros(len(q))
         return dict(force=force, jac=jac, potential=potential, residual=residual, norm=norm, q=q)
 
+    def take(self, cases: np.ndarray) -> _Problem:
+        """The same problem restricted to some cases (kernels and offsets sliced where per-case)."""
+        out = copy.copy(self)
+        out.kernels = [k.take(cases) for k in self.kernels]
+        if self.offsets:
+            out.offsets = [None if o is None else o.take(cases) for o in self.offsets]
+        return out
+
 
 def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.ndarray:
     """A starting displacement of the right size: every contact closed with one common approach δ.
@@ -268,21 +279,30 @@ def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.nd
 
 
 def _newton(problem: _Problem, q, load, active, iterations):
-    """Damped Newton on the active cases; returns q, converged, last state, diverged mask."""
+    """Damped Newton on the active cases; returns q, converged, last state, diverged mask.
+
+    Each iteration works on the cases still running only (kernels and loads restricted to them), so
+    a batch costs what its unconverged cases cost.
+    """
     opts = problem.options
     idx, s = problem.idx, problem.scale
     n = len(idx)
-    st = problem.state(q, load)
+    q = q.copy()
+    st = {k: v.copy() for k, v in problem.state(q, load).items()}
     converged = st["norm"] <= opts.rtol
     diverged = np.zeros_like(converged)
     for _ in range(opts.max_iterations):
         work = active & ~converged & ~diverged
         if not work.any():
             break
-        iterations[work] += 1
+        cases = np.flatnonzero(work)
+        iterations[cases] += 1
+        sp = problem if len(cases) == len(q) else problem.take(cases)
+        qw, lw = q[cases], load[cases]
+        stw = {k: v[cases] for k, v in st.items()}
         # Scaled gradient g̃ = −S R and Hessian H̃ = −S J S on the free DOFs.
-        g = -(st["residual"] * s)[:, idx]
-        h = -(st["jac"] * s[:, None] * s[None, :])[:, idx][:, :, idx]
+        g = -(stw["residual"] * s)[:, idx]
+        h = -(stw["jac"] * s[:, None] * s[None, :])[:, idx][:, :, idx]
         diag = np.abs(np.diagonal(h, axis1=1, axis2=2)).max(axis=1)
         # Levenberg term: negligible once contacts are closed; while none is, it turns the step into
         # a (capped) move along the load.
@@ -291,18 +311,16 @@ def _newton(problem: _Problem, q, load, active, iterations):
         big = np.abs(step).max(axis=1)
         step *= np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300))[:, None]
         slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
-        t = np.ones(q.shape[0])
-        pending = work.copy()
-        new_q = q.copy()
-        trial = st
+        t = np.ones(len(cases))
+        pending = np.ones(len(cases), bool)
+        new_q, trial = qw, stw
         for _ls in range(40):
-            cand = q.copy()
+            cand = qw.copy()
             cand[:, idx] += (t[:, None] * step) * s[idx]
-            cand = np.where(pending[:, None], cand, new_q)
-            trial_state = problem.state(cand, load)
-            slack = 1e-12 * (np.abs(st["potential"]) + 1e-30)
-            ok = (trial_state["potential"] <= st["potential"] + 1e-4 * t * slope + slack) | (
-                trial_state["norm"] < 0.5 * st["norm"]
+            trial_state = sp.state(cand, lw)
+            slack = 1e-12 * (np.abs(stw["potential"]) + 1e-30)
+            ok = (trial_state["potential"] <= stw["potential"] + 1e-4 * t * slope + slack) | (
+                trial_state["norm"] < 0.5 * stw["norm"]
             )
             accept = pending & ok
             if accept.all():  # the usual Newton step: nothing to mix
@@ -314,11 +332,45 @@ def _newton(problem: _Problem, q, load, active, iterations):
             if not pending.any():
                 break
             t = np.where(pending, 0.5 * t, t)
-        q = np.where(work[:, None], new_q, q)
-        st = _merge(st, trial, work)
-        converged = converged | (work & (st["norm"] <= opts.rtol))
-        diverged = diverged | (work & (np.abs(q / s).max(axis=1) > problem.limit))
+        q[cases] = new_q
+        for k in st:
+            st[k][cases] = trial[k]
+        converged[cases] |= trial["norm"] <= opts.rtol
+        diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
     return q, converged, st, diverged
+
+
+#: Cases per chunk of a large batch: ~10 MB per slice array for a few thousand slices per case, so
+#: the element-wise passes stay in cache; chunks run on a thread pool (numpy releases the GIL).
+CHUNK_CASES = 512
+
+
+def _attempt(problem: _Problem, q, load, iterations):
+    """One Newton attempt over every case: chunked and threaded for large batches."""
+    n = len(q)
+    everyone = np.ones(n, bool)
+    if n <= CHUNK_CASES:
+        return _newton(problem, q, load, everyone, iterations)
+    chunks = [np.arange(i, min(i + CHUNK_CASES, n)) for i in range(0, n, CHUNK_CASES)]
+
+    def run(cases):
+        its = np.zeros(len(cases), int)
+        out = _newton(problem.take(cases), q[cases], load[cases], np.ones(len(cases), bool), its)
+        return cases, its, out
+
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        parts = list(pool.map(run, chunks))
+    q_out = np.empty_like(q)
+    conv, div = np.zeros(n, bool), np.zeros(n, bool)
+    state = None
+    for cases, its, (qc, cc, sc, dc) in parts:
+        q_out[cases], conv[cases], div[cases] = qc, cc, dc
+        iterations[cases] += its
+        if state is None:
+            state = {k: np.empty((n, *v.shape[1:]), v.dtype) for k, v in sc.items()}
+        for k, v in sc.items():
+            state[k][cases] = v
+    return q_out, conv, state, div
 
 
 def _merge(old: dict, new: dict, mask: np.ndarray) -> dict:
@@ -387,9 +439,8 @@ def solve(
     _check_directions(problem, load)
 
     iterations = np.zeros(n_cases, int)
-    everyone = np.ones(n_cases, bool)
     start = q0 if displacement is not None else _starting_point(problem, load, q0)
-    q, converged, st, diverged = _newton(problem, start, load, everyone, iterations)
+    q, converged, st, diverged = _attempt(problem, start, load, iterations)
     if options.continuation_steps and not converged.all():
         # Load continuation from the unloaded start for the failed cases.
         retry = ~converged

@@ -22,6 +22,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.rows.base import (
+    KernelBase,
     RacewayOffset,
     RowResponse,
     RowState,
@@ -131,8 +132,10 @@ def _steel_e_reduced() -> float:
     return float(e_reduced(steel, steel))
 
 
-class BallKernel:
+class BallKernel(KernelBase):
     """Precomputed geometry and stiffness of a :class:`BallRow` for fast repeated evaluation."""
+
+    _case_arrays = ("B", "Bf", "BB", "s0", "a0", "k_n", "side")
 
     def __init__(self, row: BallRow):
         from bearingkit.physics import hertz

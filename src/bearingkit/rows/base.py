@@ -14,6 +14,7 @@ are rows of a matrix B(ψ, r, z) with u = B q, so a contact law written in the e
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -73,12 +74,36 @@ class RacewayOffset:
     shift: np.ndarray | None = None
     radial: np.ndarray | None = None
 
+    def take(self, cases: np.ndarray) -> RacewayOffset:
+        """The offsets of some cases only (arrays with a leading case axis of 1 are shared)."""
+        pick = lambda a: a if a is None or np.shape(a)[0] == 1 else np.asarray(a)[cases]  # noqa: E731
+        return RacewayOffset(pick(self.shift), pick(self.radial))
+
 
 def relative_displacement(q: np.ndarray, offset: RacewayOffset | None) -> np.ndarray:
     """q − shift: the inner ring's displacement relative to the (moved) outer raceway of a row."""
     if offset is None or offset.shift is None:
         return q
     return q - offset.shift
+
+
+class KernelBase:
+    """Shared behaviour of row kernels: restriction to a subset of the batch's cases.
+
+    ``_case_arrays`` names the attributes used by ``response`` whose leading axis is the case axis
+    (length C, or 1 when the geometry is shared by every case).
+    """
+
+    _case_arrays: tuple[str, ...] = ()
+
+    def take(self, cases: np.ndarray):
+        """A shallow copy whose per-case arrays hold only ``cases``."""
+        out = copy.copy(self)
+        for name in self._case_arrays:
+            a = getattr(self, name)
+            if np.shape(a)[0] != 1:
+                setattr(out, name, a[cases])
+        return out
 
 
 @dataclass

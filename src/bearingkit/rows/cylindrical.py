@@ -26,6 +26,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.rows.base import (
+    KernelBase,
     RacewayOffset,
     RowResponse,
     RowState,
@@ -131,8 +132,10 @@ class CylindricalRow:
         return CylindricalKernel(self)
 
 
-class CylindricalKernel:
+class CylindricalKernel(KernelBase):
     """Precomputed slice geometry of a :class:`CylindricalRow`: δ = q Gᵀ + δ₀ per slice."""
+
+    _case_arrays = ("G", "GG", "delta0", "c_s")
 
     def __init__(self, row: CylindricalRow):
         from bearingkit.physics import hertz

@@ -1,0 +1,604 @@
+"""Tapered roller rows: per-roller equilibrium (cone, cup, rib, centrifugal force), condensed.
+
+SI units (m, N, Pa, rad, rad/s, kg/m³).
+
+Frame and mapping
+-----------------
+bearingkit's frame (design.md §3): the outer ring (cup) is fixed, the inner ring (cone, with the
+large rib) is displaced by q = (u_x, u_y, u_z, θ_x, θ_y). Seed 001 (Liu et al. 2022, eqs. 1–6) fixes
+the inner ring and displaces the outer ring by d = (d_x, d_y, d_z) under a load F on the outer
+ring. A rigid motion of the whole assembly by −d maps one onto the other: u = −d, the load on the
+inner ring is −F, the roller displacements X_seed − d = X here; contact approaches and forces are
+unchanged. The seed's 3-DOF model is ``free = [True, True, True, False, False]`` here.
+
+Geometry in the meridian plane of roller j (radial r, axial s = σ (z − z_row), σ = ``direction``)
+---------------------------------------------------------------------------------------------
+Cup contact normal (roller → cup) n_e = (cos α_e, sin α_e), cone normal (cone → roller)
+n_i = (cos α_i, sin α_i), roller axis (towards the bearing apex, small end) a = (−sin κ, cos κ) with
+κ = (α_e + α_i)/2 and half roller angle ε = (α_e − α_i)/2. The rib (flange) sits on the cone at
+the roller's large end. ``flange_angle`` φ_f is the angle in the meridian plane between the cone
+raceway generatrix (towards the apex, t_i) and the rib face; the rib pushes the roller along
+n_f = sin φ_f t_i − cos φ_f n_i (φ_f = π/2: along the raceway). The roller centre sits at the
+pitch radius, s = 0; its inner and outer contact lines are p_i(x) = c − r_m e + x t_i and
+p_e(x) = c + r_m e + x t_e (e = (cos κ, sin κ), r_m the mean roller radius); the rib contact point
+is on the large end face at ``flange_contact_height`` e_r above the cone-side edge.
+
+Per roller (X = roller translation in its meridian plane, 2 DOF as seed 001 eq. 5), linear kinematics:
+
+    cone slice k:  δ_ik = n_i·(w(p_ik) − X) − C(x_k) + Δ_j
+    cup slice k:   δ_ek = n_e·X − C(x_k) − c/2 + Δ_j
+    rib:           δ_f  = n_f·(w(p_f) − X)
+
+w(p) = (u_r − p_s σθ_t … ) is the cone's displacement at p (rows of B, :mod:`bearingkit.rows.base`),
+C(x) the crown drop, c the clearance (counted twice) and Δ_j = ½ ΔD_j cos ε the approach added by a
+roller diameter deviation ΔD_j (a larger roller moves each generatrix by ½ΔD cos ε along the contact
+normal). Slices carry q = c_s δ^(10/9) (c_s = K_a w/l, K_a from :func:`bearingkit.physics.hertz.
+line_stiffness`), the rib Q_f = K_f δ_f^1.5 (sphere-on-plane Hertz). With ``deviation_model =
+"taylor"`` the slice law is seed 001 eq. (4): q = c_s[δ^(10/9) + (10/9) δ^(1/9) Δ] (δ without Δ),
+clipped at 0.
+
+Every approach is affine in (q, X) and each law is the derivative of a convex energy, so the roller
+equilibrium is the minimum over X of Φ = Σ E_c(δ_c) − F_c·X (F_c the centrifugal force), solved by a
+damped Newton iteration over all rollers and cases at once. The condensed energy U*(q) = min_X Φ
+is convex; by the envelope theorem its force is −Σ Q_c ∂δ_c/∂q and its stiffness the Schur complement
+K* = K_qq − K_qX K_XX⁻¹ K_Xq (implicit-function theorem).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.errors import InputError
+from bearingkit.rows.base import (
+    KernelBase,
+    RacewayOffset,
+    RowResponse,
+    RowState,
+    axial_row,
+    azimuths,
+    radial_row,
+    relative_displacement,
+)
+
+#: Line-contact exponent (Kunert 1961; seed 001 eq. 3).
+LINE_EXPONENT = 10.0 / 9.0
+#: Hertz point-contact exponent for the rib (seed 001 eq. 3).
+POINT_EXPONENT = 1.5
+#: Deviation models: "exact" adds Δ to the approach; "taylor" is seed 001 eq. (4) (first order in Δ).
+DEVIATION_MODELS = ("exact", "taylor")
+#: Largest angle between the rib force n_f and the roller axis a for which the rib can hold the
+#: roller [rad] (bearingkit's consistency limit: rib faces are within a few degrees of normal to
+#: the roller axis in practice; beyond 30° the geometry is not a tapered roller bearing rib).
+MAX_FLANGE_TILT = np.pi / 6
+#: Relative tolerance on the consistency of roller angle, raceway angles and end diameters [-]
+#: (Table 1 of seed 001 is given to 3–4 digits: tan ε from the diameters is 0.02617, 0.0262 given).
+ANGLE_CONSISTENCY_RTOL = 0.02
+#: Default rib contact height above the cone-side edge of the roller end, as a fraction of the large
+#: end diameter [-]. Choice (seed 001 does not give e_r): rib contacts sit in the lower half of the
+#: end face, typically 0.2–0.4 D.
+DEFAULT_FLANGE_HEIGHT_RATIO = 0.25
+#: Default radius of the spherical roller end as a fraction of the apex distance of the large end
+#: [-]. Choice (not in seed 001): spherical ends of 0.8–0.95 of the apex length are usual; it only sets
+#: the rib stiffness K_f, which barely matters (the rib load follows from equilibrium).
+DEFAULT_END_RADIUS_RATIO = 0.9
+#: Density of bearing steel [kg/m³] (GCr15 / 100Cr6: 7.8e3–7.85e3).
+STEEL_DENSITY = 7830.0
+#: Inner Newton iteration of the roller equilibrium: iterations and relative tolerance.
+ROLLER_MAX_ITER = 60
+ROLLER_RTOL = 1e-12
+#: Floor of the approach in the Taylor-law stiffness (its δ^(−8/9) term is singular at 0) [m].
+TAYLOR_DELTA_FLOOR = 1e-12
+
+
+@dataclass(frozen=True)
+class TaperedRow:
+    """A row of Z tapered rollers between a cup (fixed) and a cone with a large rib (loaded).
+
+    Parameters
+    ----------
+    n_elements : int
+        Number of rollers Z.
+    small_diameter, large_diameter : float [m]
+        Roller end diameters D_s < D_l.
+    effective_length : float [m]
+        Roller (contact) length l, measured along the roller axis.
+    pitch_diameter : float [m]
+        Diameter of the circle through the roller centres (mid-length on the axis).
+    contact_angle_outer, contact_angle_inner : float [rad]
+        Cup angle α_e and cone angle α_i (contact normals from the radial plane), α_e > α_i.
+    flange_angle : float [rad]
+        Angle φ_f between the cone raceway generatrix and the rib face (seed 001 Table 1: 1.5621).
+    roller_angle : float or None [rad]
+        Half roller angle ε; checked against (α_e − α_i)/2 and the diameters when given.
+    direction : int
+        +1: the row carries +F_z of the inner ring; −1: −F_z (pairs: back-to-back / face-to-face).
+    clearance : float [m]
+        Clearance along the cup normal, counted twice (each roller sees clearance/2); < 0 preload.
+    diameter_deviation : array (Z,) or (C, Z) [m] or None
+        Per-roller diameter deviation ΔD_j (a case axis batches realisations).
+    deviation_model : str
+        ``"exact"`` or ``"taylor"`` (seed 001 eq. 4), see :data:`DEVIATION_MODELS`.
+    n_slices : int
+        Slices per raceway contact (1 = the seed's whole-roller law).
+    profile : Profile or None
+        Crown drop of the roller (e.g. ``make_profile("iso16281_tapered", …)``).
+    line_law : str
+        ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.hertz.LINE_LAWS`).
+    e_reduced : float or None [Pa]
+        E′ (steel–steel from the materials by default).
+    flange_contact_height : float or None [m]
+        e_r, height of the rib contact above the cone-side edge of the large end.
+    end_radius : float or None [m]
+        Spherical radius of the roller's large end (rib stiffness K_f).
+    speed : float [rad/s]
+        Inner-ring speed ω_i (centrifugal force at the pure-rolling cage speed).
+    density : float [kg/m³]
+        Roller density.
+    axial_position, azimuth_phase : float [m], [rad]
+    name : str
+    """
+
+    kind: ClassVar[str] = "tapered"
+
+    n_elements: int
+    small_diameter: float
+    large_diameter: float
+    effective_length: float
+    pitch_diameter: float
+    contact_angle_outer: float
+    contact_angle_inner: float
+    flange_angle: float = np.pi / 2
+    roller_angle: float | None = None
+    direction: int = 1
+    clearance: float = 0.0
+    diameter_deviation: object = None
+    deviation_model: str = "exact"
+    n_slices: int = 1
+    profile: object | None = None
+    line_law: str = "kunert"
+    e_reduced: float | None = None
+    flange_contact_height: float | None = None
+    end_radius: float | None = None
+    speed: float = 0.0
+    density: float = STEEL_DENSITY
+    axial_position: float = 0.0
+    azimuth_phase: float = 0.0
+    name: str = "tapered"
+
+    def __post_init__(self):
+        checks.integer("n_elements", self.n_elements, low=3)
+        for f in ("small_diameter", "large_diameter", "effective_length", "pitch_diameter"):
+            _scalar(f, getattr(self, f))
+            checks.positive(f, getattr(self, f), "m")
+        checks.greater("large_diameter", self.large_diameter, "small_diameter", self.small_diameter, "m")
+        checks.greater("pitch_diameter", self.pitch_diameter, "large_diameter", self.large_diameter, "m")
+        _scalar("contact_angle_outer", self.contact_angle_outer)
+        _scalar("contact_angle_inner", self.contact_angle_inner)
+        checks.in_range("contact_angle_inner", self.contact_angle_inner, 0.0, np.pi / 2, "rad", closed=False)
+        checks.in_range("contact_angle_outer", self.contact_angle_outer, 0.0, np.pi / 2, "rad", closed=False)
+        checks.greater(
+            "contact_angle_outer", self.contact_angle_outer, "contact_angle_inner", self.contact_angle_inner, "rad"
+        )
+        eps = self.half_angle
+        tan_d = (self.large_diameter - self.small_diameter) / (2.0 * self.effective_length)
+        if abs(np.arctan(tan_d) - eps) > ANGLE_CONSISTENCY_RTOL * eps:
+            raise InputError(
+                f"large_diameter/small_diameter/effective_length give a half roller angle "
+                f"({np.arctan(tan_d):.6g} rad) inconsistent with (contact_angle_outer − contact_angle_inner)/2 "
+                f"({eps:.6g} rad); the roller must fit the cone and the cup"
+            )
+        if self.roller_angle is not None:
+            _scalar("roller_angle", self.roller_angle)
+            checks.positive("roller_angle", self.roller_angle, "rad")
+            if abs(self.roller_angle - eps) > ANGLE_CONSISTENCY_RTOL * eps:
+                raise InputError(
+                    f"roller_angle ({self.roller_angle:.6g} rad) must equal (contact_angle_outer − "
+                    f"contact_angle_inner)/2 ({eps:.6g} rad) within {ANGLE_CONSISTENCY_RTOL:.0%}"
+                )
+        _scalar("flange_angle", self.flange_angle)
+        checks.finite("flange_angle", self.flange_angle, "rad")
+        tilt = abs(np.pi / 2 + eps - self.flange_angle)  # angle between n_f and the roller axis
+        if tilt >= MAX_FLANGE_TILT:
+            raise InputError(
+                f"flange_angle ({self.flange_angle:.6g} rad) is inconsistent with the cone: the rib force "
+                f"would make {tilt:.4g} rad with the roller axis; expected a flange_angle within "
+                f"{MAX_FLANGE_TILT:.4g} rad of π/2 + ε = {np.pi / 2 + eps:.6g} rad"
+            )
+        if self.direction not in (1, -1):
+            raise InputError(f"direction ({self.direction!r}) must be +1 or -1")
+        checks.finite("clearance", self.clearance, "m")
+        checks.one_of("deviation_model", self.deviation_model, DEVIATION_MODELS)
+        checks.integer("n_slices", self.n_slices, low=1)
+        from bearingkit.physics.hertz import LINE_LAWS
+
+        checks.one_of("line_law", self.line_law, LINE_LAWS)
+        if self.e_reduced is not None:
+            checks.positive("e_reduced", self.e_reduced, "Pa")
+        if self.flange_contact_height is not None:
+            checks.in_range(
+                "flange_contact_height", self.flange_contact_height, 0.0, self.large_diameter, "m", closed=False
+            )
+        if self.end_radius is not None:
+            checks.positive("end_radius", self.end_radius, "m")
+        checks.finite("speed", self.speed, "rad/s")
+        checks.positive("density", self.density, "kg/m^3")
+        checks.finite("axial_position", self.axial_position, "m")
+        checks.finite("azimuth_phase", self.azimuth_phase, "rad")
+        gap = np.pi * self.pitch_diameter / self.n_elements - self.large_diameter * np.cos(self.cone_axis_angle)
+        if gap < 0:
+            raise InputError(
+                f"n_elements ({self.n_elements}) do not fit on the pitch circle: π·pitch_diameter/Z "
+                f"({np.pi * self.pitch_diameter / self.n_elements:.6g} m) is below the large roller diameter"
+            )
+        if self.diameter_deviation is not None:
+            dev = np.asarray(self.diameter_deviation, dtype=float)
+            if dev.ndim not in (1, 2) or dev.shape[-1] != self.n_elements:
+                raise InputError(
+                    f"diameter_deviation (shape {dev.shape}) must have shape (n_elements,) = "
+                    f"({self.n_elements},) or (n_cases, {self.n_elements})"
+                )
+            checks.finite("diameter_deviation", dev, "m")
+            if np.any(np.abs(dev) >= 0.05 * self.small_diameter):
+                raise InputError(
+                    f"diameter_deviation (max |ΔD| {np.max(np.abs(dev)):.6g} m) must stay below 5 % of the "
+                    f"small_diameter ({self.small_diameter:.6g} m): a deviation, not another roller"
+                )
+
+    # -- derived geometry ------------------------------------------------------------------------
+    @property
+    def half_angle(self) -> float:
+        """ε = (α_e − α_i)/2 [rad]."""
+        return 0.5 * (float(self.contact_angle_outer) - float(self.contact_angle_inner))
+
+    @property
+    def cone_axis_angle(self) -> float:
+        """κ = (α_e + α_i)/2, angle between the roller axis and the bearing axis [rad]."""
+        return 0.5 * (float(self.contact_angle_outer) + float(self.contact_angle_inner))
+
+    @property
+    def element_diameter(self) -> float:
+        """Mean roller diameter D_m = (D_s + D_l)/2 [m]."""
+        return 0.5 * (float(self.small_diameter) + float(self.large_diameter))
+
+    @property
+    def n_cases(self) -> int:
+        """Cases carried by ``diameter_deviation`` (1 without a case axis)."""
+        dev = self.diameter_deviation
+        return 1 if dev is None or np.ndim(dev) < 2 else int(np.shape(dev)[0])
+
+    def kernel(self) -> TaperedKernel:
+        """Precompute the arrays the solver needs (done once per model)."""
+        return TaperedKernel(self)
+
+
+def _scalar(field, value):
+    if np.ndim(value) != 0:
+        raise InputError(f"{field} (shape {np.shape(value)}) must be a scalar for a tapered row")
+
+
+def _rot(v):
+    return np.array([-v[1], v[0]])
+
+
+class TapGeometry:
+    """Meridian-plane geometry of one tapered roller (local r, s coordinates, σ = +1)."""
+
+    def __init__(self, row: TaperedRow):
+        ae, ai = float(row.contact_angle_outer), float(row.contact_angle_inner)
+        self.eps = row.half_angle
+        self.kappa = row.cone_axis_angle
+        self.n_e = np.array([np.cos(ae), np.sin(ae)])
+        self.n_i = np.array([np.cos(ai), np.sin(ai)])
+        self.t_e, self.t_i = _rot(self.n_e), _rot(self.n_i)  # t = (−sin α, cos α), towards the apex
+        self.a = np.array([-np.sin(self.kappa), np.cos(self.kappa)])
+        self.e = np.array([np.cos(self.kappa), np.sin(self.kappa)])
+        phi = float(row.flange_angle)
+        self.n_f = np.sin(phi) * self.t_i - np.cos(phi) * self.n_i
+        self.r_m = 0.5 * row.element_diameter
+        self.length = float(row.effective_length)
+        self.centre = np.array([0.5 * float(row.pitch_diameter), 0.0])
+        self.d_l = float(row.large_diameter)
+        e_r = DEFAULT_FLANGE_HEIGHT_RATIO * self.d_l if row.flange_contact_height is None else row.flange_contact_height
+        self.flange_height = float(e_r)
+        end_centre = self.centre - 0.5 * self.length * self.a
+        self.p_f = end_centre - (0.5 * self.d_l - self.flange_height) * self.e
+        # Radii of the cone and cup contact points at mid-length (seed 001 R_i, R_e).
+        self.radius_inner = float((self.centre - self.r_m * self.e)[0])
+        self.radius_outer = float((self.centre + self.r_m * self.e)[0])
+        self.radius_flange = float(self.p_f[0])
+        # Apex distance of the large end: the roller axis meets the bearing axis at t = R/sin κ.
+        self.apex_distance = float(self.centre[0] / np.sin(self.kappa) + 0.5 * self.length)
+        # Curvature radii in the rolling direction at mid-length (cone convex, cup concave).
+        rr = self.r_m / np.cos(self.eps)
+        self.radius_x_inner = 1.0 / (1.0 / rr + np.cos(ai) / self.radius_inner)
+        self.radius_x_outer = 1.0 / (1.0 / rr - np.cos(ae) / self.radius_outer)
+        # Frustum volume and mass-centre radius (mass centre ≈ mid-length at the pitch radius).
+        rs, rl = 0.5 * float(row.small_diameter), 0.5 * float(row.large_diameter)
+        self.volume = np.pi * self.length * (rs * rs + rs * rl + rl * rl) / 3.0
+
+
+class TaperedKernel(KernelBase):
+    """Solver kernel of a :class:`TaperedRow`: roller DOFs condensed inside :meth:`response`.
+
+    ``response(q, offset)`` and ``state(q, offset)`` accept a :class:`~bearingkit.rows.base.RacewayOffset`
+    (cup shift and per-roller outward radial deflection of the cup, which opens the cup contacts by
+    its component along n_e).
+    """
+
+    _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
+
+    def __init__(self, row: TaperedRow):
+        from bearingkit.physics import hertz
+        from bearingkit.rows.ball import _steel_e_reduced
+
+        self.row = row
+        geo = TapGeometry(row)
+        self.geo = geo
+        z_el, n_s = row.n_elements, row.n_slices
+        self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
+        sigma = float(row.direction)
+        x, width = hertz.slice_grid(geo.length, n_s)
+        x = np.asarray(x, dtype=float).reshape(n_s)
+        self.x = x
+        psi = azimuths(z_el, row.azimuth_phase)[0]  # (Z,)
+        self.psi = psi
+        z0 = float(row.axial_position)
+
+        def ring_dirs(p, n):  # generalised direction g with δ = n·w(p): (Z, …, 5)
+            r_glob = p[..., 0]
+            z_glob = z0 + sigma * p[..., 1]
+            ps = psi.reshape((-1,) + (1,) * (np.ndim(r_glob)))
+            return n[0] * radial_row(ps, z_glob) + sigma * n[1] * axial_row(ps, r_glob)
+
+        p_i = geo.centre - geo.r_m * geo.e + x[:, None] * geo.t_i  # (n_s, 2)
+        self.p_i = p_i
+        self.g_i = ring_dirs(p_i, geo.n_i)  # (Z, n_s, 5)
+        self.g_f = ring_dirs(geo.p_f, geo.n_f)  # (Z, 5)
+        # Stiffness constants.
+        k_line = float(hertz.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
+        self.k_line = k_line
+        self.c_s = k_line * float(width) / geo.length
+        end_r = DEFAULT_END_RADIUS_RATIO * geo.apex_distance if row.end_radius is None else float(row.end_radius)
+        self.end_radius = end_r
+        self.k_f = float(hertz.point_stiffness(2.0 / end_r, 0.0, self.e_reduced))
+        # Constant parts of the approaches (C|1, Z, n_s) with the deviation.
+        drop = np.zeros(n_s) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
+        dev = np.zeros((1, z_el)) if row.diameter_deviation is None else np.asarray(row.diameter_deviation, float)
+        dev = dev.reshape(-1, z_el)
+        self.deviation = dev
+        self.delta_dev = 0.5 * dev * np.cos(geo.eps)  # Δ_j (C|1, Z)
+        self.taylor = row.deviation_model == "taylor"
+        base = -drop[None, None, :]
+        shift = 0.0 if self.taylor else self.delta_dev[..., None]
+        self.d0_i = base + shift
+        self.d0_e = base + shift - 0.5 * float(row.clearance)
+        # Centrifugal force (radial, outward) at the pure-rolling cage speed.
+        omega_c = float(row.speed) * geo.radius_inner / (geo.radius_inner + geo.radius_outer)
+        self.omega_cage = omega_c
+        self.f_c = float(row.density) * geo.volume * omega_c**2 * geo.centre[0]
+        # Local roller-DOF directions: cone −n_i, cup +n_e, rib −n_f; outer contacts have no ring part.
+        self.b_i, self.b_e, self.b_f = -geo.n_i, geo.n_e, -geo.n_f
+        # Directions for the solver: per roller the cone + rib load that balances a unit cup load.
+        m = np.stack([geo.n_i, geo.n_f], axis=1)
+        qi, qf = np.linalg.solve(m, geo.n_e)
+        g_mid = self.g_i.mean(axis=1)
+        self.directions = (qi * g_mid + qf * self.g_f)[None]  # (1, Z, 5)
+        self.G_flat_i = self.g_i.reshape(z_el * n_s, 5)
+        self.GG_i = (self.g_i[..., :, None] * self.g_i[..., None, :]).reshape(z_el * n_s, 25)
+        self.GG_f = (self.g_f[:, :, None] * self.g_f[:, None, :]).reshape(z_el, 25)
+        # Starting matrix: condensed stiffness with unit-exponent laws (every contact closed).
+        kq = self._condense(
+            np.full((1, z_el, n_s), self.c_s), np.full((1, z_el, n_s), self.c_s), np.full((1, z_el), self.k_f)
+        )
+        self.start_matrix = kq[0]
+        self.start_exponent = LINE_EXPONENT
+        self.char_length = float(max(geo.centre[0], abs(z0)) + geo.length / 2)
+        self.deflection_scale = float(row.element_diameter)
+        self._cache = None
+
+    # -- contact laws ------------------------------------------------------------------------------
+    def _line_law(self, delta):
+        """Slice load, stiffness and energy of the raceway slices (C, Z, n_s)."""
+        c = self.c_s
+        if not self.taylor:
+            d = np.maximum(delta, 0.0)
+            t = d ** (1.0 / 9.0)
+            return c * d * t, (10.0 / 9.0) * c * t, c * d * d * t / (1.0 + LINE_EXPONENT)
+        n = LINE_EXPONENT
+        dv = self.delta_dev[..., None]
+        d = np.maximum(delta, 0.0)
+        q = c * d ** (n - 1.0) * (d + n * dv)
+        on = (d > 0) & (q > 0)
+        q = np.where(on, q, 0.0)
+        df = np.maximum(d, TAYLOR_DELTA_FLOOR)
+        k = np.where(on, c * (n * df ** (n - 1.0) + n * (n - 1.0) * dv * df ** (n - 2.0)), 0.0)
+        ds = np.maximum(-n * dv, 0.0)
+        e = c * ((d ** (n + 1) - ds ** (n + 1)) / (n + 1) + dv * (d**n - ds**n))
+        return q, k, np.where(on, e, 0.0)
+
+    def _point_law(self, delta):
+        d = np.maximum(delta, 0.0)
+        r = np.sqrt(d)
+        return self.k_f * d * r, 1.5 * self.k_f * r, self.k_f * d * d * r / 2.5
+
+    # -- roller equilibrium ------------------------------------------------------------------------
+    def _ring_parts(self, q, offset=None):
+        q = relative_displacement(q, offset)
+        c = q.shape[0]
+        z_el, n_s = self.row.n_elements, self.row.n_slices
+        a_i = (q @ self.G_flat_i.T).reshape(c, z_el, n_s) + self.d0_i
+        a_f = q @ self.g_f.T  # (C, Z)
+        d0_e = self.d0_e
+        if offset is not None and offset.radial is not None:
+            d0_e = d0_e - (np.asarray(offset.radial, float) * self.geo.n_e[0])[..., None]
+        return a_i, a_f, d0_e
+
+    def _approaches(self, a_i, a_f, xr, d0_e):
+        d_i = a_i + (xr @ self.b_i)[..., None]
+        d_e = d0_e + (xr @ self.b_e)[..., None]
+        d_f = a_f + xr @ self.b_f
+        return d_i, d_e, d_f
+
+    def _potential(self, a_i, a_f, xr, d0_e):
+        d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
+        e = self._line_law(d_i)[2].sum(-1) + self._line_law(d_e)[2].sum(-1) + self._point_law(d_f)[2]
+        return e - self.f_c * xr[..., 0]
+
+    def _solve_rollers(self, q, offset=None):
+        """Roller displacements X (C, Z, 2) minimising Φ; damped Newton over all rollers at once."""
+        a_i, a_f, d0_e = self._ring_parts(q, offset)
+        c, z_el = q.shape[0], self.row.n_elements
+        shape = (c, z_el, 2)
+        if self._cache is not None and self._cache.shape == shape:
+            xr = self._cache.copy()
+        else:
+            xr = self._guess(a_i, a_f, d0_e)
+        bi, be, bf = self.b_i, self.b_e, self.b_f
+        bb_i, bb_e, bb_f = np.outer(bi, bi), np.outer(be, be), np.outer(bf, bf)
+        step_cap = 0.02 * self.row.element_diameter
+        for _ in range(ROLLER_MAX_ITER):
+            d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
+            qi, ki, _ = self._line_law(d_i)
+            qe, ke, _ = self._line_law(d_e)
+            qf, kf, _ = self._point_law(d_f)
+            si, se = qi.sum(-1), qe.sum(-1)
+            grad = si[..., None] * bi + se[..., None] * be + qf[..., None] * bf
+            grad[..., 0] -= self.f_c
+            scale = si + se + qf + abs(self.f_c) + 1e-300
+            done = np.sqrt((grad**2).sum(-1)) <= ROLLER_RTOL * scale
+            if done.all():
+                break
+            h = (
+                ki.sum(-1)[..., None, None] * bb_i
+                + ke.sum(-1)[..., None, None] * bb_e
+                + kf[..., None, None] * bb_f
+            )
+            tr = h[..., 0, 0] + h[..., 1, 1]
+            mu = 1e-12 * tr + (np.sqrt((grad**2).sum(-1)) / step_cap) * 1e-6 + 1e-300
+            h = h + mu[..., None, None] * np.eye(2)
+            step = -_solve2(h, grad)
+            big = np.sqrt((step**2).sum(-1))
+            step *= np.minimum(1.0, step_cap / np.maximum(big, 1e-300))[..., None]
+            step = np.where(done[..., None], 0.0, step)
+            phi0 = self._potential(a_i, a_f, xr, d0_e)
+            slope = (grad * step).sum(-1)
+            t = np.ones(done.shape)
+            pending = ~done
+            for _ls in range(30):
+                trial = xr + t[..., None] * step
+                ok = self._potential(a_i, a_f, trial, d0_e) <= phi0 + 1e-4 * t * slope + 1e-14 * np.abs(phi0)
+                pending &= ~ok
+                if not pending.any():
+                    break
+                t = np.where(pending, 0.5 * t, t)
+            xr = xr + t[..., None] * step
+        self._cache = xr.copy()
+        return xr, a_i, a_f, d0_e
+
+    def _guess(self, a_i, a_f, d0_e):
+        """X with equal cone and cup approaches and a closed rib (one 2×2 solve per roller)."""
+        geo = self.geo
+        m = np.stack([geo.n_i + geo.n_e, geo.n_f])  # rows: (n_i + n_e)·X = a_i − d0_e ; n_f·X = a_f
+        rhs = np.stack([a_i.mean(-1) - d0_e.mean(-1) * np.ones_like(a_f), a_f], axis=-1)
+        return np.linalg.solve(m, rhs[..., None])[..., 0]
+
+    # -- condensation ----------------------------------------------------------------------------
+    def _condense(self, ki, ke, kf):
+        """Σ_rollers of the Schur complement K_qq − K_qX K_XX⁻¹ K_Xq (C, 5, 5) for slice stiffnesses."""
+        c = ki.shape[0]
+        z_el, n_s = self.row.n_elements, self.row.n_slices
+        kqq = (ki.reshape(c, z_el * n_s) @ self.GG_i + kf @ self.GG_f).reshape(c, 5, 5)
+        v_i = np.einsum("czk,zkd->czd", ki, self.g_i)  # Σ_k k g (C, Z, 5)
+        v_f = kf[..., None] * self.g_f
+        kqx = v_i[..., :, None] * self.b_i + v_f[..., :, None] * self.b_f  # (C, Z, 5, 2)
+        bi, be, bf = self.b_i, self.b_e, self.b_f
+        kxx = (
+            ki.sum(-1)[..., None, None] * np.outer(bi, bi)
+            + ke.sum(-1)[..., None, None] * np.outer(be, be)
+            + kf[..., None, None] * np.outer(bf, bf)
+        )
+        tr = kxx[..., 0, 0] + kxx[..., 1, 1]
+        kxx = kxx + (1e-13 * tr + 1e-300)[..., None, None] * np.eye(2)
+        sol = _solve2(kxx[:, :, None], kqx)  # K_XX⁻¹ K_Xq rows: (C, Z, 5, 2)
+        return kqq - np.einsum("czia,czja->cij", kqx, sol)
+
+    def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
+        """Condensed generalised force, stiffness and energy for displacements q (C, 5)."""
+        q = np.asarray(q, dtype=float)
+        xr, a_i, a_f, d0_e = self._solve_rollers(q, offset)
+        d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
+        qi, ki, ei = self._line_law(d_i)
+        _, ke, ee = self._line_law(d_e)
+        qf, kf, ef = self._point_law(d_f)
+        c = q.shape[0]
+        force = -(qi.reshape(c, -1) @ self.G_flat_i + qf @ self.g_f)
+        jac = -self._condense(ki, ke, kf)
+        energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c * xr[..., 0].sum(-1)
+        return RowResponse(force, jac, energy)
+
+    def roller_state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> dict:
+        """Per-roller contact loads and approaches at displacements q (C, 5) (SI arrays)."""
+        q = np.asarray(q, dtype=float)
+        xr, a_i, a_f, d0_e = self._solve_rollers(q, offset)
+        d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
+        qi = self._line_law(d_i)[0]
+        qe = self._line_law(d_e)[0]
+        qf = self._point_law(d_f)[0]
+        return dict(
+            roller_displacement=xr,
+            slice_load_inner=qi,
+            slice_load_outer=qe,
+            load_inner=qi.sum(-1),
+            load_outer=qe.sum(-1),
+            load_flange=qf,
+            deflection_inner=d_i,
+            deflection_outer=d_e,
+            deflection_flange=d_f,
+        )
+
+    def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
+        """Per-roller results: ``load`` is the cup (outer raceway) contact force Q_e (seed 001 Fig. 4)."""
+        from bearingkit.physics import hertz
+
+        row, geo = self.row, self.geo
+        st = self.roller_state(q, offset)
+        width = geo.length / row.n_slices
+        extras = dict(st)
+        p_max = np.zeros_like(st["load_outer"])
+        for side, rx in (("inner", geo.radius_x_inner), ("outer", geo.radius_x_outer)):
+            contact = hertz.line_contact(st[f"slice_load_{side}"], width, rx, self.e_reduced)
+            extras[f"slice_pressure_{side}"] = contact.max_pressure
+            extras[f"half_width_{side}"] = contact.half_width
+            p_max = np.maximum(p_max, contact.max_pressure.max(-1))
+        extras["slice_position"] = np.broadcast_to(self.x, st["slice_load_outer"].shape)
+        load = st["load_outer"]
+        psi = np.broadcast_to(self.psi, load.shape)
+        alpha = np.full(load.shape, row.direction * float(row.contact_angle_outer))
+        return RowState(
+            "tapered",
+            row.name,
+            psi,
+            load,
+            np.maximum(st["deflection_outer"], 0.0).max(-1),
+            alpha,
+            p_max,
+            st["slice_load_outer"],
+            extras,
+        )
+
+
+def _solve2(h, b):
+    """Solve 2×2 systems h x = b, h (..., 2, 2), b (..., 2) or (..., k, 2) rows (Cramer's rule)."""
+    a11, a12, a21, a22 = h[..., 0, 0], h[..., 0, 1], h[..., 1, 0], h[..., 1, 1]
+    det = a11 * a22 - a12 * a21
+    if b.ndim == h.ndim - 1:
+        x0 = (a22 * b[..., 0] - a12 * b[..., 1]) / det
+        x1 = (-a21 * b[..., 0] + a11 * b[..., 1]) / det
+    else:
+        x0 = (a22[..., None] * b[..., 0] - a12[..., None] * b[..., 1]) / det[..., None]
+        x1 = (-a21[..., None] * b[..., 0] + a11[..., None] * b[..., 1]) / det[..., None]
+    return np.stack([x0, x1], axis=-1)
