@@ -264,3 +264,28 @@ def test_uniform_radial_raceway_deflection_acts_as_clearance():
     np.testing.assert_allclose(a.rows[0].load, b.rows[0].load, rtol=1e-8, atol=1e-8)
     with pytest.raises(InputError, match="not in the bearing"):
         solve(flexible, load_vector(F_x=1.0), raceway_offsets={"nope": RacewayOffset()})
+
+
+def test_overlapping_rows_are_refused():
+    from bearingkit.rows.ball import BallRow
+
+    a = BallRow(n_elements=12, element_diameter=0.01, pitch_diameter=0.08, contact_angle=0.3, name="a")
+    b = BallRow(
+        n_elements=12,
+        element_diameter=0.01,
+        pitch_diameter=0.085,
+        contact_angle=0.3,
+        axial_position=0.004,
+        name="b",
+    )
+    with pytest.raises(InputError, match="overlap"):
+        BearingModel((a, b))
+    far = BallRow(
+        n_elements=12,
+        element_diameter=0.01,
+        pitch_diameter=0.08,
+        contact_angle=-0.3,
+        axial_position=0.02,
+        name="far",
+    )
+    assert len(BearingModel((a, far)).rows) == 2

@@ -9,7 +9,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from bearingkit import checks
 from bearingkit.errors import InputError
 
 
@@ -44,7 +43,7 @@ class BearingModel:
         for r in self.rows:
             if not hasattr(r, "kernel"):
                 raise InputError(f"rows entry {r!r} is not a row (expected BallRow, CylindricalRow, …)")
-        checks.finite("n_rows", len(self.rows))
+        _check_overlap(self.rows)
 
     @cached_property
     def kernels(self) -> tuple:
@@ -64,3 +63,21 @@ class BearingModel:
     def n_elements(self) -> int:
         """Total number of rolling elements."""
         return sum(r.n_elements for r in self.rows)
+
+
+def _check_overlap(rows) -> None:
+    """Refuse two rows whose elements would occupy the same space (same radial and axial band).
+
+    Rows interleaved on one cage circle (seed 000: rollers and balls alternating) sit on different
+    pitch circles and pass this check; two rows on the same circle must be axially apart.
+    """
+    boxes = [(r.name, r.envelope()) for r in rows if hasattr(r, "envelope")]
+    for i, (name_a, a) in enumerate(boxes):
+        for name_b, b in boxes[i + 1 :]:
+            radial = min(a[1], b[1]) - max(a[0], b[0])
+            axial = min(a[3], b[3]) - max(a[2], b[2])
+            if radial > 1e-9 and axial > 1e-9:
+                raise InputError(
+                    f"rows {name_a!r} and {name_b!r} overlap ({radial * 1e3:.3g} mm radially and "
+                    f"{axial * 1e3:.3g} mm axially); expected rows separated by their element envelopes"
+                )

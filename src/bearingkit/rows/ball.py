@@ -119,6 +119,11 @@ class BallRow:
                 f"{2 * np.min(spare + self.clearance / 2):.6g} m"
             )
 
+    def envelope(self) -> tuple[float, float, float, float]:
+        """Space the balls sweep: (r_min, r_max, z_min, z_max) [m] around the pitch circle."""
+        r, d, z = np.max(self.pitch_diameter) / 2, np.max(self.element_diameter), np.max(self.axial_position)
+        return (r - d / 2, r + d / 2, z - d / 2, z + d / 2)
+
     # -- derived, used by the solver -------------------------------------------------------------
     def kernel(self) -> BallKernel:
         """Precompute the arrays the solver needs (done once per solve)."""

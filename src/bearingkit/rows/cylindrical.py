@@ -127,6 +127,15 @@ class CylindricalRow:
         """σ = +1/−1 for thrust rows, 0 for a radial row."""
         return ORIENTATIONS[self.orientation]
 
+    def envelope(self) -> tuple[float, float, float, float]:
+        """Space the rollers sweep: (r_min, r_max, z_min, z_max) [m]; a thrust roller lies along the radius
+        with its contact plane at ``axial_position`` and its centre half a diameter inside the gap."""
+        r, d = np.max(self.pitch_diameter) / 2, np.max(self.element_diameter)
+        half_l, z = np.max(self.effective_length) / 2, np.max(self.axial_position)
+        if self.direction == 0:
+            return (r - d / 2, r + d / 2, z - half_l, z + half_l)
+        return (r - half_l, r + half_l, z - d / 2, z + d / 2)
+
     def kernel(self) -> CylindricalKernel:
         """Precompute the arrays the solver needs (done once per solve)."""
         return CylindricalKernel(self)
