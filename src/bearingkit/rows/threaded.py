@@ -47,8 +47,8 @@ from bearingkit.rows.base import (
 
 __all__ = [
     "RING_SUPPORTS",
-    "PTRBGeometry",
     "ContactPair",
+    "PTRBGeometry",
     "ThreadedRow",
     "ToothDistribution",
     "axial_tooth_distribution",
@@ -148,7 +148,8 @@ class PTRBGeometry:
             val = float(getattr(self, f))
             if not (val > float(self.roller_contact_radius)):  # also rejects NaN
                 raise InputError(
-                    f"{f} ({val:.6g} m) must exceed roller_contact_radius ({self.roller_contact_radius:.6g} m): "
+                    f"{f} ({val:.6g} m) must exceed roller_contact_radius "
+                    f"({self.roller_contact_radius:.6g} m): "
                     "the ring flank must conform less than the roller flank (inf = flat flank)"
                 )
         if self.ridge_thickness >= self.thread_pitch:
@@ -163,7 +164,9 @@ class PTRBGeometry:
                 f"not exceed the width ({self.width:.6g} m)"
             )
         d_i, d_o = self.d_inner, self.d_outer
-        checks.greater("pitch_diameter", self.pitch_diameter, "roller_pitch_diameter", self.roller_pitch_diameter, "m")
+        checks.greater(
+            "pitch_diameter", self.pitch_diameter, "roller_pitch_diameter", self.roller_pitch_diameter, "m"
+        )
         checks.greater("inner_pitch_diameter", d_i, "bore_diameter", self.bore_diameter, "m")
         checks.greater("outside_diameter", self.outside_diameter, "outer_pitch_diameter", d_o, "m")
         if not d_i < self.pitch_diameter < d_o:
@@ -173,8 +176,9 @@ class PTRBGeometry:
             )
         if np.pi * self.pitch_diameter / self.n_elements < self.roller_pitch_diameter:
             raise InputError(
-                f"n_elements ({self.n_elements}) rollers of roller_pitch_diameter {self.roller_pitch_diameter:.6g} m "
-                f"do not fit on the pitch circle (π·D_pw/Z = {np.pi * self.pitch_diameter / self.n_elements:.6g} m)"
+                f"n_elements ({self.n_elements}) rollers of roller_pitch_diameter "
+                f"{self.roller_pitch_diameter:.6g} m do not fit on the pitch circle "
+                f"(π·D_pw/Z = {np.pi * self.pitch_diameter / self.n_elements:.6g} m)"
             )
 
     # -- derived quantities (cheap, no physics) ---------------------------------------------------
@@ -258,7 +262,9 @@ def contact_pairs(geometry: PTRBGeometry, load=0.0) -> dict[str, ContactPair]:
         )
         c = hertz.point_contact(load, s, f, g.e_reduced)
         k = hertz.point_stiffness(s, f, g.e_reduced)
-        out[side] = ContactPair(side, s, f, k, c.semi_major, c.semi_minor, c.deflection, c.max_pressure, c.ellipticity)
+        out[side] = ContactPair(
+            side, s, f, k, c.semi_major, c.semi_minor, c.deflection, c.max_pressure, c.ellipticity
+        )
     return out
 
 
@@ -462,7 +468,11 @@ def tooth_compliance(geometry: PTRBGeometry, part: str):
         "inner": np.pi * g.d_inner / g.n_elements,
         "outer": np.pi * g.d_outer / g.n_elements,
     }
-    thick = {"roller": g.bottom_thickness_roller, "inner": g.bottom_thickness_inner, "outer": g.bottom_thickness_outer}
+    thick = {
+        "roller": g.bottom_thickness_roller,
+        "inner": g.bottom_thickness_inner,
+        "outer": g.bottom_thickness_outer,
+    }
     checks.one_of("part", part, width)
     w, b = width[part], thick[part]
     shear_mod = e / (2.0 * (1.0 + nu))
@@ -476,7 +486,9 @@ def _body_compliances(g: PTRBGeometry):
     area_i = np.pi / 4.0 * ((g.d_inner - 2 * h) ** 2 - g.bore_diameter**2)
     area_o = np.pi / 4.0 * (g.outside_diameter**2 - (g.d_outer + 2 * h) ** 2)
     if area_i <= 0 or area_o <= 0:
-        raise InputError("the ring sections (bore to thread root, thread root to outside) must have positive area")
+        raise InputError(
+            "the ring sections (bore to thread root, thread root to outside) must have positive area"
+        )
     # a ring section carries the teeth loads of all Z rollers
     return p / (e * area_r), g.n_elements * p / (e * area_i), g.n_elements * p / (e * area_o)
 
@@ -541,8 +553,9 @@ def axial_tooth_distribution(
     w0 = ao * y[:, 0] ** 2 + co * y[:, 0] ** 3
     u = w0 + ai * y[:, 0] ** 2 + ci * y[:, 0] ** 3
     converged = np.zeros(c, dtype=bool)
-    it = 0
+    iterations = 0
     for it in range(1, max_iter + 1):
+        iterations = it
         yi, yo = y[:, :n], y[:, n:]
         fi, fo = yi**3, yo**3
         w = w0[:, None] - (fi - fo) @ t.T
@@ -557,7 +570,9 @@ def axial_tooth_distribution(
         )
         di, do = 3 * yi**2, 3 * yo**2
         jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
-        jac[:, :n, :n] = (a_i - t)[None] * di[:, None, :] + np.einsum("ci,ij->cij", 2 * ai * yi + ci * di, np.eye(n))
+        jac[:, :n, :n] = (a_i - t)[None] * di[:, None, :] + np.einsum(
+            "ci,ij->cij", 2 * ai * yi + ci * di, np.eye(n)
+        )
         jac[:, :n, n : 2 * n] = t[None] * do[:, None, :]
         jac[:, :n, 2 * n] = 1.0
         jac[:, :n, 2 * n + 1] = -1.0
@@ -580,4 +595,6 @@ def axial_tooth_distribution(
     fi, fo = y[:, :n] ** 3, y[:, n:] ** 3
     mean = (f_roller / n)[:, None]
     fai, fao = fi / mean, fo / mean
-    return ToothDistribution(fi, fo, fai, fao, np.maximum(fai.max(axis=1), fao.max(axis=1)), converged, it)
+    return ToothDistribution(
+        fi, fo, fai, fao, np.maximum(fai.max(axis=1), fao.max(axis=1)), converged, iterations
+    )
