@@ -181,14 +181,19 @@ class TaperedRow:
         checks.in_range("contact_angle_inner", self.contact_angle_inner, 0.0, np.pi / 2, "rad", closed=False)
         checks.in_range("contact_angle_outer", self.contact_angle_outer, 0.0, np.pi / 2, "rad", closed=False)
         checks.greater(
-            "contact_angle_outer", self.contact_angle_outer, "contact_angle_inner", self.contact_angle_inner, "rad"
+            "contact_angle_outer",
+            self.contact_angle_outer,
+            "contact_angle_inner",
+            self.contact_angle_inner,
+            "rad",
         )
         eps = self.half_angle
         tan_d = (self.large_diameter - self.small_diameter) / (2.0 * self.effective_length)
         if abs(np.arctan(tan_d) - eps) > ANGLE_CONSISTENCY_RTOL * eps:
             raise InputError(
                 f"large_diameter/small_diameter/effective_length give a half roller angle "
-                f"({np.arctan(tan_d):.6g} rad) inconsistent with (contact_angle_outer − contact_angle_inner)/2 "
+                f"({np.arctan(tan_d):.6g} rad) inconsistent with "
+                f"(contact_angle_outer − contact_angle_inner)/2 "
                 f"({eps:.6g} rad); the roller must fit the cone and the cup"
             )
         if self.roller_angle is not None:
@@ -220,7 +225,12 @@ class TaperedRow:
             checks.positive("e_reduced", self.e_reduced, "Pa")
         if self.flange_contact_height is not None:
             checks.in_range(
-                "flange_contact_height", self.flange_contact_height, 0.0, self.large_diameter, "m", closed=False
+                "flange_contact_height",
+                self.flange_contact_height,
+                0.0,
+                self.large_diameter,
+                "m",
+                closed=False,
             )
         if self.end_radius is not None:
             checks.positive("end_radius", self.end_radius, "m")
@@ -228,7 +238,9 @@ class TaperedRow:
         checks.positive("density", self.density, "kg/m^3")
         checks.finite("axial_position", self.axial_position, "m")
         checks.finite("azimuth_phase", self.azimuth_phase, "rad")
-        gap = np.pi * self.pitch_diameter / self.n_elements - self.large_diameter * np.cos(self.cone_axis_angle)
+        gap = np.pi * self.pitch_diameter / self.n_elements - self.large_diameter * np.cos(
+            self.cone_axis_angle
+        )
         if gap < 0:
             raise InputError(
                 f"n_elements ({self.n_elements}) do not fit on the pitch circle: π·pitch_diameter/Z "
@@ -302,7 +314,11 @@ class TapGeometry:
         self.length = float(row.effective_length)
         self.centre = np.array([0.5 * float(row.pitch_diameter), 0.0])
         self.d_l = float(row.large_diameter)
-        e_r = DEFAULT_FLANGE_HEIGHT_RATIO * self.d_l if row.flange_contact_height is None else row.flange_contact_height
+        e_r = (
+            DEFAULT_FLANGE_HEIGHT_RATIO * self.d_l
+            if row.flange_contact_height is None
+            else row.flange_contact_height
+        )
         self.flange_height = float(e_r)
         end_centre = self.centre - 0.5 * self.length * self.a
         self.p_f = end_centre - (0.5 * self.d_l - self.flange_height) * self.e
@@ -362,12 +378,18 @@ class TaperedKernel(KernelBase):
         k_line = float(hertz.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
         self.k_line = k_line
         self.c_s = k_line * float(width) / geo.length
-        end_r = DEFAULT_END_RADIUS_RATIO * geo.apex_distance if row.end_radius is None else float(row.end_radius)
+        end_r = (
+            DEFAULT_END_RADIUS_RATIO * geo.apex_distance if row.end_radius is None else float(row.end_radius)
+        )
         self.end_radius = end_r
         self.k_f = float(hertz.point_stiffness(2.0 / end_r, 0.0, self.e_reduced))
         # Constant parts of the approaches (C|1, Z, n_s) with the deviation.
         drop = np.zeros(n_s) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
-        dev = np.zeros((1, z_el)) if row.diameter_deviation is None else np.asarray(row.diameter_deviation, float)
+        dev = (
+            np.zeros((1, z_el))
+            if row.diameter_deviation is None
+            else np.asarray(row.diameter_deviation, float)
+        )
         dev = dev.reshape(-1, z_el)
         self.deviation = dev
         self.delta_dev = 0.5 * dev * np.cos(geo.eps)  # Δ_j (C|1, Z)
