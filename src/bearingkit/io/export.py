@@ -1,0 +1,107 @@
+"""JSON-ready dicts of results, SI values with the unit in every key (``max_load_N``, ``u_x_m``).
+
+Faces (CLI, reports) call these; nothing here recomputes the mechanics: the load distribution comes
+from :meth:`bearingkit.analysis.quasistatic.QuasiStaticResult.to_dict`, the Hertz summary from
+:func:`bearingkit.physics.hertz.point_contact`. Output must never hold NaN or infinity:
+:func:`to_json` refuses them (``allow_nan=False``) and :func:`non_finite_paths` lists offenders.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+
+
+def case_dict(bearing, result, index: int) -> dict:
+    """One solved load case: its name and operating point, then ``result.to_dict(index)``.
+
+    Parameters
+    ----------
+    bearing : bearingkit.io.loader.BearingInput
+    result : bearingkit.analysis.quasistatic.QuasiStaticResult
+        The solve of ``bearing.cases`` (same order).
+    index : int
+        Case index.
+    """
+    case = bearing.cases[index]
+    return {**case.to_dict(), **result.to_dict(index)}
+
+
+def analysis_dict(bearing, result) -> dict:
+    """Every load case of a solve, with the file, bearing type, name and source (JSON-ready)."""
+    return {
+        "file": bearing.source,
+        "bearing_type": bearing.bearing_type,
+        "bearing_name": bearing.model.name,
+        "source": bearing.spec.bearing.source,
+        "free_dofs": [
+            n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), bearing.free, strict=True) if f
+        ],
+        "cases": [case_dict(bearing, result, c) for c in range(result.n_cases)],
+    }
+
+
+def hertz_ball_summary(
+    load, element_diameter, pitch_diameter, contact_angle, conformity_inner, conformity_outer, e_reduced
+) -> dict:
+    """Hertz contact of one ball with its inner and outer raceway (SI in, SI out, units in keys).
+
+    Parameters
+    ----------
+    load : float [N]
+        Ball load Q (the same on both contacts: the ball is in equilibrium between them).
+    element_diameter : float [m]
+    pitch_diameter : float [m]
+    contact_angle : float [rad]
+    conformity_inner, conformity_outer : float
+        f = r / D_w of the grooves.
+    e_reduced : float [Pa]
+        E′ of ball and raceway.
+
+    Returns
+    -------
+    dict
+        ``{"load_N", "inner": {...}, "outer": {...}}`` with ``semi_major_m``, ``semi_minor_m``,
+        ``deflection_m``, ``max_pressure_Pa``, ``ellipticity``, ``curvature_sum_1_m``,
+        ``curvature_difference`` per contact (Harris & Kotzalas 2007 ch. 2 and 6 via
+        :mod:`bearingkit.physics.hertz`).
+    """
+    from bearingkit.physics.hertz import ball_raceway_curvature, point_contact
+
+    out = {"load_N": float(load)}
+    for raceway, conformity in (("inner", conformity_inner), ("outer", conformity_outer)):
+        s_rho, f_rho = ball_raceway_curvature(
+            element_diameter, pitch_diameter, contact_angle, conformity * element_diameter, raceway
+        )
+        pc = point_contact(load, s_rho, f_rho, e_reduced)
+        out[raceway] = {
+            "curvature_sum_1_m": float(s_rho),
+            "curvature_difference": float(f_rho),
+            "semi_major_m": float(pc.semi_major),
+            "semi_minor_m": float(pc.semi_minor),
+            "deflection_m": float(pc.deflection),
+            "max_pressure_Pa": float(pc.max_pressure),
+            "ellipticity": float(pc.ellipticity),
+        }
+    return out
+
+
+def non_finite_paths(obj, path: str = "") -> list[str]:
+    """Paths of every NaN or infinite float inside nested dicts/lists (empty when all finite)."""
+    if isinstance(obj, dict):
+        return [p for k, v in obj.items() for p in non_finite_paths(v, f"{path}.{k}" if path else str(k))]
+    if isinstance(obj, (list, tuple)):
+        return [p for i, v in enumerate(obj) for p in non_finite_paths(v, f"{path}[{i}]")]
+    if isinstance(obj, (float, np.floating)) and not math.isfinite(obj):
+        return [path]
+    return []
+
+
+def to_json(obj, indent: int | None = 1) -> str:
+    """JSON text; raises ValueError naming the first non-finite value instead of writing NaN."""
+    bad = non_finite_paths(obj)
+    if bad:
+        raise ValueError(f"non-finite value in results at {bad[0]} ({len(bad)} in all)")
+    return json.dumps(obj, indent=indent, allow_nan=False)

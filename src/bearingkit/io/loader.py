@@ -1,0 +1,465 @@
+"""Load a bearing input file (TOML with units) into a model, load cases and solver settings.
+
+SI inside: the schema (:mod:`bearingkit.io.schema`) turns every ``"6 mm"`` into metres; this
+module maps ``bearing.type`` to a builder of :mod:`bearingkit.bearings` through :data:`BUILDERS`,
+builds the :class:`~bearingkit.analysis.model.BearingModel`, checks that the rows fit the envelope,
+and forms the (C, 5) load matrix. Every malformed input raises
+:class:`bearingkit.errors.InputError` with one line: ``FILE: field (value) what was expected``.
+
+>>> from bearingkit.io.loader import load_file
+>>> bearing = load_file("examples/seed000_composite.toml")      # doctest: +SKIP
+>>> result = bearing.solve()                                     # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tomllib
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from pydantic import BaseModel, ValidationError
+
+from bearingkit.analysis.model import BearingModel
+from bearingkit.errors import InputError
+from bearingkit.io import schema
+
+#: Inner-ring DOF names, in the solver's order.
+DOF_NAMES = schema.DOF_CHOICES
+#: Load component names, in the solver's order.
+LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
+#: SI units of the load components.
+LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+#: Names accepted for ``--load KEY=VALUE`` on the command line → load-case field.
+LOAD_ALIASES: dict[str, str] = {
+    **{k: k for k in (*LOAD_NAMES, "eccentricity", "speed", "temperature")},
+    "Fx": "F_x",
+    "Fr": "F_x",
+    "Fy": "F_y",
+    "Fz": "F_z",
+    "Fa": "F_z",
+    "Mx": "M_x",
+    "My": "M_y",
+    "e": "eccentricity",
+    "n": "speed",
+    "T": "temperature",
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# Builder registry: bearing type → function(geometry dict (SI), material, name) → BearingModel.
+# ---------------------------------------------------------------------------------------------
+def _profile(geometry: dict):
+    from bearingkit.physics.profiles import make_profile
+
+    spec = geometry.get("profile")
+    if spec is None:
+        return None
+    params = {k: v for k, v in spec.items() if k != "name" and v is not None}
+    return make_profile(spec["name"], geometry["effective_length"], geometry["element_diameter"], **params)
+
+
+def _standard(builder_name: str, renames: dict | None = None):
+    def build(geometry: dict, material, name: str) -> BearingModel:
+        from bearingkit.bearings import standard
+
+        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in ("bore", "outer_diameter")}
+        for old, new in (renames or {}).items():
+            if old in kwargs:
+                kwargs[new] = kwargs.pop(old)
+        if "profile" in kwargs:
+            kwargs["profile"] = _profile(geometry)
+        if name:
+            kwargs["name"] = name
+        return getattr(standard, builder_name)(material=material, **kwargs)
+
+    return build
+
+
+def _turntable(builder_name: str):
+    def build(geometry: dict, material, name: str) -> BearingModel:
+        from bearingkit.bearings import turntable
+        from bearingkit.physics.profiles import PROFILES, SEED000_CROWNING
+
+        crowning = geometry.get("crowning")
+        if crowning is not None and crowning not in SEED000_CROWNING and crowning not in PROFILES:
+            raise InputError(
+                f"crowning ({crowning!r}) must be a seed-000 letter ({', '.join(SEED000_CROWNING)}) or a "
+                f"profile name ({', '.join(PROFILES)})"
+            )
+        overrides = {k: v for k, v in geometry.items() if v is not None}
+        if builder_name == "yrt_turntable":
+            overrides = {k: v for k, v in overrides.items() if k not in ("bore", "outer_diameter")}
+        model = getattr(turntable, builder_name)(material=material, **overrides)
+        return dataclasses.replace(model, name=name) if name else model
+
+    return build
+
+
+#: Bearing type → builder. Keys equal :data:`bearingkit.io.schema.GEOMETRY_MODELS`'s.
+BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
+    "composite_turntable": _turntable("composite_turntable"),
+    "yrt_turntable": _turntable("yrt_turntable"),
+    "deep_groove_ball": _standard("deep_groove_ball"),
+    "angular_contact_ball": _standard("angular_contact_ball"),
+    "angular_contact_pair": _standard("angular_contact_pair", {"clearance_axial": "axial_clearance"}),
+    "thrust_ball": _standard("thrust_ball"),
+    "cylindrical_roller": _standard("cylindrical_roller"),
+    "cylindrical_roller_thrust": _standard("cylindrical_roller_thrust"),
+}
+assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
+
+
+def register_bearing_type(name: str, geometry_model: type[BaseModel], builder: Callable) -> None:
+    """Add a bearing type to the input format.
+
+    Parameters
+    ----------
+    name : str
+        The ``bearing.type`` value.
+    geometry_model : pydantic model
+        Validates ``[geometry]`` (use the annotated types of :mod:`bearingkit.io.schema`, e.g.
+        ``schema.PositiveLength``, so values arrive in SI); unknown fields must be forbidden.
+    builder : callable
+        ``builder(geometry: dict (SI), material, name: str) -> BearingModel``.
+    """
+    if name in BUILDERS:
+        raise InputError(f"bearing type ({name!r}) is already registered")
+    schema.GEOMETRY_MODELS[name] = geometry_model
+    BUILDERS[name] = builder
+
+
+# ---------------------------------------------------------------------------------------------
+# Results of loading.
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LoadCase:
+    """One load case in SI.
+
+    Attributes
+    ----------
+    name : str
+    load : ndarray (5,) [N, N, N, N·m, N·m]
+        (F_x, F_y, F_z, M_x, M_y) on the inner ring, eccentricity already turned into M_y.
+    speed : float or None [rad/s]
+    temperature : float or None [°C]
+    """
+
+    name: str
+    load: np.ndarray
+    speed: float | None = None
+    temperature: float | None = None
+
+    def to_dict(self) -> dict:
+        """JSON-ready dict, units in keys."""
+        return {
+            "case": self.name,
+            "speed_rad_s": self.speed,
+            "temperature_C": self.temperature,
+        }
+
+
+@dataclass(frozen=True)
+class BearingInput:
+    """A loaded input file: the model, its load cases and the solver settings (all SI).
+
+    Attributes
+    ----------
+    source : str
+        File name (or ``"<string>"``) used in messages.
+    spec : schema.BearingFile
+        The validated file (geometry as a dict).
+    geometry : pydantic model
+        The validated geometry (SI floats), of ``schema.GEOMETRY_MODELS[spec.bearing.type]``.
+    model : BearingModel
+    material : bearingkit.materials.Material
+    lubricant : bearingkit.lubricants.Lubricant or None
+    cases : tuple of LoadCase
+    free : ndarray (5,) of bool
+    options : bearingkit.analysis.quasistatic.SolverOptions
+    """
+
+    source: str
+    spec: schema.BearingFile
+    geometry: BaseModel
+    model: BearingModel
+    material: object
+    lubricant: object | None
+    cases: tuple
+    free: np.ndarray
+    options: object
+
+    @property
+    def bearing_type(self) -> str:
+        return self.spec.bearing.type
+
+    def select(self, names: Iterable[str] | None) -> BearingInput:
+        """A copy holding only the load cases called ``names`` (all when None or empty)."""
+        names = list(names or ())
+        if not names:
+            return self
+        known = {c.name: c for c in self.cases}
+        for n in names:
+            if n not in known:
+                raise InputError(f"{self.source}: case ({n!r}) not in the file; cases are {list(known)}")
+        return dataclasses.replace(self, cases=tuple(known[n] for n in names))
+
+    def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
+        """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
+        _check_fixed_loads(self.source, cases, self.free)
+        return dataclasses.replace(self, cases=tuple(cases))
+
+    def load_matrix(self) -> np.ndarray:
+        """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases."""
+        if not self.cases:
+            raise InputError(f"{self.source}: load_cases (none): give at least one [[load_cases]] or --load")
+        return np.stack([c.load for c in self.cases])
+
+    def solve(self):
+        """Solve every load case in one batch; returns a QuasiStaticResult (``converged`` per case)."""
+        from bearingkit.analysis.quasistatic import solve
+
+        try:
+            return solve(self.model, self.load_matrix(), free=self.free, options=self.options)
+        except InputError as exc:
+            if str(exc).startswith(self.source):
+                raise
+            raise InputError(f"{self.source}: {exc}") from None
+
+
+# ---------------------------------------------------------------------------------------------
+# Entry points.
+# ---------------------------------------------------------------------------------------------
+def load_file(path) -> BearingInput:
+    """Read and validate a TOML input file; InputError (one line naming the file) if malformed."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(
+            f"{path}: cannot read the file ({type(exc).__name__}: {exc})".replace("\n", " ")
+        ) from None
+    return loads(text, source=str(path))
+
+
+def loads(text: str, source: str = "<string>") -> BearingInput:
+    """Validate TOML text (see :func:`load_file`)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{source}: not valid TOML ({exc})".replace("\n", " ")) from None
+    return from_dict(data, source)
+
+
+def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
+    """Validate an already-parsed file (a dict as ``tomllib`` returns it)."""
+    from bearingkit.analysis.quasistatic import SolverOptions
+
+    if not isinstance(data, dict):
+        raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
+    try:
+        spec = schema.BearingFile.model_validate(data)
+    except ValidationError as exc:
+        raise _one_line(source, exc, (), _section_models(None)) from None
+    gmodel = schema.GEOMETRY_MODELS[spec.bearing.type]
+    try:
+        geometry = gmodel.model_validate(_profile_as_table(spec.geometry))
+    except ValidationError as exc:
+        raise _one_line(source, exc, ("geometry",), _section_models(gmodel)) from None
+    material = _material(source, spec.material)
+    lubricant = _lubricant(source, spec.lubricant)
+    gdict = geometry.model_dump()
+    try:
+        model = BUILDERS[spec.bearing.type](gdict, material, spec.bearing.name)
+    except InputError as exc:
+        raise InputError(f"{source}: {_prefix_field(str(exc), 'geometry', gdict)}") from None
+    _check_envelope(source, model, gdict)
+    free = np.ones(5, bool)
+    if spec.solver.free is not None:
+        free = np.array([d in spec.solver.free for d in DOF_NAMES])
+    opts = {
+        k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
+    }
+    cases = tuple(_load_case(c) for c in spec.load_cases)
+    _check_fixed_loads(source, cases, free)
+    return BearingInput(
+        source=source,
+        spec=spec,
+        geometry=geometry,
+        model=model,
+        material=material,
+        lubricant=lubricant,
+        cases=cases,
+        free=free,
+        options=SolverOptions(**opts),
+    )
+
+
+def parse_load_options(items: Sequence[str], name: str = "command line") -> LoadCase:
+    """One load case from ``["Fa=5kN", "My=600N*m", …]`` (names in :data:`LOAD_ALIASES`)."""
+    fields: dict[str, str] = {}
+    for item in items:
+        key, sep, value = item.partition("=")
+        key = key.strip()
+        if not sep or not value.strip():
+            raise InputError(f"--load ({item!r}) must look like NAME=VALUE with a unit, e.g. Fa=5kN")
+        if key not in LOAD_ALIASES:
+            raise InputError(
+                f"--load ({item!r}): unknown name {key!r}; expected one of {', '.join(LOAD_ALIASES)}"
+            )
+        canonical = LOAD_ALIASES[key]
+        if canonical in fields:
+            raise InputError(f"--load ({item!r}): {canonical} given twice")
+        fields[canonical] = value.strip()
+    try:
+        spec = schema.LoadCaseSpec.model_validate({"name": name, **fields})
+    except ValidationError as exc:
+        raise _one_line("--load", exc, (), {"": schema.LoadCaseSpec}) from None
+    return _load_case(spec)
+
+
+# ---------------------------------------------------------------------------------------------
+# Helpers.
+# ---------------------------------------------------------------------------------------------
+def _load_case(spec: schema.LoadCaseSpec) -> LoadCase:
+    from bearingkit.analysis.quasistatic import load_vector
+
+    m_y = spec.M_y - (spec.eccentricity or 0.0) * spec.F_z
+    load = load_vector(F_x=spec.F_x, F_y=spec.F_y, F_z=spec.F_z, M_x=spec.M_x, M_y=m_y)
+    return LoadCase(spec.name, load, spec.speed, spec.temperature)
+
+
+def _check_fixed_loads(source: str, cases, free) -> None:
+    for c in cases:
+        for i in np.flatnonzero(~np.asarray(free)):
+            if c.load[i] != 0.0:
+                raise InputError(
+                    f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
+                    f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
+                )
+
+
+def _material(source: str, spec: schema.MaterialSpec | None):
+    from bearingkit.materials import MATERIALS, Material, get_material
+
+    if spec is None:
+        return get_material("GCr15")
+    if spec.name is not None:
+        if spec.name not in MATERIALS:
+            raise InputError(f"{source}: material.name ({spec.name!r}) must be one of {', '.join(MATERIALS)}")
+        return MATERIALS[spec.name]
+    try:
+        return Material(
+            name="custom",
+            youngs_modulus=spec.youngs_modulus,
+            poisson_ratio=spec.poisson_ratio,
+            density=spec.density,
+            source=f"{source} [material]",
+        )
+    except InputError as exc:
+        raise InputError(f"{source}: material.{exc}") from None
+
+
+def _lubricant(source: str, spec: schema.LubricantSpec | None):
+    from bearingkit.lubricants import LUBRICANTS
+
+    if spec is None:
+        return None
+    if spec.name not in LUBRICANTS:
+        raise InputError(f"{source}: lubricant.name ({spec.name!r}) must be one of {', '.join(LUBRICANTS)}")
+    return LUBRICANTS[spec.name]
+
+
+def _profile_as_table(geometry: dict) -> dict:
+    """Accept ``profile = "iso16281"`` as shorthand for ``profile = {name = "iso16281"}``."""
+    if isinstance(geometry.get("profile"), str):
+        return {**geometry, "profile": {"name": geometry["profile"]}}
+    return geometry
+
+
+def _radial_extent(row) -> tuple[float, float]:
+    """Smallest and largest radius [m] a row's elements occupy."""
+    radius = float(np.max(row.pitch_diameter)) / 2
+    if getattr(row, "orientation", "radial") != "radial":
+        half = float(np.max(row.effective_length)) / 2  # thrust roller: its axis is radial
+    else:
+        half = float(np.max(row.element_diameter)) / 2
+    return radius - half, radius + half
+
+
+def _check_envelope(source: str, model: BearingModel, geometry: dict) -> None:
+    """Rows must lie strictly between the bore and the outside diameter, when they are known."""
+    env = dict(model.metadata.get("geometry", {}))
+    env.update({k: geometry[k] for k in ("bore", "outer_diameter") if geometry.get(k) is not None})
+    bore, outer = env.get("bore"), env.get("outer_diameter")
+    if bore is not None and outer is not None and not bore < outer:
+        raise InputError(f"{source}: geometry.outer_diameter ({outer:.6g} m) must exceed bore ({bore:.6g} m)")
+    for row in model.rows:
+        r_in, r_out = _radial_extent(row)
+        if (bore is not None and r_in <= bore / 2) or (outer is not None and r_out >= outer / 2):
+            raise InputError(
+                f"{source}: geometry: row {row.name!r} spans diameters {2 * r_in * 1e3:.6g}–"
+                f"{2 * r_out * 1e3:.6g} mm, which must lie strictly between bore ({_mm(bore)}) "
+                f"and outer_diameter ({_mm(outer)})"
+            )
+
+
+def _mm(x) -> str:
+    return "not given" if x is None else f"{x * 1e3:.6g} mm"
+
+
+def _prefix_field(message: str, section: str, fields: dict) -> str:
+    """``"conformity (0.4) …"`` → ``"geometry.conformity (0.4) …"`` when the field is in the section."""
+    head = message.split(" ", 1)[0]
+    if head in fields:
+        return f"{section}.{message}"
+    return f"{section}: {message}"
+
+
+def _section_models(geometry_model) -> dict:
+    models = {
+        "": schema.BearingFile,
+        "bearing": schema.BearingHeader,
+        "material": schema.MaterialSpec,
+        "lubricant": schema.LubricantSpec,
+        "load_cases": schema.LoadCaseSpec,
+        "solver": schema.SolverSpec,
+    }
+    if geometry_model is not None:
+        models["geometry"] = geometry_model
+        models["geometry.profile"] = schema.ProfileSpec
+    return models
+
+
+def _dotted(loc) -> str:
+    out = ""
+    for part in loc:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out
+
+
+def _one_line(source: str, exc: ValidationError, prefix: tuple, models: dict) -> InputError:
+    """The first pydantic error as one line: FILE: field (value): what was expected."""
+    err = exc.errors(include_url=False)[0]
+    loc = (*prefix, *err["loc"])
+    path = _dotted(loc)
+    kind, value = err["type"], err.get("input")
+    shown = repr(value) if not isinstance(value, dict) else "a table"
+    if len(shown) > 60:
+        shown = shown[:57] + "..."
+    if kind == "value_error":
+        msg = str(err["ctx"]["error"]).replace("\n", " ")
+        field = str(err["loc"][-1]) if err["loc"] else ""
+        text = path + msg[len(field) :] if field and msg.startswith(field) else f"{path}: {msg}"
+    elif kind == "missing":
+        text = f"{path}: missing required field"
+    elif kind == "extra_forbidden":
+        section = ".".join(str(p) for p in loc[:-1] if not isinstance(p, int))
+        model = models.get(section)
+        valid = f"; expected one of {', '.join(model.model_fields)}" if model is not None else ""
+        text = f"{path} ({shown}): unknown field{valid}"
+    else:
+        text = f"{path} ({shown}): {err['msg']}"
+    return InputError(f"{source}: {text}".replace("\n", " "))
