@@ -289,3 +289,14 @@ def test_overlapping_rows_are_refused():
         name="far",
     )
     assert len(BearingModel((a, far)).rows) == 2
+
+
+def test_deep_groove_ball_bearing_carries_axial_load_through_its_contact_angle():
+    model = deep_groove_ball(
+        n_elements=9, element_diameter=0.0127, pitch_diameter=0.065, clearance_radial=15e-6
+    )
+    res = solve(model, load_vector(F_x=2000.0, F_z=1000.0))
+    assert res.converged.all()
+    alpha = res.rows[0].contact_angle[0]
+    assert alpha.max() > np.deg2rad(5)  # the free contact angle opened by the axial load
+    np.testing.assert_allclose(res.row_load("balls")[0, 2], 1000.0, rtol=1e-8)

@@ -491,7 +491,11 @@ def _offsets_for(model: BearingModel, raceway_offsets: dict | None):
 
 def _directions(problem: _Problem) -> np.ndarray:
     """Contact directions (M, 5) at the unloaded geometry: columns a contact can push on."""
-    return np.concatenate([k.G[0] if hasattr(k, "G") else k.directions[0] for k in problem.kernels], axis=0)
+    parts = []
+    for k in problem.kernels:
+        reach = getattr(k, "reach", None)
+        parts.append(reach if reach is not None else (k.G[0] if hasattr(k, "G") else k.directions[0]))
+    return np.concatenate(parts, axis=0)
 
 
 def _check_directions(problem: _Problem, load: np.ndarray) -> None:

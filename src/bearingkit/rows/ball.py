@@ -137,6 +137,11 @@ def _steel_e_reduced() -> float:
     return float(e_reduced(steel, steel))
 
 
+def one_sided_row(row: BallRow, alpha0) -> bool:
+    """Whether the row's grooves have a loaded shoulder only (see ``BallRow.one_sided``)."""
+    return row.one_sided if row.one_sided is not None else bool(np.any(np.asarray(alpha0) != 0.0))
+
+
 class BallKernel(KernelBase):
     """Precomputed geometry and stiffness of a :class:`BallRow` for fast repeated evaluation."""
 
@@ -177,11 +182,21 @@ class BallKernel(KernelBase):
         n0 = self.s0 / np.linalg.norm(self.s0, axis=-1, keepdims=True)
         n0 = np.broadcast_to(n0, np.broadcast_shapes(n0.shape, self.B.shape[:-1]))
         self.directions = np.einsum("...zij,...zi->...zj", self.B, n0)  # (C|1, Z, 5) contact normals
+        # What the row can push on at all: a two-sided groove (deep groove ball row) also carries
+        # axial load in either direction once the contact angle has moved; count both flanks.
+        if one_sided_row(row, alpha0):
+            self.reach = self.directions[0]
+        else:
+            flanks = [np.stack([np.cos(a), np.sin(a)], axis=-1) for a in (np.pi / 4, -np.pi / 4)]
+            self.reach = np.concatenate(
+                [np.einsum("zij,zi->zj", self.B[0], np.broadcast_to(f, self.B.shape[1:-1])) for f in flanks]
+                + [self.directions[0]]
+            )
         g0 = self.directions[0]
         k0 = np.broadcast_to(self.k_n, self.directions.shape[:2])[0]
         self.start_matrix = np.einsum("z,zi,zj->ij", k0, g0, g0)
         self.start_exponent = POINT_EXPONENT
-        one_sided = row.one_sided if row.one_sided is not None else bool(np.any(alpha0 != 0.0))
+        one_sided = one_sided_row(row, alpha0)
         self.side = np.sign(alpha0) if one_sided else np.zeros_like(alpha0)  # (C|1, 1): 0 = both sides
         self.pitch_radius = dm / 2
         self.char_length = float(np.max(dm) / 2)

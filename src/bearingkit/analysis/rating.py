@@ -1,0 +1,864 @@
+"""Load ratings, static safety and fatigue life of whole bearings from a quasi-static solution.
+
+SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s, lives in revolutions
+(``*_rev``) or hours (``*_h`` in the JSON output only), temperatures in °C (``temperature_C``, as in
+:mod:`bearingkit.lubricants`).
+
+:func:`rate` takes a :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` and, for every row,
+
+- rates the row as a single-row bearing of its own geometry: ISO 76 C0 and ISO 281 C
+  (:data:`ROW_RATERS` maps ``row.kind`` to a rater; new row kinds register themselves with
+  :func:`register_row_rater`);
+- computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
+  slice loads (rollers), with the rotating ring chosen by ``rotating``;
+- computes the static safety s0 = (p_limit / p_max)^n from the largest contact pressure
+  (:func:`bearingkit.physics.iso76.static_safety_from_pressure`);
+- flags truncated contact ellipses (ball rows), edge loading (roller rows), stress above the ISO 76 limit,
+  unloaded rows and non-converged cases as warnings;
+
+and combines the rows into the system life of the bearing (:func:`system_life`). Values that cannot be
+computed are *masked* (``numpy.ma``; ``None`` in :meth:`RatingResult.to_dict`) and explained by a warning —
+never NaN.
+
+References: ISO 76:2006, ISO 281:2007, ISO/TS 16281:2008, ISO/TR 1281-1; Lundberg & Palmgren (1947, 1952);
+Harris & Kotzalas 2007 vol. 2 ch. 8; Zaretsky (2013) NASA/TP-2013-215305.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from bearingkit import checks, references
+from bearingkit.errors import InputError
+from bearingkit.physics import iso76, iso281, iso16281
+
+__all__ = [
+    "DEFAULT_EDGE_PRESSURE_RATIO",
+    "DEFAULT_SHOULDER_HEIGHT",
+    "EDGE_STRESS_MODES",
+    "ROW_RATERS",
+    "WEIBULL_SLOPES",
+    "RatingOptions",
+    "RatingResult",
+    "RowContext",
+    "RowRating",
+    "rate",
+    "rate_ball_row",
+    "rate_cylindrical_row",
+    "register_row_rater",
+    "system_life",
+]
+
+references.add(
+    "lundberg1952",
+    "Lundberg G., Palmgren A. (1952) Dynamic capacity of roller bearings. Acta Polytech. Mech. Eng. Ser. "
+    "2(4).",
+)
+references.add(
+    "zaretsky2013",
+    "Zaretsky E.V. (2013) Rolling bearing life prediction, theory, and application. NASA/TP-2013-215305.",
+)
+
+#: Shoulder (land) height of a ball groove above the groove bottom, as a fraction of the ball diameter
+#: [-]. Not stored on the rows; an assumed, deliberately shallow value (deep groove rings are made with
+#: groove depths of roughly 0.2–0.3 D_w), so the truncation warning errs on the safe side. Valid
+#: 0 < h/D_w < f (the groove radius over D_w).
+DEFAULT_SHOULDER_HEIGHT = 0.20
+#: Edge-loading criterion for roller rows [-]: a roller end slice whose Hertz pressure reaches this
+#: fraction of the row's largest slice pressure means the contact runs to the roller end, where the real
+#: pressure has an edge peak the slice model does not resolve. Engineering choice; valid (0, 1].
+DEFAULT_EDGE_PRESSURE_RATIO = 0.8
+#: When the ISO/TS 16281 edge-stress factor f_k multiplies the slice loads: ``"auto"`` for rollers
+#: without a crowning profile (profile None), ``"always"``, ``"never"``.
+EDGE_STRESS_MODES = ("auto", "always", "never")
+#: Seconds per hour (L10h output).
+HOUR = 3600.0
+#: Newton iterations and relative tolerance of the mixed-slope system-life root.
+_SYSTEM_ITERATIONS, _SYSTEM_TOL = 100, 1e-13
+
+_REFERENCES = (
+    "iso76",
+    "iso281",
+    "iso16281",
+    "iso_tr1281_1",
+    "lundberg1947",
+    "lundberg1952",
+    "harris2007",
+    "zaretsky2013",
+)
+
+
+@dataclass(frozen=True)
+class RatingOptions:
+    """Settings of :func:`rate` (validated on construction).
+
+    Parameters
+    ----------
+    rotating : {"inner", "outer"}
+        Ring rotating relative to the load (ISO/TS 16281 equivalent-load means).
+    reliability : float
+        Reliability of the L_nr / L_nmr lives [-], 0.90 … 0.9995 (ISO 281 Table 12).
+    speed : float or ndarray (C,) or None [rad/s]
+        Relative speed of the rotating ring; lives in hours and κ need it.
+    lubricant : Lubricant or str or None
+        Lubricant for κ (:func:`bearingkit.lubricants.as_lubricant`).
+    temperature_C : float or ndarray (C,) or None [°C]
+        Operating temperature for the lubricant viscosity.
+    contamination_factor : float or ndarray (C,) or None [-]
+        e_C of ISO 281 9.3.3, 0 … 1.
+    shoulder_height : float or Mapping[str, float]
+        Groove shoulder height / D_w [-] (per row name if a mapping), see :data:`DEFAULT_SHOULDER_HEIGHT`.
+    edge_pressure_ratio : float
+        See :data:`DEFAULT_EDGE_PRESSURE_RATIO`.
+    edge_stress_factor : str
+        One of :data:`EDGE_STRESS_MODES`.
+    load_ratings : Mapping[str, float]
+        Basic dynamic load rating C [N] per row name, replacing the ISO 281 computation (catalogue values,
+        or rows whose ISO 281 factors are not shipped, e.g. thrust cylindrical rollers).
+    """
+
+    rotating: str = "inner"
+    reliability: float = 0.9
+    speed: object = None
+    lubricant: object = None
+    temperature_C: object = None
+    contamination_factor: object = None
+    shoulder_height: object = DEFAULT_SHOULDER_HEIGHT
+    edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO
+    edge_stress_factor: str = "auto"
+    load_ratings: Mapping = field(default_factory=dict)
+
+    def __post_init__(self):
+        checks.one_of("rotating", self.rotating, ("inner", "outer"))
+        checks.in_range("reliability", self.reliability, 0.9, 0.9995)
+        if self.speed is not None:
+            checks.positive("speed", self.speed, "rad/s")
+        heights = self.shoulder_height
+        for value in heights.values() if isinstance(heights, Mapping) else (heights,):
+            checks.positive("shoulder_height", value)
+        checks.in_range("edge_pressure_ratio", self.edge_pressure_ratio, 0.0, 1.0)
+        checks.positive("edge_pressure_ratio", self.edge_pressure_ratio)
+        checks.one_of("edge_stress_factor", self.edge_stress_factor, EDGE_STRESS_MODES)
+        for name, c in self.load_ratings.items():
+            checks.positive(f"load_ratings[{name!r}]", c, "N")
+        lube = (self.lubricant, self.temperature_C, self.contamination_factor)
+        given = [v is not None for v in lube]
+        if any(given) and not all(given):
+            missing = [
+                n
+                for n, g in zip(("lubricant", "temperature_C", "contamination_factor"), given, strict=True)
+                if not g
+            ]
+            raise InputError(
+                f"{', '.join(missing)} (None) must be given with the other life-modification inputs "
+                "(lubricant, temperature_C, contamination_factor) for a_ISO"
+            )
+        if all(given):
+            if self.speed is None:
+                raise InputError("speed (None) must be given for a_ISO: the viscosity ratio κ needs it")
+            checks.in_range("contamination_factor", self.contamination_factor, 0.0, 1.0)
+
+    @property
+    def modified(self) -> bool:
+        """True when a_ISO is requested (lubricant, temperature and contamination given)."""
+        return self.lubricant is not None
+
+
+def _masked(values, mask) -> np.ma.MaskedArray:
+    return np.ma.masked_array(np.asarray(values, dtype=float), mask=np.asarray(mask, dtype=bool))
+
+
+def system_life(lives, slopes) -> np.ndarray:
+    """L10 of a system of independently failing rows [same unit as ``lives``].
+
+    With two-parameter Weibull survival S_i(L) = 0.9^((L/L_i)^{e_i}) per row, the system survives when all
+    rows do, so its L10 solves
+
+    .. math:: \\sum_i (L_{sys} / L_i)^{e_i} = 1,
+
+    which for one common slope e is the Lundberg–Palmgren system life
+    :math:`L_{sys} = (\\sum_i L_i^{-e})^{-1/e}`. Slopes: e = 10/9 for point contact (balls), 9/8 for line
+    contact (rollers) — Lundberg & Palmgren 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8; Zaretsky 2013
+    NASA/TP-2013-215305; they are the slopes behind ISO 281:2007 eq. (7) and (12) (exponents
+    p·e = 3·10/9 = 10/3 and 4·9/8 = 9/2) and ISO/TS 16281 (raceway exponents −1/e = −0.9 and −8/9).
+    Mixed slopes (ball–roller composites) are solved by Newton's method in ln L (the left side is convex
+    and increasing in ln L; the start at min L_i lies right of the root, so the iteration is monotone).
+
+    Parameters
+    ----------
+    lives : array_like (R, ...)
+        Row lives L_i [rev] (> 0; +inf for rows that carry no load), rows on the first axis.
+    slopes : array_like (R,)
+        Weibull slopes e_i [-], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        L_sys, shape ``lives.shape[1:]``; +inf where every row has an infinite life.
+    """
+    life = np.asarray(lives, dtype=float)
+    e = np.asarray(slopes, dtype=float)
+    checks.positive("slopes", e)
+    if np.any(~(life > 0)):
+        raise InputError(f"lives ({checks._fmt(life)}) must be positive (+inf for unloaded rows)")
+    e = e.reshape((-1,) + (1,) * (life.ndim - 1))
+    log_l = np.log(life)
+    finite = np.isfinite(life).any(axis=0)
+    if np.all(e == e.flat[0]):
+        s = np.sum(np.exp(-e * log_l), axis=0)
+        with np.errstate(divide="ignore"):
+            return np.where(finite, s ** (-1.0 / e.flat[0]), np.inf)
+    x = np.where(finite, np.min(np.where(np.isfinite(log_l), log_l, np.inf), axis=0), 0.0)
+    for _ in range(_SYSTEM_ITERATIONS):
+        terms = np.exp(e * (x - log_l))
+        f = terms.sum(axis=0) - 1.0
+        step = f / np.maximum((e * terms).sum(axis=0), 1e-300)
+        x = np.where(finite, x - step, x)
+        if np.all(np.abs(step) < _SYSTEM_TOL):
+            break
+    return np.where(finite, np.exp(x), np.inf)
+
+
+# --- per-row ratings ------------------------------------------------------------------------------------
+
+#: Weibull slope e of the life scatter [-]: 10/9 point contact, 9/8 line contact (Lundberg & Palmgren
+#: 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8); the slopes behind the ISO/TS 16281 raceway exponents.
+WEIBULL_SLOPES = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
+#: ISO 281:2007 5.1.1 / 6.1.1: the f_c tables hold for groove radii r_i <= 0.52 D_w and r_e <= 0.53 D_w
+#: (radial ball), r <= 0.54 D_w (thrust ball); larger radii lower the real rating.
+ISO281_CONFORMITY_LIMITS = {"radial": (0.52, 0.53), "thrust": (0.54, 0.54)}
+
+
+@dataclass
+class RowContext:
+    """What a row rater needs besides its row and state."""
+
+    options: RatingOptions
+    converged: np.ndarray
+    n_cases: int
+
+
+@dataclass
+class RowRating:
+    """Ratings of one row over the cases (arrays (C,), masked where a value is not available).
+
+    Attributes
+    ----------
+    name, kind : str
+        Row name and ``row.kind``.
+    bearing_type : str
+        The ISO 281 bearing type the row is rated as (``deep_groove_ball``, ``angular_contact_ball``,
+        ``thrust_ball``, ``cylindrical_roller``, ``thrust_cylindrical_roller``).
+    element : {"ball", "roller"}
+    weibull_slope : float
+        e [-] (:data:`WEIBULL_SLOPES`).
+    load_rating, static_rating : MaskedArray [N]
+        ISO 281 C and ISO 76 C0 of the row as a single-row bearing.
+    life : MaskedArray [rev]
+        ISO/TS 16281 basic reference rating life L10r.
+    reference_load : MaskedArray [N]
+        P_ref = C (L10r/10⁶)^(−1/p).
+    life_modification : MaskedArray [-]
+        a_ISO (masked unless lubrication inputs were given).
+    modified_life_90, modified_life : MaskedArray [rev]
+        a_ISO L10r and a1 a_ISO L10r.
+    static_safety : MaskedArray [-]
+        s0 from the largest contact pressure.
+    max_pressure : ndarray [Pa]
+    loaded_count : ndarray of int
+    valid : ndarray of bool
+        The case converged.
+    flags : dict of str to ndarray of bool
+        ``unloaded``, ``static_overload``, ``truncated_ellipse`` (balls), ``edge_loading`` (rollers).
+    warnings : list of list of str
+        Per case.
+    references : tuple of str
+    """
+
+    name: str
+    kind: str
+    bearing_type: str
+    element: str
+    weibull_slope: float
+    load_rating: np.ma.MaskedArray
+    static_rating: np.ma.MaskedArray
+    life: np.ma.MaskedArray
+    reference_load: np.ma.MaskedArray
+    life_modification: np.ma.MaskedArray
+    modified_life_90: np.ma.MaskedArray
+    modified_life: np.ma.MaskedArray
+    static_safety: np.ma.MaskedArray
+    max_pressure: np.ndarray
+    loaded_count: np.ndarray
+    valid: np.ndarray
+    flags: dict
+    warnings: list
+    references: tuple = ()
+
+
+def _attempt(what: str, fn, notes: list):
+    """``fn()``; an InputError (a table range, a missing factor) becomes a note and None."""
+    try:
+        return fn()
+    except InputError as exc:
+        notes.append(f"{what} unavailable: {exc}")
+        return None
+
+
+def _assemble(row, state, ctx: RowContext, *, bearing_type, element, c, c0, life_fn, flags, notes, aiso_kind):
+    """Everything that is common to the row kinds: masks, s0, a_ISO, warnings."""
+    n, opts = ctx.n_cases, ctx.options
+    valid = ctx.converged
+    loaded = (state.loaded_count > 0) & valid
+    ones = np.ones(n)
+    c_arr = None if c is None else np.broadcast_to(np.asarray(c, float), (n,))
+    c0_arr = None if c0 is None else np.broadcast_to(np.asarray(c0, float), (n,))
+    p_max = state.max_pressure.max(axis=-1)
+    limit_kind = "ball" if element == "ball" else "roller"
+    s0 = iso76.static_safety_from_pressure(np.where(loaded, p_max, 1.0), limit_kind)
+    s0 = _masked(np.where(loaded, s0, 0.0), ~loaded)
+    overload = loaded & (np.ma.getdata(s0) < 1.0)
+
+    life_mask = ~loaded if c_arr is not None else np.ones(n, bool)
+    life = np.zeros(n) if c_arr is None or not loaded.any() else life_fn(c_arr, loaded)
+    life = _masked(np.where(life_mask, 0.0, life), life_mask)
+    p_ref = _masked(ones, np.ones(n, bool))
+    if c_arr is not None:
+        safe_life = np.where(life_mask, 1.0e6, np.ma.getdata(life))
+        p_ref = _masked(
+            np.where(life_mask, 0.0, iso16281.reference_equivalent_load(safe_life, c_arr, element)), life_mask
+        )
+
+    a_iso = _masked(ones, True)
+    kappa_low = np.zeros(n, bool)
+    if opts.modified and c_arr is not None and c0_arr is not None:
+        from bearingkit.lubricants import as_lubricant
+
+        nu = as_lubricant(opts.lubricant).kinematic_viscosity(opts.temperature_C)
+        dm = np.asarray(row.pitch_diameter, float)
+        kappa = iso281.viscosity_ratio(nu, opts.speed, dm) * ones
+        kappa_low = kappa < iso281.KAPPA_MIN
+        cu = iso281.fatigue_load_limit_estimate(c0_arr, dm, element)
+        p_safe = np.where(life_mask, c_arr, np.ma.getdata(p_ref))
+        a = iso281.life_modification_factor(
+            np.maximum(kappa, iso281.KAPPA_MIN), opts.contamination_factor, cu, p_safe, aiso_kind
+        )
+        a_iso = _masked(a, life_mask | kappa_low)
+    a1 = float(iso281.reliability_factor(opts.reliability))
+    mod90 = a_iso * life
+    flags = {"unloaded": valid & ~loaded, "static_overload": overload, **flags}
+
+    warnings = []
+    for k in range(n):
+        w = [] if not valid[k] else list(notes)
+        if valid[k] and not loaded[k]:
+            w.append("no loaded element: no fatigue life or static safety; excluded from the system life")
+        if overload[k]:
+            p_lim = iso76.CONTACT_LIMITS[limit_kind][0]
+            w.append(
+                f"static safety s0 = {float(s0[k]):.3g} < 1: max contact pressure {p_max[k] / 1e6:.0f} MPa "
+                f"exceeds the ISO 76 limit {p_lim / 1e6:.0f} MPa"
+            )
+        if flags.get("truncated_ellipse", np.zeros(n, bool))[k]:
+            w.append(
+                "contact ellipse truncated by the groove shoulder (shoulder height "
+                f"{_shoulder(opts, row.name):g} D_w assumed): Hertz pressure and life are optimistic"
+            )
+        if flags.get("edge_loading", np.zeros(n, bool))[k]:
+            w.append(
+                f"edge loading: a roller end slice reaches {opts.edge_pressure_ratio:.0%} of the row's "
+                "largest slice pressure; the slice model does not resolve the edge stress peak"
+            )
+        if kappa_low[k] and loaded[k]:
+            w.append(f"viscosity ratio kappa below {iso281.KAPPA_MIN:g}: a_ISO not defined (ISO 281 9.3.3)")
+        warnings.append(w)
+    return RowRating(
+        name=row.name,
+        kind=row.kind,
+        bearing_type=bearing_type,
+        element=element,
+        weibull_slope=WEIBULL_SLOPES[element],
+        load_rating=_masked(c_arr if c_arr is not None else ones, np.full(n, c_arr is None)),
+        static_rating=_masked(c0_arr if c0_arr is not None else ones, np.full(n, c0_arr is None)),
+        life=life,
+        reference_load=p_ref,
+        life_modification=a_iso,
+        modified_life_90=mod90,
+        modified_life=mod90 * a1,
+        static_safety=s0,
+        max_pressure=np.where(valid, p_max, 0.0),
+        loaded_count=np.where(valid, state.loaded_count, 0),
+        valid=valid,
+        flags=flags,
+        warnings=warnings,
+        references=_REFERENCES,
+    )
+
+
+def _shoulder(opts: RatingOptions, name: str) -> float:
+    h = opts.shoulder_height
+    return float(h.get(name, DEFAULT_SHOULDER_HEIGHT) if isinstance(h, Mapping) else h)
+
+
+def _given_rating(ctx: RowContext, row, notes):
+    c = ctx.options.load_ratings.get(row.name)
+    if c is not None:
+        notes.append(f"C = {float(c):.6g} N given by the user (load_ratings), not computed by ISO 281")
+    return c
+
+
+def _one_class(name, values):
+    arr = np.atleast_1d(values)
+    if not (np.all(arr) or not np.any(arr)):
+        raise InputError(f"{name} must not mix radial and thrust rows within one batched row geometry")
+    return bool(arr.flat[0])
+
+
+def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
+    """Rate a :class:`~bearingkit.rows.ball.BallRow`.
+
+    Mapping by the free contact angle |α₀|: 0 → ``deep_groove_ball``; (0, 45°] → ``angular_contact_ball``
+    (ISO 281 Table 2 / ISO 76 Table 1 with γ = D_w cos α/D_pw); (45°, 90°] → ``thrust_ball`` (Tables 4 and 3;
+    ISO 281 f_c is shipped for 45°–75° and 90° only, other angles report C unavailable). L10r uses the
+    nominal |α₀| in the raceway ratings (the operating angle enters through the element loads only) and the
+    ball normal loads, equal at both raceways (no centrifugal force in the quasi-static engine).
+
+    Truncation: the groove of radius r = f D_w ends at a shoulder h = ``shoulder_height`` · D_w above its
+    bottom (bottom at 0 for radial/angular rows, at ±90° for thrust rows), i.e. at the angle
+    θ_s = arccos(1 − h/r) from the bottom seen from the groove centre; the ellipse of semi-major axis a spans
+    θ_a = arcsin(a/r) about the contact point, so it is truncated when |α − α_bottom| + θ_a > θ_s.
+    """
+    notes: list[str] = []
+    alpha0 = np.asarray(row.contact_angle, float)
+    a_abs = np.abs(alpha0)
+    thrust = _one_class("contact_angle", a_abs > iso281.RADIAL_MAX_ANGLE)
+    radial_zero = _one_class("contact_angle", a_abs == 0.0)
+    kind = "thrust" if thrust else "radial"
+    btype = "thrust_ball" if thrust else ("deep_groove_ball" if radial_zero else "angular_contact_ball")
+    d, dm, z = row.element_diameter, row.pitch_diameter, row.n_elements
+    fi, fo = np.asarray(row.conformity_inner, float), np.asarray(row.conformity_outer, float)
+    c0 = _attempt("C0 (ISO 76)", lambda: iso76.static_rating_ball(d, dm, a_abs, z, kind=kind), notes)
+    c = _given_rating(ctx, row, notes)
+    if c is None:
+        c = _attempt(
+            "C (ISO 281)", lambda: iso281.dynamic_rating_ball(d, dm, a_abs, z, bearing_type=btype), notes
+        )
+        lim_i, lim_o = ISO281_CONFORMITY_LIMITS[kind]
+        if c is not None and (np.any(fi > lim_i) or np.any(fo > lim_o)):
+            notes.append(
+                f"groove conformities ({np.max(fi):g}, {np.max(fo):g}) exceed the ISO 281 assumption "
+                f"({lim_i:g}, {lim_o:g}): C overestimates the rating"
+            )
+
+    def life_fn(c_arr, loaded):
+        qci, qce = iso16281.ball_raceway_ratings(c_arr, d, dm, a_abs, fi * d, fo * d, z, kind=kind)
+        loads = np.where(loaded[:, None], state.load, 1.0)
+        return iso16281.ball_reference_life(loads, qci, qce, rotating=ctx.options.rotating)
+
+    dw = np.asarray(d, float).reshape(-1, 1)
+    h = _shoulder(ctx.options, row.name) * dw
+    bottom = np.where(thrust, np.sign(alpha0) * np.pi / 2, 0.0).reshape(-1, 1)
+    off = np.abs(state.contact_angle - bottom)
+    truncated = np.zeros(state.load.shape, bool)
+    for side, f in (("inner", fi), ("outer", fo)):
+        r = np.asarray(f, float).reshape(-1, 1) * dw
+        theta_s = np.arccos(np.clip(1.0 - h / r, -1.0, 1.0))
+        theta_a = np.arcsin(np.clip(state.extras[f"semi_major_{side}"] / r, 0.0, 1.0))
+        truncated |= (state.load > 0) & (off + theta_a > theta_s)
+    flags = {"truncated_ellipse": ctx.converged & truncated.any(axis=-1)}
+    aiso_kind = "thrust_ball" if thrust else "radial_ball"
+    return _assemble(
+        row,
+        state,
+        ctx,
+        bearing_type=btype,
+        element="ball",
+        c=c,
+        c0=c0,
+        life_fn=life_fn,
+        flags=flags,
+        notes=notes,
+        aiso_kind=aiso_kind,
+    )
+
+
+def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
+    """Rate a :class:`~bearingkit.rows.cylindrical.CylindricalRow`.
+
+    Radial rows → ``cylindrical_roller`` (α = 0; ISO 281 f_c from the ISO/TR 1281-1 closed form, ISO 76
+    eq. (3)); thrust rows → ``thrust_cylindrical_roller`` (α = 90°; ISO 76 eq. (8); ISO 281 Table 9 is not
+    shipped, so C — and with it L10r — is unavailable unless ``load_ratings`` gives it). L10r from the
+    slice loads (ISO/TS 16281 eq. (58)-(65)), with the edge-stress factor f_k of eq. (60) per
+    ``edge_stress_factor``. Edge loading: an end slice whose pressure reaches ``edge_pressure_ratio`` of the
+    row's largest slice pressure (not assessed for n_s = 1).
+    """
+    notes: list[str] = []
+    opts = ctx.options
+    thrust = row.orientation != "radial"
+    kind = "thrust" if thrust else "radial"
+    alpha = np.pi / 2 if thrust else 0.0
+    btype = "thrust_cylindrical_roller" if thrust else "cylindrical_roller"
+    d, length, dm, z, n_s = (
+        row.element_diameter,
+        row.effective_length,
+        row.pitch_diameter,
+        row.n_elements,
+        row.n_slices,
+    )
+    c0 = _attempt(
+        "C0 (ISO 76)", lambda: iso76.static_rating_roller(d, length, dm, alpha, z, kind=kind), notes
+    )
+    c = _given_rating(ctx, row, notes)
+    if c is None:
+        c = _attempt(
+            "C (ISO 281)",
+            lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=btype),
+            notes,
+        )
+    use_fk = opts.edge_stress_factor == "always" or (
+        opts.edge_stress_factor == "auto" and row.profile is None
+    )
+    if use_fk and n_s < 2:
+        notes.append("edge-stress factor not applied: n_slices = 1")
+        use_fk = False
+    if n_s < 2:
+        notes.append("edge loading not assessed: n_slices = 1")
+
+    def life_fn(c_arr, loaded):
+        qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s, kind=kind)
+        loads = np.where(loaded[:, None, None], state.slice_load, 1.0)
+        fk = iso16281.edge_stress_factor(n_s) if use_fk else None
+        return iso16281.roller_reference_life(loads, qci, qce, rotating=opts.rotating, slice_factor=fk)
+
+    edge = np.zeros(ctx.n_cases, bool)
+    if n_s >= 2:
+        p = np.maximum(state.extras["slice_pressure_inner"], state.extras["slice_pressure_outer"])
+        p_row = p.max(axis=(-2, -1))
+        p_end = np.maximum(p[..., 0], p[..., -1])
+        edge = (p_row > 0) & np.any(p_end >= opts.edge_pressure_ratio * p_row[:, None], axis=-1)
+    flags = {"edge_loading": ctx.converged & edge}
+    return _assemble(
+        row,
+        state,
+        ctx,
+        bearing_type=btype,
+        element="roller",
+        c=c,
+        c0=c0,
+        life_fn=life_fn,
+        flags=flags,
+        notes=notes,
+        aiso_kind="thrust_roller" if thrust else "radial_roller",
+    )
+
+
+#: Row raters by ``row.kind``: ``rater(row, state: RowState, ctx: RowContext) -> RowRating``.
+ROW_RATERS: dict[str, Callable] = {"ball": rate_ball_row, "cylindrical": rate_cylindrical_row}
+
+
+def register_row_rater(kind: str, rater: Callable) -> Callable:
+    """Register the rater of a row kind (tapered, threaded rows add themselves here); returns ``rater``."""
+    if not isinstance(kind, str) or not kind:
+        raise InputError(f"kind ({kind!r}) must be a non-empty row kind name")
+    ROW_RATERS[kind] = rater
+    return rater
+
+
+def _combine(rows: list[RowRating], attr: str, n_cases: int) -> tuple[np.ma.MaskedArray, list[list[str]]]:
+    """System life from the rows' ``attr`` lives; rows without load count as infinitely lived."""
+    notes: list[list[str]] = [[] for _ in range(n_cases)]
+    lives, slopes, mask = [], [], np.zeros(n_cases, bool)
+    for r in rows:
+        value = getattr(r, attr)
+        unloaded = r.loaded_count == 0
+        missing = np.ma.getmaskarray(value) & ~unloaded
+        for c in np.flatnonzero(missing & r.valid):
+            notes[c].append(f"system: no life because row {r.name!r} has none")
+        mask |= missing | ~r.valid
+        lives.append(np.where(unloaded | missing, np.inf, np.ma.getdata(value)))
+        slopes.append(r.weibull_slope)
+    life = system_life(np.array(lives), np.array(slopes))
+    none_loaded = ~np.isfinite(life)
+    for c in np.flatnonzero(none_loaded & ~mask):
+        notes[c].append("system: no row carries load, no fatigue life")
+    return _masked(np.where(mask | none_loaded, 0.0, life), mask | none_loaded), notes
+
+
+@dataclass
+class RatingResult:
+    """Ratings and lives of a bearing over the load cases of a quasi-static result (leading axis C).
+
+    Attributes
+    ----------
+    rows : list of RowRating
+        Per-row ratings (C, C0, L10r, s0, …), arrays (C,) masked where not available.
+    life : numpy.ma.MaskedArray (C,) [rev]
+        System basic reference rating life L10r (90 % reliability).
+    life_reliability : numpy.ma.MaskedArray (C,) [rev]
+        L_nr = a1 · L10r at ``reliability``.
+    modified_life : numpy.ma.MaskedArray (C,) [rev]
+        L_nmr = a1 · L_sys(a_ISO,i · L10r,i); masked unless lubrication inputs were given.
+    static_safety : numpy.ma.MaskedArray (C,) [-]
+        Smallest static safety over the loaded rows.
+    speed : ndarray (C,) or None [rad/s]
+    reliability, a1 : float
+    converged : ndarray (C,) of bool
+    warnings : list of list of str
+        Per case: every warning of the rows (prefixed by the row name) and of the system.
+    references : tuple of str
+        Keys of :mod:`bearingkit.references`.
+    """
+
+    bearing: str
+    rows: list
+    life: np.ma.MaskedArray
+    life_reliability: np.ma.MaskedArray
+    modified_life: np.ma.MaskedArray
+    static_safety: np.ma.MaskedArray
+    speed: np.ndarray | None
+    reliability: float
+    a1: float
+    rotating: str
+    converged: np.ndarray
+    warnings: list
+    references: tuple = _REFERENCES
+
+    @property
+    def n_cases(self) -> int:
+        return len(self.converged)
+
+    def row(self, name: str) -> RowRating:
+        """The rating of the row called ``name``."""
+        for r in self.rows:
+            if r.name == name:
+                return r
+        raise InputError(f"row ({name!r}) not in rating; rows are {[r.name for r in self.rows]}")
+
+    def hours(self, life) -> np.ma.MaskedArray:
+        """A life [rev] (C,) in hours at ``speed`` (masked when no speed was given)."""
+        life = np.ma.asarray(life)
+        if self.speed is None:
+            return _masked(np.zeros(life.shape), True)
+        data = iso281.life_in_seconds(np.ma.filled(life.astype(float), 0.0), self.speed) / HOUR
+        return _masked(data, np.ma.getmaskarray(life))
+
+    def to_dict(self, case: int | None = None) -> dict | list[dict]:
+        """JSON-ready dict for one case (list over cases when None); units in keys, masked → None."""
+        if case is None:
+            return [self.to_dict(c) for c in range(self.n_cases)]
+
+        def val(a):
+            a = np.ma.asarray(a)
+            return None if np.ma.getmaskarray(a)[case] else float(np.ma.getdata(a)[case])
+
+        rows = []
+        for r in self.rows:
+            rows.append(
+                {
+                    "name": r.name,
+                    "kind": r.kind,
+                    "bearing_type": r.bearing_type,
+                    "element": r.element,
+                    "weibull_slope": r.weibull_slope,
+                    "C_N": val(r.load_rating),
+                    "C0_N": val(r.static_rating),
+                    "L10r_rev": val(r.life),
+                    "L10r_h": val(self.hours(r.life)),
+                    "Lnr_rev": val(r.life * self.a1),
+                    "P_ref_N": val(r.reference_load),
+                    "a_ISO": val(r.life_modification),
+                    "Lnmr_rev": val(r.modified_life),
+                    "Lnmr_h": val(self.hours(r.modified_life)),
+                    "static_safety": val(r.static_safety),
+                    "max_pressure_Pa": float(r.max_pressure[case]),
+                    "loaded_count": int(r.loaded_count[case]),
+                    "flags": {k: bool(v[case]) for k, v in r.flags.items()},
+                }
+            )
+        return {
+            "bearing": self.bearing,
+            "converged": bool(self.converged[case]),
+            "rotating": self.rotating,
+            "speed_rad_s": None if self.speed is None else float(self.speed[case]),
+            "reliability": self.reliability,
+            "a1": self.a1,
+            "rows": rows,
+            "system": {
+                "L10r_rev": val(self.life),
+                "L10h_h": val(self.hours(self.life)),
+                "Lnr_rev": val(self.life_reliability),
+                "Lnr_h": val(self.hours(self.life_reliability)),
+                "Lnmr_rev": val(self.modified_life),
+                "Lnmr_h": val(self.hours(self.modified_life)),
+                "static_safety": val(self.static_safety),
+            },
+            "warnings": list(self.warnings[case]),
+            "references": list(self.references),
+        }
+
+    def to_pandas(self):
+        """One line per case and row: C, C0, L10r, s0, max pressure (SI columns; masked → NaN)."""
+        import pandas as pd
+
+        frames = []
+        for r in self.rows:
+            frames.append(
+                pd.DataFrame(
+                    {
+                        "case": np.arange(self.n_cases),
+                        "row": r.name,
+                        "C_N": np.ma.filled(r.load_rating, np.nan),
+                        "C0_N": np.ma.filled(r.static_rating, np.nan),
+                        "L10r_rev": np.ma.filled(r.life, np.nan),
+                        "static_safety": np.ma.filled(r.static_safety, np.nan),
+                        "max_pressure_Pa": r.max_pressure,
+                    }
+                )
+            )
+        return pd.concat(frames, ignore_index=True)
+
+
+def _per_case(name, value, n_cases, unit=""):
+    if value is None:
+        return None
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim > 1 or (arr.ndim == 1 and arr.shape[0] not in (1, n_cases)):
+        raise InputError(
+            f"{name} (shape {arr.shape}) must be a scalar or have one value per case ({n_cases})"
+        )
+    return np.broadcast_to(arr, (n_cases,)).copy()
+
+
+def rate(
+    result,
+    *,
+    speed=None,
+    rotating: str = "inner",
+    reliability: float = 0.9,
+    lubricant=None,
+    temperature_C=None,
+    contamination_factor=None,
+    shoulder_height=DEFAULT_SHOULDER_HEIGHT,
+    edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO,
+    edge_stress_factor: str = "auto",
+    load_ratings: Mapping | None = None,
+) -> RatingResult:
+    """Rate every row of a solved bearing and combine the rows into the system life.
+
+    Per row (see :class:`RowRating` and :data:`ROW_RATERS`): ISO 76 C0 and ISO 281 C of the row as a
+    single-row bearing; ISO/TS 16281 L10r from the solved loads,
+
+    .. math::
+
+        L_{10r} = \\Bigl[\\Bigl(\\frac{Q_{ci}}{Q_{ei}}\\Bigr)^{-10/3}
+                  + \\Bigl(\\frac{Q_{ce}}{Q_{ee}}\\Bigr)^{-10/3}\\Bigr]^{-0.9}\\ \\text{(balls)},\\qquad
+        L_{10r} = \\Bigl[\\sum_k \\Bigl(\\frac{q_{kei}}{q_{ci}}\\Bigr)^{9/2}
+                  + \\Bigl(\\frac{q_{kee}}{q_{ce}}\\Bigr)^{9/2}\\Bigr]^{-8/9}\\ \\text{(rollers)};
+
+    static safety s0 = (p_limit/p_max)^n (4200 MPa, n = 3 ball; 4000 MPa, n = 2 roller; ISO 76:2006 4);
+    a_ISO (ISO 281:2007 9.3.2) at the reference load P_ref = C (L10r/10⁶)^(−1/p) when lubrication inputs
+    are given. System: :func:`system_life`; L_nr = a1 L, L10h = L / (3600 ω/2π).
+
+    Parameters
+    ----------
+    result : QuasiStaticResult
+        Solved load cases (C of them).
+    speed : float or array_like (C,), optional
+        Relative speed of the rotating ring ω [rad/s].
+    rotating : {"inner", "outer"}
+        Ring rotating relative to the load.
+    reliability : float
+        Reliability for L_nr and L_nmr [-], 0.90 … 0.9995.
+    lubricant : Lubricant or str, optional
+        For a_ISO, with ``temperature_C`` [°C] and ``contamination_factor`` e_C [-] (all three, and speed).
+    temperature_C, contamination_factor : float or array_like (C,), optional
+    shoulder_height : float or Mapping[str, float]
+        Groove shoulder height over ball diameter [-] for the truncation check.
+    edge_pressure_ratio : float
+        End-slice pressure over the row's maximum slice pressure that flags edge loading [-].
+    edge_stress_factor : {"auto", "always", "never"}
+        ISO/TS 16281 eq. (60) slice factor use ("auto": rollers without a profile).
+    load_ratings : Mapping[str, float], optional
+        C [N] per row name, replacing ISO 281 (catalogue values; thrust roller rows).
+
+    Returns
+    -------
+    RatingResult
+
+    References
+    ----------
+    ISO 76:2006 clause 4; ISO 281:2007 eq. (2)-(12), (15), 9.3; ISO/TS 16281:2008 eq. (19)-(65);
+    Lundberg & Palmgren 1947, 1952.
+    """
+    n_cases = result.n_cases
+    opts = RatingOptions(
+        rotating=rotating,
+        reliability=reliability,
+        speed=_per_case("speed", speed, n_cases, "rad/s"),
+        lubricant=lubricant,
+        temperature_C=_per_case("temperature_C", temperature_C, n_cases, "°C"),
+        contamination_factor=_per_case("contamination_factor", contamination_factor, n_cases),
+        shoulder_height=shoulder_height,
+        edge_pressure_ratio=edge_pressure_ratio,
+        edge_stress_factor=edge_stress_factor,
+        load_ratings=dict(load_ratings or {}),
+    )
+    unknown = set(opts.load_ratings) - {r.name for r in result.model.rows}
+    if unknown:
+        raise InputError(
+            f"load_ratings names rows {sorted(unknown)} not in the bearing; rows are "
+            f"{[r.name for r in result.model.rows]}"
+        )
+    converged = np.asarray(result.converged, dtype=bool)
+    ctx = RowContext(options=opts, converged=converged, n_cases=n_cases)
+    rows = []
+    for row, state in zip(result.model.rows, result.rows, strict=True):
+        rater: Callable | None = ROW_RATERS.get(row.kind)
+        if rater is None:
+            raise InputError(f"row kind ({row.kind!r}) has no rater; known kinds: {sorted(ROW_RATERS)}")
+        rows.append(rater(row, state, ctx))
+
+    a1 = float(iso281.reliability_factor(opts.reliability))
+    life, sys_notes = _combine(rows, "life", n_cases)
+    if opts.modified:
+        modified, mod_notes = _combine(rows, "modified_life_90", n_cases)
+        modified = modified * a1
+    else:
+        modified, mod_notes = _masked(np.zeros(n_cases), True), [[] for _ in range(n_cases)]
+    safety = np.ma.min(np.ma.stack([r.static_safety for r in rows]), axis=0)
+    safety = _masked(np.ma.getdata(safety), np.ma.getmaskarray(safety) | ~converged)
+
+    warnings = []
+    for c in range(n_cases):
+        notes = []
+        if not converged[c]:
+            notes.append(
+                f"case {c} did not converge ({result.reason[c]}): no rating, life or static safety returned"
+            )
+        else:
+            for r in rows:
+                notes.extend(f"{r.name}: {w}" for w in r.warnings[c])
+            notes.extend(sys_notes[c])
+            notes.extend(
+                m.replace("system:", "system (a_ISO):") for m in mod_notes[c] if m not in sys_notes[c]
+            )
+        warnings.append(notes)
+    refs = tuple(dict.fromkeys(_REFERENCES + tuple(k for r in rows for k in r.references)))
+    return RatingResult(
+        bearing=result.model.name,
+        rows=rows,
+        life=life,
+        life_reliability=life * a1,
+        modified_life=modified,
+        static_safety=safety,
+        speed=opts.speed,
+        reliability=opts.reliability,
+        a1=a1,
+        rotating=opts.rotating,
+        converged=converged,
+        warnings=warnings,
+        references=refs,
+    )
