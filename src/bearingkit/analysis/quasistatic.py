@@ -275,7 +275,8 @@ def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.nd
         delta = np.sqrt(delta * np.maximum(approach, 1e-3 * delta))
     out = q.copy()
     out[:, idx] = q[:, idx] + qt * s[idx]
-    return out
+    # A singular or overflowing estimate must not poison the solve: keep the given start there.
+    return np.where(np.isfinite(out).all(axis=1, keepdims=True), out, q)
 
 
 def _newton(problem: _Problem, q, load, active, iterations):
@@ -454,9 +455,18 @@ def solve(
         converged = np.where(retry, conv_c, converged)
         diverged = np.where(retry, div_c, diverged)
 
+    # A case whose iterate or residual went non-finite failed numerically: report it, never return NaN.
+    broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]))
+    if broken.any():
+        q = np.where(broken[:, None], q0, q)
+        converged = converged & ~broken
     reasons = [None] * n_cases
     for c in np.flatnonzero(~converged):
-        reasons[c] = _diagnose(problem, load[c], bool(diverged[c]), st["norm"][c])
+        reasons[c] = (
+            "numerical failure: the iterate became non-finite (load or offsets far beyond the contacts)"
+            if broken[c]
+            else _diagnose(problem, load[c], bool(diverged[c]), st["norm"][c])
+        )
     reaction = load.copy()
     reaction[:, ~free] = -st["force"][:, ~free]
     result = QuasiStaticResult(
