@@ -1,0 +1,1 @@
+"""Benchmarks of bearingkit (not part of the timed test suite). Run ``python -m benchmarks``."""
