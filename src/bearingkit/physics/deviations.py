@@ -76,7 +76,15 @@ def gaussian_deviations(n_elements, magnitude, n_cases=1, arrangement="random", 
 
 
 def arrange(deviations, arrangement: str):
-    """Rearrange given deviations (…, Z) [m] around the cage (``"random"`` keeps them as given)."""
+    """Rearrange given deviations (…, Z) [m] around the cage (``"random"`` keeps them as given).
+
+    Parameters
+    ----------
+    deviations : array_like (…, Z) [m]
+        Roller diameter deviations ΔD, roller 1 first.
+    arrangement : str
+        A key of :data:`ARRANGEMENTS` (``"random"`` or ``"descending"``, Liu et al. 2022 §3.1).
+    """
     checks.one_of("arrangement", arrangement, ARRANGEMENTS)
     dev = np.asarray(deviations, dtype=float)
     checks.finite("diameter_deviation", dev, "m")
@@ -102,7 +110,13 @@ _TABLE2: dict | None = None
 
 
 def seed001_series(series: int) -> np.ndarray:
-    """Seed 001 Table 2 deviation series ``series`` (1–6) as ΔD (23,) [m], roller 1 first."""
+    """Seed 001 Table 2 deviation series ``series`` (1–6) as ΔD (23,) [m], roller 1 first.
+
+    Parameters
+    ----------
+    series : int
+        Series number 1–6 of Liu et al. (2022) Table 2.
+    """
     global _TABLE2
     if _TABLE2 is None:
         _TABLE2 = _read_table2()
@@ -112,7 +126,13 @@ def seed001_series(series: int) -> np.ndarray:
 
 
 def seed001_series_info(series: int) -> dict:
-    """S_d [m] and arrangement of Table 2 series ``series`` (1–6)."""
+    """S_d [m] and arrangement of Table 2 series ``series`` (1–6), Liu et al. (2022).
+
+    Parameters
+    ----------
+    series : int
+        Series number 1–6 of Table 2.
+    """
     seed001_series(series)
     rec = _TABLE2[series]
     return {"magnitude": rec["magnitude"], "arrangement": rec["arrangement"]}

@@ -395,7 +395,15 @@ FILM_MODEL_REFERENCES: dict[str, str] = {
 
 
 def film_thickness(model: str, **kwargs) -> FilmThickness:
-    """Film thickness by model name from :data:`FILM_MODELS` (keyword arguments of that model)."""
+    """Film thickness by model name from :data:`FILM_MODELS` (keyword arguments of that model).
+
+    Parameters
+    ----------
+    model : str
+        ``"hamrock_dowson"`` (Hamrock & Dowson 1977), ``"dowson_higginson"`` or ``"pan_hamrock"`` (1989).
+    **kwargs
+        The selected model's arguments (SI).
+    """
     checks.one_of("film_model", model, FILM_MODELS)
     try:
         return FILM_MODELS[model](**kwargs)

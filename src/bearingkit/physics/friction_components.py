@@ -292,7 +292,22 @@ def viscous_line_aihara(
 ):
     """Isothermal EHL rolling resistance of one line contact, Aihara form [N].
 
-    Parameters as :func:`viscous_line_matsuyama`.
+    Parameters
+    ----------
+    load : array_like [N]
+        Contact load Q.
+    viscosity : array_like [Pa·s]
+        η₀ at the inlet temperature.
+    entrainment_speed : array_like [m/s]
+        Mean rolling speed u_m.
+    pressure_viscosity : array_like [1/Pa]
+        α.
+    e_reduced : array_like [Pa]
+        E′.
+    radius_x : array_like [m]
+        Reduced radius in the rolling direction.
+    effective_length : array_like [m]
+        Contact length l.
 
     Notes
     -----
@@ -349,7 +364,22 @@ def viscous_point_houpert(
 ):
     """EHL rolling resistance of an elliptical contact, Houpert's analytical form [N].
 
-    Parameters as :func:`viscous_point_fujiwara` (α is not used by this form).
+    Parameters
+    ----------
+    load : array_like [N]
+        Contact load Q.
+    viscosity : array_like [Pa·s]
+        η₀.
+    entrainment_speed : array_like [m/s]
+        Mean rolling speed u_m.
+    pressure_viscosity : array_like [1/Pa]
+        α (not used by this form; kept for a common signature).
+    e_reduced : array_like [Pa]
+        E′.
+    radius_x : array_like [m]
+        Reduced radius in the rolling direction.
+    semi_major, semi_minor : array_like [m]
+        Contact ellipse semi-axes a (transverse) and b (rolling direction).
 
     Notes
     -----

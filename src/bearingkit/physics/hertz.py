@@ -255,6 +255,11 @@ def effective_radii(curvature_sum, curvature_difference):
 def curvature_difference_from_radii(radius_x, radius_y):
     """F(rho) = |1/R_x - 1/R_y| / (1/R_x + 1/R_y) [1] from two effective radii [m] (> 0).
 
+    Parameters
+    ----------
+    radius_x, radius_y : array_like [m]
+        Effective radii of curvature in the two principal planes (> 0).
+
     Notes
     -----
     .. math:: F(\\rho) = \\frac{|1/R_x - 1/R_y|}{1/R_x + 1/R_y}

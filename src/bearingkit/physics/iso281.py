@@ -117,7 +117,13 @@ def _is_90(alpha):
 
 
 def rating_factor(bearing_type: str) -> float:
-    """Rating factor b_m [-] of ISO 281:2007 Table 1 for ``bearing_type`` (see ``iso281_bm.csv``)."""
+    """Rating factor b_m [-] of ISO 281:2007 Table 1 for ``bearing_type`` (see ``iso281_bm.csv``).
+
+    Parameters
+    ----------
+    bearing_type : str
+        A bearing type of the table (``"deep_groove_ball"``, ``"cylindrical_roller"`` …).
+    """
     names = tables.text_column(_BM, "bearing_type")
     checks.one_of("bearing_type", bearing_type, names)
     return float(tables.column(_BM, "bm")[names.index(bearing_type)])

@@ -810,6 +810,16 @@ def make_profile(name: str, effective_length: float, element_diameter: float, **
 
 
 def seed000_profile(letter: str, effective_length: float, element_diameter: float) -> Profile:
-    """Seed 000 crowning type ``letter`` (a-e) with this module's documented defaults."""
+    """Seed 000 crowning type ``letter`` (a-e) with documented defaults (Tian et al. 2025 §6.1.5).
+
+    Parameters
+    ----------
+    letter : str
+        ``"a"`` logarithmic … ``"e"`` straight (:data:`SEED000_CROWNING`).
+    effective_length : float [m]
+        Roller effective length.
+    element_diameter : float [m]
+        Roller diameter.
+    """
     checks.one_of("crowning", letter, SEED000_CROWNING)
     return make_profile(SEED000_CROWNING[letter], effective_length, element_diameter)

@@ -252,7 +252,15 @@ def static_rating_radial(contact_load_limit, n_teeth, contact_angle, f_rmax):
 
 
 def roller_structure_ratio(roller_pitch_diameter, pitch_diameter):
-    """γ = d_R / D_pw [1] (= D_w cos α / D_pw of the equivalent ball), Zheng et al. (2022) eq. (9)."""
+    """γ = d_R / D_pw [1] (= D_w cos α / D_pw of the equivalent ball), Zheng et al. (2022) eq. (9).
+
+    Parameters
+    ----------
+    roller_pitch_diameter : array_like [m]
+        d_R.
+    pitch_diameter : array_like [m]
+        D_pw, the bearing pitch diameter.
+    """
     return _a(roller_pitch_diameter) / _a(pitch_diameter)
 
 
@@ -320,7 +328,18 @@ def fc_axial(gamma, contact_angle, roller_contact_radius, ring_contact_radius, r
 def fc_radial(gamma, contact_angle, roller_contact_radius, ring_contact_radius, roller_pitch_diameter):
     """PTRB radial factor f_cr [ISO 281 units], Zheng et al. (2022) eq. (8).
 
-    Parameters as :func:`fc_axial`.
+    Parameters
+    ----------
+    gamma : array_like
+        γ = d_R / D_pw.
+    contact_angle : array_like [rad]
+        Thread flank angle α.
+    roller_contact_radius : array_like [m]
+        R_rr, the roller thread profile radius.
+    ring_contact_radius : array_like [m]
+        r_I (or r_O), the ring flank radius (``inf`` for flat flanks).
+    roller_pitch_diameter : array_like [m]
+        d_R.
 
     Notes
     -----
@@ -373,6 +392,15 @@ def dynamic_rating_thread(fc, element_diameter, n_elements, contact_angle, axial
 def basic_dynamic_axial(thread_rating, n_teeth, f_amax):
     """Basic dynamic axial rating C_a = n^0.7 C_Da / f_amax [N], Zheng et al. (2022) eq. (11).
 
+    Parameters
+    ----------
+    thread_rating : array_like [N]
+        C_Da, the axial rating of one tooth row.
+    n_teeth : array_like
+        Engaged teeth per roller n.
+    f_amax : array_like
+        Axial load distribution coefficient of the most loaded tooth.
+
     n^0.7 C_Da is ISO 281 eq. (7) for n identical rows,
     (Σ Z)[Σ (Z/C_D)^(10/3)]^(−0.3) (:func:`bearingkit.physics.iso281.combine_thrust_rows`); f_amax
     corrects for the uneven axial share of the teeth of a roller.
@@ -383,6 +411,13 @@ def basic_dynamic_axial(thread_rating, n_teeth, f_amax):
 
 def basic_dynamic_radial(thread_rating, n_teeth):
     """Basic dynamic radial rating C_r = (2n)^0.7 C_Dr [N], Zheng et al. (2022) eq. (12).
+
+    Parameters
+    ----------
+    thread_rating : array_like [N]
+        C_Dr, the radial rating of one flank row.
+    n_teeth : array_like
+        Engaged teeth per roller n.
 
     Both flanks of the n teeth act as 2n rows of equivalent balls (ISO 281 factor i^0.7).
     """

@@ -52,7 +52,20 @@ CONTACTS_PER_TOOTH = {"paper": _paper, "per_part": _per_part}
 
 
 def contacts_per_tooth(n_elements, part, model="paper"):
-    """Number of contact loads on one annular tooth of ``part`` [1] under the named ``model``."""
+    """Number of contact loads on one annular tooth of ``part`` [1] under the named ``model``.
+
+    Zheng et al. (2022) eqs. (3)–(4) print Z for every part (``"paper"``); ``"per_part"`` uses Z on the
+    rings and 1 on the roller.
+
+    Parameters
+    ----------
+    n_elements : int
+        Rollers Z.
+    part : str
+        ``"roller"``, ``"inner"`` or ``"outer"``.
+    model : str
+        ``"paper"`` or ``"per_part"``.
+    """
     checks.one_of("part", part, PARTS)
     checks.one_of("model", model, CONTACTS_PER_TOOTH)
     return CONTACTS_PER_TOOTH[model](n_elements, part)
@@ -101,7 +114,18 @@ def tooth_root_bending_stress(
 def tooth_root_shear_stress(contact_load, contact_angle, n_contacts, pitch_diameter, bottom_thickness):
     """Root shear stress of an annular thread tooth τ_c [Pa], Zheng et al. (2022) eq. (4).
 
-    Parameters as :func:`tooth_root_bending_stress`.
+    Parameters
+    ----------
+    contact_load : array_like [N]
+        F_n,max, the largest equivalent-ball contact load on the tooth.
+    contact_angle : array_like [rad]
+        Flank angle α.
+    n_contacts : array_like
+        Contact loads on the tooth (:func:`contacts_per_tooth`).
+    pitch_diameter : array_like [m]
+        d_X of the part.
+    bottom_thickness : array_like [m]
+        Tooth root thickness B_X.
 
     Notes
     -----

@@ -1,4 +1,4 @@
-"""Tables of the rating standards (ISO 76, ISO 281) shipped as CSV files in ``bearingkit/data``.
+"""Tables of the rating standards (ISO 76:2006, ISO 281:2007) shipped as CSV files in ``bearingkit/data``.
 
 Each CSV file starts with ``# source: ...`` lines (standard, clause, table, how it was transcribed), then a
 header row, then numbers. Tables are looked up with :func:`interp_strict`: linear interpolation inside the
@@ -39,12 +39,26 @@ def _read(name: str) -> tuple[tuple[str, ...], tuple[str, ...], dict[str, tuple]
 
 
 def source(name: str) -> str:
-    """The ``# source:`` lines of table ``name`` joined into one string."""
+    """The ``# source:`` lines of table ``name`` joined into one string.
+
+    Parameters
+    ----------
+    name : str
+        Table file stem in ``bearingkit/data``.
+    """
     return " ".join(_read(name)[1])
 
 
 def column(name: str, col: str) -> np.ndarray:
-    """A numeric column of table ``name``; empty cells become NaN (outside the table)."""
+    """A numeric column of table ``name``; empty cells become NaN (outside the table).
+
+    Parameters
+    ----------
+    name : str
+        Table file stem in ``bearingkit/data`` (e.g. ``"iso281_fc_radial_ball"``).
+    col : str
+        Column header.
+    """
     header, _, cols = _read(name)
     if col not in cols:
         raise InputError(f"column ({col!r}) must be one of {', '.join(header)} in table {name}")
@@ -52,7 +66,15 @@ def column(name: str, col: str) -> np.ndarray:
 
 
 def text_column(name: str, col: str) -> tuple[str, ...]:
-    """A text column of table ``name``."""
+    """A text column of table ``name``.
+
+    Parameters
+    ----------
+    name : str
+        Table file stem in ``bearingkit/data``.
+    col : str
+        Column header.
+    """
     return _read(name)[2][col]
 
 

@@ -10,9 +10,9 @@ speed) carries the direction of sliding; every slip-dependent coefficient is odd
 Models (registry :data:`TRACTION_MODELS`, dispatch with :func:`traction_coefficient`):
 
 - ``"boundary"`` – constant Coulomb coefficient μ_bl (signed by the slip when a slip is given),
-- ``"aihara"`` – saturating exponential curve μ_max (1 − e^(−2.6 s/s_max)),
-- ``"limiting_shear"`` – Bair–Winer viscous/limiting-shear-stress fluid in a parallel film,
-- ``"mixed"`` – asperity-load-share interpolation between boundary and EHL coefficients.
+- ``"aihara"`` – saturating exponential curve μ_max (1 − e^(−2.6 s/s_max)) (Aihara 1987),
+- ``"limiting_shear"`` – Bair–Winer viscous/limiting-shear-stress fluid in a parallel film (1979),
+- ``"mixed"`` – asperity-load-share interpolation between boundary and EHL coefficients (SKF 2018).
 """
 
 from __future__ import annotations
