@@ -205,17 +205,22 @@ class CylindricalKernel(KernelBase):
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""
-        delta = np.maximum(self._delta(q, offset), 0.0)
-        t = delta ** (1.0 / 9.0)
-        load = self.c_s * delta * t  # c_s δ^(10/9)
-        stiff = (10.0 / 9.0) * self.c_s * t
+        delta = self._delta(q, offset)
+        closed = delta > 0.0
+        delta[~closed] = 0.0
+        # δ^(1/9) only where the slice is in contact: most slices of a bearing are open.
+        t = np.zeros_like(delta)
+        t[closed] = delta[closed] ** (1.0 / 9.0)
+        load = delta * t
+        load *= self.c_s  # c_s δ^(10/9)
+        t *= (10.0 / 9.0) * self.c_s  # dq/dδ
         if self.G.shape[0] == 1:
             force = -(load @ self.G[0])
-            jac = -(stiff @ self.GG[0]).reshape(-1, 5, 5)
+            jac = -(t @ self.GG[0]).reshape(-1, 5, 5)
         else:
             force = -np.einsum("cm,cmd->cd", load, self.G)
-            jac = -np.einsum("cm,cmk->ck", stiff, self.GG).reshape(-1, 5, 5)
-        energy = (load * delta).sum(axis=-1) / (1.0 + LINE_EXPONENT)
+            jac = -np.einsum("cm,cmk->ck", t, self.GG).reshape(-1, 5, 5)
+        energy = np.einsum("cm,cm->c", load, delta) / (1.0 + LINE_EXPONENT)
         return RowResponse(force, jac, energy)
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
