@@ -1,0 +1,627 @@
+"""The SKF four-component model of the frictional moment of standard rolling bearings.
+
+SI units at the boundary: diameters in m, loads in N, speed in rad/s, kinematic viscosity in m²/s,
+moments returned in N·m. Inside, every formula is evaluated in the catalogue's own units — d_m, d, D,
+d_s, H, B in **mm**, n in **r/min**, ν in **mm²/s**, loads in **N**, moments in **N·mm** — because the
+SKF constants (R1 … S3, K_rs, K_S1 …) are defined in those units; the conversion happens once in
+:func:`skf_friction_moment` (``_to_skf_units``) and once on the way out (N·mm → N·m).
+
+Model (SKF Group, Rolling bearings catalogue 10000 EN 2012 / 17000 EN 2018, chapter "Friction"):
+
+.. math::
+
+    M = M_{rr} + M_{sl} + M_{seal} + M_{drag}, \\qquad
+    M_{rr} = \\phi_{ish}\\,\\phi_{rs}\\,G_{rr}\\,(\\nu n)^{0.6}, \\qquad M_{sl} = G_{sl}\\,\\mu_{sl}
+
+    \\phi_{ish} = \\frac{1}{1 + 1.84\\cdot10^{-9}(n d_m)^{1.28}\\nu^{0.64}}, \\qquad
+    \\phi_{rs} = \\exp\\Big[-K_{rs}\\,\\nu n (d + D)\\sqrt{\\tfrac{K_Z}{2(D - d)}}\\Big]
+
+    \\mu_{sl} = \\phi_{bl}\\mu_{bl} + (1 - \\phi_{bl})\\mu_{EHL}, \\qquad
+    \\phi_{bl} = \\exp[-2.6\\cdot10^{-8}(n\\nu)^{1.4} d_m]
+
+G_rr and G_sl per bearing type are in :data:`G_MODELS` (the registry of bearing types); their
+constants per series are data (``data/skf_friction_constants.csv``, K_Z/K_L in ``skf_friction_kz.csv``,
+seal constants in ``skf_seal_constants.csv``), each row tagged with how far it was verified.
+
+Drag losses (oil bath). SKF gives the drag loss factor V_M **only as a diagram** (V_M versus H/d_m, one
+curve for ball and one for roller bearings). bearingkit does not digitise it: the first drag term
+needs ``drag_loss_factor`` (V_M read from the SKF diagram by the user); without it an oil level raises
+InputError. The second (viscous) term is fully analytical and always evaluated when an oil level is
+given. ``oil_level=None`` means a low-level bath, jet, oil–air or grease: no drag term.
+
+Zero speed: M_rr = 0, M_drag = 0, φ_bl = 1 so M_sl = G_sl μ_bl (the load-dependent part), plus the
+speed-independent seal moment when seals are fitted (SKF's seal formula has no speed term).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearingkit import checks, references
+from bearingkit.errors import InputError
+from bearingkit.physics import tables
+
+references.add(
+    "skf2018_friction",
+    "SKF Group (2018) Rolling bearings, PUB BU/P1 17000 EN, chapter 'Friction': the SKF model for "
+    "calculating the frictional moment (M = M_rr + M_sl + M_seal + M_drag); same model in PUB BU/P1 "
+    "10000 EN (2012).",
+)
+
+# --- unit conversions (exact) -------------------------------------------------------------------
+M_TO_MM = 1.0e3  # [mm/m]
+M2S_TO_MM2S = 1.0e6  # [(mm²/s)/(m²/s)]
+RAD_S_TO_RPM = 60.0 / (2.0 * np.pi)  # [(r/min)/(rad/s)]
+NMM_TO_NM = 1.0e-3  # [N·m/(N·mm)]
+
+# --- empirical constants (SKF units: n r/min, d_m mm, ν mm²/s) ------------------------------------
+#: Inlet shear heating factor coefficient and exponents, φ_ish (SKF 2012/2018, "Inlet shear heating
+#: reduction factor"); valid for full-film conditions, all bearing types.
+ISH_COEFF = 1.84e-9  # [-] (with n d_m in r/min·mm, ν in mm²/s)
+ISH_ND_EXP = 1.28  # [-]
+ISH_NU_EXP = 0.64  # [-]
+#: Exponent of (ν n) in M_rr (SKF 2012/2018, rolling frictional moment).
+RR_EXP = 0.6  # [-]
+#: Kinematic replenishment/starvation constant K_rs (SKF 2012/2018): low-level oil bath and oil jet.
+K_RS_OIL = 3.0e-8  # [-] (SKF units)
+#: K_rs for grease and oil–air lubrication (SKF 2012/2018).
+K_RS_GREASE = 6.0e-8  # [-] (SKF units)
+#: Weighting factor φ_bl = exp(-BL_COEFF (n ν)^BL_EXP d_m) (SKF 2012/2018, verified in the catalogue text).
+BL_COEFF = 2.6e-8  # [-] (SKF units)
+BL_EXP = 1.4  # [-]
+#: Boundary-film friction coefficient μ_bl, "generally ≈ 0.15" (SKF 2012/2018, verified), range 0.12-0.15.
+MU_BL = 0.15  # [-]
+#: Full-film sliding friction coefficient μ_EHL (SKF 2012/2018, verified in the catalogue text).
+MU_EHL_CYLINDRICAL = 0.02  # [-] cylindrical roller bearings
+MU_EHL_TAPERED = 0.002  # [-] tapered roller bearings
+MU_EHL_BY_BASE = {"mineral": 0.05, "synthetic": 0.04, "transmission": 0.1}  # [-] other bearings
+#: Deep groove ball bearings under axial load: α_F = 24.6 (F_a/C_0)^0.24 [deg] (SKF Table 2a, verified).
+ALPHA_F_COEFF = 24.6  # [deg]
+ALPHA_F_EXP = 0.24  # [-]
+#: Drag (oil bath), SKF 2012/2018 "Drag losses": viscous term coefficient and exponent, K_ball/K_roll
+#: scale 1e-12, t-law factor 0.6, R_s factor 0.36, f_A factor 0.05, oil level capped at 1.2 d_m, and
+#: the roller C_w polynomial (l_D = 5 K_L B/d_m). Transcribed from formulas.md C1 and two public code
+#: transcriptions that agree; tag [S].
+DRAG_VISCOUS_COEFF = 1.093e-7  # [-]
+DRAG_VISCOUS_EXP = -1.379  # [-]
+DRAG_K_SCALE = 1.0e-12  # [-]
+DRAG_BALL_COEFF = 0.4  # [-]
+DRAG_ROLLER_COEFF = 4.0  # [-]
+DRAG_T_FACTOR = 0.6  # [-]
+DRAG_RS_FACTOR = 0.36  # [-]
+DRAG_FA_FACTOR = 0.05  # [-]
+DRAG_LEVEL_CAP = 1.2  # [-] H/d_m above which H = 1.2 d_m is used
+DRAG_CW = (2.789e-10, -2.786e-4, 0.0195, 0.6439)  # [-] C_w = a l_D³ + b l_D² + c l_D + d
+DRAG_LD_FACTOR = 5.0  # [-]
+
+#: Lubrication methods and their K_rs.
+LUBRICATION_METHODS = {
+    "oil_bath": K_RS_OIL,
+    "oil_jet": K_RS_OIL,
+    "grease": K_RS_GREASE,
+    "oil_air": K_RS_GREASE,
+}
+
+_CONSTANTS_FILE = "skf_friction_constants.csv"
+_KZ_FILE = "skf_friction_kz.csv"
+_SEAL_FILE = "skf_seal_constants.csv"
+_ROLLER_TYPES = (
+    "cylindrical_roller",
+    "cylindrical_roller_full",
+    "tapered_roller",
+    "cylindrical_roller_thrust",
+)
+_THRUST_TYPES = ("thrust_ball", "cylindrical_roller_thrust")
+
+
+# --- data -----------------------------------------------------------------------------------------
+def _num(x: str) -> float:
+    return float(x) if x else np.nan
+
+
+def series_constants(bearing_type: str, series: str | None = None) -> dict:
+    """Constants R1…R3, S1…S3 (SKF units), K_Z, K_L and the verification tags of a bearing series.
+
+    Parameters
+    ----------
+    bearing_type : str
+        One of :data:`G_MODELS`.
+    series : str or None
+        Series key of ``data/skf_friction_constants.csv`` (e.g. ``"62"``); None = the type's first row.
+
+    Returns
+    -------
+    dict
+        ``R1 R2 R3 S1 S2 S3`` (NaN where the type has none), ``K_Z``, ``K_L``, ``series``, ``tag``,
+        ``kz_tag``.
+    """
+    checks.one_of("bearing_type", bearing_type, G_MODELS)
+    types = tables.text_column(_CONSTANTS_FILE, "bearing_type")
+    all_series = tables.text_column(_CONSTANTS_FILE, "series")
+    rows = [i for i, t in enumerate(types) if t == bearing_type]
+    known = [all_series[i] for i in rows]
+    if series is None:
+        i = rows[0]
+    else:
+        checks.one_of(f"series (of {bearing_type})", str(series), known)
+        i = rows[known.index(str(series))]
+    out = {k: float(tables.column(_CONSTANTS_FILE, k)[i]) for k in ("R1", "R2", "R3", "S1", "S2", "S3")}
+    out["series"] = all_series[i]
+    out["tag"] = tables.text_column(_CONSTANTS_FILE, "tag")[i]
+    j = tables.text_column(_KZ_FILE, "bearing_type").index(bearing_type)
+    out["K_Z"] = float(tables.column(_KZ_FILE, "K_Z")[j])
+    out["K_L"] = float(tables.column(_KZ_FILE, "K_L")[j])
+    out["kz_tag"] = tables.text_column(_KZ_FILE, "tag")[j]
+    return out
+
+
+def seal_constants(bearing_type: str, seal: str, outside_diameter_mm: float) -> tuple[float, float, float]:
+    """(β, K_S1, K_S2) of ``data/skf_seal_constants.csv`` for a seal type and bearing outside diameter.
+
+    Parameters
+    ----------
+    bearing_type : str
+        Bearing type.
+    seal : str
+        SKF seal designation (``"RS1"``, ``"RSH"``, ``"RSL"``, ``"RZ"``).
+    outside_diameter_mm : float
+        Bearing outside diameter D [mm] (SKF units; selects the row D_min < D ≤ D_max).
+    """
+    types = tables.text_column(_SEAL_FILE, "bearing_type")
+    seals = tables.text_column(_SEAL_FILE, "seal")
+    avail = sorted({s for t, s in zip(types, seals, strict=True) if t == bearing_type})
+    if not avail:
+        raise InputError(f"seal ({seal!r}) has no SKF seal constants for bearing_type {bearing_type!r}")
+    checks.one_of(f"seal (of {bearing_type})", seal, avail)
+    lo = tables.column(_SEAL_FILE, "D_min_mm")
+    hi = tables.column(_SEAL_FILE, "D_max_mm")
+    d = float(outside_diameter_mm)
+    for i, (t, s) in enumerate(zip(types, seals, strict=True)):
+        if t == bearing_type and s == seal and lo[i] < d <= hi[i]:
+            return (
+                float(tables.column(_SEAL_FILE, "beta")[i]),
+                float(tables.column(_SEAL_FILE, "K_S1")[i]),
+                float(tables.column(_SEAL_FILE, "K_S2")[i]),
+            )
+    rng = [
+        (lo[i], hi[i])
+        for i, (t, s) in enumerate(zip(types, seals, strict=True))
+        if t == bearing_type and s == seal
+    ]
+    raise InputError(
+        f"outside_diameter ({d:.6g} mm) is outside the range of seal {seal!r} constants "
+        f"{[f'({a:g}, {b:g}]' for a, b in rng]}"
+    )
+
+
+# --- factors --------------------------------------------------------------------------------------
+def inlet_shear_factor(n_rpm, dm_mm, nu_mm2s):
+    """Inlet shear heating reduction factor φ_ish [-] (SKF units in, dimensionless out).
+
+    .. math:: \\phi_{ish} = 1/[1 + 1.84\\cdot10^{-9}(n d_m)^{1.28}\\nu^{0.64}]
+
+    Parameters
+    ----------
+    n_rpm : array_like
+        Rotational speed n [r/min], ≥ 0.
+    dm_mm : array_like
+        Bearing mean diameter d_m = (d + D)/2 [mm].
+    nu_mm2s : array_like
+        Kinematic viscosity ν [mm²/s].
+
+    References
+    ----------
+    SKF (2018) Rolling bearings 17000 EN, "Inlet shear heating reduction factor".
+    """
+    return 1.0 / (1.0 + ISH_COEFF * (n_rpm * dm_mm) ** ISH_ND_EXP * nu_mm2s**ISH_NU_EXP)
+
+
+def replenishment_factor(n_rpm, nu_mm2s, bore_mm, outside_mm, k_z, k_rs):
+    """Kinematic replenishment/starvation reduction factor φ_rs [-] (SKF units).
+
+    .. math:: \\phi_{rs} = \\exp\\Big[-K_{rs}\\,\\nu n (d + D)\\sqrt{K_Z/(2(D - d))}\\Big]
+
+    Parameters
+    ----------
+    n_rpm, nu_mm2s : array_like
+        Speed [r/min] and kinematic viscosity [mm²/s].
+    bore_mm, outside_mm : array_like
+        Bore d and outside diameter D [mm].
+    k_z : float
+        Bearing-type geometric constant K_Z [-].
+    k_rs : float
+        Replenishment/starvation constant K_rs (3e-8 oil, 6e-8 grease/oil–air) [-].
+
+    References
+    ----------
+    SKF (2018) Rolling bearings 17000 EN, "Kinematic replenishment/starvation reduction factor".
+    """
+    return np.exp(
+        -k_rs * nu_mm2s * n_rpm * (bore_mm + outside_mm) * np.sqrt(k_z / (2.0 * (outside_mm - bore_mm)))
+    )
+
+
+def boundary_weighting(n_rpm, nu_mm2s, dm_mm):
+    """Weighting factor φ_bl [-] of the sliding friction coefficient (SKF units).
+
+    .. math:: \\phi_{bl} = \\exp[-2.6\\cdot10^{-8}(n\\nu)^{1.4}d_m]
+
+    References
+    ----------
+    SKF (2018) Rolling bearings 17000 EN, "Effect of lubrication on sliding friction" (φ_bl, Diagram 3).
+    """
+    return np.exp(-BL_COEFF * (n_rpm * nu_mm2s) ** BL_EXP * dm_mm)
+
+
+def sliding_coefficient(phi_bl, mu_ehl, mu_bl=MU_BL):
+    """μ_sl = φ_bl μ_bl + (1 − φ_bl) μ_EHL [-] (SKF 2018, sliding frictional moment)."""
+    return phi_bl * mu_bl + (1.0 - phi_bl) * mu_ehl
+
+
+def mu_ehl_default(bearing_type: str, lubricant_base: str = "mineral") -> float:
+    """SKF's full-film μ_EHL: 0.02 cylindrical, 0.002 tapered, else by oil base (mineral 0.05 …).
+
+    A grease counts as its base oil, assumed mineral (documented choice).
+    """
+    if bearing_type.startswith("cylindrical_roller"):
+        return MU_EHL_CYLINDRICAL
+    if bearing_type == "tapered_roller":
+        return MU_EHL_TAPERED
+    base = "mineral" if lubricant_base == "grease" else lubricant_base
+    checks.one_of("lubricant_base", base, MU_EHL_BY_BASE)
+    return MU_EHL_BY_BASE[base]
+
+
+# --- G_rr, G_sl per bearing type (SKF units) --------------------------------------------------------
+def _g_deep_groove(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, deep groove ball bearings (F_a = 0 and F_a > 0 branches)."""
+    has_fa = fa > 0
+    if np.any(has_fa):
+        c0 = extra.get("static_rating_N")
+        if c0 is None:
+            raise InputError(
+                "static_rating (None N) must be given for a deep_groove_ball bearing with F_a > 0"
+            )
+        c0 = np.asarray(c0, dtype=float)
+        checks.positive("static_rating", c0, "N")
+    else:
+        c0 = 1.0
+    fa_s = np.where(has_fa, fa, 1.0)
+    sin_af = np.sin(np.radians(ALPHA_F_COEFF * (fa_s / c0) ** ALPHA_F_EXP))
+    # F_a / sin α_F ∝ F_a^0.76 → 0 as F_a → 0; guard the underflow of sin α_F for subnormal F_a
+    fa_per_sin = np.where(sin_af > 0, fa / np.where(sin_af > 0, sin_af, 1.0), 0.0)
+    fa4_per_sin = np.where(sin_af > 0, fa**4 / np.where(sin_af > 0, sin_af, 1.0), 0.0)
+    g_rr = np.where(
+        has_fa,
+        c["R1"] * dm**1.96 * (fr + c["R2"] * fa_per_sin) ** 0.54,
+        c["R1"] * dm**1.96 * fr**0.54,
+    )
+    g_sl = np.where(
+        has_fa,
+        c["S1"] * dm**-0.145 * (fr**5 + c["S2"] * dm**1.5 * fa4_per_sin) ** (1.0 / 3.0),
+        c["S1"] * dm**-0.26 * fr ** (5.0 / 3.0),
+    )
+    return g_rr, g_sl
+
+
+def _g_angular(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, angular contact (single/double row) and four-point contact ball bearings."""
+    fg_rr = c["R3"] * dm**4 * n**2
+    fg_sl = c["S3"] * dm**4 * n**2
+    g_rr = c["R1"] * dm**1.97 * (fr + fg_rr + c["R2"] * fa) ** 0.54
+    g_sl = c["S1"] * dm**0.26 * ((fr + fg_sl) ** (4.0 / 3.0) + c["S2"] * fa ** (4.0 / 3.0))
+    return g_rr, g_sl
+
+
+def _g_cylindrical(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, cylindrical roller bearings (with cage or full complement)."""
+    return c["R1"] * dm**2.41 * fr**0.31, c["S1"] * dm**0.9 * fa + c["S2"] * dm * fr
+
+
+def _g_tapered(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, tapered roller bearings; Y = axial load factor of the product tables."""
+    y = extra.get("axial_factor")
+    if y is None:
+        if np.any(fa > 0):
+            raise InputError(
+                "axial_factor (None) must be given (Y of the product tables) for tapered_roller with F_a > 0"
+            )
+        y = 0.0
+    return c["R1"] * dm**2.38 * (fr + c["R2"] * y * fa) ** 0.31, c["S1"] * dm**0.82 * (fr + c["S2"] * y * fa)
+
+
+def _g_thrust_ball(c, dm, fr, fa, n, extra):
+    """SKF Table 2b, thrust ball bearings (axial load only)."""
+    return c["R1"] * dm**1.83 * fa**0.54, c["S1"] * dm**0.05 * fa ** (4.0 / 3.0)
+
+
+def _g_cyl_thrust(c, dm, fr, fa, n, extra):
+    """SKF Table 2b, cylindrical roller thrust bearings (axial load only)."""
+    return c["R1"] * dm**2.38 * fa**0.31, c["S1"] * dm**0.62 * fa
+
+
+#: Registry of bearing types → G_rr/G_sl law (SKF Tables 2a/2b).
+G_MODELS = {
+    "deep_groove_ball": _g_deep_groove,
+    "angular_contact_ball": _g_angular,
+    "angular_contact_ball_double": _g_angular,
+    "four_point_contact_ball": _g_angular,
+    "cylindrical_roller": _g_cylindrical,
+    "cylindrical_roller_full": _g_cylindrical,
+    "tapered_roller": _g_tapered,
+    "thrust_ball": _g_thrust_ball,
+    "cylindrical_roller_thrust": _g_cyl_thrust,
+}
+
+
+def drag_moment(
+    n_rpm,
+    nu_mm2s,
+    dm_mm,
+    bore_mm,
+    outside_mm,
+    oil_level_mm,
+    k_z,
+    *,
+    roller,
+    k_l=np.nan,
+    width_mm=None,
+    n_rows=1,
+    drag_loss_factor=None,
+):
+    """Drag loss moment M_drag [N·mm] of a bearing in an oil bath (SKF units).
+
+    .. math::
+
+        M_{drag} = 0.4 V_M K_{ball} d_m^5 n^2 + 1.093\\cdot10^{-7} n^2 d_m^3
+                   \\Big(\\frac{n d_m^2 f_t}{\\nu}\\Big)^{-1.379} R_s \\quad\\text{(ball)}
+
+        M_{drag} = 4 V_M K_{roll} C_w B d_m^4 n^2 + (\\text{same viscous term}) \\quad\\text{(roller)}
+
+    K_ball = i_rw K_Z (d + D)/(D − d)·1e-12, K_roll = K_L K_Z (d + D)/(D − d)·1e-12,
+    t = 2 cos⁻¹[(0.6 d_m − H)/(0.6 d_m)] (H ≤ 1.2 d_m), f_t = sin(t/2) for t ≤ π else 1,
+    R_s = 0.36 d_m² (t − sin t) f_A, f_A = 0.05 K_Z (D + d)/(D − d), C_w from l_D = 5 K_L B/d_m.
+
+    Parameters
+    ----------
+    n_rpm, nu_mm2s, dm_mm, bore_mm, outside_mm : array_like
+        Speed [r/min], viscosity [mm²/s], d_m, d, D [mm].
+    oil_level_mm : array_like
+        Oil level H above the lowest point of the outer ring raceway [mm], ≥ 0.
+    k_z, k_l : float
+        Geometric constants (K_L for rollers).
+    roller : bool
+        Roller (True) or ball (False) form.
+    width_mm : array_like or None
+        Bearing width B [mm] (roller form).
+    n_rows : int
+        Rows of balls i_rw (ball form).
+    drag_loss_factor : array_like or None
+        V_M [-] read from the SKF diagram; required when H > 0 (bearingkit does not digitise it).
+
+    References
+    ----------
+    SKF (2018) Rolling bearings 17000 EN, "Drag losses in oil bath lubrication"; via formulas.md C1.
+    """
+    h = np.minimum(oil_level_mm, DRAG_LEVEL_CAP * dm_mm)
+    wet = (h > 0) & (n_rpm > 0)
+    if np.any(h > 0) and drag_loss_factor is None:
+        raise InputError(
+            "drag_loss_factor (None) must be given when oil_level > 0: SKF gives V_M only as a diagram "
+            "(V_M versus H/d_m); read it there"
+        )
+    vm = 0.0 if drag_loss_factor is None else np.asarray(drag_loss_factor, dtype=float)
+    checks.non_negative("drag_loss_factor", vm)
+    ratio = (outside_mm + bore_mm) / (outside_mm - bore_mm)
+    t = 2.0 * np.arccos(np.clip((DRAG_T_FACTOR * dm_mm - h) / (DRAG_T_FACTOR * dm_mm), -1.0, 1.0))
+    f_t = np.where(t <= np.pi, np.sin(0.5 * t), 1.0)
+    r_s = DRAG_RS_FACTOR * dm_mm**2 * (t - np.sin(t)) * DRAG_FA_FACTOR * k_z * ratio
+    arg = np.where(wet, n_rpm * dm_mm**2 * f_t / nu_mm2s, 1.0)
+    viscous = np.where(wet, DRAG_VISCOUS_COEFF * n_rpm**2 * dm_mm**3 * arg**DRAG_VISCOUS_EXP * r_s, 0.0)
+    if roller:
+        if width_mm is None:
+            raise InputError("width (None m) must be given for the drag of a roller bearing in an oil bath")
+        l_d = DRAG_LD_FACTOR * k_l * width_mm / dm_mm
+        a, b, c, d = DRAG_CW
+        c_w = a * l_d**3 + b * l_d**2 + c * l_d + d
+        k_roll = k_l * k_z * ratio * DRAG_K_SCALE
+        churn = DRAG_ROLLER_COEFF * vm * k_roll * c_w * width_mm * dm_mm**4 * n_rpm**2
+    else:
+        k_ball = n_rows * k_z * ratio * DRAG_K_SCALE
+        churn = DRAG_BALL_COEFF * vm * k_ball * dm_mm**5 * n_rpm**2
+    return np.where(wet, churn, 0.0) + viscous
+
+
+# --- the model ------------------------------------------------------------------------------------
+def _to_skf_units(bore_diameter, outside_diameter, speed, kinematic_viscosity):
+    d = np.asarray(bore_diameter, dtype=float) * M_TO_MM
+    big_d = np.asarray(outside_diameter, dtype=float) * M_TO_MM
+    n = np.abs(np.asarray(speed, dtype=float)) * RAD_S_TO_RPM
+    nu = np.asarray(kinematic_viscosity, dtype=float) * M2S_TO_MM2S
+    return d, big_d, 0.5 * (d + big_d), n, nu
+
+
+def skf_friction_moment(
+    bearing_type: str,
+    *,
+    bore_diameter,
+    outside_diameter,
+    speed,
+    kinematic_viscosity,
+    load_radial=0.0,
+    load_axial=0.0,
+    series: str | None = None,
+    lubrication: str = "oil_bath",
+    lubricant_base: str = "mineral",
+    static_rating=None,
+    axial_factor=None,
+    mu_bl: float = MU_BL,
+    mu_ehl: float | None = None,
+    seal: str | None = None,
+    seal_counterface_diameter=None,
+    n_seals: int = 2,
+    oil_level=None,
+    drag_loss_factor=None,
+    width=None,
+    n_rows: int = 1,
+) -> dict:
+    """Frictional moment of a standard bearing by the SKF four-component model [N·m].
+
+    .. math:: M = \\phi_{ish}\\phi_{rs}G_{rr}(\\nu n)^{0.6} + G_{sl}\\mu_{sl} + M_{seal} + M_{drag}
+
+    (see the module docstring for every factor). Inputs broadcast over a leading case axis.
+
+    Parameters
+    ----------
+    bearing_type : str
+        One of :data:`G_MODELS`.
+    bore_diameter, outside_diameter : array_like
+        Bearing bore d and outside diameter D [m] (d_m = (d + D)/2).
+    speed : array_like
+        Rotational speed of the rotating ring relative to the other [rad/s] (sign ignored).
+    kinematic_viscosity : array_like
+        Operating kinematic viscosity of the oil or of the grease's base oil [m²/s], > 0.
+    load_radial, load_axial : array_like
+        F_r, F_a [N], ≥ 0 (thrust types: F_r must be 0).
+    series : str or None
+        Series key of the constants table (None = the type's default row).
+    lubrication : str
+        ``oil_bath``, ``oil_jet`` (K_rs = 3e-8), ``grease``, ``oil_air`` (K_rs = 6e-8).
+    lubricant_base : str
+        ``mineral``, ``synthetic``, ``transmission`` or ``grease`` (selects μ_EHL).
+    static_rating : array_like or None
+        C_0 [N], needed for deep groove ball bearings with F_a > 0 (α_F).
+    axial_factor : float or None
+        Y [-] of the product tables, needed for tapered roller bearings with F_a > 0.
+    mu_bl : float
+        Boundary friction coefficient μ_bl [-] (SKF ≈ 0.15).
+    mu_ehl : float or None
+        Full-film coefficient μ_EHL [-]; None = SKF's value for the type and lubricant.
+    seal : str or None
+        SKF seal designation (``data/skf_seal_constants.csv``); None = open bearing.
+    seal_counterface_diameter : array_like or None
+        Seal counterface diameter d_s [m] (product tables), required with ``seal``.
+    n_seals : int
+        0, 1 or 2 seals (the table gives two; one seal = half).
+    oil_level : array_like or None
+        Oil bath level H [m] (None = no drag term).
+    drag_loss_factor : array_like or None
+        V_M [-] read from the SKF diagram (required when ``oil_level`` > 0).
+    width : array_like or None
+        Bearing width B [m] (roller drag).
+    n_rows : int
+        Rows of balls (ball drag).
+
+    Returns
+    -------
+    dict
+        ``rolling_Nm``, ``sliding_Nm``, ``seal_Nm``, ``drag_Nm``, ``total_Nm`` [N·m] and the factors
+        ``phi_ish``, ``phi_rs``, ``phi_bl``, ``mu_sl`` [-], ``G_rr`` [N·mm/(mm²/s·r/min)^0.6], ``G_sl``
+        [N·mm], all broadcast to the case shape.
+
+    References
+    ----------
+    SKF Group (2018) Rolling bearings, PUB BU/P1 17000 EN, chapter "Friction" (SKF 2012, 10000 EN, same
+    model); G_rr/G_sl forms: Tables 2a/2b.
+    """
+    checks.one_of("bearing_type", bearing_type, G_MODELS)
+    checks.one_of("lubrication", lubrication, LUBRICATION_METHODS)
+    checks.positive("bore_diameter", bore_diameter, "m")
+    checks.greater("outside_diameter", outside_diameter, "bore_diameter", bore_diameter, "m")
+    checks.finite("speed", speed, "rad/s")
+    checks.positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    checks.non_negative("load_radial", load_radial, "N")
+    checks.non_negative("load_axial", load_axial, "N")
+    checks.in_range("mu_bl", mu_bl, 0.0, 1.0)
+    if bearing_type in _THRUST_TYPES and np.any(np.asarray(load_radial) > 0):
+        raise InputError(
+            f"load_radial ({float(np.max(load_radial)):.6g} N) must be 0 for {bearing_type} (SKF: F_a only)"
+        )
+    c = series_constants(bearing_type, series)
+    d, big_d, dm, n, nu = _to_skf_units(bore_diameter, outside_diameter, speed, kinematic_viscosity)
+    fr = np.asarray(load_radial, dtype=float)
+    fa = np.asarray(load_axial, dtype=float)
+    d, big_d, dm, n, nu, fr, fa = np.broadcast_arrays(d, big_d, dm, n, nu, fr, fa)
+    extra = {"static_rating_N": static_rating, "axial_factor": axial_factor}
+    g_rr, g_sl = G_MODELS[bearing_type](c, dm, fr, fa, n, extra)
+    phi_ish = inlet_shear_factor(n, dm, nu)
+    phi_rs = replenishment_factor(n, nu, d, big_d, c["K_Z"], LUBRICATION_METHODS[lubrication])
+    m_rr = phi_ish * phi_rs * g_rr * (nu * n) ** RR_EXP
+    if mu_ehl is None:
+        mu_ehl = mu_ehl_default(bearing_type, lubricant_base)
+    checks.in_range("mu_ehl", mu_ehl, 0.0, 1.0)
+    phi_bl = boundary_weighting(n, nu, dm)
+    mu_sl = sliding_coefficient(phi_bl, mu_ehl, mu_bl)
+    m_sl = g_sl * mu_sl
+    m_seal = np.zeros_like(m_rr)
+    n_seals = checks.integer("n_seals", n_seals, low=0)
+    if seal is not None and n_seals > 0:
+        if n_seals > 2:
+            raise InputError(f"n_seals ({n_seals}) must be 0, 1 or 2")
+        if seal_counterface_diameter is None:
+            raise InputError(f"seal_counterface_diameter (None m) must be given with seal {seal!r}")
+        checks.positive("seal_counterface_diameter", seal_counterface_diameter, "m")
+        if np.ndim(outside_diameter) > 0 and np.ptp(np.asarray(outside_diameter)) > 0:
+            raise InputError(
+                "outside_diameter must be one value when a seal is given (the seal table is per size)"
+            )
+        beta, ks1, ks2 = seal_constants(bearing_type, seal, float(np.max(big_d)))
+        ds = np.asarray(seal_counterface_diameter, dtype=float) * M_TO_MM
+        m_seal = m_seal + 0.5 * n_seals * (ks1 * ds**beta + ks2)
+    m_drag = np.zeros_like(m_rr)
+    if oil_level is not None:
+        checks.non_negative("oil_level", oil_level, "m")
+        if lubrication != "oil_bath":
+            raise InputError(
+                f"oil_level ({oil_level!r} m) applies to lubrication 'oil_bath', not {lubrication!r}"
+            )
+        roller = bearing_type in _ROLLER_TYPES
+        b_mm = (
+            None if width is None else np.asarray(checks.positive("width", width, "m"), dtype=float) * M_TO_MM
+        )
+        m_drag = drag_moment(
+            n,
+            nu,
+            dm,
+            d,
+            big_d,
+            np.asarray(oil_level, dtype=float) * M_TO_MM,
+            c["K_Z"],
+            roller=roller,
+            k_l=c["K_L"],
+            width_mm=b_mm,
+            n_rows=checks.integer("n_rows", n_rows),
+            drag_loss_factor=drag_loss_factor,
+        )
+    total = m_rr + m_sl + m_seal + m_drag
+    return {
+        "rolling_Nm": m_rr * NMM_TO_NM,
+        "sliding_Nm": m_sl * NMM_TO_NM,
+        "seal_Nm": np.broadcast_to(m_seal * NMM_TO_NM, total.shape).copy(),
+        "drag_Nm": np.broadcast_to(m_drag * NMM_TO_NM, total.shape).copy(),
+        "total_Nm": total * NMM_TO_NM,
+        "phi_ish": phi_ish,
+        "phi_rs": phi_rs,
+        "phi_bl": phi_bl,
+        "mu_sl": np.broadcast_to(mu_sl, total.shape).copy(),
+        "G_rr": g_rr,
+        "G_sl": g_sl,
+    }
+
+
+#: Citation keys of this module.
+REFERENCE_KEYS = ("skf2018_friction", "skf_friction")
+
+__all__ = [
+    "G_MODELS",
+    "LUBRICATION_METHODS",
+    "boundary_weighting",
+    "drag_moment",
+    "inlet_shear_factor",
+    "mu_ehl_default",
+    "replenishment_factor",
+    "seal_constants",
+    "series_constants",
+    "skf_friction_moment",
+    "sliding_coefficient",
+]

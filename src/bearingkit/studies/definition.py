@@ -1,0 +1,272 @@
+"""Study definitions: a TOML file → a validated, SI-valued :class:`StudyDefinition` (pydantic).
+
+SI inside: every quantity of the file is a string with a unit (``"-2 um"``, ``"3 kN"``) parsed with
+:func:`bearingkit.units.parse` against the dimension the evaluator declares for that factor;
+dimensionless factors and counts may be bare numbers.
+
+File layout (all sections but ``[study]`` optional)::
+
+    [study]
+    name = "seed000_table3"
+    design = "orthogonal"       # sweep | factorial | orthogonal | monte_carlo | optimize
+    evaluator = "seed000_statics"
+    array = "L9"                # orthogonal designs
+    bearing = "../seed000_composite.toml"   # geometry defaults from a bearing file (relative path)
+    response = "ball_axial_share"           # output analysed (main effects, range analysis)
+    samples = 1000              # monte_carlo
+    sampler = "random"          # monte_carlo: random | lhs | sobol
+    seed = 0
+    chunk_size = 1000           # cases per chunk (the unit of parallel work and of resume)
+
+    [fixed]                     # factor values common to all cases
+    axial_load = "3 kN"
+
+    [[factors]]                 # varied factors: levels, or a distribution (monte_carlo)
+    name = "clearance_axial_roller"
+    label = "A"
+    levels = ["0 um", "-1 um", "-2 um"]
+    # column = 1                (orthogonal: 1-based array column; default the next free one)
+    # distribution = "normal", mean = "...", std = "..."   (or low/high)
+
+    [[variables]]               # optimize: design variables
+    name = "x1"; low = 0; high = 1; integer = false
+    [[objectives]]
+    output = "f1"; sense = "min"
+    [[constraints]]
+    output = "g"; upper = 2.0   # and/or lower; values in the output's SI unit
+    [optimizer]
+    algorithm = "nsga2"; pop_size = 100; generations = 100; seed = 1
+    [targets.xa1]               # named points for nearest-to-target selection (variables/outputs)
+    x1 = 0.25
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import tomllib
+from pathlib import Path
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from bearingkit import units
+from bearingkit.errors import InputError
+
+DESIGNS = ("sweep", "factorial", "orthogonal", "monte_carlo", "optimize")
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class FactorDef(_Strict):
+    """A varied factor (SI): ``levels`` or a Monte Carlo ``distribution``."""
+
+    name: str
+    label: str | None = None
+    levels: tuple | None = None
+    column: int | None = None
+    base: float | int | str | None = None
+    distribution: Literal["normal", "uniform", "lognormal", "truncnormal"] | None = None
+    mean: float | None = None
+    std: float | None = None
+    low: float | None = None
+    high: float | None = None
+
+
+class VariableDef(_Strict):
+    """A design variable of an optimisation (SI bounds)."""
+
+    name: str
+    low: float
+    high: float
+    integer: bool = False
+
+
+class ObjectiveDef(_Strict):
+    output: str
+    sense: Literal["min", "max"] = "min"
+
+
+class ConstraintDef(_Strict):
+    """output ≤ upper and/or output ≥ lower (SI)."""
+
+    output: str
+    upper: float | None = None
+    lower: float | None = None
+
+
+class OptimizerDef(_Strict):
+    algorithm: Literal["nsga2", "nsga3"] = "nsga2"
+    pop_size: int = Field(100, ge=4)
+    generations: int = Field(100, ge=1)
+    seed: int = 1
+    n_partitions: int = Field(12, ge=1)
+
+
+class StudyDefinition(_Strict):
+    """A validated study (every value SI). Build with :func:`load_study` / :func:`from_dict`."""
+
+    name: str
+    design: Literal["sweep", "factorial", "orthogonal", "monte_carlo", "optimize"]
+    evaluator: str
+    array: str | None = None
+    bearing: str | None = None
+    response: str | None = None
+    samples: int | None = Field(None, ge=1)
+    sampler: Literal["random", "lhs", "sobol"] = "random"
+    seed: int = 0
+    chunk_size: int = Field(1000, ge=1)
+    outputs: tuple[str, ...] | None = None
+    fixed: dict = Field(default_factory=dict)
+    factors: tuple[FactorDef, ...] = ()
+    variables: tuple[VariableDef, ...] = ()
+    objectives: tuple[ObjectiveDef, ...] = ()
+    constraints: tuple[ConstraintDef, ...] = ()
+    optimizer: OptimizerDef = OptimizerDef()
+    targets: dict = Field(default_factory=dict)
+    source: str = "<dict>"
+
+    def fingerprint(self) -> str:
+        """SHA-256 of the definition (without its file name): identifies the study in a store."""
+        data = self.model_dump(exclude={"source"})
+        return hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode()).hexdigest()
+
+
+def load_study(path) -> StudyDefinition:
+    """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder)."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read the file ({exc})".replace("\n", " ")) from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    return from_dict(data, source=str(path), base_dir=path.parent)
+
+
+def _si(value, factor, where: str):
+    dim = factor.dimension
+    if dim == "text":
+        if not isinstance(value, str):
+            raise InputError(f"{where} ({value!r}) must be a name (string)")
+        return value
+    if dim == "count":
+        x = units.parse(value, "dimensionless", where)
+        if not float(x).is_integer():
+            raise InputError(f"{where} ({value!r}) must be an integer")
+        return int(x)
+    return units.parse(value, dim, where)
+
+
+def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinition:
+    """Validate a parsed study file (see the module docstring); InputError with one line if malformed."""
+    from bearingkit.studies import evaluators
+
+    if not isinstance(data, dict) or "study" not in data or not isinstance(data["study"], dict):
+        raise InputError(f"{source}: a study file needs a [study] table")
+    unknown = set(data) - {
+        "study",
+        "fixed",
+        "factors",
+        "variables",
+        "objectives",
+        "constraints",
+        "optimizer",
+        "targets",
+    }
+    if unknown:
+        raise InputError(f"{source}: unknown section(s) {sorted(unknown)}")
+    head = dict(data["study"])
+    ev_name = head.get("evaluator")
+    if not isinstance(ev_name, str):
+        raise InputError(f"{source}: study.evaluator ({ev_name!r}) must name an evaluator")
+    try:
+        ev = evaluators.get(ev_name)
+    except InputError as exc:
+        raise InputError(f"{source}: study.{exc}") from None
+
+    def factor(name, where):
+        if name not in ev.factors:
+            raise InputError(f"{source}: {where} ({name!r}) is not a factor of evaluator {ev.name!r}")
+        return ev.factors[name]
+
+    fixed = {
+        k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}") for k, v in data.get("fixed", {}).items()
+    }
+    factors = []
+    for i, f in enumerate(data.get("factors", [])):
+        f = dict(f)
+        spec = factor(f.get("name"), f"factors[{i}].name")
+        w = f"{source}: factors[{i}] ({spec.name})"
+        if "levels" in f:
+            f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
+        for key in ("base", "mean", "std", "low", "high"):
+            if key in f:
+                f[key] = _si(f[key], spec, f"{w}.{key}")
+        factors.append(f)
+    variables = []
+    for i, v in enumerate(data.get("variables", [])):
+        v = dict(v)
+        spec = factor(v.get("name"), f"variables[{i}].name")
+        for key in ("low", "high"):
+            if key in v:
+                v[key] = _si(v[key], spec, f"{source}: variables[{i}] ({spec.name}).{key}")
+        variables.append(v)
+    targets = {}
+    for tname, t in data.get("targets", {}).items():
+        if not isinstance(t, dict):
+            raise InputError(f"{source}: targets.{tname} must be a table of values")
+        targets[tname] = {
+            k: (_si(v, ev.factors[k], f"{source}: targets.{tname}.{k}") if k in ev.factors else float(v))
+            for k, v in t.items()
+        }
+    bearing = head.get("bearing")
+    if bearing is not None and base_dir is not None and not Path(bearing).is_absolute():
+        bearing = str((Path(base_dir) / bearing).resolve())
+    raw = {
+        **head,
+        "bearing": bearing,
+        "fixed": fixed,
+        "factors": factors,
+        "variables": variables,
+        "objectives": data.get("objectives", []),
+        "constraints": data.get("constraints", []),
+        "optimizer": data.get("optimizer", {}),
+        "targets": targets,
+        "source": source,
+    }
+    try:
+        definition = StudyDefinition.model_validate(raw)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        loc = ".".join(str(p) for p in err["loc"])
+        raise InputError(f"{source}: {loc} ({err.get('input')!r}) {err['msg']}") from None
+    _check(definition)
+    return definition
+
+
+def _check(d: StudyDefinition) -> None:
+    src = d.source
+    if d.design == "optimize":
+        if not d.variables or not d.objectives:
+            raise InputError(f"{src}: an optimize study needs [[variables]] and [[objectives]]")
+        for v in d.variables:
+            if not v.high > v.low:
+                raise InputError(f"{src}: variables ({v.name}) high ({v.high}) must exceed low ({v.low})")
+        return
+    if not d.factors:
+        raise InputError(f"{src}: a {d.design} study needs [[factors]]")
+    if d.design == "monte_carlo":
+        if d.samples is None:
+            raise InputError(f"{src}: study.samples must be given for a monte_carlo study")
+        for f in d.factors:
+            if f.distribution is None:
+                raise InputError(f"{src}: factors ({f.name}) needs a distribution in a monte_carlo study")
+        return
+    for f in d.factors:
+        if not f.levels:
+            raise InputError(f"{src}: factors ({f.name}) needs levels in a {d.design} study")
+    if d.design == "orthogonal" and d.array is None:
+        raise InputError(f"{src}: study.array (None) must name an orthogonal array, e.g. 'L9'")
