@@ -244,6 +244,15 @@ def replenishment_factor(n_rpm, nu_mm2s, bore_mm, outside_mm, k_z, k_rs):
 def boundary_weighting(n_rpm, nu_mm2s, dm_mm):
     """Weighting factor φ_bl [-] of the sliding friction coefficient (SKF units).
 
+    Parameters
+    ----------
+    n_rpm : array_like [r/min]
+        Rotational speed.
+    nu_mm2s : array_like [mm²/s]
+        Kinematic viscosity at the operating temperature.
+    dm_mm : array_like [mm]
+        Mean diameter (d + D)/2.
+
     .. math:: \\phi_{bl} = \\exp[-2.6\\cdot10^{-8}(n\\nu)^{1.4}d_m]
 
     References
@@ -254,14 +263,32 @@ def boundary_weighting(n_rpm, nu_mm2s, dm_mm):
 
 
 def sliding_coefficient(phi_bl, mu_ehl, mu_bl=MU_BL):
-    """μ_sl = φ_bl μ_bl + (1 − φ_bl) μ_EHL [-] (SKF 2018, sliding frictional moment)."""
+    """μ_sl = φ_bl μ_bl + (1 − φ_bl) μ_EHL [-] (SKF 2018, sliding frictional moment).
+
+    Parameters
+    ----------
+    phi_bl : array_like
+        Weighting factor from :func:`boundary_weighting`.
+    mu_ehl : array_like
+        Full-film coefficient (:func:`mu_ehl_default`).
+    mu_bl : array_like
+        Boundary coefficient (SKF: ≈ 0.15).
+    """
     return phi_bl * mu_bl + (1.0 - phi_bl) * mu_ehl
 
 
 def mu_ehl_default(bearing_type: str, lubricant_base: str = "mineral") -> float:
     """SKF's full-film μ_EHL: 0.02 cylindrical, 0.002 tapered, else by oil base (mineral 0.05 …).
 
-    A grease counts as its base oil, assumed mineral (documented choice).
+    A grease counts as its base oil, assumed mineral (documented choice). Source: SKF (2018) Rolling
+    bearings 17000 EN, sliding frictional moment.
+
+    Parameters
+    ----------
+    bearing_type : str
+        A key of :data:`G_MODELS`.
+    lubricant_base : str
+        ``"mineral"``, ``"synthetic"``, ``"transmission"`` or ``"grease"``.
     """
     if bearing_type.startswith("cylindrical_roller"):
         return MU_EHL_CYLINDRICAL
