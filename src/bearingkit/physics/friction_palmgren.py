@@ -124,7 +124,13 @@ def f0_factor(bearing_type: str, lubrication: str) -> float:
 
 
 def f1_law(bearing_type: str) -> tuple[float, float, str]:
-    """(z, y, p1_law) of ``palmgren_f1.csv`` for a bearing type [M]."""
+    """(z, y, p1_law) of ``palmgren_f1.csv`` for a bearing type [M]: f1 = z (P0/C0)^y (Palmgren 1959).
+
+    Parameters
+    ----------
+    bearing_type : str
+        A bearing type of the table (:func:`palmgren_types`).
+    """
     checks.one_of("bearing_type", bearing_type, palmgren_types())
     i = palmgren_types().index(bearing_type)
     return (
