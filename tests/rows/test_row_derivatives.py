@@ -113,3 +113,25 @@ def test_state_loads_match_response_force():
     st = kernel.state(q)
     assert np.isclose(st.load.sum(), -kernel.response(q).force[0, 2], rtol=1e-12)
     assert np.isclose(st.slice_load.sum(axis=-1), st.load).all()
+
+
+def test_batched_geometry_equals_separate_rows():
+    """A row whose clearance is an array over cases answers like one row per case."""
+    clear = np.array([0.0, -2e-6, 3e-6])
+    kw = dict(
+        n_elements=17,
+        element_diameter=0.005,
+        effective_length=0.008,
+        pitch_diameter=0.155,
+        orientation="radial",
+        n_slices=9,
+        e_reduced=E_RED,
+        profile=make_profile("full_crown", effective_length=0.008, element_diameter=0.005),
+    )
+    q = _q(np.random.default_rng(4), 3)
+    batched = CylindricalRow(clearance=clear, **kw).kernel().response(q)
+    for c in range(3):
+        one = CylindricalRow(clearance=float(clear[c]), **kw).kernel().response(q[c : c + 1])
+        np.testing.assert_allclose(batched.force[c], one.force[0], rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(batched.jacobian[c], one.jacobian[0], rtol=1e-12, atol=1e-3)
+        np.testing.assert_allclose(batched.energy[c], one.energy[0], rtol=1e-12, atol=1e-18)

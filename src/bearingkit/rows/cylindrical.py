@@ -142,9 +142,16 @@ class CylindricalRow:
 
 
 class CylindricalKernel(KernelBase):
-    """Precomputed slice geometry of a :class:`CylindricalRow`: δ = q Gᵀ + δ₀ per slice."""
+    """Precomputed slice geometry of a :class:`CylindricalRow`.
 
-    _case_arrays = ("G", "GG", "delta0", "c_s")
+    The approach of slice k of roller j is affine in q and in the slice position x_k:
+    δ_jk = a_j + b_j x_k + δ₀_k with a_j = G_a,j·q (approach at the roller middle) and b_j = G_b,j·q
+    (tilt across the roller). Force and Jacobian therefore need only the per-roller slice sums
+    Σq, Σq x (force) and Σq′, Σq′x, Σq′x² (stiffness): slices are reduced first, and the products with
+    the 5-DOF directions are per roller, not per slice.
+    """
+
+    _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "c_s", "x", "X2", "X3")
 
     def __init__(self, row: CylindricalRow):
         from bearingkit.physics import hertz
@@ -162,18 +169,25 @@ class CylindricalKernel(KernelBase):
         r = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1) / 2
         z = np.asarray(row.axial_position, dtype=float).reshape(-1, 1)
         sigma = row.direction
-        if sigma == 0:  # radial: u_r at axial position z + x_k
-            g = radial_row(psi[..., None], z[..., None] + x[:, None, :])
-        else:  # thrust: σ·u_a at radius r + x_k
-            g = sigma * axial_row(psi[..., None], r[..., None] + x[:, None, :])
-        self.G = g.reshape(g.shape[0], z_el * n_s, 5)  # (C|1, M, 5), M = Z·n_s
+        if sigma == 0:  # radial: u_r at axial position z + x_k = B_r(z) − x_k B_θ
+            self.Ga = radial_row(psi, z)
+            self.Gb = -np.broadcast_to(tilt_row(psi), self.Ga.shape)
+        else:  # thrust: σ·u_a at radius r + x_k = σ (B_a(r) + x_k B_θ)
+            self.Ga = sigma * axial_row(psi, r)
+            self.Gb = sigma * np.broadcast_to(tilt_row(psi), self.Ga.shape)
+        outer = lambda a, b: (a[..., :, None] * b[..., None, :]).reshape(*a.shape[:-1], 25)  # noqa: E731
+        self.GaGa = outer(self.Ga, self.Ga)
+        self.GaGb = outer(self.Ga, self.Gb) + outer(self.Gb, self.Ga)
+        self.GbGb = outer(self.Gb, self.Gb)
+        self.X2 = np.stack([np.ones_like(x), x], axis=-1)  # (C|1, n_s, 2): Σq, Σq x
+        self.X3 = np.stack([np.ones_like(x), x, x * x], axis=-1)  # Σq′, Σq′x, Σq′x²
+        # Per-slice directions (C|1, M, 5), M = Z·n_s: used for the contact cone and the starting point.
+        g = self.Ga[..., None, :] + x[:, None, :, None] * self.Gb[..., None, :]
+        self.G = g.reshape(g.shape[0], z_el * n_s, 5)
         self.tilt_B = tilt_row(psi)
         drop = np.zeros_like(x) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
         gap = np.asarray(row.clearance, dtype=float).reshape(-1, 1) / 2
-        delta0 = -gap - 2.0 * drop  # (C|1, n_s)
-        self.delta0 = np.broadcast_to(delta0[:, None, :], (delta0.shape[0], z_el, n_s)).reshape(
-            -1, z_el * n_s
-        )
+        self.delta0 = -gap - 2.0 * drop  # (C|1, n_s), the same for every roller
         # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
         k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
         if row.pairing == "series":
@@ -181,55 +195,100 @@ class CylindricalKernel(KernelBase):
         else:
             k_pair = k_contact
         self.c_s = np.asarray(k_pair * np.asarray(width) / length, dtype=float).reshape(-1, 1)  # (C|1, 1)
-        # G_m G_mᵀ flattened, so the Jacobian is one matrix product.
-        self.GG = (self.G[..., :, None] * self.G[..., None, :]).reshape(self.G.shape[0], -1, 25)
         # For the solver's starting point: Σ c_s g gᵀ over all slices, as if every slice were in contact.
-        self.start_matrix = np.einsum("cm,cmk->ck", np.broadcast_to(self.c_s, self.G.shape[:2]), self.GG)[
-            0
-        ].reshape(5, 5)
+        g0 = self.G[0]
+        self.start_matrix = float(self.c_s.ravel()[0]) * (g0.T @ g0)
         self.start_exponent = LINE_EXPONENT
         self.char_length = float(np.max(r) + np.max(length) / 2)
         self.deflection_scale = float(np.min(row.element_diameter))
         self.shape = (z_el, n_s)
 
-    def _delta(self, q, offset: RacewayOffset | None = None):
+    def _delta3(self, q, offset: RacewayOffset | None = None):
+        """Slice approaches (C, Z, n_s) [m]."""
         q = relative_displacement(q, offset)
-        if self.G.shape[0] == 1:
-            delta = q @ self.G[0].T + self.delta0
+        if self.Ga.shape[0] == 1:
+            a, b = q @ self.Ga[0].T, q @ self.Gb[0].T
         else:
-            delta = np.einsum("cmd,cd->cm", self.G, q) + self.delta0
+            a, b = np.einsum("czd,cd->cz", self.Ga, q), np.einsum("czd,cd->cz", self.Gb, q)
         if offset is not None and offset.radial is not None and self.row.direction == 0:
-            # an outward raceway deflection opens every slice of that roller (radial rows only)
-            delta = delta - np.repeat(offset.radial, self.shape[1], axis=-1)
+            a = a - offset.radial  # an outward raceway deflection opens every slice of that roller
+        delta = b[:, :, None] * self.x[:, None, :]
+        delta += a[:, :, None]
+        delta += self.delta0[:, None, :]
         return delta
+
+    def _delta(self, q, offset: RacewayOffset | None = None):
+        """Slice approaches flattened to (C, Z·n_s) [m]."""
+        d = self._delta3(q, offset)
+        return d.reshape(d.shape[0], -1)
+
+    def _ab(self, q, offset: RacewayOffset | None = None):
+        """Per-roller approach at the middle a and tilt b (C, Z): δ_jk = a_j + b_j x_k + δ₀_k."""
+        q = relative_displacement(q, offset)
+        if self.Ga.shape[0] == 1:
+            a, b = q @ self.Ga[0].T, q @ self.Gb[0].T
+        else:
+            a, b = np.einsum("czd,cd->cz", self.Ga, q), np.einsum("czd,cd->cz", self.Gb, q)
+        if offset is not None and offset.radial is not None and self.row.direction == 0:
+            a = a - offset.radial  # an outward raceway deflection opens every slice of that roller
+        return a, b
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""
-        delta = self._delta(q, offset)
+        a, b = self._ab(q, offset)
+        c, z_el = a.shape
+        # Only rollers that can touch at all are sliced: a bound on the largest slice approach.
+        reach = np.abs(b) * np.abs(self.x).max(axis=-1, keepdims=True) + self.delta0.max(
+            axis=-1, keepdims=True
+        )
+        ci, zi = np.nonzero(a + reach > 0.0)
+        delta = b[ci, zi, None] * (self.x[ci] if self.x.shape[0] > 1 else self.x[0])
+        delta += a[ci, zi, None]
+        delta += self.delta0[ci] if self.delta0.shape[0] > 1 else self.delta0[0]
         closed = delta > 0.0
         delta[~closed] = 0.0
-        # δ^(1/9) only where the slice is in contact: most slices of a bearing are open.
         t = np.zeros_like(delta)
         t[closed] = delta[closed] ** (1.0 / 9.0)
+        c_s = self.c_s[ci] if self.c_s.shape[0] > 1 else self.c_s[0]
         load = delta * t
-        load *= self.c_s  # c_s δ^(10/9)
-        t *= (10.0 / 9.0) * self.c_s  # dq/dδ
-        if self.G.shape[0] == 1:
-            force = -(load @ self.G[0])
-            jac = -(t @ self.GG[0]).reshape(-1, 5, 5)
+        load *= c_s  # q = c_s δ^(10/9)
+        t *= (10.0 / 9.0) * c_s  # q′ = dq/dδ
+        if self.X2.shape[0] == 1:
+            f_live, k_live = load @ self.X2[0], t @ self.X3[0]  # Σq, Σq x | Σq′, Σq′x, Σq′x²
         else:
-            force = -np.einsum("cm,cmd->cd", load, self.G)
-            jac = -np.einsum("cm,cmk->ck", t, self.GG).reshape(-1, 5, 5)
-        energy = np.einsum("cm,cm->c", load, delta) / (1.0 + LINE_EXPONENT)
-        return RowResponse(force, jac, energy)
+            f_live = np.einsum("nk,nkj->nj", load, self.X2[ci])
+            k_live = np.einsum("nk,nkj->nj", t, self.X3[ci])
+        f_sums = np.zeros((c, z_el, 2))
+        k_sums = np.zeros((c, z_el, 3))
+        f_sums[ci, zi] = f_live
+        k_sums[ci, zi] = k_live
+        if self.Ga.shape[0] == 1:
+            force = -(f_sums[..., 0] @ self.Ga[0] + f_sums[..., 1] @ self.Gb[0])
+            jac = -(
+                k_sums[..., 0] @ self.GaGa[0] + k_sums[..., 1] @ self.GaGb[0] + k_sums[..., 2] @ self.GbGb[0]
+            )
+        else:
+            force = -(
+                np.einsum("cz,czd->cd", f_sums[..., 0], self.Ga)
+                + np.einsum("cz,czd->cd", f_sums[..., 1], self.Gb)
+            )
+            jac = -(
+                np.einsum("cz,czk->ck", k_sums[..., 0], self.GaGa)
+                + np.einsum("cz,czk->ck", k_sums[..., 1], self.GaGb)
+                + np.einsum("cz,czk->ck", k_sums[..., 2], self.GbGb)
+            )
+        energy = np.bincount(ci, weights=np.einsum("nk,nk->n", load, delta), minlength=c) / (
+            1.0 + LINE_EXPONENT
+        )
+        return RowResponse(force, jac.reshape(c, 5, 5), energy)
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller and per-slice results at displacements q (C, 5)."""
         from bearingkit.physics import hertz
 
         row = self.row
-        z_el, n_s = self.shape
-        delta = np.maximum(self._delta(q, offset), 0.0).reshape(-1, z_el, n_s)
+        n_s = self.shape[1]
+        delta = np.maximum(self._delta3(q, offset), 0.0)
         c_s = self.c_s[..., None]
         q_slice = c_s * delta**LINE_EXPONENT
         load = q_slice.sum(axis=-1)
