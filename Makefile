@@ -17,6 +17,7 @@ run: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check .
+	bash scripts/ensure_chromium.sh
 	$(BIN)/python -m pytest
 	$(BIN)/bearingkit validate
 

@@ -14,8 +14,9 @@ from bearingkit.validation.registry import all_cases, run_cases
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "ptrb_prototype.toml"
 
 
-def test_seed004_cases_pass():
-    results = run_cases(all_cases(["seed004/"]))
+def test_seed004_rating_cases_pass():
+    """The prototype ratings and the Table 4 rating sweeps (no friction case: those live beside it)."""
+    results = run_cases(all_cases(["seed004/prototype/", "seed004/table4/"]))
     assert len(results) == 4 + 5 * 2 * 4
     bad = [(r.case.id, r.rel_error) for r in results if not r.passed]
     assert not bad

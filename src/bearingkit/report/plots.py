@@ -1,0 +1,303 @@
+"""Figures of the HTML report (matplotlib, Agg backend, no pyplot global state).
+
+SI inside: every function reads SI result arrays (N, Pa, m, rad, N·m) and converts only for the axis
+labels (kN, MPa, mm, degrees, N·mm). Faces never recompute physics: these functions only read
+:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult`,
+:class:`~bearingkit.analysis.friction.FrictionResult` and :class:`~bearingkit.analysis.rating.RatingResult`
+objects. Each ``*_figure`` returns a :class:`matplotlib.figure.Figure` (or None when there is nothing
+to draw); :func:`png_data_uri` turns one into an inline ``data:image/png;base64,…`` URI.
+
+Figures:
+
+- :func:`polar_load_figure` — element loads at their azimuth, one polar panel per row;
+- :func:`slice_pressure_figure` — roller rows: contact pressure per element (azimuth) × slice (position);
+- :func:`friction_figure` — friction torque by component and by row;
+- :func:`rating_figure` — static safety s0 and ISO/TS 16281 life L10r per row.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import math
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
+
+#: Resolution of the inline PNGs [dots per inch]; with the figure widths below (≤ 11 in) the images
+#: stay ≤ 1100 px wide, the width of the report's text column.
+DPI = 100
+#: Width of a full-width figure [in].
+FIGURE_WIDTH = 11.0
+#: Polar panels per figure line.
+POLAR_COLUMNS = 3
+#: Colour map of loads and pressures (perceptually uniform, readable in grey scale).
+COLORMAP = "viridis"
+#: Static safety below which a row is drawn in the warning colour (ISO 76: s0 ≥ 1 required).
+S0_REQUIRED = 1.0
+_WARN, _OK, _NEUTRAL = "#c0392b", "#2e86c1", "#7f8c8d"
+
+
+def _figure(width: float, height: float, top: float = 0.45, bottom: float = 0.55, **adjust) -> Figure:
+    """A figure with fixed margins (``top``/``bottom`` in inches; constrained layout is ~2x slower)."""
+    fig = Figure(figsize=(width, height), dpi=DPI)
+    FigureCanvasAgg(fig)
+    fig.subplots_adjust(top=1 - top / height, bottom=bottom / height, **adjust)
+    return fig
+
+
+def png_bytes(fig: Figure) -> bytes:
+    """The figure as PNG bytes (no timestamp metadata, so equal figures give equal bytes)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=DPI, metadata={"Software": None})
+    return buf.getvalue()
+
+
+def png_data_uri(fig: Figure) -> str:
+    """``data:image/png;base64,…`` of the figure, for an inline ``<img src=…>``."""
+    return "data:image/png;base64," + base64.b64encode(png_bytes(fig)).decode("ascii")
+
+
+def _finite(a) -> np.ndarray:
+    return np.nan_to_num(np.asarray(a, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
+
+
+def polar_load_figure(result, case: int) -> Figure:
+    """Element loads Q [kN] at their azimuth ψ, one polar panel per row.
+
+    Parameters
+    ----------
+    result : QuasiStaticResult
+        Solved cases; ``result.rows`` gives ``azimuth`` (C|1, Z) [rad] and ``load`` (C, Z) [N].
+    case : int
+        Case index.
+
+    Notes
+    -----
+    ψ is measured from +x towards +y (design.md §3): 0° points right, angles grow counter-clockwise.
+    Bar colour and length are the element load; unloaded elements show as a grey dot on the pitch circle.
+    """
+    states = list(result.rows)
+    n = len(states)
+    cols = min(POLAR_COLUMNS, n)
+    lines = math.ceil(n / cols)
+    height = 3.6 * lines + 0.4
+    fig = _figure(
+        FIGURE_WIDTH * cols / POLAR_COLUMNS,
+        height,
+        top=0.95,
+        bottom=0.3,
+        left=0.04,
+        right=0.96,
+        wspace=0.3,
+        hspace=0.55,
+    )
+    from matplotlib import colormaps
+
+    cmap = colormaps[COLORMAP]
+    for i, s in enumerate(states):
+        ax = fig.add_subplot(lines, cols, i + 1, projection="polar")
+        psi = np.mod(np.broadcast_to(s.azimuth, s.load.shape)[case], 2 * np.pi)
+        q = _finite(s.load[case]) / 1e3
+        q_max = float(q.max()) if q.size else 0.0
+        scale = q_max if q_max > 0 else 1.0
+        width = 2 * np.pi / max(len(psi), 1) * 0.8
+        ax.bar(psi, q, width=width, bottom=0.0, color=cmap(q / scale), edgecolor="none")
+        ax.scatter(psi[q <= 0], np.zeros(int(np.sum(q <= 0))), s=6, color=_NEUTRAL, zorder=3)
+        ax.set_ylim(0, scale * 1.1)
+        if q_max <= 0:
+            ax.text(
+                0,
+                0,
+                "no loaded element",
+                ha="center",
+                va="center",
+                fontsize=9,
+                color=_WARN,
+                bbox={"facecolor": "white", "edgecolor": "none"},
+            )
+        ax.set_rlabel_position(112.5)
+        ax.set_thetagrids(np.arange(0, 360, 45), [f"{a}°" for a in range(0, 360, 45)])
+        ax.yaxis.set_major_locator(MaxNLocator(3))
+        ax.tick_params(labelsize=7)
+        loaded = int(np.count_nonzero(q > 0))
+        ax.set_title(
+            f"{s.name} ({s.kind})\n{loaded}/{len(q)} loaded, Q_max = {q_max:.3g} kN", fontsize=9, pad=14
+        )
+    return fig
+
+
+def _slice_pressure(state, case: int):
+    """(pressure or load array (Z, n_s), label, scale) of a roller row; pressure when the row gives it."""
+    ex = state.extras
+    if "slice_pressure_inner" in ex or "slice_pressure_outer" in ex:
+        parts = [_finite(ex[k][case]) for k in ("slice_pressure_inner", "slice_pressure_outer") if k in ex]
+        return np.maximum.reduce(parts), "max. slice pressure (inner/outer) [MPa]", 1e-6
+    return _finite(state.slice_load[case]), "slice load q [N]", 1.0
+
+
+def roller_rows(result) -> list:
+    """Row states with at least two slices per roller (``slice_load`` (C, Z, n_s ≥ 2))."""
+    return [s for s in result.rows if s.slice_load is not None and s.slice_load.shape[-1] >= 2]
+
+
+def _edges(centres: np.ndarray) -> np.ndarray:
+    """Cell edges around increasing centres (n ≥ 2) for ``pcolormesh(shading="flat")``."""
+    mid = 0.5 * (centres[1:] + centres[:-1])
+    return np.concatenate([[2 * centres[0] - mid[0]], mid, [2 * centres[-1] - mid[-1]]])
+
+
+def slice_pressure_figure(result, case: int) -> Figure | None:
+    """Slice pressure map of every sliced roller row (n_s ≥ 2): element (azimuth) × slice; else None.
+
+    Parameters
+    ----------
+    result : QuasiStaticResult
+        Row states with ``slice_load`` (C, Z, n_s) [N] and, when the row provides them, ``extras``
+        ``slice_pressure_inner/outer`` (C, Z, n_s) [Pa] and ``slice_position`` (…, n_s) [m].
+    case : int
+        Case index.
+
+    Notes
+    -----
+    Elements are sorted by azimuth ψ ∈ [0°, 360°); the colour is the larger of the inner and outer
+    raceway slice pressures (the slice load when the row gives no pressures). A bright band at the top
+    or bottom edge of a row's map is edge loading.
+    """
+    states = roller_rows(result)
+    if not states:
+        return None
+    fig = _figure(FIGURE_WIDTH, 2.5 * len(states) + 0.3, top=0.35, left=0.07, right=1.0, hspace=0.75)
+    for i, s in enumerate(states):
+        ax = fig.add_subplot(len(states), 1, i + 1)
+        values, label, scale = _slice_pressure(s, case)
+        psi = np.degrees(np.mod(np.broadcast_to(s.azimuth, s.load.shape)[case], 2 * np.pi))
+        order = np.argsort(psi)
+        n_s = values.shape[-1]
+        pos = s.extras.get("slice_position")
+        if pos is not None:
+            y = np.broadcast_to(pos, s.slice_load.shape)[case][order[0]] * 1e3
+            ylabel = "slice position [mm]"
+        else:
+            y = np.arange(n_s, dtype=float)
+            ylabel = "slice"
+        x = np.arange(len(psi) + 1, dtype=float) - 0.5
+        shown = (values[order] * scale).T
+        top = float(shown.max()) if shown.size else 0.0
+        mesh = ax.pcolormesh(
+            x,
+            _edges(np.asarray(y, dtype=float)),
+            shown,
+            shading="flat",
+            cmap=COLORMAP,
+            vmin=0.0,
+            vmax=top if top > 0 else 1.0,
+            rasterized=True,
+        )
+        if top <= 0:
+            ax.text(
+                0.5,
+                0.5,
+                "no loaded roller",
+                transform=ax.transAxes,
+                ha="center",
+                va="center",
+                fontsize=9,
+                color=_WARN,
+                bbox={"facecolor": "white", "edgecolor": "none"},
+            )
+        ticks = np.linspace(0, len(psi) - 1, min(len(psi), 9)).round().astype(int)
+        ax.set_xticks(ticks, [f"{psi[order][t]:.0f}°" for t in ticks], fontsize=7)
+        ax.tick_params(axis="y", labelsize=7)
+        ax.set_xlabel("element, sorted by azimuth ψ", fontsize=8)
+        ax.set_ylabel(ylabel, fontsize=8)
+        ax.set_title(f"{s.name}: {label}", fontsize=9)
+        cb = fig.colorbar(mesh, ax=ax, pad=0.01)
+        cb.ax.tick_params(labelsize=7)
+    return fig
+
+
+def _hbar(ax, labels, values_nmm, title):
+    y = np.arange(len(labels))
+    v = _finite(values_nmm)
+    ax.barh(y, v, color=_OK)
+    ax.set_yticks(y, labels, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlabel("friction torque [N·mm]", fontsize=8)
+    ax.tick_params(axis="x", labelsize=7)
+    ax.set_title(title, fontsize=9)
+    top = float(v.max()) if v.size and v.max() > 0 else 1.0
+    ax.set_xlim(0, top * 1.25)
+    for yi, vi in zip(y, v, strict=True):
+        ax.text(vi + top * 0.01, yi, f"{vi:.4g}", va="center", fontsize=7)
+
+
+def friction_figure(friction, case: int) -> Figure:
+    """Friction torque [N·mm] of one case by component and by row (horizontal bars).
+
+    Parameters
+    ----------
+    friction : FrictionResult
+        ``components`` and ``by_row``: dict name → (C,) [N·m]; each sums to ``total``.
+    case : int
+    """
+    height = 1.3 + 0.26 * max(len(friction.components), len(friction.by_row), 3)
+    fig = _figure(FIGURE_WIDTH, height, top=0.65, left=0.15, right=0.98, wspace=0.5)
+    comp = list(friction.components.items())
+    rows = list(friction.by_row.items())
+    _hbar(fig.add_subplot(1, 2, 1), [k for k, _ in comp], [v[case] * 1e3 for _, v in comp], "by component")
+    _hbar(fig.add_subplot(1, 2, 2), [k for k, _ in rows], [v[case] * 1e3 for _, v in rows], "by row")
+    fig.suptitle(f"Friction torque M = {float(friction.total[case]) * 1e3:.5g} N·mm", fontsize=10)
+    return fig
+
+
+def rating_figure(rating, case: int) -> Figure:
+    """Static safety s0 and basic reference rating life L10r [rev] per row (log scales).
+
+    Parameters
+    ----------
+    rating : RatingResult
+        ``rows[].static_safety`` and ``rows[].life`` are masked arrays (C,); masked values are marked
+        "n/a" instead of a bar.
+    case : int
+
+    Notes
+    -----
+    The dashed line is s0 = 1 (ISO 76: the limit contact pressure is reached); rows below it are red.
+    """
+    names = [r.name for r in rating.rows]
+    fig = _figure(FIGURE_WIDTH, 1.2 + 0.3 * max(len(names), 3), top=0.35, left=0.12, right=0.98, wspace=0.45)
+    y = np.arange(len(names))
+    for k, (attr, xlabel, title) in enumerate(
+        (
+            ("static_safety", "static safety s0 [-]", "static safety (ISO 76, from p_max)"),
+            ("life", "L10r [revolutions]", "basic reference rating life (ISO/TS 16281)"),
+        )
+    ):
+        ax = fig.add_subplot(1, 2, k + 1)
+        vals = [getattr(r, attr)[case] for r in rating.rows]
+        ok = np.array([v is not np.ma.masked and np.isfinite(float(v)) and float(v) > 0 for v in vals])
+        data = np.array([float(v) if o else 0.0 for v, o in zip(vals, ok, strict=True)])
+        colors = [
+            _WARN if attr == "static_safety" and o and d < S0_REQUIRED else _OK
+            for d, o in zip(data, ok, strict=True)
+        ]
+        ax.barh(y[ok], data[ok], color=[c for c, o in zip(colors, ok, strict=True) if o])
+        ax.set_xscale("log")
+        lo = float(data[ok].min()) if ok.any() else 1.0
+        hi = float(data[ok].max()) if ok.any() else 10.0
+        if attr == "static_safety":
+            lo, hi = min(lo, S0_REQUIRED), max(hi, S0_REQUIRED)
+            ax.axvline(S0_REQUIRED, color=_WARN, ls="--", lw=1)
+        left = lo / 10**0.5
+        ax.set_xlim(left, hi * 10**0.8)
+        for yi, d, o in zip(y, data, ok, strict=True):
+            ax.text(d * 1.08 if o else left * 1.1, yi, f"{d:.3g}" if o else "n/a", va="center", fontsize=7)
+        ax.set_yticks(y, names, fontsize=8)
+        ax.invert_yaxis()
+        ax.set_xlabel(xlabel, fontsize=8)
+        ax.tick_params(axis="x", labelsize=7)
+        ax.set_title(title, fontsize=9)
+    return fig
