@@ -105,7 +105,7 @@ def test_schema_prints_valid_json_schema():
 
 
 def test_run_flagship_sections_and_hertz():
-    result = runner.invoke(app, ["run-flagship", "--json"])
+    result = runner.invoke(app, ["run-flagship", "--json", "--no-report"])
     data = _json(result)
     assert list(data) == [s.title for s in FLAGSHIP_SECTIONS]
     hertz = data[FLAGSHIP_SECTIONS[0].title]
@@ -127,10 +127,16 @@ def test_run_flagship_sections_and_hertz():
     assert dist["case"] == "flagship" and dist["converged"]
 
 
-def test_run_flagship_tables():
-    result = runner.invoke(app, ["run-flagship"])
+def test_run_flagship_tables(tmp_path):
+    from bearingkit import report
+
+    path = tmp_path / "report.html"
+    result = runner.invoke(app, ["run-flagship", "--report", str(path)])
     assert result.exit_code == 0, result.stderr
     assert "Hertz" in result.stdout and "roller_radial" in result.stdout
+    assert "viscous_roller" in result.stdout and "L10r" in result.stdout
+    # the report is written only when bearingkit.report provides write_flagship_report
+    assert path.exists() == hasattr(report, "write_flagship_report")
 
 
 def test_validate_still_lists_json():
@@ -140,3 +146,132 @@ def test_validate_still_lists_json():
     assert cases and all(c["id"].startswith("axial/") for c in cases)
     result = runner.invoke(app, ["validate", "no-such-prefix"])
     assert result.exit_code == 2
+
+
+DGBB = str(EXAMPLES / "dgbb_6209.toml")
+
+
+def _strict_json(result) -> dict:
+    """JSON that refuses NaN/Infinity (json.loads accepts them by default)."""
+    assert result.exit_code == 0, result.stderr
+
+    def refuse(name):
+        raise AssertionError(f"non-finite {name} in the output")
+
+    return json.loads(result.stdout, parse_constant=refuse)
+
+
+def test_rating_json_keys_and_si_values():
+    data = _strict_json(runner.invoke(app, ["rating", DGBB, "--speed", "1000rpm", "--json"]))
+    assert data["bearing_type"] == "deep_groove_ball"
+    case = data["cases"][0]
+    assert case["case"] == "radial_8.9kN" and case["converged"] is True
+    assert case["speed_rad_s"] == pytest.approx(1000 * 2 * math.pi / 60)
+    (row,) = case["rows"]
+    for key in ("C_N", "C0_N", "L10r_rev", "L10r_h", "static_safety", "max_pressure_Pa", "flags"):
+        assert key in row
+    assert 1e3 < row["C_N"] < 1e6 and 1e3 < row["C0_N"] < 1e6  # newtons, not kN
+    system = case["system"]
+    # hours = revolutions / (revolutions per hour) at 1000 r/min
+    assert system["L10h_h"] == pytest.approx(system["L10r_rev"] / (1000 * 60), rel=1e-12)
+    assert system["Lnmr_rev"] is None  # no a_ISO without lubrication inputs
+
+
+def test_rating_reliability_and_life_modification():
+    args = ["rating", DGBB, "--case", "radial_8.9kN", "--speed", "1000rpm", "--json"]
+    base = _strict_json(runner.invoke(app, args))["cases"][0]
+    more = [*args, "--reliability", "0.95", "--contamination", "0.5", "--temperature", "60degC"]
+    more += ["--lubricant", "ISO_VG68"]
+    case = _strict_json(runner.invoke(app, more))["cases"][0]
+    assert case["a1"] == pytest.approx(0.64)  # ISO 281:2007 Table 12, 95 %
+    assert case["system"]["Lnr_rev"] == pytest.approx(0.64 * base["system"]["L10r_rev"], rel=1e-12)
+    assert case["system"]["Lnmr_rev"] is not None and case["rows"][0]["a_ISO"] > 0
+
+
+def test_rating_table_output():
+    result = runner.invoke(app, ["rating", SEED, "--case", "flagship"])
+    assert result.exit_code == 0, result.stderr
+    assert "ball_upper" in result.stdout and "L10r" in result.stdout and "s0" in result.stdout
+
+
+def test_friction_json_keys_and_invariants():
+    data = _strict_json(
+        runner.invoke(app, ["friction", SEED, "--case", "flagship", "--speed", "5rpm", "--json"])
+    )
+    case = data["cases"][0]
+    assert case["speed_inner_rad_s"] == pytest.approx(5 * 2 * math.pi / 60)
+    assert case["lubricant"] == "seed000_grease_assumed"  # the file's [lubricant]
+    f = case["friction"]
+    assert set(f) >= {"total_Nm", "components_Nm", "rows_Nm", "torque_inner_Nm", "torque_outer_Nm"}
+    assert sum(f["components_Nm"].values()) == pytest.approx(f["total_Nm"], rel=1e-12)
+    assert sum(f["rows_Nm"].values()) == pytest.approx(f["total_Nm"], rel=1e-12)
+    # inner ring turning: the friction torque on it opposes the motion, the outer ring's balances it
+    assert f["torque_inner_Nm"] == pytest.approx(-f["total_Nm"]) and f["torque_outer_Nm"] == pytest.approx(
+        f["total_Nm"]
+    )
+    assert 1e-3 < f["total_Nm"] < 1e2  # N·m, not N·mm
+
+
+def test_friction_options_speed_temperature_rotating():
+    base = ["friction", SEED, "--load", "Fa=5kN", "--lubricant", "ISO_VG100", "--json"]
+    slow = _strict_json(runner.invoke(app, [*base, "--speed", "5rpm", "--temperature", "40degC"]))["cases"][0]
+    fast = _strict_json(runner.invoke(app, [*base, "--speed", "60rpm", "--temperature", "40degC"]))["cases"][
+        0
+    ]
+    outer = _strict_json(
+        runner.invoke(app, [*base, "--speed", "5rpm", "--temperature", "40degC", "--rotating", "outer"])
+    )["cases"][0]
+    assert slow["temperature_C"] == pytest.approx(40.0) and slow["lubricant"] == "ISO_VG100"
+    # viscous rolling losses grow with speed (Tian et al. 2025 §5.3.2: torque rises with speed)
+    assert fast["friction"]["total_Nm"] > slow["friction"]["total_Nm"]
+    assert (
+        outer["speed_outer_rad_s"] == pytest.approx(5 * 2 * math.pi / 60) and outer["speed_inner_rad_s"] == 0
+    )
+    assert outer["friction"]["torque_inner_Nm"] > 0 > slow["friction"]["torque_inner_Nm"]
+
+
+@pytest.mark.parametrize(
+    "args, fragment",
+    [
+        (["friction", DGBB, "--speed", "5rpm"], "dgbb_6209.toml: lubricant: none given"),
+        (["friction", DGBB, "--lubricant", "ISO_VG68"], "has no speed"),
+        (["friction", DGBB, "--speed", "5kN", "--lubricant", "ISO_VG68"], "--speed ('5kN')"),
+        (["friction", DGBB, "--speed", "5rpm", "--lubricant", "nope"], "lubricant ('nope')"),
+        (["friction", SEED, "--speed", "5rpm", "--rotating", "both"], "--rotating ('both')"),
+        (["rating", DGBB, "--reliability", "2"], "reliability"),
+        (["rating", DGBB, "--rotating", "middle"], "rotating ('middle')"),
+        (["rating", DGBB, "--contamination", "0.5"], "lubricant: none given"),
+        (["rating", DGBB, "--load-rating", "foo=3kN"], "['foo'] not in the bearing"),
+        (["rating", DGBB, "--load-rating", "balls"], "--load-rating ('balls')"),
+        (["friction", str(EXAMPLES / "trb_32008.toml"), "--speed", "5rpm"], "no friction model"),
+        (["rating", str(EXAMPLES / "trb_32008.toml"), "--load", "Fa=-1kN"], "must be positive"),
+    ],
+)
+def test_rating_friction_bad_input_exit_2_one_line(args, fragment):
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2, (result.stdout, result.stderr)
+    assert result.stdout == ""
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), lines
+    assert fragment in lines[0]
+
+
+@pytest.mark.parametrize(
+    "model, parts", [("skf", {"rolling", "sliding", "seal", "drag"}), ("palmgren", {"viscous", "load"})]
+)
+def test_friction_engineering_models(model, parts):
+    args = ["friction", DGBB, "--speed", "1000rpm", "--lubricant", "ISO_VG68", "--model", model, "--json"]
+    data = _strict_json(runner.invoke(app, args))
+    for case in data["cases"]:
+        f = case["friction"]
+        assert f["model"] == model and set(f["components_Nm"]) == parts
+        assert sum(f["components_Nm"].values()) == pytest.approx(f["total_Nm"], rel=1e-12)
+    # the load-dependent part grows with the load: 8.9 kN above 4 kN
+    totals = [c["friction"]["total_Nm"] for c in data["cases"]]
+    assert totals[0] > totals[1] > 0
+
+
+def test_friction_engineering_model_refuses_composite_bearing():
+    result = runner.invoke(app, ["friction", SEED, "--model", "skf"])
+    assert result.exit_code == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and "single-row standard bearing" in result.stderr

@@ -14,12 +14,11 @@ function decorated with :func:`flagship_section`. Bad input: one line ``error: �
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import json
 import math
 import sys
-from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import typer
@@ -28,18 +27,22 @@ from rich.markup import escape
 from rich.table import Table
 
 from bearingkit.errors import InputError
+from bearingkit.flagship import (  # noqa: F401 - re-exported: the flagship API lives there
+    EXAMPLES_DIR,
+    FLAGSHIP_CASE,
+    FLAGSHIP_FILE,
+    FLAGSHIP_HERTZ_LOAD,
+    FLAGSHIP_REPORT,
+    FLAGSHIP_SECTIONS,
+    FlagshipContext,
+    Section,
+    flagship_section,
+    run_sections,
+)
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
 console = Console()
 err_console = Console(stderr=True)
-
-#: Repository examples (src/bearingkit/cli.py → ../../examples).
-EXAMPLES_DIR = Path(__file__).resolve().parents[2] / "examples"
-#: The flagship input file and load case (seed 000, sections 6.1.4–6.1.5: F_a = F_r = 3 kN, M = 600 N·m).
-FLAGSHIP_FILE = EXAMPLES_DIR / "seed000_composite.toml"
-FLAGSHIP_CASE = "flagship"
-#: Ball load of the flagship Hertz summary [N] (one axial ball of seed 000 at 1 kN).
-FLAGSHIP_HERTZ_LOAD = 1000.0
 
 
 def _fail(message: str, code: int = 2):
@@ -120,22 +123,12 @@ def analyze(
 ):
     """Quasi-static load distribution of every load case; exit 1 if a case does not converge."""
     from bearingkit.io import export
-    from bearingkit.io.loader import load_file, parse_load_options
 
-    bearing = load_file(file)
-    if load:
-        if case:
-            raise InputError("--case selects file load cases; it cannot be combined with --load")
-        bearing = bearing.with_cases([parse_load_options(load)])
-    else:
-        bearing = bearing.select(case)
+    bearing = _load_bearing(file, load, case)
     result = bearing.solve()
     data = export.analysis_dict(bearing, result)
     if as_json:
-        try:
-            sys.stdout.write(export.to_json(data) + "\n")
-        except ValueError as exc:
-            _fail(f"{file}: {exc}", 1)
+        _print_json(file, data)
     else:
         console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
         for c in data["cases"]:
@@ -143,6 +136,29 @@ def analyze(
     if not result.converged.all():
         bad = [c for c in data["cases"] if not c["converged"]]
         _fail(f"{file}: load case {bad[0]['case']!r} did not converge: {bad[0]['reason']}", 1)
+
+
+def _load_bearing(file: Path, load: list[str] | None, case: list[str] | None):
+    """The input file with ``--load`` (replacing its cases) or ``--case`` (selecting some) applied."""
+    from bearingkit.io.loader import load_file, parse_load_options
+
+    bearing = load_file(file)
+    if load:
+        if case:
+            raise InputError("--case selects file load cases; it cannot be combined with --load")
+        return bearing.with_cases([parse_load_options(load)])
+    return bearing.select(case)
+
+
+def _print_json(file, data: dict) -> None:
+    """Strict JSON on stdout; a non-finite value is a one-line error with exit code 1."""
+    from bearingkit.io.export import to_json
+
+    try:
+        text = to_json(data)
+    except ValueError as exc:
+        _fail(f"{file}: {exc}", 1)
+    sys.stdout.write(text + "\n")
 
 
 def _g(x: float) -> str:
@@ -188,127 +204,370 @@ def schema():
 
 
 # ---------------------------------------------------------------------------------------------
-# run-flagship: a list of sections; each is a function of the shared context.
+# rating and friction: options with units, per-case operating points.
 # ---------------------------------------------------------------------------------------------
-@dataclass
-class FlagshipContext:
-    """What flagship sections share: the seed-000 input (loaded once) and its solved flagship case."""
+def _quantity(value: str | None, dimension: str, option: str) -> float | None:
+    """An option value with its unit (``5rpm``, ``40degC``) in SI, or None when not given."""
+    from bearingkit.units import parse
 
-    file: Path = FLAGSHIP_FILE
-    case: str = FLAGSHIP_CASE
-    _bearing: object = None
-    _result: object = None
-    data: dict = field(default_factory=dict)
-
-    @property
-    def bearing(self):
-        """The flagship :class:`~bearingkit.io.loader.BearingInput`, only the flagship case."""
-        if self._bearing is None:
-            from bearingkit.io.loader import load_file
-
-            self._bearing = load_file(self.file).select([self.case])
-        return self._bearing
-
-    @property
-    def result(self):
-        """The solved flagship case (QuasiStaticResult, one case)."""
-        if self._result is None:
-            self._result = self.bearing.solve()
-        return self._result
+    return None if value is None else parse(value, dimension, option)
 
 
-@dataclass(frozen=True)
-class Section:
-    """A flagship section: a title and ``run(ctx) -> (rich renderable, JSON-ready dict)``."""
+def _case_values(
+    bearing, attr: str, override: float | None, example: str, required: bool = False, default=None
+):
+    """Per-case ``attr`` (C,): the option's value, else each load case's, else ``default``.
 
-    title: str
-    run: Callable
+    Returns None when no case has one (and no default); a value missing in some cases only (or in any
+    case when ``required``) is an InputError.
+    """
+    import numpy as np
 
-
-#: Sections printed by ``bearingkit run-flagship``, in order. Friction, ratings and the report
-#: add theirs with :func:`flagship_section`.
-FLAGSHIP_SECTIONS: list[Section] = []
-
-
-def flagship_section(title: str):
-    """Register ``fn(ctx: FlagshipContext) -> (renderable, dict)`` as a run-flagship section."""
-
-    def register(fn):
-        FLAGSHIP_SECTIONS.append(Section(title, fn))
-        return fn
-
-    return register
-
-
-@flagship_section("Hertz contact of one seed-000 axial ball")
-def _hertz_section(ctx: FlagshipContext):
-    from bearingkit.io.export import hertz_ball_summary
-    from bearingkit.materials import e_reduced
-
-    g = ctx.bearing.geometry
-    f = g.groove_curvature
-    data = hertz_ball_summary(
-        FLAGSHIP_HERTZ_LOAD,
-        g.ball_diameter,
-        g.pitch_diameter_axial_ball,
-        math.pi / 2,
-        f,
-        f,
-        e_reduced(ctx.bearing.material, ctx.bearing.material),
-    )
-    data.update(
-        element_diameter_m=g.ball_diameter,
-        pitch_diameter_m=g.pitch_diameter_axial_ball,
-        contact_angle_rad=math.pi / 2,
-        conformity=f,
-        material=ctx.bearing.material.name,
-    )
-    table = Table(
-        title=escape(
-            f"ball Ø {g.ball_diameter * 1e3:g} mm, α = 90°, f = {f:g}, "
-            f"d_m = {g.pitch_diameter_axial_ball * 1e3:g} mm, {ctx.bearing.material.name}, "
-            f"Q = {FLAGSHIP_HERTZ_LOAD / 1e3:g} kN"
+    values = [override if override is not None else getattr(c, attr) for c in bearing.cases]
+    values = [default if v is None else v for v in values]
+    missing = [c.name for c, v in zip(bearing.cases, values, strict=True) if v is None]
+    if not missing:
+        return np.array(values, dtype=float)
+    if required or len(missing) < len(values):
+        raise InputError(
+            f"{bearing.source}: load case {missing[0]!r} has no {attr}; give --{attr} {example} or "
+            f"{attr} in every [[load_cases]]"
         )
+    return None
+
+
+def _lubricant(bearing, name: str | None):
+    """``--lubricant`` preset, else the file's ``[lubricant]``; InputError when neither is given."""
+    from bearingkit.lubricants import get_lubricant
+
+    if name is not None:
+        return get_lubricant(name)
+    if bearing.lubricant is None:
+        raise InputError(
+            f'{bearing.source}: lubricant: none given; add [lubricant] name = "ISO_VG100" (a preset of '
+            "bearingkit.lubricants.LUBRICANTS) to the file or use --lubricant"
+        )
+    return bearing.lubricant
+
+
+def _load_ratings(items: list[str] | None) -> dict:
+    """``--load-rating ROW=C`` (C with a force unit) → {row name: C [N]}."""
+    from bearingkit.units import parse
+
+    out = {}
+    for item in items or ():
+        row, sep, value = item.partition("=")
+        if not sep or not row.strip() or not value.strip():
+            raise InputError(
+                f"--load-rating ({item!r}) must look like ROW=VALUE with a unit, e.g. roller_upper=50kN"
+            )
+        out[row.strip()] = parse(value.strip(), "force", f"--load-rating {row.strip()}")
+    return out
+
+
+@contextlib.contextmanager
+def _in_file(file):
+    """Prefix an InputError raised by the analysis API with the input file's name."""
+    try:
+        yield
+    except InputError as exc:
+        if str(exc).startswith(f"{file}:"):
+            raise
+        raise InputError(f"{file}: {exc}") from None
+
+
+def _fail_unconverged(file, bearing, result) -> None:
+    if not result.converged.all():
+        i = int(next(i for i, ok in enumerate(result.converged) if not ok))
+        _fail(f"{file}: load case {bearing.cases[i].name!r} did not converge: {result.reason[i]}", 1)
+
+
+_LOAD_OPTION = typer.Option(
+    None,
+    "--load",
+    "-l",
+    help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
+)
+_CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
+_JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
+
+
+@app.command()
+@one_line_errors
+def rating(
+    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = typer.Option(
+        None, "--speed", help="Speed of the rotating ring, e.g. 5rpm (default: the cases')."
+    ),
+    reliability: str = typer.Option("0.9", "--reliability", help="Reliability of L_nr, 0.9 … 0.9995."),
+    rotating: str = typer.Option(
+        "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
+    ),
+    lubricant: str = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's)."),
+    temperature: str = typer.Option(
+        None, "--temperature", help="Operating temperature for a_ISO, e.g. 60degC."
+    ),
+    contamination: str = typer.Option(
+        None, "--contamination", help="ISO 281 e_C (0 … 1); with lubricant and temperature gives a_ISO."
+    ),
+    load_rating: list[str] = typer.Option(
+        None, "--load-rating", help="ROW=C replacing the ISO 281 rating of a row, e.g. roller_upper=50kN."
+    ),
+    as_json: bool = _JSON_OPTION,
+):
+    """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing."""
+    from bearingkit.analysis.rating import rate
+    from bearingkit.io import export
+    from bearingkit.units import parse
+
+    bearing = _load_bearing(file, load, case)
+    speeds = _case_values(bearing, "speed", _quantity(speed, "angular_velocity", "--speed"), "5rpm")
+    life_inputs = {}
+    if contamination is not None:
+        life_inputs = {
+            "lubricant": _lubricant(bearing, lubricant),
+            "temperature_C": _case_values(
+                bearing, "temperature", _quantity(temperature, "temperature", "--temperature"), "60degC", True
+            ),
+            "contamination_factor": parse(contamination, "dimensionless", "--contamination"),
+        }
+    reliability_value = parse(reliability, "dimensionless", "--reliability")
+    ratings = _load_ratings(load_rating)
+    result = bearing.solve()
+    with _in_file(file):
+        out = rate(
+            result,
+            speed=speeds,
+            rotating=rotating,
+            reliability=reliability_value,
+            load_ratings=ratings,
+            **life_inputs,
+        )
+    data = export.rating_dict(bearing, out)
+    if as_json:
+        _print_json(file, data)
+    else:
+        console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+        for c in data["cases"]:
+            console.print(rating_table(c))
+            _print_warnings(c["warnings"])
+    _fail_unconverged(file, bearing, result)
+
+
+def _num(x, scale: float = 1.0, fmt: str = ".4g") -> str:
+    """A JSON value for a table: ``—`` for None (masked, not available)."""
+    return "—" if x is None else format(x * scale, fmt)
+
+
+def _compact(x, scale: float = 1.0) -> str:
+    """Three significant digits, short exponent (``7.45e4``); ``—`` for None."""
+    if x is None:
+        return "—"
+    text = f"{x * scale:.3g}"
+    mantissa, e, exponent = text.partition("e")
+    return f"{mantissa}e{int(exponent)}" if e else text
+
+
+def rating_table(c: dict) -> Table:
+    """A rich table of one case dict of :func:`bearingkit.io.export.rating_dict`."""
+    speed = "speed not given" if c["speed_rad_s"] is None else f"{c['speed_rad_s'] * 30 / math.pi:.4g} r/min"
+    title = f"case {c['case']!r}: {c['rotating']} ring rotating, {speed}, reliability {c['reliability']:g}"
+    s = c["system"]
+    caption = (
+        f"bearing: L10r = {_num(s['L10r_rev'], 1e-6)} 10⁶ rev, L10h = {_num(s['L10h_h'])} h, "
+        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_num(s['Lnmr_rev'], 1e-6)} 10⁶ rev, "
+        f"s0 = {_num(s['static_safety'], fmt='.3g')}"
     )
-    for col in ("contact", "a mm", "b mm", "δ µm", "p_max MPa", "κ = a/b"):
-        table.add_column(col, justify="left" if col == "contact" else "right", no_wrap=True)
-    for side in ("inner", "outer"):
-        s = data[side]
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in ("row", "C kN", "C0 kN", "L10r 10⁶rev", "L10h h", "s0", "flags"):
+        justify = "left" if col in ("row", "flags") else "right"
+        table.add_column(
+            col,
+            justify=justify,
+            no_wrap=col != "flags",
+            overflow="fold",
+            min_width=9 if col == "flags" else None,
+        )
+    for r in c["rows"]:
         table.add_row(
-            side,
-            f"{s['semi_major_m'] * 1e3:.4f}",
-            f"{s['semi_minor_m'] * 1e3:.4f}",
-            f"{s['deflection_m'] * 1e6:.3f}",
-            f"{s['max_pressure_Pa'] / 1e6:.0f}",
-            f"{s['ellipticity']:.3f}",
+            r["name"],
+            _num(r["C_N"], 1e-3),
+            _num(r["C0_N"], 1e-3),
+            _compact(r["L10r_rev"], 1e-6),
+            _compact(r["L10r_h"]),
+            _num(r["static_safety"], fmt=".3g"),
+            escape(", ".join(k for k, v in r["flags"].items() if v)),
         )
-    return table, data
+    return table
 
 
-@flagship_section("Load distribution of the seed-000 composite bearing (flagship case)")
-def _load_distribution_section(ctx: FlagshipContext):
-    from bearingkit.io.export import case_dict
-
-    data = case_dict(ctx.bearing, ctx.result, 0)
-    return case_table(data), data
+def _print_warnings(warnings: list[str]) -> None:
+    for w in warnings:
+        console.print(f"  warning: {w}", markup=False, highlight=False)
 
 
+#: Friction models of ``friction --model``: the physics component model of
+#: :mod:`bearingkit.analysis.friction` and the engineering models of
+#: :mod:`bearingkit.physics.friction_models` (standard single-row bearings only).
+FRICTION_MODELS = ("components", "skf", "palmgren")
+
+
+@app.command()
+@one_line_errors
+def friction(
+    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = typer.Option(
+        None, "--speed", help="Speed of the rotating ring, e.g. 5rpm (default: the cases')."
+    ),
+    rotating: str = typer.Option(
+        "inner", "--rotating", help="Rotating ring: inner|outer (the other is at rest)."
+    ),
+    temperature: str = typer.Option(
+        None, "--temperature", help="Operating temperature, e.g. 40degC (default: the cases', else 25 °C)."
+    ),
+    lubricant: str = typer.Option(
+        None, "--lubricant", help="Lubricant preset (default: the file's [lubricant])."
+    ),
+    model: str = typer.Option(
+        "components",
+        "--model",
+        help="components (physics, per contact) | skf | palmgren (standard bearings).",
+    ),
+    as_json: bool = _JSON_OPTION,
+):
+    """Friction torque of every load case, broken down by component and by row."""
+    from bearingkit.analysis.friction import OperatingPoint
+    from bearingkit.io import export
+
+    bearing = _load_bearing(file, load, case)
+    if rotating not in ("inner", "outer"):
+        raise InputError(f"--rotating ({rotating!r}) must be one of inner, outer")
+    if model not in FRICTION_MODELS:
+        raise InputError(f"--model ({model!r}) must be one of {', '.join(FRICTION_MODELS)}")
+    lube = _lubricant(bearing, lubricant)
+    speeds = _case_values(bearing, "speed", _quantity(speed, "angular_velocity", "--speed"), "5rpm", True)
+    temps = _case_values(
+        bearing,
+        "temperature",
+        _quantity(temperature, "temperature", "--temperature"),
+        "40degC",
+        default=OperatingPoint.__dataclass_fields__["temperature"].default,
+    )
+    if model == "components":
+        cases = friction_cases(file, bearing, speeds, temps, lube, rotating)
+    else:
+        cases = engineering_friction_cases(file, bearing, speeds, temps, lube, model)
+    data = export.friction_dict(bearing, cases)
+    if as_json:
+        _print_json(file, data)
+    else:
+        console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+        for c in data["cases"]:
+            console.print(friction_table(c))
+
+
+def friction_cases(file, bearing, speeds, temperatures, lubricant, rotating: str = "inner") -> list[dict]:
+    """Solve and compute the friction of every case (one solve per distinct temperature)."""
+
+    from bearingkit.analysis.friction import OperatingPoint, friction_torque
+    from bearingkit.io.export import friction_case_dict
+
+    groups: dict[float, list[int]] = {}
+    for i, t in enumerate(temperatures):
+        groups.setdefault(float(t), []).append(i)
+    out: list[dict | None] = [None] * len(bearing.cases)
+    for temp, idx in groups.items():
+        sub = bearing.with_cases([bearing.cases[i] for i in idx])
+        result = sub.solve()
+        _fail_unconverged(file, sub, result)
+        ring = {"speed_inner" if rotating == "inner" else "speed_outer": speeds[idx]}
+        with _in_file(file):
+            op = OperatingPoint(**ring, lubricant=lubricant, temperature=temp)
+            fr = friction_torque(result, op)
+        for k, i in enumerate(idx):
+            out[i] = friction_case_dict(bearing.cases[i].name, op, fr, k)
+    return out
+
+
+def engineering_friction_cases(file, bearing, speeds, temperatures, lubricant, model: str) -> list[dict]:
+    """SKF or Palmgren friction of every case (catalogue formulas from F_r, F_a; no solve needed)."""
+    import numpy as np
+
+    from bearingkit.io.export import engineering_friction_case_dict
+    from bearingkit.physics.friction_models import engineering_friction_torque
+
+    load = bearing.load_matrix()
+    geometry = bearing.geometry.model_dump()
+    envelope = {}
+    if geometry.get("bore") is not None and geometry.get("outer_diameter") is not None:
+        envelope = {"bore_diameter": geometry["bore"], "outside_diameter": geometry["outer_diameter"]}
+    speed = np.abs(speeds)
+    with _in_file(file):
+        result = engineering_friction_torque(
+            bearing.model,
+            load_radial=np.hypot(load[:, 0], load[:, 1]),
+            load_axial=np.abs(load[:, 2]),
+            speed=speed,
+            lubricant=lubricant,
+            temperature=np.asarray(temperatures, dtype=float),
+            model=model,
+            **envelope,
+        )
+    return [
+        engineering_friction_case_dict(c.name, result, i, speed, temperatures)
+        for i, c in enumerate(bearing.cases)
+    ]
+
+
+def friction_table(c: dict):
+    """Rich tables (components, rows) of one case dict of :func:`bearingkit.io.export.friction_case_dict`."""
+    from rich.console import Group
+    from rich.text import Text
+
+    f = c["friction"]
+    total = f["total_Nm"]
+    if "speed_rad_s" in c:  # engineering model: relative speed only, no per-row breakdown
+        rpm, lube, model = c["speed_rad_s"] * 30 / math.pi, "", f" ({f['model']} model)"
+    else:
+        rpm = (c["speed_inner_rad_s"] - c["speed_outer_rad_s"]) * 30 / math.pi
+        lube, model = f", {c['lubricant']}", ""
+    title = (
+        f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
+        f"{c['temperature_C']:g} °C"
+    )
+    parts = Table(title=escape(title))
+    for col in ("component", "N·m", "share"):
+        parts.add_column(col, justify="left" if col == "component" else "right", no_wrap=True)
+    for name, value in f["components_Nm"].items():
+        parts.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
+    if "rows_Nm" not in f:
+        return Group(parts, *(Text(f"  note: {n}", style="dim") for n in f["notes"]))
+    rows = Table(title="by row")
+    for col in ("row", "N·m", "share"):
+        rows.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
+    for name, value in f["rows_Nm"].items():
+        rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
+    return Group(parts, rows)
+
+
+# ---------------------------------------------------------------------------------------------
+# run-flagship: the sections live in bearingkit.flagship (FLAGSHIP_SECTIONS, @flagship_section).
+# ---------------------------------------------------------------------------------------------
 @app.command("run-flagship")
 @one_line_errors
-def run_flagship(as_json: bool = typer.Option(False, "--json", help="Print JSON instead of tables.")):
+def run_flagship(
+    as_json: bool = typer.Option(False, "--json", help="Print JSON instead of tables."),
+    report: Path = typer.Option(
+        FLAGSHIP_REPORT, "--report", help="HTML report written at the end (when bearingkit.report can)."
+    ),
+    no_report: bool = typer.Option(False, "--no-report", help="Do not write the HTML report."),
+):
     """The flagship demonstration on seed 000 (what `make run` calls)."""
-    from bearingkit.io.export import to_json
-
-    ctx = FlagshipContext()
-    out = {}
-    for i, section in enumerate(FLAGSHIP_SECTIONS, 1):
-        renderable, data = section.run(ctx)
-        out[section.title] = data
-        if not as_json:
-            console.rule(f"{i}. {section.title}")
-            console.print(renderable)
-    if as_json:
-        sys.stdout.write(to_json(out) + "\n")
+    run_sections(console, as_json=as_json, report_path=None if no_report else report)
 
 
 def main() -> None:

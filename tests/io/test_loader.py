@@ -61,7 +61,8 @@ def test_registry_matches_schema_and_builders():
     from bearingkit.bearings import standard, turntable
 
     assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
-    for name in BUILDERS:
+    own_builders = {"tapered_roller", "ptrb", "ball_column"}  # loader functions over bearings.*
+    for name in set(BUILDERS) - own_builders:
         assert hasattr(standard, name) or hasattr(turntable, name)
 
 

@@ -43,6 +43,96 @@ def analysis_dict(bearing, result) -> dict:
     }
 
 
+def _header(bearing) -> dict:
+    return {
+        "file": bearing.source,
+        "bearing_type": bearing.bearing_type,
+        "bearing_name": bearing.model.name,
+        "source": bearing.spec.bearing.source,
+    }
+
+
+def rating_dict(bearing, rating) -> dict:
+    """Ratings and lives of every load case (``RatingResult.to_dict`` per case, case names added).
+
+    Parameters
+    ----------
+    bearing : bearingkit.io.loader.BearingInput
+    rating : bearingkit.analysis.rating.RatingResult
+        Rating of the solve of ``bearing.cases`` (same order). Masked values are ``None``.
+    """
+    cases = [{"case": c.name, **rating.to_dict(i)} for i, c in enumerate(bearing.cases)]
+    return {**_header(bearing), "cases": cases}
+
+
+def friction_case_dict(case_name: str, operating_point, friction, index: int) -> dict:
+    """One case of a friction calculation: operating point (SI) and ``{"friction": to_dict(index)}``.
+
+    Parameters
+    ----------
+    case_name : str
+    operating_point : bearingkit.analysis.friction.OperatingPoint
+        Speeds [rad/s] (scalar or per case), lubricant, temperature [°C].
+    friction : bearingkit.analysis.friction.FrictionResult
+    index : int
+        Case index in ``friction`` (and in per-case speeds of ``operating_point``).
+    """
+    op = operating_point
+
+    def pick(v):
+        a = np.asarray(v, dtype=float)
+        return float(a if a.ndim == 0 else a[index])
+
+    return {
+        "case": case_name,
+        "speed_inner_rad_s": pick(op.speed_inner),
+        "speed_outer_rad_s": pick(op.speed_outer),
+        "temperature_C": float(op.temperature),
+        "lubricant": op.lubricant.name,
+        "viscosity_factor": float(op.viscosity_factor),
+        "cage_mass_kg": float(op.cage_mass),
+        "friction": friction.to_dict(index),
+    }
+
+
+def engineering_friction_case_dict(case_name: str, result, index: int, speed, temperature) -> dict:
+    """One case of an engineering friction model (SKF, Palmgren) in the layout of :func:`friction_case_dict`.
+
+    Parameters
+    ----------
+    case_name : str
+    result : bearingkit.physics.friction_models.EngineeringFrictionResult
+        Batched over the cases (leading axis).
+    index : int
+    speed : ndarray (C,) [rad/s]
+        Relative ring speed.
+    temperature : ndarray (C,) [°C]
+    """
+
+    def pick(v):
+        a = np.asarray(v, dtype=float)
+        return float(a if a.ndim == 0 else a[index])
+
+    return {
+        "case": case_name,
+        "speed_rad_s": pick(speed),
+        "temperature_C": pick(temperature),
+        "friction": {
+            "model": result.model,
+            "bearing_type": result.bearing_type,
+            "total_Nm": pick(result.total),
+            "components_Nm": {k: pick(v) for k, v in result.components.items()},
+            "references": list(result.references),
+            "notes": list(result.notes),
+        },
+    }
+
+
+def friction_dict(bearing, cases: list[dict]) -> dict:
+    """Friction of every load case (dicts of :func:`friction_case_dict`, in the file's case order)."""
+    return {**_header(bearing), "cases": cases}
+
+
 def hertz_ball_summary(
     load, element_diameter, pitch_diameter, contact_angle, conformity_inner, conformity_outer, e_reduced
 ) -> dict:

@@ -51,14 +51,15 @@ LOAD_ALIASES: dict[str, str] = {
 # ---------------------------------------------------------------------------------------------
 # Builder registry: bearing type → function(geometry dict (SI), material, name) → BearingModel.
 # ---------------------------------------------------------------------------------------------
-def _profile(geometry: dict):
+def _profile(geometry: dict, diameter: float | None = None):
     from bearingkit.physics.profiles import make_profile
 
     spec = geometry.get("profile")
     if spec is None:
         return None
     params = {k: v for k, v in spec.items() if k != "name" and v is not None}
-    return make_profile(spec["name"], geometry["effective_length"], geometry["element_diameter"], **params)
+    d = geometry["element_diameter"] if diameter is None else diameter
+    return make_profile(spec["name"], geometry["effective_length"], d, **params)
 
 
 def _standard(builder_name: str, renames: dict | None = None):
@@ -98,6 +99,76 @@ def _turntable(builder_name: str):
     return build
 
 
+def _diameter_deviation(geometry: dict):
+    """ΔD per roller (Z,) [m] from a list (SI already) or a generator spec; None when not given."""
+    from bearingkit.physics.deviations import gaussian_deviations, seed001_series
+
+    spec = geometry.get("diameter_deviation")
+    if spec is None:
+        return None
+    if isinstance(spec, (list, tuple)):
+        return np.asarray(spec, dtype=float)
+    if spec.get("series") is not None:
+        dev = seed001_series(spec["series"])
+        if dev.shape[0] != geometry["n_elements"]:
+            raise InputError(
+                f"diameter_deviation (series {spec['series']}, {dev.shape[0]} rollers) must match "
+                f"n_elements ({geometry['n_elements']})"
+            )
+        return dev
+    return gaussian_deviations(
+        geometry["n_elements"], spec["magnitude"], 1, spec["arrangement"], spec["seed"]
+    )[0]
+
+
+def _tapered(geometry: dict, material, name: str) -> BearingModel:
+    """Tapered roller bearing: :class:`~bearingkit.rows.tapered.TaperedRow`, single or a DB/DF pair."""
+    from bearingkit.bearings.common import e_reduced_of
+    from bearingkit.bearings.tapered import tapered_pair
+    from bearingkit.rows.tapered import TaperedRow
+
+    skip = ("bore", "outer_diameter", "arrangement", "row_spacing", "diameter_deviation", "profile")
+    kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
+    kwargs.update(
+        e_reduced=e_reduced_of(material),
+        density=material.density,
+        diameter_deviation=_diameter_deviation(geometry),
+    )
+    if geometry.get("profile") is not None:
+        mean_diameter = 0.5 * (geometry["small_diameter"] + geometry["large_diameter"])
+        kwargs["profile"] = _profile(geometry, diameter=mean_diameter)
+    if geometry["arrangement"] == "single":
+        row = TaperedRow(**kwargs, name="tapered")
+        refs = ("liu2022", "kunert1961")
+        return BearingModel((row,), name=name or "tapered roller bearing", references=refs)
+    return tapered_pair(
+        spacing=geometry["row_spacing"],
+        arrangement=geometry["arrangement"],
+        name=name or f"tapered roller pair {geometry['arrangement']}",
+        **kwargs,
+    )
+
+
+def _ptrb(geometry: dict, material, name: str) -> BearingModel:
+    """Planetary thread roller bearing (seed 004): one :class:`~bearingkit.rows.threaded.ThreadedRow`."""
+    from bearingkit.bearings.ptrb import ptrb_model
+    from bearingkit.rows.threaded import PTRBGeometry
+
+    renames = {"bore": "bore_diameter", "outer_diameter": "outside_diameter"}
+    kwargs = {renames.get(k, k): v for k, v in geometry.items() if v is not None and k != "clearance"}
+    g = PTRBGeometry(**kwargs, youngs_modulus=material.youngs_modulus, poisson_ratio=material.poisson_ratio)
+    return ptrb_model(g, clearance=geometry.get("clearance") or 0.0, name=name or "PTRB")
+
+
+def _ball_column(geometry: dict, material, name: str) -> BearingModel:
+    """Seed-002 ball–column composite bearing (:func:`bearingkit.bearings.ball_column.ball_column`)."""
+    from bearingkit.bearings.ball_column import BallColumnGeometry, ball_column
+
+    g = BallColumnGeometry(**{k: v for k, v in geometry.items() if v is not None})
+    model = ball_column(g, material=material)
+    return dataclasses.replace(model, name=name) if name else model
+
+
 #: Bearing type → builder. Keys equal :data:`bearingkit.io.schema.GEOMETRY_MODELS`'s.
 BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
     "composite_turntable": _turntable("composite_turntable"),
@@ -108,6 +179,9 @@ BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
     "thrust_ball": _standard("thrust_ball"),
     "cylindrical_roller": _standard("cylindrical_roller"),
     "cylindrical_roller_thrust": _standard("cylindrical_roller_thrust"),
+    "tapered_roller": _tapered,
+    "ptrb": _ptrb,
+    "ball_column": _ball_column,
 }
 assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
 
@@ -209,6 +283,7 @@ class BearingInput:
     def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
         """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
         _check_fixed_loads(self.source, cases, self.free)
+        _check_single_tapered(self.source, self.model, cases, self.free)
         return dataclasses.replace(self, cases=tuple(cases))
 
     def load_matrix(self) -> np.ndarray:
@@ -284,6 +359,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     }
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_fixed_loads(source, cases, free)
+    _check_single_tapered(source, model, cases, free)
     return BearingInput(
         source=source,
         spec=spec,
@@ -329,6 +405,25 @@ def _load_case(spec: schema.LoadCaseSpec) -> LoadCase:
     m_y = spec.M_y - (spec.eccentricity or 0.0) * spec.F_z
     load = load_vector(F_x=spec.F_x, F_y=spec.F_y, F_z=spec.F_z, M_x=spec.M_x, M_y=m_y)
     return LoadCase(spec.name, load, spec.speed, spec.temperature)
+
+
+def _check_single_tapered(source: str, model, cases, free) -> None:
+    """A lone tapered row carries axial load one way only: F_z·direction must be positive if u_z is free.
+
+    With u_z free and no axial load towards the row's cone the inner ring lifts off (no equilibrium).
+    """
+    rows = model.rows
+    if len(rows) != 1 or rows[0].kind != "tapered" or not free[2]:
+        return
+    sign = rows[0].direction
+    word = "positive" if sign > 0 else "negative"
+    for c in cases:
+        if not c.load[2] * sign > 0.0:
+            raise InputError(
+                f"{source}: load case {c.name!r}: F_z ({c.load[2]:.6g} N) must be {word}: a single tapered "
+                "row carries axial load one way only and lifts off otherwise; use "
+                "arrangement DB or DF for reversing loads, or fix u_z in [solver] free"
+            )
 
 
 def _check_fixed_loads(source: str, cases, free) -> None:
@@ -381,8 +476,15 @@ def _profile_as_table(geometry: dict) -> dict:
 
 def _radial_extent(row) -> tuple[float, float]:
     """Smallest and largest radius [m] a row's elements occupy."""
+    if row.kind == "threaded":  # PTRB: rollers of pitch diameter d_R on the pitch circle D_pw
+        g = row.geometry
+        return (g.pitch_diameter - g.roller_pitch_diameter) / 2, (
+            g.pitch_diameter + g.roller_pitch_diameter
+        ) / 2
     radius = float(np.max(row.pitch_diameter)) / 2
-    if getattr(row, "orientation", "radial") != "radial":
+    if row.kind == "tapered":
+        half = float(row.large_diameter) / 2
+    elif getattr(row, "orientation", "radial") != "radial":
         half = float(np.max(row.effective_length)) / 2  # thrust roller: its axis is radial
     else:
         half = float(np.max(row.element_diameter)) / 2
@@ -391,7 +493,8 @@ def _radial_extent(row) -> tuple[float, float]:
 
 def _check_envelope(source: str, model: BearingModel, geometry: dict) -> None:
     """Rows must lie strictly between the bore and the outside diameter, when they are known."""
-    env = dict(model.metadata.get("geometry", {}))
+    env = model.metadata.get("geometry", {})
+    env = dataclasses.asdict(env) if dataclasses.is_dataclass(env) else dict(env)
     env.update({k: geometry[k] for k in ("bore", "outer_diameter") if geometry.get(k) is not None})
     bore, outer = env.get("bore"), env.get("outer_diameter")
     if bore is not None and outer is not None and not bore < outer:

@@ -363,6 +363,156 @@ class YRTGeometry(_Envelope):
     n_slices: SliceCount | None = None
 
 
+class DeviationGenerator(_Strict):
+    """Generated roller diameter deviations ΔD ~ N(0, S_d²) (Liu et al. 2022 eq. 14) or a seed-001 series."""
+
+    magnitude: NonNegativeLength | None = Field(None, description="S_d, the standard deviation of ΔD.")
+    arrangement: Literal["random", "descending"] = Field(
+        "random", description="Order around the cage (bearingkit.physics.deviations.ARRANGEMENTS)."
+    )
+    seed: Annotated[int, Field(ge=0)] | None = Field(
+        None, description="Random seed (required with magnitude)."
+    )
+    series: Annotated[int, Field(ge=1, le=6)] | None = Field(
+        None, description="Seed 001 Table 2 series 1-6 instead of a draw (23 rollers)."
+    )
+
+    @model_validator(mode="after")
+    def _one_kind(self):
+        if (self.series is None) == (self.magnitude is None):
+            raise InputError("diameter_deviation: give either magnitude (with seed) or series, not both")
+        if self.magnitude is not None and self.seed is None:
+            raise InputError("diameter_deviation: seed is required with magnitude (reproducible draws)")
+        return self
+
+
+def _deviations(value, info: ValidationInfo):
+    """A list of lengths with units → tuple of SI floats; a table → :class:`DeviationGenerator`."""
+    if value is None or isinstance(value, DeviationGenerator):
+        return value
+    if isinstance(value, dict):
+        return DeviationGenerator.model_validate(value)
+    if isinstance(value, (list, tuple)):
+        return tuple(units.parse(v, "length", f"{info.field_name}[{i}]") for i, v in enumerate(value))
+    raise InputError(
+        f"{info.field_name} ({value!r}) must be a list of lengths such as ['1 um', '-0.5 um', …] or a "
+        "table {magnitude = '1 um', arrangement = 'random', seed = 1} or {series = 1}"
+    )
+
+
+#: Per-roller diameter deviations: a list of lengths (one per roller) or a generator table.
+Deviations = Annotated[
+    tuple[float, ...] | DeviationGenerator,
+    BeforeValidator(_deviations),
+    WithJsonSchema(
+        {
+            "oneOf": [
+                {"type": "array", "items": {"type": "string", "x-dimension": "length", "x-si-unit": "m"}},
+                DeviationGenerator.model_json_schema(),
+            ],
+            "description": "ΔD per roller (list of lengths) or a generator table (magnitude, arrangement, "
+            "seed) or {series = 1..6} (seed 001 Table 2).",
+        }
+    ),
+]
+
+
+class TaperedRollerGeometry(_Envelope):
+    """Tapered roller bearing: one row (rows.tapered.TaperedRow fields) or a DB/DF pair."""
+
+    arrangement: Literal["single", "DB", "DF"] = Field(
+        "single", description="One row, or two rows back-to-back (DB) / face-to-face (DF)."
+    )
+    row_spacing: PositiveLength | None = Field(None, description="Axial distance of the rows (pairs only).")
+    n_elements: Count
+    small_diameter: PositiveLength
+    large_diameter: PositiveLength
+    effective_length: PositiveLength
+    pitch_diameter: PositiveLength
+    contact_angle_outer: Angle
+    contact_angle_inner: Angle
+    flange_angle: Angle | None = None
+    roller_angle: Angle | None = Field(None, description="Half roller angle ε, checked when given.")
+    clearance: Length | None = Field(None, description="Along the cup normal, counted twice (< 0: preload).")
+    n_slices: SliceCount | None = None
+    profile: ProfileSpec | None = Field(None, description="Crowning (name or table), as cylindrical rows.")
+    line_law: Literal["kunert", "iso16281"] | None = None
+    deviation_model: Literal["exact", "taylor"] | None = None
+    diameter_deviation: Deviations | None = None
+    flange_contact_height: PositiveLength | None = None
+    end_radius: PositiveLength | None = None
+
+    @model_validator(mode="after")
+    def _pair(self):
+        if (self.arrangement == "single") != (self.row_spacing is None):
+            raise InputError(
+                f"row_spacing ({self.row_spacing!r}) must be given for arrangement DB/DF and only then "
+                f"(arrangement is {self.arrangement!r})"
+            )
+        dev = self.diameter_deviation
+        if isinstance(dev, tuple) and len(dev) != self.n_elements:
+            raise InputError(
+                f"diameter_deviation ({len(dev)} values) must have one value per roller (n_elements = "
+                f"{self.n_elements})"
+            )
+        return self
+
+
+class PTRBGeometrySpec(_Strict):
+    """Planetary thread roller bearing (rows.threaded.PTRBGeometry; E, ν from [material])."""
+
+    bore: PositiveLength = Field(description="Bore d_0 (PTRBGeometry.bore_diameter).")
+    outer_diameter: PositiveLength = Field(
+        description="Outside diameter D_0 (PTRBGeometry.outside_diameter)."
+    )
+    width: PositiveLength = Field(description="Width H_0.")
+    pitch_diameter: PositiveLength
+    roller_pitch_diameter: PositiveLength
+    roller_contact_radius: PositiveLength
+    n_elements: Count
+    n_teeth: Count
+    contact_angle: Angle
+    thread_pitch: PositiveLength
+    dedendum: PositiveLength
+    ridge_thickness: PositiveLength
+    bottom_thickness_roller: PositiveLength
+    bottom_thickness_inner: PositiveLength
+    bottom_thickness_outer: PositiveLength
+    contact_radius_inner: PositiveLength | None = Field(None, description="r_I; omitted = flat flank (inf).")
+    contact_radius_outer: PositiveLength | None = Field(None, description="r_O; omitted = flat flank (inf).")
+    inner_pitch_diameter: PositiveLength | None = None
+    outer_pitch_diameter: PositiveLength | None = None
+    clearance: Length | None = Field(None, description="Play along each contact normal, counted twice.")
+
+
+class BallColumnGeometrySpec(_Strict):
+    """Seed-002 ball–column composite bearing (bearings.ball_column.BallColumnGeometry fields)."""
+
+    n_balls: Count | None = None
+    ball_diameter: PositiveLength | None = None
+    n_rollers: Count | None = None
+    roller_diameter: PositiveLength | None = None
+    roller_length: PositiveLength | None = None
+    outer_diameter: PositiveLength | None = None
+    bore: PositiveLength | None = None
+    width: PositiveLength | None = None
+    inner_ring_width: PositiveLength | None = Field(None, description="Row spacing a.")
+    pitch_diameter: PositiveLength | None = None
+    contact_angle: Angle | None = None
+    conformity_inner: Dimensionless | None = None
+    conformity_outer: Dimensionless | None = None
+    clearance_ball: NonNegativeLength | None = Field(
+        None, description="Diametral clearance of each ball row."
+    )
+    clearance_roller: NonNegativeLength | None = Field(
+        None, description="Diametral clearance of the roller row."
+    )
+    n_slices: SliceCount | None = None
+    beam_width: PositiveLength | None = Field(
+        None, description="Outer-ring beam strip width (flexible ring)."
+    )
+
+
 #: Bearing type → geometry model. The loader's builder registry uses the same keys.
 GEOMETRY_MODELS: dict[str, type[BaseModel]] = {
     "composite_turntable": CompositeTurntableGeometry,
@@ -373,19 +523,33 @@ GEOMETRY_MODELS: dict[str, type[BaseModel]] = {
     "thrust_ball": ThrustBallGeometry,
     "cylindrical_roller": CylindricalRollerGeometry,
     "cylindrical_roller_thrust": CylindricalRollerThrustGeometry,
+    "tapered_roller": TaperedRollerGeometry,
+    "ptrb": PTRBGeometrySpec,
+    "ball_column": BallColumnGeometrySpec,
 }
 
 
 def _describe_defaults() -> None:
     """Put each builder default (SI) into the description of the matching optional field."""
     from bearingkit.bearings import standard, turntable
+    from bearingkit.rows.tapered import TaperedRow
+    from bearingkit.rows.threaded import PTRBGeometry
+
+    def defaults(cls):
+        return {f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING}
 
     sources = {
-        "composite_turntable": {
-            f.name: f.default for f in dataclasses.fields(turntable.CompositeTurntableGeometry)
-        },
-        "yrt_turntable": {f.name: f.default for f in dataclasses.fields(turntable.YRTGeometry)},
+        "composite_turntable": defaults(turntable.CompositeTurntableGeometry),
+        "yrt_turntable": defaults(turntable.YRTGeometry),
+        "tapered_roller": defaults(TaperedRow),
+        "ptrb": defaults(PTRBGeometry),
     }
+    try:  # the seed-002 builder is optional (bearings/ball_column.py)
+        from bearingkit.bearings.ball_column import BallColumnGeometry
+
+        sources["ball_column"] = defaults(BallColumnGeometry)
+    except ImportError:  # pragma: no cover - the module ships with bearingkit
+        pass
     for name in GEOMETRY_MODELS:
         fn = getattr(standard, name, None)
         if fn is not None:
