@@ -137,3 +137,12 @@ def test_axial_distribution_bad_input():
         axial_tooth_distribution(ptrb_prototype(), -1.0)
     with pytest.raises(InputError, match="ring_support"):
         axial_tooth_distribution(ptrb_prototype(), 1e3, ring_support="middle")
+
+
+def test_threaded_rows_solve_batches_that_converge_at_different_iterations():
+    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.bearings.ptrb import ptrb_model
+
+    res = solve(ptrb_model(), load_vector(F_z=[1000.0, 5000.0, 20000.0], F_x=[0.0, 2000.0, 500.0]))
+    assert res.converged.all() and len(set(res.iterations.tolist())) > 1
+    np.testing.assert_allclose(res.row_load(res.rows[0].name)[:, 2], [1000.0, 5000.0, 20000.0], rtol=1e-8)

@@ -26,6 +26,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from bearingkit import checks
 from bearingkit.analysis.model import BearingModel
@@ -359,7 +360,12 @@ def _attempt(problem: _Problem, q, load, iterations):
         out = _newton(problem.take(cases), q[cases], load[cases], np.ones(len(cases), bool), its)
         return cases, its, out
 
-    with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+    # Our threads already fill the cores: BLAS threads on top would oversubscribe them (measured:
+    # 1.7x more cases/s on 2 cores with BLAS limited to one thread inside the pool).
+    with (
+        threadpool_limits(limits=1, user_api="blas"),
+        ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool,
+    ):
         parts = list(pool.map(run, chunks))
     q_out = np.empty_like(q)
     conv, div = np.zeros(n, bool), np.zeros(n, bool)

@@ -36,6 +36,7 @@ from bearingkit.errors import InputError
 from bearingkit.physics import hertz
 from bearingkit.physics.ptrb_rating import thread_contact_curvature
 from bearingkit.rows.base import (
+    KernelBase,
     RacewayOffset,
     RowResponse,
     RowState,
@@ -318,7 +319,7 @@ class ThreadedRow:
         return ThreadedKernel(self)
 
 
-class ThreadedKernel:
+class ThreadedKernel(KernelBase):
     """δ_m = G_m·q − c for every equivalent ball m = (roller j, tooth i, flank σ = ±1).
 
     The normal of flank σ in the element's (radial, axial) frame is (cos α, σ sin α); it passes
