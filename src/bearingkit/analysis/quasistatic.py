@@ -274,6 +274,10 @@ def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.nd
         qt = np.linalg.solve(k, f[..., None])[..., 0]
         approach = np.abs(qt).max(axis=1)
         delta = np.sqrt(delta * np.maximum(approach, 1e-3 * delta))
+    # Never start farther than one capped Newton step: a near-singular estimate (a DOF the rows barely
+    # reach, e.g. the tilt of a single tapered row) would otherwise throw the start far away.
+    big = np.abs(qt).max(axis=1, keepdims=True)
+    qt = np.where(np.isfinite(big), qt * np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300)), qt)
     out = q.copy()
     out[:, idx] = q[:, idx] + qt * s[idx]
     # A singular or overflowing estimate must not poison the solve: keep the given start there.
