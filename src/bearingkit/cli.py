@@ -410,7 +410,7 @@ def _print_warnings(warnings: list[str]) -> None:
 
 #: Friction models of ``friction --model``: the physics component model of
 #: :mod:`bearingkit.analysis.friction` and the engineering models of
-#: :mod:`bearingkit.physics.friction_models` (standard single-row bearings only).
+#: :mod:`bearingkit.analysis.engineering_friction` (standard single-row bearings only).
 FRICTION_MODELS = ("components", "skf", "palmgren")
 
 
@@ -497,8 +497,8 @@ def engineering_friction_cases(file, bearing, speeds, temperatures, lubricant, m
     """SKF or Palmgren friction of every case (catalogue formulas from F_r, F_a; no solve needed)."""
     import numpy as np
 
+    from bearingkit.analysis.engineering_friction import engineering_friction_torque
     from bearingkit.io.export import engineering_friction_case_dict
-    from bearingkit.physics.friction_models import engineering_friction_torque
 
     load = bearing.load_matrix()
     geometry = bearing.geometry.model_dump()

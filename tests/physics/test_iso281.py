@@ -107,8 +107,11 @@ def test_c_roller_by_hand_and_rows():
     assert c == pytest.approx(1.1 * fc * 12 ** (7 / 9) * z**0.75 * 10 ** (29 / 27), rel=1e-12)
     c2 = iso281.dynamic_rating_roller(dwe, lwe, dpw, 0.0, z, n_rows=2)
     assert c2 / c == pytest.approx(2 ** (7 / 9), rel=1e-12)
-    with pytest.raises(InputError, match="fc must be given"):
-        iso281.dynamic_rating_roller(dwe, lwe, dpw, np.pi / 2, z, bearing_type="thrust_cylindrical_roller")
+    ca_table = iso281.dynamic_rating_roller(
+        dwe, lwe, dpw, np.pi / 2, z, bearing_type="thrust_cylindrical_roller"
+    )
+    fc90 = iso281.fc_thrust_roller(dwe / dpw, np.pi / 2)  # α = 90°: γ = Dwe/Dpw
+    assert ca_table == pytest.approx(1.0 * fc90 * 12 ** (7 / 9) * z**0.75 * 10 ** (29 / 27), rel=1e-12)
     ca = iso281.dynamic_rating_roller(
         dwe, lwe, dpw, np.pi / 2, z, bearing_type="thrust_cylindrical_roller", fc=100.0
     )
@@ -303,3 +306,57 @@ def test_modified_life_chain_6205():
     lnm = iso281.modified_rating_life(l10, iso281.reliability_factor(0.99), a_iso)
     assert lnm == pytest.approx(0.25 * a_iso * l10)
     assert 0.1 <= a_iso <= 50
+
+
+# --- thrust roller f_c (ISO/TR 1281-1 closed form behind ISO 281 Table 9) -----------------------------
+
+
+def test_fc_thrust_roller_eta_at_90_deg():
+    """η(90°) = 0.85 for cylindrical roller thrust bearings (Lubricants 2025, 13(2), 65,
+    doi:10.3390/lubricants13020065) and λ = 0.73 (ISO/TS 16281 thrust λν):
+    f_c / (552 λ 2^(-2/9) γ^(2/9)) = η."""
+    g = np.array([0.01, 0.05, 0.2, 0.3])
+    fc = iso281.fc_thrust_roller(g, np.pi / 2)
+    np.testing.assert_allclose(fc / (552 * 0.73 * 2 ** (-2 / 9) * g ** (2 / 9)), 0.85, rtol=1e-12)
+
+
+def test_fc_thrust_roller_consistent_with_radial_roller_constant():
+    """Same Lundberg–Palmgren constant as the radial roller f_c: 207.9 = 0.37663 · 552 (ISO/TR 1281-1), so
+    for a thrust row (45° < α < 90°) f_c / fc_radial = 0.73 η / (0.83 · 0.37663) × ring-factor ratio."""
+    g, a = 0.12, np.radians(60)
+    r = (1 - g) / (1 + g)
+    ring_t = (1 + r ** (143 / 24)) ** (-2 / 9)
+    ring_r = (1 + (1.04 * r ** (143 / 108)) ** 4.5) ** (-2 / 9)
+    eta = 1 - 0.15 * np.sin(a)
+    ratio = iso281.fc_thrust_roller(g, a) / iso281.fc_radial_roller(g)
+    assert ratio == pytest.approx(0.73 * eta * 552 / (0.83 * 207.9) * ring_t / ring_r, rel=1e-12)
+
+
+def test_thrust_roller_rating_continuous_at_90_deg():
+    """The α = 90° form is the limit α → 90° of the 45°–90° form at fixed Dwe/Dpw: ISO 281 eq. (11)
+    (L_we cos α)^(7/9) tan α absorbs the (γ/cos α)^(2/9) sin α of Q_c. At α = 88° (γ = 0.0101, just inside
+    the range) C_a/η matches the α = 90° value to the O(γ) terms (< 0.2 %)."""
+    dwe, lwe, dpw, z = 9 * MM, 9 * MM, 31 * MM, 8  # Dwe/Dpw = 0.29
+    a = np.radians(88.0)
+    c88 = iso281.dynamic_rating_roller(dwe, lwe, dpw, a, z, bearing_type="thrust_cylindrical_roller")
+    c90 = iso281.dynamic_rating_roller(dwe, lwe, dpw, np.pi / 2, z, bearing_type="thrust_cylindrical_roller")
+    eta88 = 1 - 0.15 * np.sin(a)
+    assert c88 / eta88 == pytest.approx(c90 / 0.85, rel=2e-3)
+    # and the thrust formula scales as ISO 281 eq. (11): C_a ∝ Lwe^(7/9) Z^(3/4) at fixed γ
+    c90b = iso281.dynamic_rating_roller(
+        dwe, 2 * lwe, dpw, np.pi / 2, 2 * z, bearing_type="thrust_cylindrical_roller"
+    )
+    assert c90b / c90 == pytest.approx(2 ** (7 / 9) * 2**0.75, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("gamma", "alpha", "field"),
+    [(0.005, np.pi / 2, "gamma"), (0.31, np.pi / 2, "gamma"), (0.1, np.radians(40), "contact_angle")],
+)
+def test_fc_thrust_roller_range(gamma, alpha, field):
+    with pytest.raises(InputError, match=field):
+        iso281.fc_thrust_roller(gamma, alpha)
+    with pytest.raises(InputError, match="gamma"):
+        iso281.dynamic_rating_roller(
+            20 * MM, 10 * MM, 50 * MM, np.pi / 2, 6, bearing_type="thrust_cylindrical_roller"
+        )

@@ -101,7 +101,7 @@ def engineering_friction_case_dict(case_name: str, result, index: int, speed, te
     Parameters
     ----------
     case_name : str
-    result : bearingkit.physics.friction_models.EngineeringFrictionResult
+    result : bearingkit.analysis.engineering_friction.EngineeringFrictionResult
         Batched over the cases (leading axis).
     index : int
     speed : ndarray (C,) [rad/s]

@@ -7,6 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from bearingkit.analysis import engineering_friction as fm
 from bearingkit.bearings.standard import (
     angular_contact_ball,
     cylindrical_roller,
@@ -15,7 +16,6 @@ from bearingkit.bearings.standard import (
     thrust_ball,
 )
 from bearingkit.errors import InputError
-from bearingkit.physics import friction_models as fm
 from bearingkit.physics import friction_palmgren as pg
 from bearingkit.physics import friction_skf as skf
 
