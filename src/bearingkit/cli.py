@@ -41,7 +41,8 @@ from bearingkit.flagship import (  # noqa: F401 - re-exported: the flagship API 
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
-console = Console()
+# Piped output (CI logs, files) gets a wide console so table ids are not cut.
+console = Console() if sys.stdout.isatty() else Console(width=200)
 err_console = Console(stderr=True)
 
 
