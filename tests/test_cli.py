@@ -275,3 +275,29 @@ def test_friction_engineering_model_refuses_composite_bearing():
     result = runner.invoke(app, ["friction", SEED, "--model", "skf"])
     assert result.exit_code == 2 and result.stdout == ""
     assert result.stderr.count("\n") == 1 and "single-row standard bearing" in result.stderr
+
+
+def test_report_command_writes_a_self_contained_page(tmp_path):
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    out = tmp_path / "r" / "report.html"
+    res = CliRunner().invoke(app, ["report", "examples/crb_nu209.toml", "-o", str(out)])
+    assert res.exit_code == 0, res.output
+    html = out.read_text()
+    assert "data:image/png;base64" in html and "<script" not in html
+
+
+def test_study_command_runs_the_seed000_statics_l9(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    res = CliRunner().invoke(
+        app, ["study", "examples/studies/seed000_l9_statics.toml", "--out", str(tmp_path)]
+    )
+    assert res.exit_code == 0, res.output
+    results = pd.read_parquet(tmp_path / "results.parquet")
+    assert len(results) == 9 and results.filter(like="share").notna().all().all()

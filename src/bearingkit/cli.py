@@ -571,6 +571,41 @@ def run_flagship(
     run_sections(console, as_json=as_json, report_path=None if no_report else report)
 
 
+@app.command()
+@one_line_errors
+def study(
+    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/."),
+    scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
+    workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
+    resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
+    out: Path = typer.Option(None, "--out", help="Output folder (default: out/<study name>)."),
+):
+    """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
+    from bearingkit.studies.__main__ import run_cli
+
+    run_cli(file, scheduler=scheduler, workers=workers, resume=resume, out=out, echo=console.print)
+
+
+@app.command()
+@one_line_errors
+def report(
+    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    output: Path = typer.Option(Path("out/report.html"), "-o", "--output", help="HTML file to write."),
+    speed: str = typer.Option(None, "--speed", help="Speed of the rotating ring, e.g. 5rpm."),
+    temperature: str = typer.Option(None, "--temperature", help="Operating temperature, e.g. 40degC."),
+):
+    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings."""
+    from bearingkit.report import report_file
+
+    path = report_file(
+        file,
+        output,
+        speed=_quantity(speed, "angular_velocity", "--speed"),
+        temperature=_quantity(temperature, "temperature", "--temperature"),
+    )
+    console.print(f"wrote {path}")
+
+
 def main() -> None:
     """Entry point: one-line errors for bad input, exit code 2."""
     try:
