@@ -6,9 +6,10 @@ SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s,
 
 :func:`rate` takes a :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` and, for every row,
 
-- rates the row as a single-row bearing of its own geometry: ISO 76 C0 and ISO 281 C
-  (:data:`ROW_RATERS` maps ``row.kind`` to a rater; new row kinds register themselves with
-  :func:`register_row_rater`);
+- rates the row as a single-row bearing of its own geometry: ISO 76 C0 and ISO 281 C (the row raters
+  live in :mod:`bearingkit.analysis.rating_rows` and are re-exported here; :data:`ROW_RATERS` maps
+  ``row.kind`` to a rater — ball, cylindrical, tapered, threaded — and new row kinds register themselves
+  with :func:`register_row_rater`);
 - computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
   slice loads (rollers), with the rotating ring chosen by ``rotating``;
 - computes the static safety s0 = (p_limit / p_max)^n from the largest contact pressure
@@ -31,14 +32,31 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from bearingkit import checks, references
+from bearingkit import checks
+from bearingkit.analysis.rating_rows import (
+    _REFERENCES,
+    DEFAULT_EDGE_PRESSURE_RATIO,
+    DEFAULT_SHOULDER_HEIGHT,
+    ISO281_CONFORMITY_LIMITS,
+    ROW_RATERS,
+    WEIBULL_SLOPES,
+    RowContext,
+    RowRating,
+    _masked,
+    rate_ball_row,
+    rate_cylindrical_row,
+    rate_tapered_row,
+    rate_threaded_row,
+    register_row_rater,
+)
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281, iso16281
+from bearingkit.physics import iso281
 
 __all__ = [
     "DEFAULT_EDGE_PRESSURE_RATIO",
     "DEFAULT_SHOULDER_HEIGHT",
     "EDGE_STRESS_MODES",
+    "ISO281_CONFORMITY_LIMITS",
     "ROW_RATERS",
     "WEIBULL_SLOPES",
     "RatingOptions",
@@ -48,29 +66,12 @@ __all__ = [
     "rate",
     "rate_ball_row",
     "rate_cylindrical_row",
+    "rate_tapered_row",
+    "rate_threaded_row",
     "register_row_rater",
     "system_life",
 ]
 
-references.add(
-    "lundberg1952",
-    "Lundberg G., Palmgren A. (1952) Dynamic capacity of roller bearings. Acta Polytech. Mech. Eng. Ser. "
-    "2(4).",
-)
-references.add(
-    "zaretsky2013",
-    "Zaretsky E.V. (2013) Rolling bearing life prediction, theory, and application. NASA/TP-2013-215305.",
-)
-
-#: Shoulder (land) height of a ball groove above the groove bottom, as a fraction of the ball diameter
-#: [-]. Not stored on the rows; an assumed, deliberately shallow value (deep groove rings are made with
-#: groove depths of roughly 0.2–0.3 D_w), so the truncation warning errs on the safe side. Valid
-#: 0 < h/D_w < f (the groove radius over D_w).
-DEFAULT_SHOULDER_HEIGHT = 0.20
-#: Edge-loading criterion for roller rows [-]: a roller end slice whose Hertz pressure reaches this
-#: fraction of the row's largest slice pressure means the contact runs to the roller end, where the real
-#: pressure has an edge peak the slice model does not resolve. Engineering choice; valid (0, 1].
-DEFAULT_EDGE_PRESSURE_RATIO = 0.8
 #: When the ISO/TS 16281 edge-stress factor f_k multiplies the slice loads: ``"auto"`` for rollers
 #: without a crowning profile (profile None), ``"always"``, ``"never"``.
 EDGE_STRESS_MODES = ("auto", "always", "never")
@@ -78,17 +79,6 @@ EDGE_STRESS_MODES = ("auto", "always", "never")
 HOUR = 3600.0
 #: Newton iterations and relative tolerance of the mixed-slope system-life root.
 _SYSTEM_ITERATIONS, _SYSTEM_TOL = 100, 1e-13
-
-_REFERENCES = (
-    "iso76",
-    "iso281",
-    "iso16281",
-    "iso_tr1281_1",
-    "lundberg1947",
-    "lundberg1952",
-    "harris2007",
-    "zaretsky2013",
-)
 
 
 @dataclass(frozen=True)
@@ -167,10 +157,6 @@ class RatingOptions:
         return self.lubricant is not None
 
 
-def _masked(values, mask) -> np.ma.MaskedArray:
-    return np.ma.masked_array(np.asarray(values, dtype=float), mask=np.asarray(mask, dtype=bool))
-
-
 def system_life(lives, slopes) -> np.ndarray:
     """L10 of a system of independently failing rows [same unit as ``lives``].
 
@@ -220,351 +206,6 @@ def system_life(lives, slopes) -> np.ndarray:
         if np.all(np.abs(step) < _SYSTEM_TOL):
             break
     return np.where(finite, np.exp(x), np.inf)
-
-
-# --- per-row ratings ------------------------------------------------------------------------------------
-
-#: Weibull slope e of the life scatter [-]: 10/9 point contact, 9/8 line contact (Lundberg & Palmgren
-#: 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8); the slopes behind the ISO/TS 16281 raceway exponents.
-WEIBULL_SLOPES = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
-#: ISO 281:2007 5.1.1 / 6.1.1: the f_c tables hold for groove radii r_i <= 0.52 D_w and r_e <= 0.53 D_w
-#: (radial ball), r <= 0.54 D_w (thrust ball); larger radii lower the real rating.
-ISO281_CONFORMITY_LIMITS = {"radial": (0.52, 0.53), "thrust": (0.54, 0.54)}
-
-
-@dataclass
-class RowContext:
-    """What a row rater needs besides its row and state."""
-
-    options: RatingOptions
-    converged: np.ndarray
-    n_cases: int
-
-
-@dataclass
-class RowRating:
-    """Ratings of one row over the cases (arrays (C,), masked where a value is not available).
-
-    Attributes
-    ----------
-    name, kind : str
-        Row name and ``row.kind``.
-    bearing_type : str
-        The ISO 281 bearing type the row is rated as (``deep_groove_ball``, ``angular_contact_ball``,
-        ``thrust_ball``, ``cylindrical_roller``, ``thrust_cylindrical_roller``).
-    element : {"ball", "roller"}
-    weibull_slope : float
-        e [-] (:data:`WEIBULL_SLOPES`).
-    load_rating, static_rating : MaskedArray [N]
-        ISO 281 C and ISO 76 C0 of the row as a single-row bearing.
-    life : MaskedArray [rev]
-        ISO/TS 16281 basic reference rating life L10r.
-    reference_load : MaskedArray [N]
-        P_ref = C (L10r/10⁶)^(−1/p).
-    life_modification : MaskedArray [-]
-        a_ISO (masked unless lubrication inputs were given).
-    modified_life_90, modified_life : MaskedArray [rev]
-        a_ISO L10r and a1 a_ISO L10r.
-    static_safety : MaskedArray [-]
-        s0 from the largest contact pressure.
-    max_pressure : ndarray [Pa]
-    loaded_count : ndarray of int
-    valid : ndarray of bool
-        The case converged.
-    flags : dict of str to ndarray of bool
-        ``unloaded``, ``static_overload``, ``truncated_ellipse`` (balls), ``edge_loading`` (rollers).
-    warnings : list of list of str
-        Per case.
-    references : tuple of str
-    """
-
-    name: str
-    kind: str
-    bearing_type: str
-    element: str
-    weibull_slope: float
-    load_rating: np.ma.MaskedArray
-    static_rating: np.ma.MaskedArray
-    life: np.ma.MaskedArray
-    reference_load: np.ma.MaskedArray
-    life_modification: np.ma.MaskedArray
-    modified_life_90: np.ma.MaskedArray
-    modified_life: np.ma.MaskedArray
-    static_safety: np.ma.MaskedArray
-    max_pressure: np.ndarray
-    loaded_count: np.ndarray
-    valid: np.ndarray
-    flags: dict
-    warnings: list
-    references: tuple = ()
-
-
-def _attempt(what: str, fn, notes: list):
-    """``fn()``; an InputError (a table range, a missing factor) becomes a note and None."""
-    try:
-        return fn()
-    except InputError as exc:
-        notes.append(f"{what} unavailable: {exc}")
-        return None
-
-
-def _assemble(row, state, ctx: RowContext, *, bearing_type, element, c, c0, life_fn, flags, notes, aiso_kind):
-    """Everything that is common to the row kinds: masks, s0, a_ISO, warnings."""
-    n, opts = ctx.n_cases, ctx.options
-    valid = ctx.converged
-    loaded = (state.loaded_count > 0) & valid
-    ones = np.ones(n)
-    c_arr = None if c is None else np.broadcast_to(np.asarray(c, float), (n,))
-    c0_arr = None if c0 is None else np.broadcast_to(np.asarray(c0, float), (n,))
-    p_max = state.max_pressure.max(axis=-1)
-    limit_kind = "ball" if element == "ball" else "roller"
-    s0 = iso76.static_safety_from_pressure(np.where(loaded, p_max, 1.0), limit_kind)
-    s0 = _masked(np.where(loaded, s0, 0.0), ~loaded)
-    overload = loaded & (np.ma.getdata(s0) < 1.0)
-
-    life_mask = ~loaded if c_arr is not None else np.ones(n, bool)
-    life = np.zeros(n) if c_arr is None or not loaded.any() else life_fn(c_arr, loaded)
-    life = _masked(np.where(life_mask, 0.0, life), life_mask)
-    p_ref = _masked(ones, np.ones(n, bool))
-    if c_arr is not None:
-        safe_life = np.where(life_mask, 1.0e6, np.ma.getdata(life))
-        p_ref = _masked(
-            np.where(life_mask, 0.0, iso16281.reference_equivalent_load(safe_life, c_arr, element)), life_mask
-        )
-
-    a_iso = _masked(ones, True)
-    kappa_low = np.zeros(n, bool)
-    if opts.modified and c_arr is not None and c0_arr is not None:
-        from bearingkit.lubricants import as_lubricant
-
-        nu = as_lubricant(opts.lubricant).kinematic_viscosity(opts.temperature_C)
-        dm = np.asarray(row.pitch_diameter, float)
-        kappa = iso281.viscosity_ratio(nu, opts.speed, dm) * ones
-        kappa_low = kappa < iso281.KAPPA_MIN
-        cu = iso281.fatigue_load_limit_estimate(c0_arr, dm, element)
-        p_safe = np.where(life_mask, c_arr, np.ma.getdata(p_ref))
-        a = iso281.life_modification_factor(
-            np.maximum(kappa, iso281.KAPPA_MIN), opts.contamination_factor, cu, p_safe, aiso_kind
-        )
-        a_iso = _masked(a, life_mask | kappa_low)
-    a1 = float(iso281.reliability_factor(opts.reliability))
-    mod90 = a_iso * life
-    flags = {"unloaded": valid & ~loaded, "static_overload": overload, **flags}
-
-    warnings = []
-    for k in range(n):
-        w = [] if not valid[k] else list(notes)
-        if valid[k] and not loaded[k]:
-            w.append("no loaded element: no fatigue life or static safety; excluded from the system life")
-        if overload[k]:
-            p_lim = iso76.CONTACT_LIMITS[limit_kind][0]
-            w.append(
-                f"static safety s0 = {float(s0[k]):.3g} < 1: max contact pressure {p_max[k] / 1e6:.0f} MPa "
-                f"exceeds the ISO 76 limit {p_lim / 1e6:.0f} MPa"
-            )
-        if flags.get("truncated_ellipse", np.zeros(n, bool))[k]:
-            w.append(
-                "contact ellipse truncated by the groove shoulder (shoulder height "
-                f"{_shoulder(opts, row.name):g} D_w assumed): Hertz pressure and life are optimistic"
-            )
-        if flags.get("edge_loading", np.zeros(n, bool))[k]:
-            w.append(
-                f"edge loading: a roller end slice reaches {opts.edge_pressure_ratio:.0%} of the row's "
-                "largest slice pressure; the slice model does not resolve the edge stress peak"
-            )
-        if kappa_low[k] and loaded[k]:
-            w.append(f"viscosity ratio kappa below {iso281.KAPPA_MIN:g}: a_ISO not defined (ISO 281 9.3.3)")
-        warnings.append(w)
-    return RowRating(
-        name=row.name,
-        kind=row.kind,
-        bearing_type=bearing_type,
-        element=element,
-        weibull_slope=WEIBULL_SLOPES[element],
-        load_rating=_masked(c_arr if c_arr is not None else ones, np.full(n, c_arr is None)),
-        static_rating=_masked(c0_arr if c0_arr is not None else ones, np.full(n, c0_arr is None)),
-        life=life,
-        reference_load=p_ref,
-        life_modification=a_iso,
-        modified_life_90=mod90,
-        modified_life=mod90 * a1,
-        static_safety=s0,
-        max_pressure=np.where(valid, p_max, 0.0),
-        loaded_count=np.where(valid, state.loaded_count, 0),
-        valid=valid,
-        flags=flags,
-        warnings=warnings,
-        references=_REFERENCES,
-    )
-
-
-def _shoulder(opts: RatingOptions, name: str) -> float:
-    h = opts.shoulder_height
-    return float(h.get(name, DEFAULT_SHOULDER_HEIGHT) if isinstance(h, Mapping) else h)
-
-
-def _given_rating(ctx: RowContext, row, notes):
-    c = ctx.options.load_ratings.get(row.name)
-    if c is not None:
-        notes.append(f"C = {float(c):.6g} N given by the user (load_ratings), not computed by ISO 281")
-    return c
-
-
-def _one_class(name, values):
-    arr = np.atleast_1d(values)
-    if not (np.all(arr) or not np.any(arr)):
-        raise InputError(f"{name} must not mix radial and thrust rows within one batched row geometry")
-    return bool(arr.flat[0])
-
-
-def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.ball.BallRow`.
-
-    Mapping by the free contact angle |α₀|: 0 → ``deep_groove_ball``; (0, 45°] → ``angular_contact_ball``
-    (ISO 281 Table 2 / ISO 76 Table 1 with γ = D_w cos α/D_pw); (45°, 90°] → ``thrust_ball`` (Tables 4 and 3;
-    ISO 281 f_c is shipped for 45°–75° and 90° only, other angles report C unavailable). L10r uses the
-    nominal |α₀| in the raceway ratings (the operating angle enters through the element loads only) and the
-    ball normal loads, equal at both raceways (no centrifugal force in the quasi-static engine).
-
-    Truncation: the groove of radius r = f D_w ends at a shoulder h = ``shoulder_height`` · D_w above its
-    bottom (bottom at 0 for radial/angular rows, at ±90° for thrust rows), i.e. at the angle
-    θ_s = arccos(1 − h/r) from the bottom seen from the groove centre; the ellipse of semi-major axis a spans
-    θ_a = arcsin(a/r) about the contact point, so it is truncated when |α − α_bottom| + θ_a > θ_s.
-    """
-    notes: list[str] = []
-    alpha0 = np.asarray(row.contact_angle, float)
-    a_abs = np.abs(alpha0)
-    thrust = _one_class("contact_angle", a_abs > iso281.RADIAL_MAX_ANGLE)
-    radial_zero = _one_class("contact_angle", a_abs == 0.0)
-    kind = "thrust" if thrust else "radial"
-    btype = "thrust_ball" if thrust else ("deep_groove_ball" if radial_zero else "angular_contact_ball")
-    d, dm, z = row.element_diameter, row.pitch_diameter, row.n_elements
-    fi, fo = np.asarray(row.conformity_inner, float), np.asarray(row.conformity_outer, float)
-    c0 = _attempt("C0 (ISO 76)", lambda: iso76.static_rating_ball(d, dm, a_abs, z, kind=kind), notes)
-    c = _given_rating(ctx, row, notes)
-    if c is None:
-        c = _attempt(
-            "C (ISO 281)", lambda: iso281.dynamic_rating_ball(d, dm, a_abs, z, bearing_type=btype), notes
-        )
-        lim_i, lim_o = ISO281_CONFORMITY_LIMITS[kind]
-        if c is not None and (np.any(fi > lim_i) or np.any(fo > lim_o)):
-            notes.append(
-                f"groove conformities ({np.max(fi):g}, {np.max(fo):g}) exceed the ISO 281 assumption "
-                f"({lim_i:g}, {lim_o:g}): C overestimates the rating"
-            )
-
-    def life_fn(c_arr, loaded):
-        qci, qce = iso16281.ball_raceway_ratings(c_arr, d, dm, a_abs, fi * d, fo * d, z, kind=kind)
-        loads = np.where(loaded[:, None], state.load, 1.0)
-        return iso16281.ball_reference_life(loads, qci, qce, rotating=ctx.options.rotating)
-
-    dw = np.asarray(d, float).reshape(-1, 1)
-    h = _shoulder(ctx.options, row.name) * dw
-    bottom = np.where(thrust, np.sign(alpha0) * np.pi / 2, 0.0).reshape(-1, 1)
-    off = np.abs(state.contact_angle - bottom)
-    truncated = np.zeros(state.load.shape, bool)
-    for side, f in (("inner", fi), ("outer", fo)):
-        r = np.asarray(f, float).reshape(-1, 1) * dw
-        theta_s = np.arccos(np.clip(1.0 - h / r, -1.0, 1.0))
-        theta_a = np.arcsin(np.clip(state.extras[f"semi_major_{side}"] / r, 0.0, 1.0))
-        truncated |= (state.load > 0) & (off + theta_a > theta_s)
-    flags = {"truncated_ellipse": ctx.converged & truncated.any(axis=-1)}
-    aiso_kind = "thrust_ball" if thrust else "radial_ball"
-    return _assemble(
-        row,
-        state,
-        ctx,
-        bearing_type=btype,
-        element="ball",
-        c=c,
-        c0=c0,
-        life_fn=life_fn,
-        flags=flags,
-        notes=notes,
-        aiso_kind=aiso_kind,
-    )
-
-
-def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.cylindrical.CylindricalRow`.
-
-    Radial rows → ``cylindrical_roller`` (α = 0; ISO 281 f_c from the ISO/TR 1281-1 closed form, ISO 76
-    eq. (3)); thrust rows → ``thrust_cylindrical_roller`` (α = 90°; ISO 76 eq. (8); ISO 281 Table 9 is not
-    shipped, so C — and with it L10r — is unavailable unless ``load_ratings`` gives it). L10r from the
-    slice loads (ISO/TS 16281 eq. (58)-(65)), with the edge-stress factor f_k of eq. (60) per
-    ``edge_stress_factor``. Edge loading: an end slice whose pressure reaches ``edge_pressure_ratio`` of the
-    row's largest slice pressure (not assessed for n_s = 1).
-    """
-    notes: list[str] = []
-    opts = ctx.options
-    thrust = row.orientation != "radial"
-    kind = "thrust" if thrust else "radial"
-    alpha = np.pi / 2 if thrust else 0.0
-    btype = "thrust_cylindrical_roller" if thrust else "cylindrical_roller"
-    d, length, dm, z, n_s = (
-        row.element_diameter,
-        row.effective_length,
-        row.pitch_diameter,
-        row.n_elements,
-        row.n_slices,
-    )
-    c0 = _attempt(
-        "C0 (ISO 76)", lambda: iso76.static_rating_roller(d, length, dm, alpha, z, kind=kind), notes
-    )
-    c = _given_rating(ctx, row, notes)
-    if c is None:
-        c = _attempt(
-            "C (ISO 281)",
-            lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=btype),
-            notes,
-        )
-    use_fk = opts.edge_stress_factor == "always" or (
-        opts.edge_stress_factor == "auto" and row.profile is None
-    )
-    if use_fk and n_s < 2:
-        notes.append("edge-stress factor not applied: n_slices = 1")
-        use_fk = False
-    if n_s < 2:
-        notes.append("edge loading not assessed: n_slices = 1")
-
-    def life_fn(c_arr, loaded):
-        qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s, kind=kind)
-        loads = np.where(loaded[:, None, None], state.slice_load, 1.0)
-        fk = iso16281.edge_stress_factor(n_s) if use_fk else None
-        return iso16281.roller_reference_life(loads, qci, qce, rotating=opts.rotating, slice_factor=fk)
-
-    edge = np.zeros(ctx.n_cases, bool)
-    if n_s >= 2:
-        p = np.maximum(state.extras["slice_pressure_inner"], state.extras["slice_pressure_outer"])
-        p_row = p.max(axis=(-2, -1))
-        p_end = np.maximum(p[..., 0], p[..., -1])
-        edge = (p_row > 0) & np.any(p_end >= opts.edge_pressure_ratio * p_row[:, None], axis=-1)
-    flags = {"edge_loading": ctx.converged & edge}
-    return _assemble(
-        row,
-        state,
-        ctx,
-        bearing_type=btype,
-        element="roller",
-        c=c,
-        c0=c0,
-        life_fn=life_fn,
-        flags=flags,
-        notes=notes,
-        aiso_kind="thrust_roller" if thrust else "radial_roller",
-    )
-
-
-#: Row raters by ``row.kind``: ``rater(row, state: RowState, ctx: RowContext) -> RowRating``.
-ROW_RATERS: dict[str, Callable] = {"ball": rate_ball_row, "cylindrical": rate_cylindrical_row}
-
-
-def register_row_rater(kind: str, rater: Callable) -> Callable:
-    """Register the rater of a row kind (tapered, threaded rows add themselves here); returns ``rater``."""
-    if not isinstance(kind, str) or not kind:
-        raise InputError(f"kind ({kind!r}) must be a non-empty row kind name")
-    ROW_RATERS[kind] = rater
-    return rater
 
 
 def _combine(rows: list[RowRating], attr: str, n_cases: int) -> tuple[np.ma.MaskedArray, list[list[str]]]:
