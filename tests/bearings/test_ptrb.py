@@ -1,6 +1,5 @@
 """PTRB prototype: published ratings (seed 004), model-based distribution, result dict, example file."""
 
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -8,7 +7,6 @@ import pytest
 
 from bearingkit.bearings.ptrb import evaluate_ptrb, ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
-from bearingkit.units import parse
 from bearingkit.validation.registry import all_cases, run_cases
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "ptrb_prototype.toml"
@@ -59,18 +57,12 @@ def test_bad_distribution_name():
 
 
 def test_example_file_matches_builder():
-    data = tomllib.loads(EXAMPLE.read_text())["geometry"]
-    dims = {
-        "contact_angle": "angle",
-        "n_elements": "dimensionless",
-        "n_teeth": "dimensionless",
-        "youngs_modulus": "pressure",
-        "poisson_ratio": "dimensionless",
-    }
-    kwargs = {}
-    for key, raw in data.items():
-        val = parse(raw, dims.get(key, "length"), key)
-        kwargs[key] = int(val) if key in ("n_elements", "n_teeth") else val
-    g = ptrb_prototype(**kwargs)
-    assert g == ptrb_prototype() or np.isclose(g.pitch_diameter, ptrb_prototype().pitch_diameter)
+    """The example file, read by the common loader, builds the Table 1 prototype's row."""
+    from bearingkit.io.loader import load_file
+
+    bearing = load_file(EXAMPLE)
+    g = bearing.model.rows[0].geometry
+    ref = ptrb_prototype()
+    for field in ("pitch_diameter", "roller_pitch_diameter", "contact_angle", "n_elements", "n_teeth"):
+        assert np.isclose(getattr(g, field), getattr(ref, field)), field
     assert evaluate_ptrb(g).static_axial == pytest.approx(38.36e3, rel=0.02)
