@@ -271,7 +271,11 @@ def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.nd
     for _ in range(6):
         k = sum(n * delta[:, None, None] ** (n - 1) * m[idx][:, idx] for m, n in mats)
         k = k + 1e-12 * np.abs(k).max(axis=(1, 2))[:, None, None] * np.eye(len(idx))
-        qt = np.linalg.solve(k, f[..., None])[..., 0]
+        k = np.where(np.isfinite(k), k, 0.0) + 1e-300 * np.eye(len(idx))
+        try:
+            qt = np.linalg.solve(k, f[..., None])[..., 0]
+        except np.linalg.LinAlgError:  # degenerate stiffness: start from the given point
+            return q
         approach = np.abs(qt).max(axis=1)
         delta = np.sqrt(delta * np.maximum(approach, 1e-3 * delta))
     # Never start farther than one capped Newton step: a near-singular estimate (a DOF the rows barely

@@ -33,6 +33,9 @@ from bearingkit.rows.base import (
     validate_common,
 )
 
+#: Largest accepted conformity r/D_w [1]: real grooves have 0.505–0.6; above ~1 the "groove" is nearly
+#: flat and Hertz point contact with a shoulder no longer describes it (bound chosen to catch typos).
+MAX_CONFORMITY = 10.0
 #: Hertz point-contact load exponent (Q = K δ^n), Hertz 1881 / Harris & Kotzalas 2007 eq. 6.43.
 POINT_EXPONENT = 1.5
 
@@ -99,6 +102,10 @@ class BallRow:
         for f in ("conformity_inner", "conformity_outer"):
             val = np.asarray(getattr(self, f), dtype=float)
             checks.finite(f, val)
+            if np.any(val > MAX_CONFORMITY):
+                raise checks.InputError(
+                    f"{f} ({np.max(val):.6g}) must be at most {MAX_CONFORMITY:g} (a groove, not a flat)"
+                )
             if np.any(val <= 0.5):
                 raise checks.InputError(
                     f"{f} ({np.min(val):.6g}) must exceed 0.5: the groove radius must exceed half the ball "
