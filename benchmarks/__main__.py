@@ -23,7 +23,7 @@ LOWER_IS_BETTER = ("s", "ms")
 
 def _as_record(entry: dict) -> Record:
     value, target = float(entry["value"]), entry.get("target")
-    if target is None:
+    if target is None or target == "":
         return Record(entry["name"], value, entry.get("unit", ""), note=entry.get("note", ""))
     target = float(target)
     lower = entry.get("unit") in LOWER_IS_BETTER

@@ -135,3 +135,18 @@ def test_batched_geometry_equals_separate_rows():
         np.testing.assert_allclose(batched.force[c], one.force[0], rtol=1e-12, atol=1e-9)
         np.testing.assert_allclose(batched.jacobian[c], one.jacobian[0], rtol=1e-12, atol=1e-3)
         np.testing.assert_allclose(batched.energy[c], one.energy[0], rtol=1e-12, atol=1e-18)
+
+
+def test_dense_small_batch_path_equals_the_per_roller_path(monkeypatch):
+    import bearingkit.rows.cylindrical as cyl
+
+    for row in list(_rows())[2:]:
+        kernel = row.kernel()
+        q = _q(np.random.default_rng(5), 4)
+        dense = kernel.response(q)
+        monkeypatch.setattr(cyl, "SMALL_BATCH", 0)
+        sliced = kernel.response(q)
+        monkeypatch.setattr(cyl, "SMALL_BATCH", 8)
+        np.testing.assert_allclose(dense.force, sliced.force, rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(dense.jacobian, sliced.jacobian, rtol=1e-12, atol=1e-3)
+        np.testing.assert_allclose(dense.energy, sliced.energy, rtol=1e-12, atol=1e-18)

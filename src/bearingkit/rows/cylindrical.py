@@ -48,6 +48,8 @@ ORIENTATIONS = {"radial": 0, "thrust_up": 1, "thrust_down": -1}
 #: read literally (q = w A^-1.11 l^-0.11 δ^1.11 with δ the raceway-to-raceway approach); stiffer by
 #: 2^(10/9) ≈ 2.16 in load at equal approach. Offered so the seed-000 model can be reproduced as written.
 PAIRINGS = ("series", "total_approach")
+#: Batches up to this many cases use the dense slice products (fewer, larger numpy calls).
+SMALL_BATCH = 8
 
 
 @dataclass(frozen=True)
@@ -184,10 +186,14 @@ class CylindricalKernel(KernelBase):
         # Per-slice directions (C|1, M, 5), M = Z·n_s: used for the contact cone and the starting point.
         g = self.Ga[..., None, :] + x[:, None, :, None] * self.Gb[..., None, :]
         self.G = g.reshape(g.shape[0], z_el * n_s, 5)
+        # Dense form for small batches of a shared geometry: two matrix products beat the per-roller
+        # gather/scatter when there are few cases (a single solve is dominated by call overhead).
+        self.GG = (self.G[0][:, :, None] * self.G[0][:, None, :]).reshape(-1, 25) if g.shape[0] == 1 else None
         self.tilt_B = tilt_row(psi)
         drop = np.zeros_like(x) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
         gap = np.asarray(row.clearance, dtype=float).reshape(-1, 1) / 2
         self.delta0 = -gap - 2.0 * drop  # (C|1, n_s), the same for every roller
+        self.delta0_flat = np.tile(self.delta0[0], z_el)[None, :]  # (1, M), slice order of G
         # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
         k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
         if row.pairing == "series":
@@ -222,6 +228,17 @@ class CylindricalKernel(KernelBase):
         d = self._delta3(q, offset)
         return d.reshape(d.shape[0], -1)
 
+    def _response_dense(self, q: np.ndarray) -> RowResponse:
+        """Small-batch path: δ = q Gᵀ + δ₀ per slice, f = −q_s G, J = −Gᵀ diag(q_s′) G."""
+        delta = q @ self.G[0].T + self.delta0_flat
+        np.maximum(delta, 0.0, out=delta)
+        t = delta ** (1.0 / 9.0)
+        load = delta * t
+        load *= self.c_s[0]
+        t *= (10.0 / 9.0) * self.c_s[0]
+        energy = np.einsum("cm,cm->c", load, delta) / (1.0 + LINE_EXPONENT)
+        return RowResponse(-(load @ self.G[0]), -(t @ self.GG).reshape(-1, 5, 5), energy)
+
     def _ab(self, q, offset: RacewayOffset | None = None):
         """Per-roller approach at the middle a and tilt b (C, Z): δ_jk = a_j + b_j x_k + δ₀_k."""
         q = relative_displacement(q, offset)
@@ -235,6 +252,8 @@ class CylindricalKernel(KernelBase):
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""
+        if q.shape[0] <= SMALL_BATCH and self.GG is not None and self.delta0.shape[0] == 1 and offset is None:
+            return self._response_dense(q)
         a, b = self._ab(q, offset)
         c, z_el = a.shape
         # Only rollers that can touch at all are sliced: a bound on the largest slice approach.
