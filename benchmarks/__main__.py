@@ -25,8 +25,9 @@ def _as_record(entry: dict) -> Record:
     value, target = float(entry["value"]), entry.get("target")
     if target is None or target == "":
         return Record(entry["name"], value, entry.get("unit", ""), note=entry.get("note", ""))
-    target = float(target)
-    lower = entry.get("unit") in LOWER_IS_BETTER
+    text = str(target).strip()
+    target = float(text.lstrip("<>= "))
+    lower = text.startswith("<") or (not text.startswith(">") and entry.get("unit") in LOWER_IS_BETTER)
     ratio = (target / value if value > 0 else float("inf")) if lower else (value / target if target else None)
     sense = "<=" if lower else ">="
     return Record(
