@@ -100,6 +100,42 @@ def _profile(letter_or_name: str, length, diameter):
     return make_profile(name, effective_length=length, element_diameter=diameter)
 
 
+def _radial_row(g, profile, e_red) -> CylindricalRow:
+    """The radial roller row shared by the composite and the YRT-type bearing."""
+    return CylindricalRow(
+        n_elements=g.n_radial_rollers,
+        element_diameter=g.radial_roller_diameter,
+        effective_length=g.radial_roller_length,
+        pitch_diameter=g.pitch_diameter_radial_roller,
+        orientation="radial",
+        clearance=g.clearance_radial,
+        n_slices=g.n_slices,
+        profile=profile,
+        pairing=g.pairing,
+        e_reduced=e_red,
+        name="roller_radial",
+    )
+
+
+def _axial_roller_row(g, n_elements, side, profile, e_red) -> CylindricalRow:
+    """An axial (thrust) roller row, ``side`` "upper" (resists +u_z) or "lower"."""
+    sign = 1 if side == "upper" else -1
+    return CylindricalRow(
+        n_elements=n_elements,
+        element_diameter=g.axial_roller_diameter,
+        effective_length=g.axial_roller_length,
+        pitch_diameter=g.pitch_diameter_axial_roller,
+        orientation="thrust_up" if sign > 0 else "thrust_down",
+        clearance=g.clearance_axial_roller,
+        n_slices=g.n_slices,
+        profile=profile,
+        pairing=g.pairing,
+        axial_position=sign * AXIAL_ROW_OFFSET,
+        e_reduced=e_red,
+        name=f"roller_{side}",
+    )
+
+
 def composite_turntable(
     geometry: CompositeTurntableGeometry | None = None, *, material=None, **overrides
 ) -> BearingModel:
@@ -118,22 +154,7 @@ def composite_turntable(
     half_pitch = np.pi / g.n_axial_balls
     rows = []
     for side, sign, z in (("upper", +1, AXIAL_ROW_OFFSET), ("lower", -1, -AXIAL_ROW_OFFSET)):
-        rows.append(
-            CylindricalRow(
-                n_elements=g.n_axial_rollers,
-                element_diameter=g.axial_roller_diameter,
-                effective_length=g.axial_roller_length,
-                pitch_diameter=g.pitch_diameter_axial_roller,
-                orientation="thrust_up" if sign > 0 else "thrust_down",
-                clearance=g.clearance_axial_roller,
-                n_slices=g.n_slices,
-                profile=axial_profile,
-                pairing=g.pairing,
-                axial_position=z,
-                e_reduced=e_red,
-                name=f"roller_{side}",
-            )
-        )
+        rows.append(_axial_roller_row(g, g.n_axial_rollers, side, axial_profile, e_red))
         rows.append(
             BallRow(
                 n_elements=g.n_axial_balls,
@@ -149,21 +170,7 @@ def composite_turntable(
                 name=f"ball_{side}",
             )
         )
-    rows.append(
-        CylindricalRow(
-            n_elements=g.n_radial_rollers,
-            element_diameter=g.radial_roller_diameter,
-            effective_length=g.radial_roller_length,
-            pitch_diameter=g.pitch_diameter_radial_roller,
-            orientation="radial",
-            clearance=g.clearance_radial,
-            n_slices=g.n_slices,
-            profile=radial_profile,
-            pairing=g.pairing,
-            e_reduced=e_red,
-            name="roller_radial",
-        )
-    )
+    rows.append(_radial_row(g, radial_profile, e_red))
     return BearingModel(
         tuple(rows),
         name="ball-roller composite turntable bearing (Tian et al. 2025)",
@@ -206,40 +213,9 @@ def yrt_turntable(geometry: YRTGeometry | None = None, *, material=None, **overr
     axial_profile = _profile(g.crowning, g.axial_roller_length, g.axial_roller_diameter)
     radial_profile = _profile(g.crowning, g.radial_roller_length, g.radial_roller_diameter)
     rows = [
-        CylindricalRow(
-            n_elements=g.n_axial_rollers,
-            element_diameter=g.axial_roller_diameter,
-            effective_length=g.axial_roller_length,
-            pitch_diameter=g.pitch_diameter_axial_roller,
-            orientation=orient,
-            clearance=g.clearance_axial_roller,
-            n_slices=g.n_slices,
-            profile=axial_profile,
-            pairing=g.pairing,
-            axial_position=z,
-            e_reduced=e_red,
-            name=f"roller_{side}",
-        )
-        for side, orient, z in (
-            ("upper", "thrust_up", AXIAL_ROW_OFFSET),
-            ("lower", "thrust_down", -AXIAL_ROW_OFFSET),
-        )
+        _axial_roller_row(g, g.n_axial_rollers, side, axial_profile, e_red) for side in ("upper", "lower")
     ]
-    rows.append(
-        CylindricalRow(
-            n_elements=g.n_radial_rollers,
-            element_diameter=g.radial_roller_diameter,
-            effective_length=g.radial_roller_length,
-            pitch_diameter=g.pitch_diameter_radial_roller,
-            orientation="radial",
-            clearance=g.clearance_radial,
-            n_slices=g.n_slices,
-            profile=radial_profile,
-            pairing=g.pairing,
-            e_reduced=e_red,
-            name="roller_radial",
-        )
-    )
+    rows.append(_radial_row(g, radial_profile, e_red))
     return BearingModel(
         tuple(rows),
         name="YRT-type three-row roller turntable bearing (assumed geometry)",
