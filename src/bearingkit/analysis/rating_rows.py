@@ -400,12 +400,27 @@ def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
     ``edge_stress_factor``. Edge loading: an end slice whose pressure reaches ``edge_pressure_ratio`` of the
     row's largest slice pressure (not assessed for n_s = 1).
     """
+    thrust = row.orientation != "radial"
+    return _rate_roller_row(
+        row,
+        state,
+        ctx,
+        alpha=np.pi / 2 if thrust else 0.0,
+        thrust=thrust,
+        bearing_type="thrust_cylindrical_roller" if thrust else "cylindrical_roller",
+    )
+
+
+def _rate_roller_row(row, state, ctx: RowContext, *, alpha, thrust, bearing_type, inner_slice_load=None):
+    """Ratings and ISO/TS 16281 life of a sliced roller row (cylindrical or tapered).
+
+    ``inner_slice_load`` (C, Z, n_s) [N] is the inner-raceway slice load when it differs from the outer
+    one (tapered rows: the rib takes part of the roller load); None = both raceways carry
+    ``state.slice_load``.
+    """
     notes: list[str] = []
     opts = ctx.options
-    thrust = row.orientation != "radial"
     kind = "thrust" if thrust else "radial"
-    alpha = np.pi / 2 if thrust else 0.0
-    btype = "thrust_cylindrical_roller" if thrust else "cylindrical_roller"
     d, length, dm, z, n_s = (
         row.element_diameter,
         row.effective_length,
@@ -420,21 +435,27 @@ def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
     if c is None:
         c = _attempt(
             "C (ISO 281)",
-            lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=btype),
+            lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=bearing_type),
             notes,
         )
     fk, flags = _edge_checks(row, state, ctx, notes)
 
     def life_fn(c_arr, loaded):
         qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s, kind=kind)
-        loads = np.where(loaded[:, None, None], state.slice_load, 1.0)
-        return iso16281.roller_reference_life(loads, qci, qce, rotating=opts.rotating, slice_factor=fk)
+        m = loaded[:, None, None]
+        outer = np.where(m, state.slice_load, 1.0)
+        if inner_slice_load is None:
+            return iso16281.roller_reference_life(outer, qci, qce, rotating=opts.rotating, slice_factor=fk)
+        inner = np.where(m, inner_slice_load, 1.0)
+        return iso16281.roller_reference_life(
+            inner, qci, qce, rotating=opts.rotating, slice_loads_outer=outer, slice_factor=fk
+        )
 
     return _assemble(
         row,
         state,
         ctx,
-        bearing_type=btype,
+        bearing_type=bearing_type,
         element="roller",
         c=c,
         c0=c0,
@@ -457,52 +478,16 @@ def rate_tapered_row(row, state, ctx: RowContext) -> RowRating:
     ``RowState.slice_load`` — they differ because the rib carries part of the roller load; the rib contact
     is a sliding contact and is not rated. Edge-stress factor and edge loading as for cylindrical rows.
     """
-    notes: list[str] = []
-    opts = ctx.options
     alpha = float(row.contact_angle_outer)
     thrust = alpha > iso281.RADIAL_MAX_ANGLE
-    kind = "thrust" if thrust else "radial"
-    btype = "thrust_tapered_roller" if thrust else "tapered_roller"
-    d, length, dm, z, n_s = (
-        row.element_diameter,
-        row.effective_length,
-        row.pitch_diameter,
-        row.n_elements,
-        row.n_slices,
-    )
-    c0 = _attempt(
-        "C0 (ISO 76)", lambda: iso76.static_rating_roller(d, length, dm, alpha, z, kind=kind), notes
-    )
-    c = _given_rating(ctx, row, notes)
-    if c is None:
-        c = _attempt(
-            "C (ISO 281)",
-            lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=btype),
-            notes,
-        )
-    fk, flags = _edge_checks(row, state, ctx, notes)
-
-    def life_fn(c_arr, loaded):
-        qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s, kind=kind)
-        m = loaded[:, None, None]
-        inner = np.where(m, state.extras["slice_load_inner"], 1.0)
-        outer = np.where(m, state.slice_load, 1.0)
-        return iso16281.roller_reference_life(
-            inner, qci, qce, rotating=opts.rotating, slice_loads_outer=outer, slice_factor=fk
-        )
-
-    return _assemble(
+    return _rate_roller_row(
         row,
         state,
         ctx,
-        bearing_type=btype,
-        element="roller",
-        c=c,
-        c0=c0,
-        life_fn=life_fn,
-        flags=flags,
-        notes=notes,
-        aiso_kind="thrust_roller" if thrust else "radial_roller",
+        alpha=alpha,
+        thrust=thrust,
+        bearing_type="thrust_tapered_roller" if thrust else "tapered_roller",
+        inner_slice_load=state.extras["slice_load_inner"],
     )
 
 
