@@ -354,6 +354,24 @@ def _newton(problem: _Problem, q, load, active, iterations):
 #: the element-wise passes stay in cache; chunks run on a thread pool (numpy releases the GIL).
 CHUNK_CASES = 512
 
+#: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
+#: runs one solver per core (Dask workers, process pools): nested pools would oversubscribe them.
+THREADS_ENV = "BEARINGKIT_THREADS"
+
+
+def solver_threads() -> int:
+    """Threads the solver uses for a chunked batch: ``$BEARINGKIT_THREADS`` or the core count."""
+    value = os.environ.get(THREADS_ENV, "").strip()
+    if not value:
+        return os.cpu_count() or 1
+    try:
+        n = int(value)
+    except ValueError:
+        raise InputError(f"{THREADS_ENV}={value!r}: expected a positive integer") from None
+    if n < 1:
+        raise InputError(f"{THREADS_ENV}={value!r}: expected a positive integer")
+    return n
+
 
 def _attempt(problem: _Problem, q, load, iterations):
     """One Newton attempt over every case: chunked and threaded for large batches."""
@@ -361,6 +379,7 @@ def _attempt(problem: _Problem, q, load, iterations):
     everyone = np.ones(n, bool)
     if n <= CHUNK_CASES:
         return _newton(problem, q, load, everyone, iterations)
+    threads = solver_threads()
     chunks = [np.arange(i, min(i + CHUNK_CASES, n)) for i in range(0, n, CHUNK_CASES)]
 
     def run(cases):
@@ -370,11 +389,12 @@ def _attempt(problem: _Problem, q, load, iterations):
 
     # Our threads already fill the cores: BLAS threads on top would oversubscribe them (measured:
     # 1.7x more cases/s on 2 cores with BLAS limited to one thread inside the pool).
-    with (
-        threadpool_limits(limits=1, user_api="blas"),
-        ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool,
-    ):
-        parts = list(pool.map(run, chunks))
+    with threadpool_limits(limits=1, user_api="blas"):
+        if threads == 1:
+            parts = [run(c) for c in chunks]
+        else:
+            with ThreadPoolExecutor(max_workers=threads) as pool:
+                parts = list(pool.map(run, chunks))
     q_out = np.empty_like(q)
     conv, div = np.zeros(n, bool), np.zeros(n, bool)
     state = None
