@@ -232,7 +232,8 @@ class CylindricalKernel(KernelBase):
         """Small-batch path: δ = q Gᵀ + δ₀ per slice, f = −q_s G, J = −Gᵀ diag(q_s′) G."""
         delta = q @ self.G[0].T + self.delta0_flat
         np.maximum(delta, 0.0, out=delta)
-        t = delta ** (1.0 / 9.0)
+        t = np.cbrt(delta)
+        np.cbrt(t, out=t)
         load = delta * t
         load *= self.c_s[0]
         t *= (10.0 / 9.0) * self.c_s[0]
@@ -264,10 +265,10 @@ class CylindricalKernel(KernelBase):
         delta = b[ci, zi, None] * (self.x[ci] if self.x.shape[0] > 1 else self.x[0])
         delta += a[ci, zi, None]
         delta += self.delta0[ci] if self.delta0.shape[0] > 1 else self.delta0[0]
-        closed = delta > 0.0
-        delta[~closed] = 0.0
-        t = np.zeros_like(delta)
-        t[closed] = delta[closed] ** (1.0 / 9.0)
+        np.maximum(delta, 0.0, out=delta)
+        # δ^(1/9) as two cube roots: ~3x faster than a float power and exact at δ = 0.
+        t = np.cbrt(delta)
+        np.cbrt(t, out=t)
         c_s = self.c_s[ci] if self.c_s.shape[0] > 1 else self.c_s[0]
         load = delta * t
         load *= c_s  # q = c_s δ^(10/9)
