@@ -226,6 +226,18 @@ def test_result_exports(composite):
     )
 
 
+def test_row_loads_balance_the_external_load(composite):
+    load = eccentric_axial_load(np.array([3000.0, 5000.0]), 0.2, radial_load=3000.0)
+    res = solve(composite, load)
+    total = sum(res.row_load(r.name) for r in composite.rows)
+    scale = np.abs(load).max()
+    assert np.abs(total - load).max() <= 1e-8 * scale
+    entries = res.to_dict()
+    assert [e["rows"][0]["axial_load_N"] for e in entries] == list(res.row_load(composite.rows[0].name)[:, 2])
+    with pytest.raises(InputError, match="not in result"):
+        res.row_load("no_such_row")
+
+
 def test_raceway_shift_moves_the_solution_rigidly():
     from bearingkit.rows.base import RacewayOffset
 

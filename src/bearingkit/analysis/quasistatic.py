@@ -110,6 +110,7 @@ class QuasiStaticResult:
     references: tuple = field(default_factory=tuple)
     offsets: list | None = field(default=None, repr=False)
     _rows: list | None = field(default=None, repr=False)
+    _row_loads: dict = field(default_factory=dict, repr=False)
 
     @property
     def rows(self) -> list[RowState]:
@@ -153,6 +154,7 @@ class QuasiStaticResult:
             "rows": [],
         }
         for r in self.rows:
+            row_force = self.row_load(r.name)[case]
             entry = {
                 "name": r.name,
                 "kind": r.kind,
@@ -162,8 +164,8 @@ class QuasiStaticResult:
                 "max_load_N": float(r.max_load[case]),
                 "max_pressure_Pa": float(r.max_pressure[case].max()),
                 "loaded_count": int(r.loaded_count[case]),
-                "axial_load_N": float(self.row_load(r.name)[case, 2]),
-                "radial_load_N": float(np.hypot(*self.row_load(r.name)[case, :2])),
+                "axial_load_N": float(row_force[2]),
+                "radial_load_N": float(np.hypot(*row_force[:2])),
             }
             out["rows"].append(entry)
         out["references"] = list(self.references)
@@ -171,9 +173,14 @@ class QuasiStaticResult:
 
     def row_load(self, name: str) -> np.ndarray:
         """Force and moment (C, 5) the row carries (= −contact force on the inner ring), SI."""
-        i = [r.name for r in self.model.rows].index(name)
-        offset = self.offsets[i] if self.offsets else None
-        return -self.model.kernels[i].response(self.displacement, offset).force
+        if name not in self._row_loads:  # computed once per row: to_dict asks per case
+            names = [r.name for r in self.model.rows]
+            if name not in names:
+                raise InputError(f"row ({name!r}) not in result; rows are {names}")
+            i = names.index(name)
+            offset = self.offsets[i] if self.offsets else None
+            self._row_loads[name] = -self.model.kernels[i].response(self.displacement, offset).force
+        return self._row_loads[name]
 
     def to_pandas(self):
         """One line per case, row and element: load, contact angle, max pressure (SI columns)."""
