@@ -24,7 +24,7 @@ import numpy as np
 
 from bearingkit import references
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281, iso16281
+from bearingkit.physics import iso76, iso281, iso281_life, iso16281
 
 if TYPE_CHECKING:
     from bearingkit.analysis.rating import RatingOptions
@@ -218,11 +218,11 @@ def _assemble(
         nu = as_lubricant(opts.lubricant).kinematic_viscosity(opts.temperature_C)
         dm = np.asarray(row.pitch_diameter if pitch_diameter is None else pitch_diameter, float)
         kappa = iso281.viscosity_ratio(nu, opts.speed, dm) * ones
-        kappa_low = kappa < iso281.KAPPA_MIN
+        kappa_low = kappa < iso281_life.KAPPA_MIN
         cu = iso281.fatigue_load_limit_estimate(c0_arr, dm, element)
         p_safe = np.where(life_mask, c_arr, np.ma.getdata(p_ref))
         a = iso281.life_modification_factor(
-            np.maximum(kappa, iso281.KAPPA_MIN), opts.contamination_factor, cu, p_safe, aiso_kind
+            np.maximum(kappa, iso281_life.KAPPA_MIN), opts.contamination_factor, cu, p_safe, aiso_kind
         )
         a_iso = _masked(a, life_mask | kappa_low)
     a1 = float(iso281.reliability_factor(opts.reliability))
@@ -252,7 +252,8 @@ def _assemble(
                 "largest slice pressure; the slice model does not resolve the edge stress peak"
             )
         if kappa_low[k] and loaded[k]:
-            w.append(f"viscosity ratio kappa below {iso281.KAPPA_MIN:g}: a_ISO not defined (ISO 281 9.3.3)")
+            kmin = iso281_life.KAPPA_MIN
+            w.append(f"viscosity ratio kappa below {kmin:g}: a_ISO not defined (ISO 281 9.3.3)")
         warnings.append(w)
     return RowRating(
         name=row.name,
