@@ -166,20 +166,9 @@ def cylindrical_roller(
     name: str = "cylindrical roller bearing",
 ) -> BearingModel:
     """Radial cylindrical roller bearing (rollers sliced; carries F_x, F_y and, through the slices, M)."""
-    row = CylindricalRow(
-        n_elements=n_elements,
-        element_diameter=element_diameter,
-        effective_length=effective_length,
-        pitch_diameter=pitch_diameter,
-        orientation="radial",
-        clearance=clearance_radial,
-        n_slices=n_slices,
-        profile=profile,
-        line_law=line_law,
-        e_reduced=e_reduced_of(material),
-        name="rollers",
-    )
-    return BearingModel((row,), name=name, references=("harris2007", "kunert1961"))
+    row = dict(n_elements=n_elements, element_diameter=element_diameter, effective_length=effective_length)
+    row |= dict(pitch_diameter=pitch_diameter, n_slices=n_slices, profile=profile, line_law=line_law)
+    return _roller_bearing(row, "radial", clearance_radial, material, name)
 
 
 def cylindrical_roller_thrust(
@@ -195,16 +184,14 @@ def cylindrical_roller_thrust(
     name: str = "cylindrical roller thrust bearing",
 ) -> BearingModel:
     """Single-direction cylindrical roller thrust bearing carrying +F_z (and moments with it)."""
-    row = CylindricalRow(
-        n_elements=n_elements,
-        element_diameter=element_diameter,
-        effective_length=effective_length,
-        pitch_diameter=pitch_diameter,
-        orientation="thrust_up",
-        n_slices=n_slices,
-        profile=profile,
-        line_law=line_law,
-        e_reduced=e_reduced_of(material),
-        name="rollers",
+    row = dict(n_elements=n_elements, element_diameter=element_diameter, effective_length=effective_length)
+    row |= dict(pitch_diameter=pitch_diameter, n_slices=n_slices, profile=profile, line_law=line_law)
+    return _roller_bearing(row, "thrust_up", 0.0, material, name)
+
+
+def _roller_bearing(row: dict, orientation: str, clearance: float, material, name: str) -> BearingModel:
+    """One sliced cylindrical roller row called ``rollers``: the radial and the thrust bearing alike."""
+    rollers = CylindricalRow(
+        **row, orientation=orientation, clearance=clearance, e_reduced=e_reduced_of(material), name="rollers"
     )
-    return BearingModel((row,), name=name, references=("harris2007", "kunert1961"))
+    return BearingModel((rollers,), name=name, references=("harris2007", "kunert1961"))
