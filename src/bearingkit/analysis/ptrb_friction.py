@@ -17,14 +17,13 @@ References: ``zheng2022``, ``zheng2021``, plus those of :mod:`bearingkit.physics
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
-from bearingkit.physics import friction_components as fc
 from bearingkit.physics import ptrb_friction as pf
 from bearingkit.physics import ptrb_rating as pr
 from bearingkit.rows.threaded import PTRBGeometry, axial_tooth_distribution, radial_roller_distribution
@@ -76,23 +75,31 @@ class PTRBFrictionParameters:
     journal_ratio : float [1]
         Journal diameter / d_R.
     viscous_model : str
-        EHL rolling-resistance model (``houpert`` or ``fujiwara``).
+        EHL rolling-resistance model, one of :data:`~bearingkit.physics.ptrb_friction.VISCOUS_MODELS`
+        (``harris``, the default; ``houpert`` or ``fujiwara``).
+    convention : str
+        ``power`` (default) or ``paper`` (:data:`~bearingkit.physics.ptrb_friction.CONVENTIONS`).
+    viscous_projection : str
+        ``eq13`` (default) or ``power``
+        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_PROJECTIONS`).
     """
 
     traction: float = pf.CONTACT_TRACTION_CALIBRATED
     hysteresis: float = pf.HYSTERESIS_PTRB
     carrier_friction: float = pf.CARRIER_FRICTION
     journal_ratio: float = pf.JOURNAL_DIAMETER_RATIO
-    viscous_model: str = "houpert"
+    viscous_model: str = "harris"
     convention: str = "power"
+    viscous_projection: str = "eq13"
 
     def __post_init__(self):
         checks.one_of("convention", self.convention, pf.CONVENTIONS)
+        checks.one_of("viscous_projection", self.viscous_projection, pf.VISCOUS_PROJECTIONS)
         checks.non_negative("traction", self.traction)
         checks.non_negative("hysteresis", self.hysteresis)
         checks.non_negative("carrier_friction", self.carrier_friction)
         checks.in_range("journal_ratio", self.journal_ratio, 0.0, 1.0, closed=False)
-        checks.one_of("viscous_model", self.viscous_model, fc.VISCOUS_POINT_MODELS)
+        checks.one_of("viscous_model", self.viscous_model, pf.VISCOUS_MODELS)
 
 
 @dataclass(frozen=True)
@@ -192,6 +199,7 @@ def _sum_contacts(geom: dict, loads_in, loads_out, weights, speed, params, visco
             hysteresis=params.hysteresis,
             viscous_model=params.viscous_model,
             convention=params.convention,
+            viscous_projection=params.viscous_projection,
         )
         comps[side] = {k: (v * weights).sum(axis=-1) for k, v in t.items()}
     return comps
@@ -300,23 +308,26 @@ def ptrb_friction(
     )
 
 
-def calibrate_contact_traction(geometry: PTRBGeometry | None = None, convention: str = "power") -> float:
+def calibrate_contact_traction(
+    geometry: PTRBGeometry | None = None,
+    convention: str = "power",
+    parameters: PTRBFrictionParameters | None = None,
+) -> float:
     """Recompute :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED` [1].
 
     The torque is affine in μ_c (spin and differential sliding ∝ μ_c, the rest independent of it), so
     two evaluations at :data:`CALIBRATION_POINT` give the μ_c that reproduces 0.476 N·m exactly.
+    ``parameters`` (its ``traction`` ignored) sets the other model choices; ``convention`` overrides
+    its convention.
     """
     from bearingkit.bearings.ptrb import ptrb_prototype
 
     g = geometry or ptrb_prototype()
+    base = replace(parameters or PTRBFrictionParameters(), convention=convention)
     p = CALIBRATION_POINT
     args = (g, p["load_N"], p["speed_rpm"] * RPM, p["case"])
-    m0 = float(
-        ptrb_friction(*args, parameters=PTRBFrictionParameters(traction=0.0, convention=convention)).torque
-    )
-    m1 = float(
-        ptrb_friction(*args, parameters=PTRBFrictionParameters(traction=1.0, convention=convention)).torque
-    )
+    m0 = float(ptrb_friction(*args, parameters=replace(base, traction=0.0)).torque)
+    m1 = float(ptrb_friction(*args, parameters=replace(base, traction=1.0)).torque)
     return (p["torque_Nm"] - m0) / (m1 - m0)
 
 

@@ -30,6 +30,7 @@ __all__ = [
     "table3_comparison",
     "table4_sweep",
     "table5_sweep",
+    "table6_at_published_designs",
 ]
 
 MM = 1.0e-3
@@ -291,3 +292,37 @@ def nearest_table6(objectives: dict, case: str = "axial") -> pd.DataFrame:
             )
         )
     return pd.DataFrame(rows)
+
+
+def table6_at_published_designs() -> pd.DataFrame:
+    """Table 6 recomputed at the PUBLISHED design variables of each point (no optimiser involved).
+
+    The friction model's own check of §6: α, n, R_rr, d_R of xa1, xa2, xr1, xr2 and the prototype (D_pw,
+    n·P = 12 mm and Z = 11 held, as :func:`bearingkit.analysis.ptrb_friction.ptrb_objectives`), at the §6
+    operating point (20 kN, 4000 rpm). Columns: ``point``, computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N,
+    mu_r``, the published values (``*_pub``) and relative errors (``*_err``).
+    """
+    from bearingkit.analysis.ptrb_friction import ptrb_objectives
+
+    names = list(TABLE6)
+    x = [TABLE6[k] for k in names]
+    design = (
+        np.radians([p["alpha_deg"] for p in x]),
+        [p["n"] for p in x],
+        [p["R_rr_mm"] * MM for p in x],
+        [p["d_R_mm"] * MM for p in x],
+    )
+    ax, ra = ptrb_objectives(*design, case="axial"), ptrb_objectives(*design, case="radial")
+    out = pd.DataFrame({"point": names})
+    cols = {
+        "C0a_N": (ax["C0a"], "C0a_kN", KN),
+        "Ca_N": (ax["Ca"], "Ca_kN", KN),
+        "mu_a": (ax["mu"], "mu_a_1e3", 1e-3),
+        "C0r_N": (ra["C0r"], "C0r_kN", KN),
+        "Cr_N": (ra["Cr"], "Cr_kN", KN),
+        "mu_r": (ra["mu"], "mu_r_1e3", 1e-3),
+    }
+    for col, (val, key, factor) in cols.items():
+        pub = np.array([TABLE6_OBJECTIVES[k][key] * factor for k in names])
+        out[col], out[f"{col}_pub"], out[f"{col}_err"] = val, pub, val / pub - 1.0
+    return out

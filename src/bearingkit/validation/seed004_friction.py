@@ -2,20 +2,22 @@
 
 SI values (N·m). Model: :func:`bearingkit.analysis.ptrb_friction.ptrb_friction` with its defaults
 (prototype of Table 1, flat ring flanks, L-AN oil η₀ = 0.04 Pa·s, α = 2.46e-8 1/Pa, power convention,
-Houpert EHL rolling resistance, uniform tooth shares, roller 0 under the radial load).
+Harris EHL rolling resistance added to eq. (13) as printed ("eq13"), uniform tooth shares, roller 0
+under the radial load).
 
 ONE number is calibrated: the contact traction μ_c, against ``seed004/table7/axial/20kN`` (0.476 N·m),
-see :data:`bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED`. All other cases follow.
+see :data:`bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED`. Nothing in the viscous
+(speed-dependent) term is fitted. All other cases follow: Table 7 within 5.3 %, Table 8 within 3.6 %.
 Tolerance 0.15 (the task's; the paper's own test/simulation deviation is up to 0.1 N·m, i.e. 20–50 %).
 
-Known deviations (stated per case):
+Known deviations (stated per case) are all in Table 5 (20 kN, 4000 rpm, one design parameter changed):
 
-* low load (1–2 kN) and high speed: the speed-dependent (viscous) part is under-predicted. Houpert's
-  EHL rolling resistance gives about 60 % of the paper's speed slope (Table 8: +0.035 N·m from 600 to
-  2000 rpm at 2 kN, bearingkit +0.02 N·m); the paper's M_v formula (Zheng et al. 2021) is not printed.
-* Table 5 (4000 rpm): the same speed effect, plus trends bearingkit does not reproduce (α and n under
-  axial load, d_R under both loads: the power balance makes the torque fall with d_R because the
-  roller's relative angular speed ΔΩ/ω ∝ (1 + d_I/d_R) falls).
+* d_R and α under axial load: the trend is opposite. bearingkit turns contact moments into bearing
+  torque by the power balance, whose factor ΔΩ/ω ∝ 1 + d_I/d_R falls as d_R grows; the paper's eq.
+  (13)–(15) sum contact moments without it. Under axial load a larger α lowers Q = F/(Z n sin α) and
+  the viscous force (R_x ∝ 1/cos α enters F_v as R_x^-1.6).
+* R_rr (and α under radial load) act too strongly: Harris's rolling resistance carries R_y² = R_rr²
+  (flat ring flanks), so F_v triples from R_rr = 4.5 to 7.5 mm where the paper's torque rises 13 %.
 """
 
 from __future__ import annotations
@@ -58,40 +60,34 @@ TABLE5 = {
     "n_elements": ((7, 11), "1", (0.699, 0.689), (0.932, 0.890)),
 }
 
-_LOW_LOAD = (
-    "under-predicted at low load: the speed-dependent viscous part (Houpert EHL rolling resistance) is "
-    "~60 % of the paper's (its M_v formula, Zheng 2021, is not printed) and the load-independent part "
-    "the paper has at 1 kN is missing"
+_T5_DR = (
+    "trend opposite (paper: torque rises with d_R): bearingkit's power balance weights every contact "
+    "moment by the relative angular speed of roller and ring, dOmega/omega ~ 1 + d_I/d_R, which falls "
+    "as d_R grows; the paper's eq. (13)-(15) sum contact moments without it"
 )
-_SPEED = (
-    "under-predicted at high speed / low load: Houpert's EHL rolling resistance gives ~60 % of the "
-    "paper's speed slope (the paper's M_v formula, Zheng 2021, is not printed)"
+_T5_ALPHA_AX = (
+    "trend opposite under axial load (paper: +4.5 % from 30 to 60 deg): the contact load "
+    "F/(Z n sin alpha) and Harris's viscous force (R_x ~ 1/cos alpha, F_v ~ R_x^-1.6) both fall with alpha"
 )
-_T5_SPEED = "4000 rpm: the speed-dependent viscous part is under-predicted (see Table 8 cases)"
-_T5_TREND = (
-    "trend not reproduced: bearingkit's power balance weights spin by ΔΩ/ω ∝ 1 + d_I/d_R and Q^(4/3) "
-    "sums fall with more contacts, while the paper's torque rises with α, n (axial) and d_R"
+_T5_ALPHA_RA = (
+    "alpha acts too strongly under radial load (paper +67 %, bearingkit +120 % from 30 to 60 deg): the "
+    "radial contact load F_r share/(2n cos alpha) grows with alpha and Harris's F_v with it"
+)
+_T5_RRR = (
+    "R_rr acts too strongly (paper +11-13 %, bearingkit +67-82 % from 4.5 to 7.5 mm): Harris's rolling "
+    "resistance carries R_y^2 = R_rr^2 with flat ring flanks, the paper's torque hardly feels R_rr"
 )
 #: Cases whose computed value misses the tolerance, with their cause.
 KNOWN_DEVIATIONS = {
-    "seed004/table7/axial/1kN": _LOW_LOAD,
-    "seed004/table7/radial/1kN": _LOW_LOAD,
-    **{f"seed004/table8/axial/2kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS},
-    **{f"seed004/table8/radial/2kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS},
-    **{f"seed004/table8/axial/5kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS[2:]},
-    **{f"seed004/table8/radial/5kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS[3:]},
-    **{f"seed004/table8/axial/8kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS[5:]},
-    **{f"seed004/table8/radial/8kN/{s}rpm": _SPEED for s in TABLE8_SPEEDS[7:]},
-    "seed004/table5/contact_angle/60deg/axial": _T5_TREND,
-    "seed004/table5/contact_angle/30deg/radial": _T5_SPEED + "; the α effect under radial load is too strong",
-    "seed004/table5/contact_angle/60deg/radial": _T5_SPEED + "; the α effect under radial load is too strong",
-    "seed004/table5/n_teeth/16/axial": _T5_TREND,
-    "seed004/table5/n_teeth/16/radial": _T5_SPEED,
-    "seed004/table5/roller_contact_radius/4.5mm/axial": _T5_SPEED,
-    "seed004/table5/roller_contact_radius/7.5mm/axial": _T5_SPEED,
-    "seed004/table5/roller_pitch_diameter/7.2mm/axial": _T5_TREND,
-    "seed004/table5/roller_pitch_diameter/7.2mm/radial": _T5_TREND,
-    "seed004/table5/n_elements/11/axial": _T5_SPEED,
+    "seed004/table5/contact_angle/30deg/axial": _T5_ALPHA_AX,
+    "seed004/table5/contact_angle/60deg/axial": _T5_ALPHA_AX,
+    "seed004/table5/contact_angle/60deg/radial": _T5_ALPHA_RA,
+    "seed004/table5/roller_contact_radius/7.5mm/axial": _T5_RRR,
+    "seed004/table5/roller_contact_radius/7.5mm/radial": _T5_RRR,
+    "seed004/table5/roller_pitch_diameter/4.8mm/axial": _T5_DR,
+    "seed004/table5/roller_pitch_diameter/7.2mm/axial": _T5_DR,
+    "seed004/table5/roller_pitch_diameter/4.8mm/radial": _T5_DR,
+    "seed004/table5/roller_pitch_diameter/7.2mm/radial": _T5_DR,
 }
 
 
