@@ -129,8 +129,9 @@ CONVENTIONS = ("paper", "power")
 #:
 #: With Harris's rolling resistance, L-AN oil as printed (η₀ = 0.04 Pa·s, α = 2.46e-8 1/Pa) and
 #: nothing fitted, ``"eq13"`` reproduces the speed dependence of Tables 7–8 (a free least-squares
-#: factor on F_v over all 62 simulation values comes out 1.41 = 1/cos 45°); ``"power"`` gives 71 % of
-#: the paper's speed slope. See ``docs/ptrb_friction.md``.
+#: factor on F_v, fitted with μ_c over all 62 simulation values, comes out 1.01); ``"power"`` gives
+#: 71 % of the paper's speed slope (its free factor would be 1.41 = 1/cos 45°). See
+#: ``docs/ptrb_friction.md``.
 VISCOUS_PROJECTIONS = ("eq13", "power")
 #: Names of the friction components, in the order of Zheng et al. (2022) eq. (13) + the carrier.
 COMPONENTS = ("elastic", "spin", "differential", "viscous")
