@@ -312,3 +312,19 @@ def test_deep_groove_ball_bearing_carries_axial_load_through_its_contact_angle()
     alpha = res.rows[0].contact_angle[0]
     assert alpha.max() > np.deg2rad(5)  # the free contact angle opened by the axial load
     np.testing.assert_allclose(res.row_load("balls")[0, 2], 1000.0, rtol=1e-8)
+
+
+def test_per_case_clearance_batch_equals_single_solves():
+    """Cases with their own clearance: the batch (which narrows to small subsets) = separate solves."""
+    from bearingkit.bearings.standard import cylindrical_roller
+
+    kw = dict(n_elements=16, element_diameter=0.012, effective_length=0.012, pitch_diameter=0.1, n_slices=8)
+    clearances = np.array([0.0, 100e-6, -5e-6])  # case 1 converges last, alone
+    batch = cylindrical_roller(clearance_radial=clearances, **kw)
+    load = load_vector(F_x=np.array([20e3, 20e3, 2e3]))
+    res = solve(batch, load)
+    assert res.converged.all()
+    for k, c in enumerate(clearances):
+        one = solve(cylindrical_roller(clearance_radial=float(c), **kw), load[k : k + 1])
+        np.testing.assert_allclose(res.displacement[k], one.displacement[0], rtol=1e-8, atol=1e-12)
+        np.testing.assert_allclose(res.rows[0].load[k], one.rows[0].load[0], rtol=1e-8, atol=1e-6)

@@ -153,7 +153,7 @@ class CylindricalKernel(KernelBase):
     the 5-DOF directions are per roller, not per slice.
     """
 
-    _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "c_s", "x", "X2", "X3")
+    _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "delta0_flat", "c_s", "x", "X2", "X3")
 
     def __init__(self, row: CylindricalRow):
         from bearingkit.physics import hertz
@@ -193,7 +193,9 @@ class CylindricalKernel(KernelBase):
         drop = np.zeros_like(x) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
         gap = np.asarray(row.clearance, dtype=float).reshape(-1, 1) / 2
         self.delta0 = -gap - 2.0 * drop  # (C|1, n_s), the same for every roller
-        self.delta0_flat = np.tile(self.delta0[0], z_el)[None, :]  # (1, M), slice order of G
+        # (C|1, M) in the slice order of G; per case, so the small-batch path of a subset of cases keeps
+        # each case's clearance.
+        self.delta0_flat = np.tile(self.delta0, (1, z_el))
         # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
         k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
         if row.pairing == "series":
