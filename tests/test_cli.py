@@ -61,6 +61,23 @@ def test_analyze_load_options_replace_the_cases():
     assert case["displacement"]["u_z_m"] == pytest.approx(ref["displacement"]["u_z_m"], rel=1e-12)
 
 
+def test_analyze_ball_column_carries_the_flexible_ring_solution():
+    path = str(EXAMPLES / "ball_column_condition1.toml")
+    (case,) = _json(runner.invoke(app, ["analyze", path, "--json"]))["cases"]
+    flex = case["flexible"]
+    assert flex["converged"] is True and flex["case"] == case["case"]
+    # both solutions carry the same external radial load; the flexible ring moves load off the rollers
+    for solution in (case, flex):
+        total = sum(r["radial_load_N"] for r in solution["rows"] if r["kind"] == "cylindrical")
+        assert total <= case["load"]["F_x_N"] * (1 + 1e-9)
+    rigid = {r["name"]: r for r in case["rows"]}["roller_2"]["radial_load_N"]
+    flexible = {r["name"]: r for r in flex["rows"]}["roller_2"]["radial_load_N"]
+    assert flexible < rigid
+    assert len(flex["ring"]["bending_deflection_m"]) == len(flex["ring"]["shape_azimuth_rad"])
+    table = runner.invoke(app, ["analyze", path])
+    assert table.exit_code == 0 and "flexible outer ring" in table.stdout
+
+
 def test_analyze_table_output():
     result = runner.invoke(app, ["analyze", str(EXAMPLES / "dgbb_6209.toml")])
     assert result.exit_code == 0, result.stderr

@@ -128,15 +128,35 @@ def analyze(
     bearing = _load_bearing(file, load, case)
     result = bearing.solve()
     data = export.analysis_dict(bearing, result)
+    flex = _flexible_ring(bearing)
+    if flex is not None:  # the flexible-ring solution beside the rigid-ring one, per case
+        for i, c in enumerate(data["cases"]):
+            c["flexible"] = flex.to_dict(i) | {"case": c["case"]}
     if as_json:
         _print_json(file, data)
     else:
         console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
         for c in data["cases"]:
             console.print(case_table(c))
+            if "flexible" in c:
+                how = c["flexible"]["coupling"]
+                console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
+                console.print(case_table(c["flexible"]))
     if not result.converged.all():
         bad = [c for c in data["cases"] if not c["converged"]]
         _fail(f"{file}: load case {bad[0]['case']!r} did not converge: {bad[0]['reason']}", 1)
+    if flex is not None and not flex.converged.all():
+        bad = [c for c in data["cases"] if not c["flexible"]["converged"]]
+        _fail(f"{file}: load case {bad[0]['case']!r}: the flexible-ring coupling did not converge", 1)
+
+
+def _flexible_ring(bearing):
+    """The coupled flexible-ring solution of a ball–column file ([geometry.ring] flexible), else None."""
+    if bearing.bearing_type != "ball_column":
+        return None
+    from bearingkit.bearings.ball_column import solve_flexible_input
+
+    return solve_flexible_input(bearing)
 
 
 def _load_bearing(file: Path, load: list[str] | None, case: list[str] | None):

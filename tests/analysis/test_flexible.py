@@ -1,10 +1,11 @@
-"""Coupled flexible-ring solve: rigid limit, convergence diagnostics, bad input."""
+"""Coupled flexible-ring solve: rigid limit, Newton with ovalisation, Jacobian, outputs, bad input."""
 
 import numpy as np
 import pytest
 
+from bearingkit.analysis import flexible as flex_mod
 from bearingkit.analysis.flexible import solve_flexible
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.ball_column import BallColumnGeometry, ball_column, outer_ring
 from bearingkit.errors import InputError
 from bearingkit.rings.flexible import FlexibleOuterRing
@@ -15,13 +16,13 @@ MODEL = ball_column(G)
 LOADS = load_vector(F_x=[5000.0, 20000.0], F_z=[0.0, 3000.0])
 
 
-@pytest.mark.parametrize("bending", [True, False])
-def test_rigid_limit_equals_engine(bending):
+@pytest.mark.parametrize("bending,method", [(True, "newton"), (False, "newton"), (False, "aitken")])
+def test_rigid_limit_equals_engine(bending, method):
     rigid = solve(MODEL, LOADS)
     stiff = FlexibleOuterRing(
         RingSection(1e3, 1.0, 0.075, 0.198, 1e3), support_positions=(-0.025, 0.025), bending=bending
     )
-    flex = solve_flexible(MODEL, LOADS, stiff)
+    flex = solve_flexible(MODEL, LOADS, stiff, method=method)
     assert flex.converged.all()
     assert np.allclose(flex.result.displacement, rigid.displacement, rtol=1e-9, atol=1e-9 * 1e-5)
     for name in ("ball_1", "roller_2", "ball_3"):
@@ -61,8 +62,92 @@ def test_bad_input():
     with pytest.raises(InputError, match="support span"):
         FlexibleOuterRing(sec, support_positions=(-0.05, 0.05))
     with pytest.raises(InputError, match="method"):
-        solve_flexible(MODEL, LOADS, outer_ring(G), method="newton")
+        solve_flexible(MODEL, LOADS, outer_ring(G), method="secant")
     with pytest.raises(InputError, match="relaxation"):
         solve_flexible(MODEL, LOADS, outer_ring(G), relaxation=1.5)
     with pytest.raises(InputError, match="youngs_modulus"):
         FlexibleOuterRing(sec, youngs_modulus=-1.0)
+
+
+CONDITIONS = load_vector(F_x=[20e3, 30e3, 13.5e3], F_z=[0.0, 20e3, 0.0])  # seed 002 Table 2
+
+
+def test_newton_converges_with_ovalisation_where_fixed_points_diverge():
+    """Beam + thin-ring ovalisation of the seed-002 ring, conditions 1–3: Newton converges (measured
+    6–8 iterations), the relaxed fixed points blow up (the ring is ~2,500x softer than the contacts)."""
+    ring = outer_ring(G, bending=True)
+    flex = solve_flexible(MODEL, CONDITIONS, ring)
+    assert flex.converged.all() and (flex.iterations <= 12).all()
+    # The solution is a fixed point: the offsets are what the ring does under the final element loads.
+    again = ring.offsets(MODEL, flex.result)
+    for name, off in flex.offsets.items():
+        assert np.allclose(
+            off.radial, again[name].radial, rtol=0, atol=1e-11 + 1e-8 * np.abs(off.radial).max()
+        )
+    total = sum(flex.row_load(n) for n in ("ball_1", "roller_2", "ball_3"))
+    assert np.allclose(total[:, :3], CONDITIONS[:, :3], rtol=1e-8, atol=1e-6)
+    # Ovalisation under a radial load along +x: the ring bulges out at ψ = 0 and moves in at ±90°.
+    w = flex.deflection_shape(np.array([0.0, np.pi / 2, -np.pi / 2]))
+    assert (w[:, 0] > 0).all() and (w[:, 1] < 0).all() and np.allclose(w[:, 1], w[:, 2], rtol=1e-6)
+    for method in ("aitken", "relaxed"):
+        other = solve_flexible(MODEL, CONDITIONS, ring, method=method, max_iterations=20)
+        assert not other.converged.any()
+
+
+def test_fixed_point_jacobian_matches_engine_differences():
+    """∂T/∂x assembled from fixed-q differences + the contact symmetry ∂f/∂w_j = ∂P_j/∂q equals central
+    differences of T through full engine solves (small bearing, so the check stays fast)."""
+    g = BallColumnGeometry(n_balls=24, n_rollers=24, n_slices=4)
+    model = ball_column(g)
+    load = load_vector(F_x=20e3, F_z=3e3)
+    ring = outer_ring(g, bending=True)
+    opts = SolverOptions(rtol=1e-14, max_iterations=100)
+    flex = solve_flexible(model, load, ring, max_iterations=2, options=opts)
+    layout = flex_mod._layout(ring, model)
+    _, names, sizes = layout
+    length = ring.section.centroid_radius
+    x = flex_mod._pack(ring, names, flex.offsets, length, 1)
+    res = flex.result
+    cmat = ring.bending_matrix(ring.ring_loads(model, res).azimuth)
+    jac = flex_mod._fixed_point_jacobian(model, ring, res, x, layout, length, None, cmat)
+
+    def t_of(xx):
+        offsets = flex_mod._unpack(ring, names, sizes, xx, length)
+        r = solve(model, load, displacement=res.displacement, options=opts, raceway_offsets=offsets)
+        return flex_mod._pack(ring, names, ring.offsets(model, r), length, 1)
+
+    h = 1e-8
+    for j in (0, 24, 30, 48):  # loaded elements of ball_1, roller_2 (two) and ball_3
+        e = np.zeros_like(x)
+        e[0, j] = h
+        col = (t_of(x + e) - t_of(x - e))[0] / (2 * h)
+        assert np.abs(col).max() > 1.0
+        assert np.allclose(jac[0, :, j], col, rtol=0, atol=1e-5 * np.abs(col).max())
+
+
+def test_to_dict_is_json_with_shares_and_ring_shape():
+    from bearingkit.io.export import non_finite_paths, to_json
+
+    ring = outer_ring(G, bending=True)
+    flex = solve_flexible(MODEL, CONDITIONS[:2], ring)
+    data = flex.to_dict()
+    assert len(data) == 2 and non_finite_paths(data) == []
+    to_json(data)  # strict JSON
+    for c, d in enumerate(data):
+        assert d["converged"] and d["coupling"]["method"] == "newton"
+        rows = {r["name"]: r for r in d["rows"]}
+        assert sum(r["radial_share"] for r in rows.values()) == pytest.approx(1.0)
+        radial = {n: np.hypot(*flex.row_load(n)[c, :2]) for n in rows}
+        assert rows["roller_2"]["radial_share"] == pytest.approx(radial["roller_2"] / sum(radial.values()))
+        assert rows["ball_1"]["loaded_count"] == int(flex.row("ball_1").loaded_count[c])
+        assert len(rows["roller_2"]["raceway_radial_offset_m"]) == G.n_rollers
+        shape = np.array(d["ring"]["bending_deflection_m"])
+        assert shape.shape == (flex_mod.SHAPE_POINTS,)
+        # The housing takes the n = 0, 1 harmonics: the bending shape has no mean and no cos/sin ψ part.
+        theta = np.array(d["ring"]["shape_azimuth_rad"])
+        for basis in (np.ones_like(theta), np.cos(theta), np.sin(theta)):
+            assert abs(np.mean(shape * basis)) < 1e-3 * np.abs(shape).max()  # 72-point quadrature
+    # Condition 2 (F_a = 20 kN toward +z): row 3 carries most of the axial load.
+    assert {r["name"]: r["axial_share"] for r in data[1]["rows"]}["ball_3"] > 0.5
+    rigid = solve_flexible(MODEL, CONDITIONS[:1], outer_ring(G, compliance_scale=0.0)).to_dict(0)
+    assert rigid["ring"]["flexural_rigidity_Nm2"] is None  # ∞ is not JSON

@@ -1,33 +1,84 @@
-"""Seed-002 ball–column bearing: examples load, rigid counts, outputs, bad input."""
+"""Seed-002 ball–column bearing: examples (common input format), rigid counts, ring options, bad input."""
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.bearings.ball_column import ROWS, BallColumnGeometry, ball_column, load_example, outer_ring
+from bearingkit.bearings.ball_column import (
+    ROWS,
+    BallColumnGeometry,
+    RingOptions,
+    ball_column,
+    outer_ring_of,
+    solve_flexible_input,
+)
 from bearingkit.errors import InputError
+from bearingkit.io.loader import from_dict, load_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 @pytest.mark.parametrize("cond,fr,fa", [(1, 20e3, 0.0), (2, 30e3, 20e3), (3, 13.5e3, 0.0)])
 def test_examples_load_and_solve(cond, fr, fa):
-    g, load, ring = load_example(EXAMPLES / f"ball_column_condition{cond}.toml")
-    assert load[0] == pytest.approx(fr) and load[2] == pytest.approx(fa)
+    """The condition files are common-format inputs of type ball_column (Table 1 + Table 2)."""
+    bearing = load_file(EXAMPLES / f"ball_column_condition{cond}.toml")
+    assert bearing.bearing_type == "ball_column"
+    (case,) = bearing.cases
+    assert case.load[0] == pytest.approx(fr) and case.load[2] == pytest.approx(fa)
+    g = bearing.model.metadata["geometry"]
     assert g.n_balls == 74 and g.n_rollers == 78 and g.ball_diameter == pytest.approx(0.015)
-    res = solve(ball_column(replace_slices(g)), load)
+    assert g.support_positions == pytest.approx((-0.025, 0.025))
+    assert bearing.model.metadata["ring"] == RingOptions(flexible=True, compliance_scale=1.0, bending=True)
+    model = ball_column(replace(g, n_slices=6), ring=bearing.model.metadata["ring"])
+    res = solve(model, bearing.load_matrix())
     assert res.converged.all()
     total = sum(res.row_load(n) for n in ROWS)
-    assert np.allclose(total[0, :3], load[:3], atol=1e-6 * fr)
-    assert ring["bending"] is False
+    assert np.allclose(total[0, :3], bearing.load_matrix()[0, :3], atol=1e-6 * fr)
 
 
-def replace_slices(g):
-    from dataclasses import replace
+def test_flexible_solve_of_an_input_file():
+    bearing = load_file(EXAMPLES / "ball_column_condition1.toml")
+    g = bearing.model.metadata["geometry"]
+    bearing = replace(bearing, model=ball_column(replace(g, n_slices=6), ring=bearing.model.metadata["ring"]))
+    flex = solve_flexible_input(bearing)
+    assert flex.converged.all() and flex.ring.bending
+    assert flex.ring.support_positions == pytest.approx((-0.025, 0.025))
+    rigid = solve(bearing.model, bearing.load_matrix())
+    # §3.2: the flexible ring moves radial load from the rollers to the balls.
+    assert flex.row_load("roller_2")[0, 0] < rigid.row_load("roller_2")[0, 0]
+    off = replace(bearing, model=ball_column(replace(g, n_slices=6), ring=RingOptions(flexible=False)))
+    assert solve_flexible_input(off) is None
 
-    return replace(g, n_slices=6)
+
+def _file(**geometry):
+    return {
+        "bearing": {"type": "ball_column"},
+        "geometry": geometry,
+        "load_cases": [{"name": "c1", "F_x": "20 kN"}],
+    }
+
+
+def test_ring_options_from_the_input_format():
+    b = from_dict(
+        _file(support_positions=["-20 mm", "30 mm"], ring={"compliance_scale": 0.5, "bending": False})
+    )
+    assert b.model.metadata["geometry"].support_positions == pytest.approx((-0.02, 0.03))
+    ring = outer_ring_of(b.model)
+    assert ring.compliance_scale == 0.5 and not ring.bending and ring.beam_mode == "clearance"
+    assert ring.youngs_modulus == pytest.approx(b.material.youngs_modulus)
+    with pytest.raises(InputError, match=r"geometry\.support_positions.*support span"):
+        from_dict(_file(support_positions=["-50 mm", "50 mm"]))
+    with pytest.raises(InputError, match=r"support_positions"):
+        from_dict(_file(support_positions=["-20 mm"]))
+    with pytest.raises(InputError, match=r"geometry\.ring\.stiffness.*unknown field"):
+        from_dict(_file(ring={"stiffness": 1.0}))
+    with pytest.raises(InputError, match=r"compliance_scale"):
+        from_dict(_file(ring={"compliance_scale": -1.0}))
+    with pytest.raises(InputError, match=r"beam_mode"):
+        from_dict(_file(ring={"beam_mode": "bent"}))
 
 
 def test_rigid_roller_zone_is_half_the_rollers():
@@ -43,6 +94,16 @@ def test_bad_input():
     with pytest.raises(InputError, match="n_elements"):
         ball_column(roller_diameter=0.016)  # Table 1's Ø16 rollers do not fit 78 on the pitch circle
     with pytest.raises(InputError, match="support span"):
-        outer_ring(BallColumnGeometry(support_positions=(-0.05, 0.05)))
+        BallColumnGeometry(support_positions=(-0.05, 0.05))  # longer than the 75 mm ring
+    from bearingkit.rings.section import RingSection
+
+    with pytest.raises(InputError, match=r"area_moment \(-1e-09"):
+        RingSection(-1e-9, 5e-4, 0.075, 0.198)
+    with pytest.raises(InputError, match=r"beam_area_moment \(0"):
+        RingSection(1e-9, 5e-4, 0.075, 0.198, 0.0)
+    with pytest.raises(InputError, match="compliance_scale"):
+        RingOptions(compliance_scale=-0.1)
+    with pytest.raises(InputError, match="ring"):
+        ball_column(ring={"bending": False})
     with pytest.raises(InputError, match="clearance_ball"):
         BallColumnGeometry(clearance_ball=-1e-6)

@@ -1,63 +1,28 @@
 """Every example file loads, solves, converges and is in equilibrium; published geometry is exact.
 
-No example is skipped: every file's bearing type has a builder. The three seed-002 ball–column files
-are still in their author's layout (read by ``bearings.ball_column.load_example``); until they are
-rewritten in the common format they are converted here to type ``ball_column`` and a warning names
-them.
+No example is skipped: every file is in the common input format and its bearing type has a builder.
 """
 
 from __future__ import annotations
 
 import tomllib
-import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from bearingkit.errors import InputError
 from bearingkit.io import export
-from bearingkit.io.loader import BUILDERS, from_dict, load_file
+from bearingkit.io.loader import BUILDERS, load_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 FILES = sorted(EXAMPLES.glob("*.toml"))
-
-
-#: Keys of the seed-002 layout that ``bearingkit.bearings.ball_column.load_example`` reads ([geometry],
-#: [ring], [load]), used by the ball–column examples until they are rewritten in the common format.
-SEED002_SECTIONS = {"geometry", "ring", "load"}
 
 
 def _data(path: Path) -> dict:
     return tomllib.loads(path.read_text())
 
 
-def _is_seed002_layout(data: dict) -> bool:
-    return "bearing" not in data and set(data) <= SEED002_SECTIONS and "load" in data
-
-
-def _seed002_to_common(data: dict) -> dict:
-    """The seed-002 layout as a common-format file of type ``ball_column`` (rigid rings: [ring] dropped)."""
-    load = data["load"]
-    case = {"name": "seed002", "F_x": load.get("radial", "0 N"), "F_z": load.get("axial", "0 N")}
-    case.update({k: load[k] for k in ("speed",) if k in load})
-    if "moment" in load:
-        case["M_y"] = load["moment"]
-    return {"bearing": {"type": "ball_column"}, "geometry": data["geometry"], "load_cases": [case]}
-
-
 def _bearing(path: Path):
-    """Load an example: the common format, or (reported with a warning) the seed-002 layout converted."""
-    data = _data(path)
-    if _is_seed002_layout(data):
-        with pytest.raises(InputError, match="bearing: missing required field"):
-            load_file(path)  # load_file reports it as not (yet) in the common format
-        warnings.warn(
-            f"{path.name} is still in the seed-002 layout of bearings.ball_column.load_example, not in the "
-            "common input format; converted to type 'ball_column' for this test",
-            stacklevel=2,
-        )
-        return from_dict(_seed002_to_common(data), str(path))
     return load_file(path)
 
 
@@ -69,13 +34,12 @@ def _pitch_radius(row) -> float:
 
 def test_every_example_has_a_registered_type():
     for path in FILES:
-        data = _data(path)
-        kind = "ball_column" if _is_seed002_layout(data) else data.get("bearing", {}).get("type")
+        kind = _data(path).get("bearing", {}).get("type")
         assert kind in BUILDERS, f"{path.name}: bearing type {kind!r} has no builder"
 
 
 def test_there_are_examples_of_every_kind():
-    kinds = {"ball_column" if _is_seed002_layout(_data(f)) else _data(f)["bearing"]["type"] for f in FILES}
+    kinds = {_data(f)["bearing"]["type"] for f in FILES}
     assert kinds == set(BUILDERS)
 
 
@@ -97,14 +61,6 @@ def test_example_converges_in_equilibrium(path):
     data = export.analysis_dict(bearing, result)
     assert export.non_finite_paths(data) == []
     export.to_json(data)  # strict JSON: raises on NaN
-
-
-def test_seed002_layout_files_are_reported():
-    """Files not yet in the common format are named by a warning (never skipped silently)."""
-    legacy = [f for f in FILES if _is_seed002_layout(_data(f))]
-    for path in legacy:
-        with pytest.warns(UserWarning, match=path.name):
-            _bearing(path)
 
 
 def test_seed000_example_is_table_1():

@@ -19,20 +19,21 @@ Values the paper does not give, and the values chosen (all overridable):
 - outer ring: arc-backed section, bore = outer raceway radius (d_m + D_roller)/2, sphere radius
   = D/2; housing supports at the two ball rows (seed 002 §2.3.1: "A and B … parallel to the bearing
   centres of the first- and third-row bearings"); beam strip width π R_c/2 (assumed).
+
+Input files: ``bearing.type = "ball_column"`` (:mod:`bearingkit.io.schema`), the ring options in
+``[geometry.ring]`` (:class:`RingOptions`); :func:`solve_flexible_input` runs the coupled solve.
 """
 
 from __future__ import annotations
 
-import tomllib
-from dataclasses import dataclass, fields, replace
-from pathlib import Path
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.rings.flexible import FlexibleOuterRing
+from bearingkit.rings.flexible import BEAM_MODES, FlexibleOuterRing
 from bearingkit.rings.section import RingSection
 from bearingkit.rows.ball import BallRow
 from bearingkit.rows.cylindrical import CylindricalRow
@@ -82,6 +83,14 @@ class BallColumnGeometry:
         checks.in_range("contact_angle", self.contact_angle, 0.0, np.pi / 2, "rad", closed=False)
         checks.non_negative("clearance_ball", self.clearance_ball, "m")
         checks.non_negative("clearance_roller", self.clearance_roller, "m")
+        if self.support_positions is not None:
+            za, zb = (float(v) for v in self.support_positions)
+            half = self.width / 2
+            if not (-half - 1e-12 <= za < zb <= half + 1e-12):
+                raise checks.InputError(
+                    f"support_positions ({za:.6g}, {zb:.6g} m): the support span must lie within the ring "
+                    f"(−{half:.6g} … {half:.6g} m, width {self.width:.6g} m) with z_A < z_B"
+                )
 
     @property
     def row_spacing(self) -> float:
@@ -89,11 +98,57 @@ class BallColumnGeometry:
         return self.inner_ring_width
 
 
-def ball_column(geometry: BallColumnGeometry | None = None, *, material=None, **overrides) -> BearingModel:
-    """The seed-002 ball–column composite bearing as three rows on one rigid inner body."""
+@dataclass(frozen=True)
+class RingOptions:
+    """How the shared outer ring is modelled (input files: ``[geometry.ring]``).
+
+    Parameters
+    ----------
+    flexible : bool
+        Solve with the ring's compliance (:func:`bearingkit.analysis.flexible.solve_flexible`);
+        False: the ring is rigid.
+    compliance_scale : float [–]
+        Multiplies both compliances (≥ 0; 0 = rigid; seed 002 §3.2 varies the deflection).
+    bending : bool
+        Thin-ring ovalisation (seed 002 eqs. 7–10) on top of the beam between the supports.
+    beam_mode : str
+        How the beam deflection acts on a row (:data:`bearingkit.rings.flexible.BEAM_MODES`).
+    beam_tilt : bool
+        Apply the beam slope as a rigid raceway tilt.
+    """
+
+    flexible: bool = True
+    compliance_scale: float = 1.0
+    bending: bool = True
+    beam_mode: str = "clearance"
+    beam_tilt: bool = False
+
+    def __post_init__(self):
+        checks.non_negative("compliance_scale", self.compliance_scale)
+        checks.one_of("beam_mode", self.beam_mode, BEAM_MODES)
+        for name in ("flexible", "bending", "beam_tilt"):
+            if not isinstance(getattr(self, name), bool):
+                raise checks.InputError(f"{name} ({getattr(self, name)!r}) must be true or false")
+
+
+def ball_column(
+    geometry: BallColumnGeometry | None = None,
+    *,
+    material=None,
+    ring: RingOptions | None = None,
+    **overrides,
+) -> BearingModel:
+    """The seed-002 ball–column composite bearing as three rows on one rigid inner body.
+
+    ``ring`` (default :class:`RingOptions`) and the ring's Young's modulus (the material's, GCr15
+    when none is given) are kept in ``metadata`` for :func:`outer_ring_of`.
+    """
     g = geometry or BallColumnGeometry()
     if overrides:
         g = replace(g, **overrides)
+    ring = RingOptions() if ring is None else ring
+    if not isinstance(ring, RingOptions):
+        raise checks.InputError(f"ring ({ring!r}) must be a RingOptions")
     e_red = e_reduced_of(material)
     a = g.row_spacing
     rows = []
@@ -127,12 +182,23 @@ def ball_column(geometry: BallColumnGeometry | None = None, *, material=None, **
         (rows[0], roller, rows[1]),
         name="ball-column composite (Li et al. 2025)",
         references=("li2025", "harris2007", "kunert1961"),
-        metadata={"geometry": g, "source": "Li et al. 2025 Table 1 (+ assumed values, see module)"},
+        metadata={
+            "geometry": g,
+            "source": "Li et al. 2025 Table 1 (+ assumed values, see module)",
+            "ring": ring,
+            "ring_youngs_modulus": RING_E if material is None else float(material.youngs_modulus),
+        },
     )
 
 
 def outer_ring(
-    geometry: BallColumnGeometry | None = None, *, compliance_scale=1.0, bending=True, youngs_modulus=RING_E
+    geometry: BallColumnGeometry | None = None,
+    *,
+    compliance_scale=1.0,
+    bending=True,
+    youngs_modulus=RING_E,
+    beam_mode="clearance",
+    beam_tilt=False,
 ) -> FlexibleOuterRing:
     """The arc-backed flexible outer ring of the seed-002 bearing."""
     g = geometry or BallColumnGeometry()
@@ -140,60 +206,52 @@ def outer_ring(
     section = RingSection.arc_backed(g.width, bore_radius, g.outer_diameter / 2, beam_width=g.beam_width)
     supports = g.support_positions or (-g.row_spacing, g.row_spacing)
     return FlexibleOuterRing(
-        section, youngs_modulus, 0.0, tuple(supports), bending=bending, compliance_scale=compliance_scale
+        section,
+        youngs_modulus,
+        0.0,
+        tuple(supports),
+        bending=bending,
+        compliance_scale=compliance_scale,
+        beam_mode=beam_mode,
+        beam_tilt=beam_tilt,
     )
 
 
-#: TOML keys (section [geometry]) → (field, dimension for bearingkit.units.parse).
-_TOML_FIELDS = {
-    "n_balls": ("n_balls", None),
-    "ball_diameter": ("ball_diameter", "length"),
-    "n_rollers": ("n_rollers", None),
-    "roller_diameter": ("roller_diameter", "length"),
-    "roller_length": ("roller_length", "length"),
-    "outer_diameter": ("outer_diameter", "length"),
-    "bore": ("bore", "length"),
-    "width": ("width", "length"),
-    "inner_ring_width": ("inner_ring_width", "length"),
-    "pitch_diameter": ("pitch_diameter", "length"),
-    "contact_angle": ("contact_angle", "angle"),
-    "conformity_inner": ("conformity_inner", "dimensionless"),
-    "conformity_outer": ("conformity_outer", "dimensionless"),
-    "clearance_ball": ("clearance_ball", "length"),
-    "clearance_roller": ("clearance_roller", "length"),
-    "n_slices": ("n_slices", None),
-    "beam_width": ("beam_width", "length"),
-}
-
-
-def load_example(path) -> tuple[BallColumnGeometry, np.ndarray, dict]:
-    """Read a seed-002 example TOML (units as strings) → (geometry, load (5,) [SI], ring options)."""
-    from bearingkit.analysis.quasistatic import load_vector
-    from bearingkit.units import parse
-
-    data = tomllib.loads(Path(path).read_text())
-    geo = {}
-    for key, value in data.get("geometry", {}).items():
-        if key not in _TOML_FIELDS:
-            raise checks.InputError(
-                f"{path}: geometry.{key} is not a field; expected one of {sorted(_TOML_FIELDS)}"
-            )
-        name, dim = _TOML_FIELDS[key]
-        geo[name] = value if dim is None else parse(value, dim, f"geometry.{key}")
-    if "support_positions" in data.get("ring", {}):
-        geo["support_positions"] = tuple(
-            parse(v, "length", "ring.support_positions") for v in data["ring"]["support_positions"]
-        )
-    known = {f.name for f in fields(BallColumnGeometry)}
-    geometry = BallColumnGeometry(**{k: v for k, v in geo.items() if k in known})
-    ld = data.get("load", {})
-    load = load_vector(
-        F_x=parse(ld.get("radial", "0 N"), "force", "load.radial"),
-        F_z=parse(ld.get("axial", "0 N"), "force", "load.axial"),
-        M_y=parse(ld.get("moment", "0 N*m"), "moment", "load.moment"),
+def outer_ring_of(model: BearingModel) -> FlexibleOuterRing | None:
+    """The flexible outer ring a :func:`ball_column` model carries in its metadata (None: rigid ring)."""
+    g = model.metadata.get("geometry")
+    opts = model.metadata.get("ring")
+    if not isinstance(g, BallColumnGeometry) or not isinstance(opts, RingOptions):
+        raise checks.InputError(f"model ({model.name!r}) is not a ball–column bearing built by ball_column()")
+    if not opts.flexible:
+        return None
+    return outer_ring(
+        g,
+        compliance_scale=opts.compliance_scale,
+        bending=opts.bending,
+        youngs_modulus=model.metadata.get("ring_youngs_modulus", RING_E),
+        beam_mode=opts.beam_mode,
+        beam_tilt=opts.beam_tilt,
     )
-    ring = {
-        "compliance_scale": float(data.get("ring", {}).get("compliance_scale", 1.0)),
-        "bending": bool(data.get("ring", {}).get("bending", True)),
-    }
-    return geometry, load, ring
+
+
+def solve_flexible_input(bearing):
+    """Coupled flexible-ring solve of a loaded input file of type ``ball_column`` (None: rigid ring).
+
+    Parameters
+    ----------
+    bearing : bearingkit.io.loader.BearingInput
+        Its model must come from :func:`ball_column` (``bearing.type = "ball_column"``).
+
+    Returns
+    -------
+    FlexibleResult or None
+        None when ``[geometry.ring] flexible = false``.
+    """
+    from bearingkit.analysis.flexible import solve_flexible
+
+    ring = outer_ring_of(bearing.model)
+    if ring is None:
+        return None
+    free = None if bool(np.all(bearing.free)) else bearing.free
+    return solve_flexible(bearing.model, bearing.load_matrix(), ring, free=free, options=bearing.options)

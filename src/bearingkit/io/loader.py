@@ -162,10 +162,13 @@ def _ptrb(geometry: dict, material, name: str) -> BearingModel:
 
 def _ball_column(geometry: dict, material, name: str) -> BearingModel:
     """Seed-002 ball–column composite bearing (:func:`bearingkit.bearings.ball_column.ball_column`)."""
-    from bearingkit.bearings.ball_column import BallColumnGeometry, ball_column
+    from bearingkit.bearings.ball_column import BallColumnGeometry, RingOptions, ball_column
 
-    g = BallColumnGeometry(**{k: v for k, v in geometry.items() if v is not None})
-    model = ball_column(g, material=material)
+    fields = {k: v for k, v in geometry.items() if v is not None and k != "ring"}
+    if "support_positions" in fields:
+        fields["support_positions"] = tuple(fields["support_positions"])
+    ring = RingOptions(**{k: v for k, v in (geometry.get("ring") or {}).items() if v is not None})
+    model = ball_column(BallColumnGeometry(**fields), material=material, ring=ring)
     return dataclasses.replace(model, name=name) if name else model
 
 

@@ -485,6 +485,50 @@ class PTRBGeometrySpec(_Strict):
     clearance: Length | None = Field(None, description="Play along each contact normal, counted twice.")
 
 
+class BallColumnRingSpec(_Strict):
+    """``[geometry.ring]`` of a ball–column bearing: how the shared outer ring is modelled
+    (bearings.ball_column.RingOptions fields)."""
+
+    flexible: bool | None = Field(
+        None, description="Coupled flexible-ring solve (analysis.flexible); false: rigid ring. Default true."
+    )
+    compliance_scale: Dimensionless | None = Field(
+        None, description="Multiplies the ring compliances (>= 0; 0 = rigid). Default 1."
+    )
+    bending: bool | None = Field(None, description="Thin-ring ovalisation on top of the beam. Default true.")
+    beam_mode: Literal["clearance", "translation"] | None = Field(
+        None, description="How the beam deflection acts on a row. Default 'clearance'."
+    )
+    beam_tilt: bool | None = Field(None, description="Beam slope as a rigid raceway tilt. Default false.")
+
+
+def _support_positions(value, info: ValidationInfo):
+    """Two axial positions with units → (z_A, z_B) in metres."""
+    if value is None:
+        return None
+    if not isinstance(value, (list, tuple)) or len(value) != 2:
+        raise InputError(
+            f"{info.field_name} ({value!r}) must be two axial positions such as ['-25 mm', '25 mm']"
+        )
+    return tuple(units.parse(v, "length", f"{info.field_name}[{i}]") for i, v in enumerate(value))
+
+
+#: Housing supports (z_A, z_B) of a flexible outer ring.
+SupportPositions = Annotated[
+    tuple[float, float],
+    BeforeValidator(_support_positions),
+    WithJsonSchema(
+        {
+            "type": "array",
+            "items": {"type": "string", "x-dimension": "length", "x-si-unit": "m"},
+            "minItems": 2,
+            "maxItems": 2,
+            "description": "Axial positions z_A < z_B of the housing supports, e.g. ['-25 mm', '25 mm'].",
+        }
+    ),
+]
+
+
 class BallColumnGeometrySpec(_Strict):
     """Seed-002 ball–column composite bearing (bearings.ball_column.BallColumnGeometry fields)."""
 
@@ -511,6 +555,10 @@ class BallColumnGeometrySpec(_Strict):
     beam_width: PositiveLength | None = Field(
         None, description="Outer-ring beam strip width (flexible ring)."
     )
+    support_positions: SupportPositions | None = Field(
+        None, description="Housing supports of the outer ring (default: at the two ball rows)."
+    )
+    ring: BallColumnRingSpec | None = Field(None, description="Outer-ring model ([geometry.ring]).")
 
 
 #: Bearing type → geometry model. The loader's builder registry uses the same keys.

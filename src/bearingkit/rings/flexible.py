@@ -131,27 +131,73 @@ class FlexibleOuterRing:
             raise checks.InputError(f"ring rows {sorted(unknown)} are not in the bearing; rows are {names}")
         return [names.index(n) for n in self.rows]
 
+    @property
+    def has_radial(self) -> bool:
+        """Whether the ring imposes per-element radial offsets (bending, or the beam as clearance)."""
+        return self.bending or (self.support_positions is not None and self.beam_mode == "clearance")
+
+    @property
+    def has_shift(self) -> bool:
+        """Whether the ring imposes rigid raceway shifts (beam as translation, or the beam tilt)."""
+        return self.support_positions is not None and (self.beam_mode == "translation" or self.beam_tilt)
+
     # -- compliance -------------------------------------------------------------------------------
-    def offsets(self, model, result) -> dict:
-        """Raceway offsets {row name: RacewayOffset} produced by the element loads of ``result``."""
+    def ring_loads(self, model, result) -> RingLoads:
+        """What the ring carries in ``result``: element radial loads and row forces (:class:`RingLoads`)."""
         idx = self.carried(model)
         states = [result.rows[i] for i in idx]
-        n_cases = result.displacement.shape[0]
-        out = {}
-        radial = self._bending(states, n_cases) if self.bending else [None] * len(idx)
+        psi, q = self.element_loads(states)
+        forces = None
+        if self.support_positions is not None:
+            forces = np.stack([result.row_load(model.rows[i].name)[:, :2] for i in idx], axis=1)
+        sizes = tuple(int(st.load.shape[-1]) for st in states)
+        return RingLoads(psi, q, forces, sizes)
+
+    def offsets(self, model, result) -> dict:
+        """Raceway offsets {row name: RacewayOffset} produced by the element loads of ``result``."""
+        return self.offsets_from(model, self.ring_loads(model, result))
+
+    def offsets_from(self, model, loads: RingLoads, matrix=None) -> dict:
+        """Raceway offsets {row name: RacewayOffset} of given ring loads (the ring's own map).
+
+        The map is linear in the element radial loads (thin-ring bending, :meth:`bending_matrix`;
+        pass ``matrix`` to reuse it: the element azimuths do not change during a solve) and depends
+        on the row forces through the beam (linear, except the opening |u| of the ``"clearance"`` mode).
+        """
+        idx = self.carried(model)
+        n_cases = loads.radial.shape[0]
+        cuts = np.cumsum(loads.sizes)[:-1]
+        radial = [None] * len(idx)
+        if self.bending:
+            cmat = self.bending_matrix(loads.azimuth) if matrix is None else matrix
+            w = np.einsum("cmn,cn->cm", cmat, loads.radial)
+            radial = np.split(w, cuts, axis=-1)
         shifts = [None] * len(idx)
         if self.support_positions is not None:
-            shifts, opening = self._beam(model, result, idx)
+            shifts, opening = self._beam(model, loads.row_forces, idx)
             if self.beam_mode == "clearance":
                 radial = [
-                    o[:, None] + np.zeros(st.load.shape) + (0.0 if w is None else w)
-                    for o, st, w in zip(opening, states, radial, strict=True)
+                    o[:, None] + np.zeros((n_cases, z)) + (0.0 if w is None else w)
+                    for o, z, w in zip(opening, loads.sizes, radial, strict=True)
                 ]
-        for i, w, s in zip(idx, radial, shifts, strict=True):
-            out[model.rows[i].name] = RacewayOffset(shift=s, radial=w)
-        return out
+        return {
+            model.rows[i].name: RacewayOffset(shift=s, radial=w)
+            for i, w, s in zip(idx, radial, shifts, strict=True)
+        }
 
-    def _radial_loads(self, states, n_cases):
+    def bending_matrix(self, azimuth) -> np.ndarray:
+        """Thin-ring influence matrix (C, N, N) [m/N] between the carried elements at ``azimuth`` (C, N).
+
+        Zero when bending is off or the ring is rigid (compliance scale 0).
+        """
+        psi = np.atleast_2d(azimuth)
+        if not self.bending or self.compliance_scale == 0:
+            return np.zeros((psi.shape[0], psi.shape[-1], psi.shape[-1]))
+        return thin_ring.radial_influence(psi, psi, self.section.centroid_radius, self.flexural_rigidity)
+
+    @staticmethod
+    def element_loads(states):
+        """Azimuths (C, N) and outward radial element loads (C, N) [N] of the given row states."""
         psi, q = [], []
         for st in states:
             radial_part = np.cos(st.contact_angle) if st.kind == "ball" else np.ones_like(st.load)
@@ -161,23 +207,15 @@ class FlexibleOuterRing:
             q.append(st.load * radial_part)
         return np.concatenate(psi, axis=-1), np.concatenate(q, axis=-1)
 
-    def _bending(self, states, n_cases):
-        psi, q = self._radial_loads(states, n_cases)
-        w = thin_ring.radial_deflection(psi, psi, q, self.section.centroid_radius, self.flexural_rigidity)
-        sizes = np.cumsum([st.load.shape[-1] for st in states])[:-1]
-        return np.split(w, sizes, axis=-1)
-
-    def _beam(self, model, result, idx):
+    def _beam(self, model, forces, idx):
         za, zb = (float(v) for v in self.support_positions)
         z = np.array([float(np.asarray(model.rows[i].axial_position)) for i in idx])
         if np.any(z < za - 1e-12) or np.any(z > zb + 1e-12):
             raise checks.InputError(
                 f"row axial positions ({z.min():.6g} … {z.max():.6g} m) must lie between the housing "
-                f"supports "
-                f"({za:.6g}, {zb:.6g} m)"
+                f"supports ({za:.6g}, {zb:.6g} m)"
             )
         x = np.clip(z - za, 0.0, zb - za)
-        forces = np.stack([result.row_load(model.rows[i].name)[:, :2] for i in idx], axis=1)  # (C, K, 2)
         u, du = ring_beam.beam_deflection(x, x, forces[..., 0], zb - za, self.beam_rigidity)
         v, dv = ring_beam.beam_deflection(x, x, forces[..., 1], zb - za, self.beam_rigidity)
         zeros = np.zeros_like(u)
@@ -187,16 +225,37 @@ class FlexibleOuterRing:
         else:
             shift = np.stack([-tilt * du * z, -tilt * dv * z, zeros, -tilt * dv, tilt * du], axis=-1)
         opening = np.hypot(u, v)  # deflection along the row force (C, K)
-        shifts = [
-            shift[:, k] if (self.beam_mode == "translation" or self.beam_tilt) else None
-            for k in range(len(idx))
-        ]
+        shifts = [shift[:, k] if self.has_shift else None for k in range(len(idx))]
         return shifts, [opening[:, k] for k in range(len(idx))]
 
     def deflection_shape(self, model, result, theta) -> np.ndarray:
         """Outward thin-ring bending deflection (C, M) [m] at angles θ (for plots)."""
-        idx = self.carried(model)
-        psi, q = self._radial_loads([result.rows[i] for i in idx], result.displacement.shape[0])
+        loads = self.ring_loads(model, result)
+        theta = np.asarray(theta, dtype=float)
+        if not self.bending or self.compliance_scale == 0:
+            return np.zeros((loads.radial.shape[0], theta.shape[-1]))
         return thin_ring.radial_deflection(
-            theta, psi, q, self.section.centroid_radius, self.flexural_rigidity
+            theta, loads.azimuth, loads.radial, self.section.centroid_radius, self.flexural_rigidity
         )
+
+
+@dataclass(frozen=True)
+class RingLoads:
+    """The loads a flexible ring carries, in the order of its carried rows (SI).
+
+    Attributes
+    ----------
+    azimuth : ndarray (C, N) [rad]
+        Azimuth of every carried element (rows concatenated).
+    radial : ndarray (C, N) [N]
+        Outward radial element loads (ball: Q cos α; radial roller: Q).
+    row_forces : ndarray (C, K, 2) or None [N]
+        Radial force (x, y) each carried row passes to the ring (None without housing supports).
+    sizes : tuple of int
+        Elements per carried row (Σ = N).
+    """
+
+    azimuth: np.ndarray
+    radial: np.ndarray
+    row_forces: np.ndarray | None
+    sizes: tuple

@@ -1,0 +1,105 @@
+"""Figures of a flexible outer ring: raceway deflection and element loads against azimuth (seed 002).
+
+SI inside (m, N, rad); only the axis labels convert (µm, N, degrees). The functions read
+:class:`~bearingkit.analysis.flexible.FlexibleResult` and
+:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` objects and never recompute mechanics.
+
+- :func:`ring_shape_figure` — unrolled against azimuth: top, the outward radial offset of the
+  outer raceway at each element of the chosen rows (thin-ring bending + beam opening) for every
+  flexible solution (the rigid ring is the zero line); bottom, the element loads of the same rows,
+  rigid against flexible.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+#: Resolution of the written PNG [dots per inch].
+DPI = 110
+#: Line styles per row (cycled), so rows stay apart in grey-scale prints.
+_STYLES = ("-", "--", ":", "-.")
+
+
+def _unrolled(azimuth) -> tuple[np.ndarray, np.ndarray]:
+    """Azimuth in degrees on (−180°, 180°] and the order that sorts it (the load zone in the middle)."""
+    deg = np.rad2deg(np.mod(np.asarray(azimuth, dtype=float) + np.pi, 2 * np.pi) - np.pi)
+    order = np.argsort(deg)
+    return deg[order], order
+
+
+def ring_shape_figure(
+    rigid,
+    flexible: dict,
+    rows=("roller_2", "ball_3"),
+    case: int = 0,
+    title: str = "",
+) -> Figure:
+    """Raceway offset and element loads against azimuth, rigid vs flexible ring(s).
+
+    Parameters
+    ----------
+    rigid : QuasiStaticResult
+        The rigid-ring solution (loads drawn as the reference).
+    flexible : dict of str to FlexibleResult
+        Label → flexible solution (e.g. ``{"beam": …, "beam + ovalisation": …}``).
+    rows : sequence of str
+        Rows to draw.
+    case : int
+        Load case of every result to draw.
+    title : str
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig = Figure(figsize=(8.0, 6.4), dpi=DPI)
+    FigureCanvasAgg(fig)
+    ax_w, ax_q = fig.subplots(2, 1, sharex=True)
+    colours = {label: f"C{i + 1}" for i, label in enumerate(flexible)}
+    ax_w.axhline(0.0, color="C0", lw=1.2, label="rigid ring")
+    for k, name in enumerate(rows):
+        style = _STYLES[k % len(_STYLES)]
+        st = rigid.row(name)
+        deg, order = _unrolled(np.broadcast_to(st.azimuth, st.load.shape)[case])
+        ax_q.plot(deg, st.load[case][order], style, color="C0", marker=".", ms=3, label=f"{name}, rigid")
+        for label, flex in flexible.items():
+            fst = flex.row(name)
+            deg, order = _unrolled(np.broadcast_to(fst.azimuth, fst.load.shape)[case])
+            off = flex.offsets.get(name)
+            if off is not None and off.radial is not None:
+                w = np.broadcast_to(off.radial, fst.load.shape)[case][order]
+                ax_w.plot(deg, w * 1e6, style, color=colours[label], label=f"{name}, {label}")
+            ax_q.plot(
+                deg,
+                fst.load[case][order],
+                style,
+                color=colours[label],
+                marker=".",
+                ms=3,
+                label=f"{name}, {label}",
+            )
+    ax_w.set_ylabel("outer-raceway radial offset [µm]\n(outward +)")
+    ax_q.set_ylabel("element load Q [N]")
+    ax_q.set_xlabel("azimuth ψ [deg] (radial load along ψ = 0)")
+    ax_q.set_xlim(-180, 180)
+    ax_q.set_xticks(np.arange(-180, 181, 45))
+    for ax in (ax_w, ax_q):
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=2)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def write_ring_shape(path, rigid, flexible: dict, **kwargs) -> Path:
+    """Draw :func:`ring_shape_figure` and write it as PNG (parent folders created); returns the path."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig = ring_shape_figure(rigid, flexible, **kwargs)
+    fig.savefig(path, dpi=DPI, metadata={"Software": None})
+    return path
