@@ -78,10 +78,20 @@ class PTRBFrictionParameters:
         EHL rolling-resistance model, one of :data:`~bearingkit.physics.ptrb_friction.VISCOUS_MODELS`
         (``harris``, the default; ``houpert`` or ``fujiwara``).
     convention : str
-        ``power`` (default) or ``paper`` (:data:`~bearingkit.physics.ptrb_friction.CONVENTIONS`).
-    viscous_projection : str
-        ``eq13`` (default) or ``power``
+        ``paper`` (default: eq. (13)–(15) summed as printed) or ``power`` (power balance)
+        (:data:`~bearingkit.physics.ptrb_friction.CONVENTIONS`).
+    viscous_projection : str or None
+        ``axis`` or ``contact`` (paper convention), ``eq13`` or ``power`` (power convention); None: the
+        convention's default (``axis``, ``eq13``)
         (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_PROJECTIONS`).
+    viscous_radius_y : str
+        R_y of Harris's F_v: ``ball`` (default, D_w/2), ``flank`` or ``rolling``
+        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_RADII_Y`).
+
+    Notes
+    -----
+    The calibrated ``traction`` belongs to the default reading; :meth:`power_balance` gives the
+    power-balance reading with its own calibration (same published value).
     """
 
     traction: float = pf.CONTACT_TRACTION_CALIBRATED
@@ -89,12 +99,19 @@ class PTRBFrictionParameters:
     carrier_friction: float = pf.CARRIER_FRICTION
     journal_ratio: float = pf.JOURNAL_DIAMETER_RATIO
     viscous_model: str = "harris"
-    convention: str = "power"
-    viscous_projection: str = "eq13"
+    convention: str = "paper"
+    viscous_projection: str | None = None
+    viscous_radius_y: str = "ball"
+
+    @classmethod
+    def power_balance(cls, **changes) -> PTRBFrictionParameters:
+        """The power-balance reading (the former default), :data:`~bearingkit.physics.ptrb_friction.
+        POWER_BALANCE_OPTIONS` with its calibrated traction; ``changes`` override fields."""
+        return cls(**{**pf.POWER_BALANCE_OPTIONS, **changes})
 
     def __post_init__(self):
-        checks.one_of("convention", self.convention, pf.CONVENTIONS)
-        checks.one_of("viscous_projection", self.viscous_projection, pf.VISCOUS_PROJECTIONS)
+        pf.resolve_viscous_projection(self.convention, self.viscous_projection)
+        checks.one_of("viscous_radius_y", self.viscous_radius_y, pf.VISCOUS_RADII_Y)
         checks.non_negative("traction", self.traction)
         checks.non_negative("hysteresis", self.hysteresis)
         checks.non_negative("carrier_friction", self.carrier_friction)
@@ -200,6 +217,7 @@ def _sum_contacts(geom: dict, loads_in, loads_out, weights, speed, params, visco
             viscous_model=params.viscous_model,
             convention=params.convention,
             viscous_projection=params.viscous_projection,
+            viscous_radius_y=params.viscous_radius_y,
         )
         comps[side] = {k: (v * weights).sum(axis=-1) for k, v in t.items()}
     return comps
@@ -310,20 +328,24 @@ def ptrb_friction(
 
 def calibrate_contact_traction(
     geometry: PTRBGeometry | None = None,
-    convention: str = "power",
+    convention: str | None = None,
     parameters: PTRBFrictionParameters | None = None,
 ) -> float:
     """Recompute :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED` [1].
 
     The torque is affine in μ_c (spin and differential sliding ∝ μ_c, the rest independent of it), so
     two evaluations at :data:`CALIBRATION_POINT` give the μ_c that reproduces 0.476 N·m exactly.
-    ``parameters`` (its ``traction`` ignored) sets the other model choices; ``convention`` overrides
-    its convention.
+    ``parameters`` (its ``traction`` ignored) sets the other model choices (default: the default
+    reading; ``PTRBFrictionParameters.power_balance()`` recomputes
+    :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
+    given, overrides its convention (with that convention's default viscous projection).
     """
     from bearingkit.bearings.ptrb import ptrb_prototype
 
     g = geometry or ptrb_prototype()
-    base = replace(parameters or PTRBFrictionParameters(), convention=convention)
+    base = parameters or PTRBFrictionParameters()
+    if convention is not None:
+        base = replace(base, convention=convention, viscous_projection=None)
     p = CALIBRATION_POINT
     args = (g, p["load_N"], p["speed_rpm"] * RPM, p["case"])
     m0 = float(ptrb_friction(*args, parameters=replace(base, traction=0.0)).torque)

@@ -294,13 +294,14 @@ def nearest_table6(objectives: dict, case: str = "axial") -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def table6_at_published_designs() -> pd.DataFrame:
+def table6_at_published_designs(parameters=None) -> pd.DataFrame:
     """Table 6 recomputed at the PUBLISHED design variables of each point (no optimiser involved).
 
     The friction model's own check of §6: α, n, R_rr, d_R of xa1, xa2, xr1, xr2 and the prototype (D_pw,
     n·P = 12 mm and Z = 11 held, as :func:`bearingkit.analysis.ptrb_friction.ptrb_objectives`), at the §6
     operating point (20 kN, 4000 rpm). Columns: ``point``, computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N,
-    mu_r``, the published values (``*_pub``) and relative errors (``*_err``).
+    mu_r``, the published values (``*_pub``) and relative errors (``*_err``). ``parameters``: a
+    :class:`~bearingkit.analysis.ptrb_friction.PTRBFrictionParameters` (None: the defaults).
     """
     from bearingkit.analysis.ptrb_friction import ptrb_objectives
 
@@ -312,7 +313,8 @@ def table6_at_published_designs() -> pd.DataFrame:
         [p["R_rr_mm"] * MM for p in x],
         [p["d_R_mm"] * MM for p in x],
     )
-    ax, ra = ptrb_objectives(*design, case="axial"), ptrb_objectives(*design, case="radial")
+    ax = ptrb_objectives(*design, case="axial", parameters=parameters)
+    ra = ptrb_objectives(*design, case="radial", parameters=parameters)
     out = pd.DataFrame({"point": names})
     cols = {
         "C0a_N": (ax["C0a"], "C0a_kN", KN),

@@ -151,22 +151,17 @@ def table6_value(point: str, quantity: str) -> float:
 
 
 MU_DEVIATION = (
-    "the front sits at d_R = 7.2 mm (bearingkit's torque falls with d_R, Table 5 d_R deviation) and, in "
-    "the radial case, at alpha ~ 30-33 deg, where the paper's xr1/xr2 (alpha 52.5/39.3 deg) cost more "
-    "friction; at the published designs mu_a is within -6...+11 % and mu_r within -21...+32 % "
+    "the radial front sits at alpha ~ 30-33 deg, where bearingkit's radial torque is low (Table 5 "
+    "contact-angle row: alpha acts too strongly under radial load, +174 % vs +67 % over 30-60 deg); at "
+    "the published designs mu_a is within -2.5...+10 % and mu_r within -10...+27 % "
     "(bearingkit.studies.seed004.table6_at_published_designs)"
-)
-LOW_END_DEVIATION = (
-    "the computed front does not reach the paper's low-rating, low-friction end: bearingkit's torque "
-    "hardly falls with the ratings (mu varies < 10 % along the axial front, and falls with d_R), so "
-    "designs with the prototype's ratings are dominated; the nearest front point has higher ratings"
 )
 #: Table 6 quantities that the studies are known to miss (point → quantities).
 _KNOWN = {
-    "xa1": {"mu_a": MU_DEVIATION},
-    "xa2": {"mu_a": MU_DEVIATION},
+    "xa1": {},
+    "xa2": {},
     "xr1": {"mu_r": MU_DEVIATION},
-    "xr2": {"C0r": LOW_END_DEVIATION, "Cr": LOW_END_DEVIATION, "mu_r": MU_DEVIATION},
+    "xr2": {"mu_r": MU_DEVIATION},
 }
 
 
