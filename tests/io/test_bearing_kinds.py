@@ -104,7 +104,7 @@ def test_single_tapered_row_refuses_lift_off_load():
 
 
 def test_tapered_pair_builds_mirrored_rows():
-    """arrangement DB: two rows at ∓row_spacing/2, the −z row resisting −F_z (bearings.tapered)."""
+    """arrangement DB: two rows at ∓row_spacing/2, the −z row resisting +F_z (bearings.tapered)."""
     text = _trb(
         {
             "n_elements = 23": 'arrangement = "DB"\nrow_spacing = "30 mm"\nn_elements = 23',
@@ -112,7 +112,7 @@ def test_tapered_pair_builds_mirrored_rows():
         }
     )
     rows = loads(text).model.rows
-    assert [r.direction for r in rows] == [-1, 1]
+    assert [r.direction for r in rows] == [1, -1]
     assert [r.axial_position for r in rows] == pytest.approx([-0.015, 0.015], rel=1e-12)
     with pytest.raises(InputError, match="row_spacing"):
         loads(_trb({"n_elements = 23": 'arrangement = "DF"\nn_elements = 23'}))

@@ -29,9 +29,11 @@ SEED001_GEOMETRY = {
 #: Seed 001 Table 1 material: E = 2.1e5 N/mm², ν = 0.278 (both bodies).
 SEED001_YOUNGS_MODULUS = 2.1e11
 SEED001_POISSON_RATIO = 0.278
-#: Paired arrangements: directions of (row at −z, row at +z). Back-to-back (DB, "O"): the cone
-#: apexes point outwards; face-to-face (DF, "X"): inwards.
-PAIR_ARRANGEMENTS = {"DB": (-1, 1), "DF": (1, -1)}
+#: Paired arrangements: directions of (row at −z, row at +z). Back-to-back (DB, "O"): the pressure
+#: centres lie outside the rows (wide effective spread, stiff in tilt) and the cone apexes point
+#: inwards; face-to-face (DF, "X"): the reverse (Harris & Kotzalas 2006, ch. 1; the same convention
+#: as the ball pairs of :mod:`bearingkit.bearings.standard`).
+PAIR_ARRANGEMENTS = {"DB": (1, -1), "DF": (-1, 1)}
 
 
 def seed001_e_reduced() -> float:

@@ -41,11 +41,25 @@ Every approach is affine in (q, X) and each law is the derivative of a convex en
 equilibrium is the minimum over X of Φ = Σ E_c(δ_c) − F_c·X (F_c the centrifugal force), solved by a
 damped Newton iteration over all rollers and cases at once. The condensed energy U*(q) = min_X Φ
 is convex; by the envelope theorem its force is −Σ Q_c ∂δ_c/∂q and its stiffness the Schur complement
-K* = K_qq − K_qX K_XX⁻¹ K_Xq (implicit-function theorem).
+K* = K_qq − K_qX K_XX⁻¹ K_Xq (implicit-function theorem). A roller with every contact open (a ring
+moved away, a zero load) has Φ ≡ 0 near its position: it keeps its start and contributes exactly
+zero force, energy and stiffness.
+
+Tilting a single row
+--------------------
+Eliminating X leaves each roller one load path: its cone and rib loads sum to a force along −n_e on
+a fixed line of its meridian plane, and these lines all meet the bearing axis at the pressure centre
+z_P (:attr:`TaperedRow.pressure_centre`). A whole-roller row (``n_slices = 1``, seed 001's law)
+therefore has no stiffness against a rotation about z_P: with the tilts free it carries only loads
+whose line of action passes through z_P (pure axial; F_x with M_y = z_P F_x …); any other load has
+no equilibrium, and the solver reports it as not carriable. Sliced rows shift their cone load
+along the rollers (edge loading) and carry moderate moments with a tilt; pairs (DB/DF) carry
+moments through the spread of their two pressure centres.
 """
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -87,9 +101,20 @@ DEFAULT_FLANGE_HEIGHT_RATIO = 0.25
 DEFAULT_END_RADIUS_RATIO = 0.9
 #: Density of bearing steel [kg/m³] (GCr15 / 100Cr6: 7.8e3–7.85e3).
 STEEL_DENSITY = 7830.0
-#: Inner Newton iteration of the roller equilibrium: iterations and relative tolerance.
-ROLLER_MAX_ITER = 60
+#: Inner Newton iteration of the roller equilibrium: iteration cap, relative tolerance on each roller's
+#: force balance (of its summed contact loads), step halvings per line search, the largest step as a
+#: fraction of the roller diameter, and the balance below which a line search that finds no decrease
+#: is taken as round-off (double precision sums of slice loads stall near 1e-14 relative).
+ROLLER_MAX_ITER = 40
 ROLLER_RTOL = 1e-12
+ROLLER_MAX_HALVINGS = 16
+ROLLER_STEP_CAP = 0.02
+ROLLER_STALL_RTOL = 1e-9
+#: Resolution of an approach relative to the displacements it is computed from (4 ulp) [-].
+ROLLER_NOISE_EPS = 4.0 * np.finfo(float).eps
+#: Approach at which the stiffness floor of the roller sub-problem is set, as a fraction of the mean
+#: roller diameter [-] (1e-4 D: a typical working approach); the floor is 1e-12 of that stiffness.
+STIFFNESS_FLOOR_APPROACH = 1e-4
 #: Floor of the approach in the Taylor-law stiffness (its δ^(−8/9) term is singular at 0) [m].
 TAYLOR_DELTA_FLOOR = 1e-12
 
@@ -277,6 +302,24 @@ class TaperedRow:
         return 0.5 * (float(self.small_diameter) + float(self.large_diameter))
 
     @property
+    def pressure_centre(self) -> float:
+        """Axial position z_P of the row's pressure centre on the bearing axis [m].
+
+        With the cone load at mid-length, each roller's cone and rib loads add up on the inner ring
+        to one force along −n_e (the roller's balance) on a fixed line of its meridian plane; by
+        axisymmetry every such line meets the bearing axis at z_P (the effective load centre of
+        catalogues; e.g. Harris & Kotzalas 2006, Rolling Bearing Analysis, 5th ed.). A
+        whole-roller row (``n_slices = 1``) transmits no moment about z_P: with free tilts it carries
+        only loads whose line of action passes through it (M_x = −z_P F_y, M_y = z_P F_x). Sliced rows
+        can move the load along the rollers and carry a limited moment by tilting.
+        """
+        geo = TapGeometry(self)
+        qi, qf = np.linalg.solve(np.stack([geo.n_i, geo.n_f], axis=1), geo.n_e)
+        p_i = geo.centre - geo.r_m * geo.e
+        moment = qi * _cross2(p_i, geo.n_i) + qf * _cross2(geo.p_f, geo.n_f)
+        return float(self.axial_position) - float(self.direction) * moment / geo.n_e[0]
+
+    @property
     def n_cases(self) -> int:
         """Cases carried by ``diameter_deviation`` (1 without a case axis)."""
         dev = self.diameter_deviation
@@ -294,6 +337,11 @@ def _scalar(field, value):
 
 def _rot(v):
     return np.array([-v[1], v[0]])
+
+
+def _cross2(p, v):
+    """Moment p × v of a meridian-plane force v at point p (r, s components)."""
+    return p[0] * v[1] - p[1] * v[0]
 
 
 class TapGeometry:
@@ -337,12 +385,46 @@ class TapGeometry:
         self.volume = np.pi * self.length * (rs * rs + rs * rl + rl * rl) / 3.0
 
 
+class InnerStats:
+    """Effort of a kernel's roller sub-problems, shared by the kernel and its per-case copies.
+
+    Attributes
+    ----------
+    calls : int
+        Roller solves so far.
+    iterations_max : int
+        Most Newton steps one solve took.
+    unconverged : int
+        Rollers, summed over solves, that reached the iteration cap without meeting the tolerance.
+    """
+
+    def __init__(self):
+        self.calls = 0
+        self.iterations_max = 0
+        self.unconverged = 0
+        self._lock = threading.Lock()  # copies of one kernel run on the solver's thread pool
+
+    def record(self, iterations: int, unconverged: int) -> None:
+        """Add one solve."""
+        with self._lock:
+            self.calls += 1
+            self.iterations_max = max(self.iterations_max, iterations)
+            self.unconverged += unconverged
+
+
 class TaperedKernel(KernelBase):
     """Solver kernel of a :class:`TaperedRow`: roller DOFs condensed inside :meth:`response`.
 
     ``response(q, offset)`` and ``state(q, offset)`` accept a :class:`~bearingkit.rows.base.RacewayOffset`
     (cup shift and per-roller outward radial deflection of the cup, which opens the cup contacts by
     its component along n_e).
+
+    The roller sub-problem is warm-started from the previous call (the last roller positions moved
+    to first order with the ring, dX = −K_XX⁻¹ K_Xq dq) and bounded; its effort is recorded in
+    ``inner_iterations`` (Newton steps of this object's last call) and in :class:`InnerStats`
+    shared with the per-case copies the solver makes (:meth:`take`): ``inner_iterations_max`` and
+    ``inner_unconverged`` (rollers that reached the cap without meeting the tolerance; their forces
+    are those of the last iterate).
     """
 
     _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
@@ -383,6 +465,13 @@ class TaperedKernel(KernelBase):
         )
         self.end_radius = end_r
         self.k_f = float(hertz.point_stiffness(2.0 / end_r, 0.0, self.e_reduced))
+        # Regularisation floor of the 2×2 roller systems [N/m]: 1e-12 of a line's stiffness at a
+        # typical approach, far below any closed contact, never zero (an all-open roller).
+        approach = STIFFNESS_FLOOR_APPROACH * row.element_diameter
+        self.stiffness_floor = 1e-12 * LINE_EXPONENT * k_line * approach ** (LINE_EXPONENT - 1.0)
+        # Absolute force tolerance of a roller's balance [N]: ROLLER_RTOL of a line's load at that
+        # approach (an unloaded roller's rib touching at 1e-22 m has no relative accuracy to reach).
+        self.force_floor = ROLLER_RTOL * k_line * approach**LINE_EXPONENT
         # Constant parts of the approaches (C|1, Z, n_s) with the deviation.
         drop = np.zeros(n_s) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
         dev = (
@@ -409,6 +498,9 @@ class TaperedKernel(KernelBase):
         qi, qf = np.linalg.solve(m, geo.n_e)
         g_mid = self.g_i.mean(axis=1)
         self.directions = (qi * g_mid + qf * self.g_f)[None]  # (1, Z, 5)
+        # Contact cone for the solver's diagnosis: the cone load may sit on any slice, so every slice
+        # gives a direction (a sliced row can shift its load along the roller and carry some moment).
+        self.reach = (qi * self.g_i + qf * self.g_f[:, None, :]).reshape(z_el * n_s, 5)
         self.G_flat_i = self.g_i.reshape(z_el * n_s, 5)
         self.GG_i = (self.g_i[..., :, None] * self.g_i[..., None, :]).reshape(z_el * n_s, 25)
         self.GG_f = (self.g_f[:, :, None] * self.g_f[:, None, :]).reshape(z_el, 25)
@@ -421,6 +513,28 @@ class TaperedKernel(KernelBase):
         self.char_length = float(max(geo.centre[0], abs(z0)) + geo.length / 2)
         self.deflection_scale = float(row.element_diameter)
         self._cache = None
+        self.inner_iterations = 0
+        self.inner_stats = InnerStats()
+
+    @property
+    def inner_iterations_max(self) -> int:
+        """Most Newton steps one roller sub-problem took since the kernel was built (all copies)."""
+        return self.inner_stats.iterations_max
+
+    @property
+    def inner_unconverged(self) -> int:
+        """Rollers that reached :data:`ROLLER_MAX_ITER` without meeting the tolerance (all calls)."""
+        return self.inner_stats.unconverged
+
+    def take(self, cases: np.ndarray):
+        """A copy restricted to ``cases``; the warm start follows them, the statistics stay shared."""
+        out = super().take(cases)
+        cache = self._cache
+        if cache is not None and np.shape(cases) != () and cache[1].shape[0] > np.max(cases, initial=-1):
+            out._cache = tuple(None if a is None else a[cases] for a in cache)
+        else:
+            out._cache = None
+        return out
 
     # -- contact laws ------------------------------------------------------------------------------
     def _line_law(self, delta):
@@ -465,72 +579,142 @@ class TaperedKernel(KernelBase):
         d_f = a_f + xr @ self.b_f
         return d_i, d_e, d_f
 
-    def _potential(self, a_i, a_f, xr, d0_e):
+    def _roller_eval(self, a_i, a_f, xr, d0_e):
+        """Φ (C, Z), ∂Φ/∂X (C, Z, 2), load scale (C, Z) and summed stiffnesses of the rollers at X = xr."""
         d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
-        e = self._line_law(d_i)[2].sum(-1) + self._line_law(d_e)[2].sum(-1) + self._point_law(d_f)[2]
-        return e - self.f_c * xr[..., 0]
+        qi, ki, ei = self._line_law(d_i)
+        qe, ke, ee = self._line_law(d_e)
+        qf, kf, ef = self._point_law(d_f)
+        si, se = qi.sum(-1), qe.sum(-1)
+        grad = si[..., None] * self.b_i + se[..., None] * self.b_e + qf[..., None] * self.b_f
+        grad[..., 0] -= self.f_c
+        phi = ei.sum(-1) + ee.sum(-1) + ef - self.f_c * xr[..., 0]
+        scale = si + se + qf + abs(self.f_c)
+        return phi, grad, scale, ki.sum(-1), ke.sum(-1), kf
+
+    def _start(self, q_rel, a_i, a_f, d0_e, shape):
+        """Starting roller positions and their evaluation.
+
+        The last solution, moved to first order to the new ring position (dX = −K_XX⁻¹ K_Xq dq, the
+        sensitivity kept by :meth:`response`), is the warm start; the closed-form guess replaces it
+        for rollers where it is lower in Φ (a contact opened or closed in between) or not finite.
+        """
+        guess = self._guess(a_i, a_f, d0_e)
+        ev_g = self._roller_eval(a_i, a_f, guess, d0_e)
+        cache = self._cache
+        if cache is None or cache[1].shape != shape or cache[0].shape != q_rel.shape:
+            return guess, ev_g
+        q_c, x_c, sens = cache
+        warm = x_c if sens is None else x_c - np.einsum("czda,cd->cza", sens, q_rel - q_c)
+        ev_w = self._roller_eval(a_i, a_f, warm, d0_e)
+        use = np.isfinite(ev_w[0]) & np.isfinite(warm).all(-1) & (ev_w[0] <= ev_g[0])
+        return _pick(use, warm, guess), tuple(_pick(use, w, g) for w, g in zip(ev_w, ev_g, strict=True))
 
     def _solve_rollers(self, q, offset=None):
-        """Roller displacements X (C, Z, 2) minimising Φ; damped Newton over all rollers at once."""
+        """Roller displacements X (C, Z, 2) minimising Φ; damped Newton over all rollers at once.
+
+        Bounded: at most :data:`ROLLER_MAX_ITER` Newton steps, each with at most
+        :data:`ROLLER_MAX_HALVINGS` step halvings. A roller whose line search finds no decrease of Φ
+        although its force balance is within :data:`ROLLER_STALL_RTOL` is at round-off and stops.
+        Rollers with every contact open (zero load, no centrifugal force) have ∂Φ/∂X = 0 and keep
+        their start; their loads, energy and stiffness are then exactly zero. The result is finite
+        for any finite q: when the cap is reached the forces and energy of the last iterate are
+        returned (counted in :attr:`inner_unconverged`).
+        """
+        q = np.asarray(q, dtype=float)
+        q_rel = relative_displacement(q, offset)
         a_i, a_f, d0_e = self._ring_parts(q, offset)
-        c, z_el = q.shape[0], self.row.n_elements
-        shape = (c, z_el, 2)
-        if self._cache is not None and self._cache.shape == shape:
-            xr = self._cache.copy()
-        else:
-            xr = self._guess(a_i, a_f, d0_e)
-        bi, be, bf = self.b_i, self.b_e, self.b_f
-        bb_i, bb_e, bb_f = np.outer(bi, bi), np.outer(be, be), np.outer(bf, bf)
-        step_cap = 0.02 * self.row.element_diameter
+        shape = (q.shape[0], self.row.n_elements, 2)
+        xr, ev = self._start(q_rel, a_i, a_f, d0_e, shape)
+        bb_i, bb_e, bb_f = (
+            np.outer(self.b_i, self.b_i),
+            np.outer(self.b_e, self.b_e),
+            np.outer(self.b_f, self.b_f),
+        )
+        step_cap = ROLLER_STEP_CAP * self.row.element_diameter
+        done = np.zeros(shape[:2], bool)
+        # Round-off of the approaches: they are differences of ring and roller displacements.
+        ring_size = np.abs(a_i).max(-1) + np.abs(a_f) + np.abs(d0_e).max(-1)
+        used = 0
         for _ in range(ROLLER_MAX_ITER):
-            d_i, d_e, d_f = self._approaches(a_i, a_f, xr, d0_e)
-            qi, ki, _ = self._line_law(d_i)
-            qe, ke, _ = self._line_law(d_e)
-            qf, kf, _ = self._point_law(d_f)
-            si, se = qi.sum(-1), qe.sum(-1)
-            grad = si[..., None] * bi + se[..., None] * be + qf[..., None] * bf
-            grad[..., 0] -= self.f_c
-            scale = si + se + qf + abs(self.f_c) + 1e-300
-            done = np.sqrt((grad**2).sum(-1)) <= ROLLER_RTOL * scale
+            phi, grad, scale, k_i, k_e, k_f = ev
+            gnorm = np.sqrt((grad**2).sum(-1))
+            done |= gnorm <= ROLLER_RTOL * scale + self.force_floor
             if done.all():
                 break
-            h = (
-                ki.sum(-1)[..., None, None] * bb_i
-                + ke.sum(-1)[..., None, None] * bb_e
-                + kf[..., None, None] * bb_f
-            )
-            tr = h[..., 0, 0] + h[..., 1, 1]
-            mu = 1e-12 * tr + (np.sqrt((grad**2).sum(-1)) / step_cap) * 1e-6 + 1e-300
-            h = h + mu[..., None, None] * np.eye(2)
-            step = -_solve2(h, grad)
+            used += 1
+            h = k_i[..., None, None] * bb_i + k_e[..., None, None] * bb_e + k_f[..., None, None] * bb_f
+            # Levenberg term: negligible against closed contacts; with all contacts open it turns the
+            # step into a capped move along −∂Φ/∂X (centrifugal force), and the floor keeps the 2×2
+            # system regular when nothing acts on the roller at all.
+            mu = 1e-12 * (h[..., 0, 0] + h[..., 1, 1]) + 1e-6 * gnorm / step_cap + self.stiffness_floor
+            step = -_solve2(h + mu[..., None, None] * np.eye(2), grad)
             big = np.sqrt((step**2).sum(-1))
             step *= np.minimum(1.0, step_cap / np.maximum(big, 1e-300))[..., None]
-            step = np.where(done[..., None], 0.0, step)
-            phi0 = self._potential(a_i, a_f, xr, d0_e)
+            # A Newton step below the resolution of the approaches cannot improve the balance: the
+            # remaining imbalance is round-off (lightly loaded rollers, a rib barely touching).
+            x_noise = ROLLER_NOISE_EPS * (ring_size + np.abs(xr).max(-1))
+            done |= big <= x_noise
+            if done.all():
+                break
+            step[done] = 0.0
             slope = (grad * step).sum(-1)
-            t = np.ones(done.shape)
+            t = np.ones(shape[:2])
             pending = ~done
-            for _ls in range(30):
+            new_x, new_ev = xr, ev
+            for _ls in range(ROLLER_MAX_HALVINGS):
                 trial = xr + t[..., None] * step
-                ok = self._potential(a_i, a_f, trial, d0_e) <= phi0 + 1e-4 * t * slope + 1e-14 * np.abs(phi0)
+                ev_t = self._roller_eval(a_i, a_f, trial, d0_e)
+                g_t = np.sqrt((ev_t[1] ** 2).sum(-1))
+                ok = pending & (
+                    (ev_t[0] <= phi + 1e-4 * t * slope + 1e-14 * np.abs(phi)) | (g_t <= 0.5 * gnorm)
+                )
+                new_x = _pick(ok, trial, new_x)
+                new_ev = tuple(_pick(ok, a, b) for a, b in zip(ev_t, new_ev, strict=True))
                 pending &= ~ok
                 if not pending.any():
                     break
                 t = np.where(pending, 0.5 * t, t)
-            xr = xr + t[..., None] * step
-        self._cache = xr.copy()
+            if pending.any():
+                # No decrease along a descent direction: round-off where the balance is already
+                # close (stop there); elsewhere take the shortest trial and go on.
+                done |= pending & (gnorm <= ROLLER_STALL_RTOL * scale)
+                late = pending & ~done
+                new_x = _pick(late, trial, new_x)
+                new_ev = tuple(_pick(late, a, b) for a, b in zip(ev_t, new_ev, strict=True))
+            xr, ev = new_x, new_ev
+        else:
+            phi, grad, scale = ev[:3]
+            done |= np.sqrt((grad**2).sum(-1)) <= ROLLER_RTOL * scale + self.force_floor
+        self.inner_iterations = used
+        self.inner_stats.record(used, int(np.count_nonzero(~done)))
+        self._cache = (q_rel, xr, None)
         return xr, a_i, a_f, d0_e
 
     def _guess(self, a_i, a_f, d0_e):
-        """X with equal cone and cup approaches and a closed rib (one 2×2 solve per roller)."""
+        """Closed-form start X: equal cone and cup approaches (most compressed slices), rib touching.
+
+        Where those approaches are negative (the raceways open: zero load, ring pulled away) the rib
+        approach is set to the same negative value instead, so the roller starts clear of every
+        contact with exactly zero load rather than a rib touching at round-off.
+        """
         geo = self.geo
-        m = np.stack([geo.n_i + geo.n_e, geo.n_f])  # rows: (n_i + n_e)·X = a_i − d0_e ; n_f·X = a_f
-        rhs = np.stack([a_i.mean(-1) - d0_e.mean(-1) * np.ones_like(a_f), a_f], axis=-1)
-        return np.linalg.solve(m, rhs[..., None])[..., 0]
+        lead_i, lead_e = a_i.max(-1), d0_e.max(-1) * np.ones_like(a_f)
+        m = np.stack([geo.n_i + geo.n_e, geo.n_f])  # (n_i + n_e)·X = a_i − d0_e ; n_f·X = a_f
+        x = np.linalg.solve(m, np.stack([lead_i - lead_e, a_f], axis=-1)[..., None])[..., 0]
+        gap = lead_i - x @ geo.n_i
+        m_open = np.stack([geo.n_i + geo.n_e, geo.n_f - geo.n_i])  # … ; δ_f = δ_i
+        x_open = np.linalg.solve(m_open, np.stack([lead_i - lead_e, a_f - lead_i], axis=-1)[..., None])[
+            ..., 0
+        ]
+        return np.where((gap < 0.0)[..., None], x_open, x)
 
     # -- condensation ----------------------------------------------------------------------------
-    def _condense(self, ki, ke, kf):
-        """Σ_rollers of the Schur complement K_qq − K_qX K_XX⁻¹ K_Xq (C, 5, 5) for slice stiffnesses."""
+    def _condense(self, ki, ke, kf, sensitivity=False):
+        """Σ_rollers of the Schur complement K_qq − K_qX K_XX⁻¹ K_Xq (C, 5, 5) for slice stiffnesses.
+
+        With ``sensitivity`` also returns K_XX⁻¹ K_Xq per roller (C, Z, 5, 2): dX/dq = −its transpose.
+        """
         c = ki.shape[0]
         z_el, n_s = self.row.n_elements, self.row.n_slices
         kqq = (ki.reshape(c, z_el * n_s) @ self.GG_i + kf @ self.GG_f).reshape(c, 5, 5)
@@ -543,10 +727,13 @@ class TaperedKernel(KernelBase):
             + ke.sum(-1)[..., None, None] * np.outer(be, be)
             + kf[..., None, None] * np.outer(bf, bf)
         )
+        # A roller with every contact open has K_XX = 0 and K_Xq = 0: the floor keeps the solve
+        # regular and its (zero) contribution exact.
         tr = kxx[..., 0, 0] + kxx[..., 1, 1]
-        kxx = kxx + (1e-13 * tr + 1e-300)[..., None, None] * np.eye(2)
+        kxx = kxx + (1e-13 * tr + self.stiffness_floor)[..., None, None] * np.eye(2)
         sol = _solve2(kxx[:, :, None], kqx)  # K_XX⁻¹ K_Xq rows: (C, Z, 5, 2)
-        return kqq - np.einsum("czia,czja->cij", kqx, sol)
+        schur = kqq - np.einsum("czia,czja->cij", kqx, sol)
+        return (schur, sol) if sensitivity else schur
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Condensed generalised force, stiffness and energy for displacements q (C, 5)."""
@@ -558,9 +745,12 @@ class TaperedKernel(KernelBase):
         qf, kf, ef = self._point_law(d_f)
         c = q.shape[0]
         force = -(qi.reshape(c, -1) @ self.G_flat_i + qf @ self.g_f)
-        jac = -self._condense(ki, ke, kf)
+        schur, sens = self._condense(ki, ke, kf, sensitivity=True)
+        # Keep the roller sensitivity: the next call (a Newton or line-search trial nearby) starts
+        # from the first-order prediction of its roller positions.
+        self._cache = (self._cache[0], xr, sens)
         energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c * xr[..., 0].sum(-1)
-        return RowResponse(force, jac, energy)
+        return RowResponse(force, -schur, energy)
 
     def roller_state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> dict:
         """Per-roller contact loads and approaches at displacements q (C, 5) (SI arrays)."""
@@ -613,10 +803,21 @@ class TaperedKernel(KernelBase):
         )
 
 
+def _pick(mask, a, b):
+    """``a`` where ``mask`` (per roller, (C, Z)), ``b`` elsewhere; trailing axes broadcast."""
+    return np.where(mask.reshape(mask.shape + (1,) * (np.ndim(a) - mask.ndim)), a, b)
+
+
 def _solve2(h, b):
-    """Solve 2×2 systems h x = b, h (..., 2, 2), b (..., 2) or (..., k, 2) rows (Cramer's rule)."""
+    """Solve 2×2 systems h x = b, h (..., 2, 2), b (..., 2) or (..., k, 2) rows (Cramer's rule).
+
+    The callers pass symmetric positive definite systems; a zero or non-finite determinant (which a
+    regularised system cannot have) gives x = 0 rather than 0/0.
+    """
     a11, a12, a21, a22 = h[..., 0, 0], h[..., 0, 1], h[..., 1, 0], h[..., 1, 1]
     det = a11 * a22 - a12 * a21
+    regular = np.isfinite(det) & (det > 0.0)
+    det = np.where(regular, det, np.inf)
     if b.ndim == h.ndim - 1:
         x0 = (a22 * b[..., 0] - a12 * b[..., 1]) / det
         x1 = (-a21 * b[..., 0] + a11 * b[..., 1]) / det
