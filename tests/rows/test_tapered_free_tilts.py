@@ -224,6 +224,9 @@ def test_single_whole_roller_row_tilt_is_a_mechanism_about_the_pressure_centre()
     assert abs(q[1] - z_p * q[3]) <= 1e-12 * q[2]
     load = res.row("tapered").load[0]
     np.testing.assert_allclose(load, 10_000.0 / (23 * np.sin(0.2473)), rtol=1e-9)
+    # The solver does not wander along the unloaded mechanism: no tilt, no radial shift at all.
+    assert np.abs(q[[0, 1]]).max() <= 1e-12 * q[2]
+    assert np.abs(q[[3, 4]]).max() * row.pitch_diameter <= 1e-12 * q[2]
 
 
 def test_single_whole_roller_row_carries_a_load_through_its_pressure_centre():

@@ -260,6 +260,30 @@ class _Problem:
         return out
 
 
+#: Eigenvalues of a (scaled) stiffness matrix below this fraction of its largest one are mechanisms:
+#: directions the contacts do not resist (e.g. a single whole-roller tapered or angular-contact row
+#: tilting about its pressure centre) [-].
+MECHANISM_RTOL = 1e-9
+
+
+def _without_idle_mechanisms(h, g, step, tol):
+    """``step`` (C, n) without its components along mechanisms of h that the gradient g does not load.
+
+    h (C, n, n) symmetric positive semi-definite, g (C, n) the gradient, tol (C,) the size below
+    which a component of g is round-off. Along a mechanism the regularised solve divides by a
+    Levenberg term ~1e-12 of the stiffness, so round-off there would become a finite displacement
+    (a symmetric row drifting in tilt). A mechanism the load does push (an unbalanced load, or
+    contacts still open) keeps its component: the capped step then proceeds as before.
+    """
+    lam, vec = np.linalg.eigh(h)
+    null = lam <= MECHANISM_RTOL * np.maximum(np.abs(lam).max(axis=1, keepdims=True), 1e-300)
+    idle = null & (np.abs(np.einsum("cij,ci->cj", vec, g)) <= tol[:, None])
+    if not idle.any():
+        return step
+    comp = np.einsum("cij,ci->cj", vec, step)
+    return np.einsum("cij,cj->ci", vec, np.where(idle, 0.0, comp))
+
+
 def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.ndarray:
     """A starting displacement of the right size: every contact closed with one common approach δ.
 
@@ -285,6 +309,10 @@ def _starting_point(problem: _Problem, load: np.ndarray, q: np.ndarray) -> np.nd
             return q
         approach = np.abs(qt).max(axis=1)
         delta = np.sqrt(delta * np.maximum(approach, 1e-3 * delta))
+    # A mechanism (zero stiffness, e.g. a single whole-roller tapered row tilting about its pressure
+    # centre) that the load does not push on must not move: the 1e-12 regularisation above would
+    # turn round-off in the solve into a finite displacement along it.
+    qt = _without_idle_mechanisms(k, -f, qt, 1e-10 * np.abs(f).max(axis=1))
     # Never start farther than one capped Newton step: a near-singular estimate (a DOF the rows barely
     # reach, e.g. the tilt of a single tapered row) would otherwise throw the start far away.
     big = np.abs(qt).max(axis=1, keepdims=True)
@@ -325,6 +353,9 @@ def _newton(problem: _Problem, q, load, active, iterations):
         # a (capped) move along the load.
         mu = 1e-12 * diag + np.abs(g).max(axis=1) / (1e6 * problem.max_step) + 1e-300
         step = np.linalg.solve(h + mu[:, None, None] * np.eye(n), -g[..., None])[..., 0]
+        # norm = max|g| / load scale: components of g below rtol × load scale are round-off.
+        noise = opts.rtol * np.abs(g).max(axis=1) / np.maximum(stw["norm"], 1e-300)
+        step = _without_idle_mechanisms(h, g, step, noise)
         big = np.abs(step).max(axis=1)
         step *= np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300))[:, None]
         slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
