@@ -3,12 +3,26 @@
 SI units (N, m); times in s, throughputs in cases/s. All numbers come from one run:
 
 1. a sweep of the seed-000 composite turntable bearing (Monte Carlo over F_a 1–8 kN, F_r 0–3 kN,
-   e 0–0.4 m, axial ball clearance −6…−2 µm; 50,000 cases, 10,000 with ``quick``) on a Dask
-   LocalCluster of 1 and of 2 single-threaded worker processes → throughput ratio (target ≥ 1.6);
-   cluster start-up and the workers' first import are excluded (one warm-up chunk each);
+   e 0–0.4 m, axial ball clearance −6…−2 µm; 50,000 cases, 10,000 with ``quick``, or ``--cases N``)
+   evaluated three ways, in this order:
+
+   - in-process (:class:`~bearingkit.studies.executors.InProcessExecutor`): the solver's own thread
+     pool over every core — the reference a single machine gets without Dask;
+   - a Dask LocalCluster of 1 worker process, 1 thread, 1 solver thread;
+   - a Dask LocalCluster of 2 worker processes, 1 thread and 1 solver thread each
+     (``DaskExecutor(workers=n)``: ``BEARINGKIT_THREADS=1`` and BLAS limited to 1 thread per worker,
+     glibc's default memory trimming instead of Dask's, see ``executors.DASK_MALLOC_ENV``).
+
+   The target compares like with like — 2 single-threaded workers against 1 (≥ 1.6×). Cluster
+   start-up and the workers' first import are excluded (one warm-up chunk per worker, pinned to it).
+   Chunks of :data:`CHUNK` cases: a multiple of the solver's 512-case blocks (so the in-process
+   thread pool splits a chunk evenly over 2 cores) and ~50 chunks at 50k cases (so the last chunk
+   of one worker leaves the other idle for ≤ 1/25 of the run);
 2. NSGA-II, population 100 × 100 generations on the vectorised ZDT1 objective → wall time (≤ 60 s).
 
-``run(quick)`` returns records with keys name, value, unit, target (and ratio: ≥ 1 meets the target).
+``run(quick, cases)`` returns records with keys name, value, unit, target (and ratio: ≥ 1 meets the
+target). ``python -m benchmarks.bench_studies [--quick] [--cases N] [--repeat K]`` prints them
+(``--repeat`` reruns only the sweep, to see the spread on a shared machine).
 """
 
 from __future__ import annotations
@@ -18,11 +32,13 @@ import time
 
 SWEEP_CASES = 50_000
 SWEEP_CASES_QUICK = 10_000
-CHUNK = 2_500
+#: Cases per chunk: 2 × the solver's CHUNK_CASES (512), see the module docstring.
+CHUNK = 1024
 SEED = 20250588
+WARMUP_CASES = 200
 
 
-def _sweep_definition(n: int):
+def _sweep_definition(n: int, chunk: int = CHUNK):
     from bearingkit.studies import definition as sd
 
     return sd.from_dict(
@@ -33,7 +49,7 @@ def _sweep_definition(n: int):
                 "evaluator": "seed000_statics",
                 "samples": n,
                 "seed": SEED,
-                "chunk_size": CHUNK,
+                "chunk_size": chunk,
                 "outputs": ["ball_axial_share", "max_roller_pressure_Pa", "converged"],
             },
             "factors": [
@@ -46,30 +62,65 @@ def _sweep_definition(n: int):
     )
 
 
-def _dask_rate(n_workers: int, definition) -> tuple[float, float]:
-    from distributed import Client, LocalCluster
+def _warm_inputs(definition):
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.runner import build_cases
 
-    from bearingkit.studies.executors import DaskExecutor
-    from bearingkit.studies.runner import build_cases, run_study
+    warm = build_cases(definition).iloc[:WARMUP_CASES]
+    ev = evaluators.get(definition.evaluator)
+    return warm[["case", *[c for c in warm.columns if c in ev.factors]]]
 
-    warm = build_cases(definition).iloc[:200]
-    with (
-        LocalCluster(
-            n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None
-        ) as cluster,
-        Client(cluster) as client,
-    ):
-        from bearingkit.studies.evaluators import evaluate_chunk
 
-        inputs = warm.drop(columns=[c for c in warm.columns if c.startswith("level_")])
-        client.gather(
-            [client.submit(evaluate_chunk, "seed000_statics", inputs, pure=False) for _ in range(n_workers)]
-        )
-        t0 = time.perf_counter()
-        res = run_study(definition, executor=DaskExecutor(client=client), progress=False)
-        dt = time.perf_counter() - t0
+def _timed(definition, executor) -> tuple[float, float]:
+    from bearingkit.studies.runner import run_study
+
+    t0 = time.perf_counter()
+    res = run_study(definition, executor=executor, progress=False)
+    dt = time.perf_counter() - t0
     assert res.results["converged"].all()
     return len(res.results) / dt, dt
+
+
+def _note(seconds: float) -> str:
+    # The 1-min load average just after a phase: above ~n_workers + 0.5 another process shared the
+    # cores during it, and its rate (and any ratio using it) is disturbed.
+    return f"{seconds:.1f} s, load after {os.getloadavg()[0]:.2f}"
+
+
+def _inprocess_rate(definition) -> tuple[float, float]:
+    from bearingkit.analysis.quasistatic import solver_threads
+    from bearingkit.studies.evaluators import evaluate_chunk
+    from bearingkit.studies.executors import InProcessExecutor
+
+    assert solver_threads() == (os.cpu_count() or 1), "the reference must use every core"
+    evaluate_chunk(definition.evaluator, _warm_inputs(definition))
+    return _timed(definition, InProcessExecutor())
+
+
+def _solver_threads() -> int:
+    from bearingkit.analysis.quasistatic import solver_threads
+
+    return solver_threads()
+
+
+def _dask_rate(n_workers: int, definition) -> tuple[float, float]:
+    from bearingkit.studies.evaluators import evaluate_chunk
+    from bearingkit.studies.executors import DaskExecutor
+
+    ex = DaskExecutor(workers=n_workers, solver_threads=1)
+    try:
+        client = ex.client
+        threads = client.run(_solver_threads)
+        assert set(threads.values()) == {1}, f"workers must run one solver thread each: {threads}"
+        inputs = _warm_inputs(definition)
+        warm = [
+            client.submit(evaluate_chunk, definition.evaluator, inputs, workers=[addr], pure=False)
+            for addr in client.scheduler_info()["workers"]
+        ]
+        client.gather(warm)
+        return _timed(definition, ex)
+    finally:
+        ex.close()
 
 
 def _nsga2_seconds(pop: int = 100, gen: int = 100) -> tuple[float, int]:
@@ -89,21 +140,38 @@ def _nsga2_seconds(pop: int = 100, gen: int = 100) -> tuple[float, int]:
     return time.perf_counter() - t0, res.stats["evaluations"]
 
 
-def run(quick: bool = False) -> list[dict]:
-    """Measure and return the records (see the module docstring)."""
-    os.environ.setdefault("OMP_NUM_THREADS", "1")
-    n = SWEEP_CASES_QUICK if quick else SWEEP_CASES
+def sweep_records(n: int) -> list[dict]:
+    """The three sweep measurements of ``n`` cases and their ratios (one run)."""
     d = _sweep_definition(n)
+    load = os.getloadavg()[0]
+    rate_in, t_in = _inprocess_rate(d)
+    note_in = _note(t_in)
     rate1, t1 = _dask_rate(1, d)
+    note1 = _note(t1)
     rate2, t2 = _dask_rate(2, d)
-    nsga_s, n_eval = _nsga2_seconds()
+    note2 = _note(t2)
+    note = f"chunks of {CHUNK}, os.cpu_count()={os.cpu_count()}, 1-min load at start {load:.2f}"
     return [
-        {"name": f"seed-000 sweep {n} cases, Dask 1 worker", "value": rate1, "unit": "cases/s", "target": ""},
         {
-            "name": f"seed-000 sweep {n} cases, Dask 2 workers",
+            "name": f"seed-000 sweep {n} cases, in-process (all cores)",
+            "value": rate_in,
+            "unit": "cases/s",
+            "target": "",
+            "note": note_in,
+        },
+        {
+            "name": f"seed-000 sweep {n} cases, Dask 1 worker x 1 thread",
+            "value": rate1,
+            "unit": "cases/s",
+            "target": "",
+            "note": note1,
+        },
+        {
+            "name": f"seed-000 sweep {n} cases, Dask 2 workers x 1 thread",
             "value": rate2,
             "unit": "cases/s",
             "target": "",
+            "note": note2,
         },
         {
             "name": "Dask 2 workers / 1 worker throughput",
@@ -111,8 +179,25 @@ def run(quick: bool = False) -> list[dict]:
             "unit": "x",
             "target": ">= 1.6",
             "ratio": rate2 / rate1 / 1.6,
-            "note": f"{t1:.1f} s vs {t2:.1f} s, chunks of {CHUNK}, os.cpu_count()={os.cpu_count()}",
+            "note": note,
         },
+        {
+            "name": "Dask 2 workers / in-process throughput",
+            "value": rate2 / rate_in,
+            "unit": "x",
+            "target": "",
+            "note": "reference: what Dask gains over the solver's own thread pool on this machine",
+        },
+    ]
+
+
+def run(quick: bool = False, cases: int | None = None) -> list[dict]:
+    """Measure and return the records (see the module docstring)."""
+    n = int(cases) if cases else (SWEEP_CASES_QUICK if quick else SWEEP_CASES)
+    records = sweep_records(n)
+    nsga_s, n_eval = _nsga2_seconds()
+    return [
+        *records,
         {
             "name": f"NSGA-II 100 x 100 ZDT1 ({n_eval} evaluations)",
             "value": nsga_s,
@@ -123,8 +208,25 @@ def run(quick: bool = False) -> list[dict]:
     ]
 
 
-if __name__ == "__main__":
-    import sys
+def main(argv=None) -> int:
+    import argparse
 
-    for r in run(quick="--quick" in sys.argv):
-        print(r)
+    p = argparse.ArgumentParser(
+        prog="python -m benchmarks.bench_studies", description=__doc__.splitlines()[0]
+    )
+    p.add_argument("--quick", action="store_true", help=f"{SWEEP_CASES_QUICK} cases instead of {SWEEP_CASES}")
+    p.add_argument("--cases", type=int, default=None, help="sweep size (overrides --quick)")
+    p.add_argument("--repeat", type=int, default=1, help="repeat the sweep measurement K times")
+    a = p.parse_args(argv)
+    n = a.cases or (SWEEP_CASES_QUICK if a.quick else SWEEP_CASES)
+    for k in range(a.repeat):
+        print(f"--- sweep run {k + 1}/{a.repeat}")
+        for r in sweep_records(n):
+            print(r)
+    nsga_s, n_eval = _nsga2_seconds()
+    print({"name": f"NSGA-II 100 x 100 ZDT1 ({n_eval} evaluations)", "value": nsga_s, "unit": "s"})
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -7,6 +7,9 @@ streams chunks to ``DIR/chunks`` and writes, in ``DIR``:
 - ``results.parquet`` and ``results.csv`` — every case with its outputs;
 - designs with levels and a response: ``main_effects.csv``, ``range.csv``, ``main_effects.png``,
   ``range.png``;
+- levels × samples designs (``[monte_carlo]``): ``point_statistics.csv`` (mean, std, min, max and
+  quantiles of every output per design point) and, with a response, ``point_statistics.png`` and
+  ``range_std.csv`` (range analysis of the per-point standard deviation);
 - optimisations: ``pareto.csv``, ``selections.csv``, ``pareto.png``;
 - ``summary.json`` — the run statistics.
 """
@@ -69,6 +72,18 @@ def run_cli(
         analysis.plot_range(res.analysis["range"], out / "range.png", d.response)
         ranking = " > ".join(f"{r.label}" for r in res.analysis["range"].itertuples())
         echo(f"sensitivity ranking of {d.response}: {ranking}")
+    if "point_statistics" in res.analysis:
+        table = res.analysis["point_statistics"]
+        table.to_csv(out / "point_statistics.csv", index=False)
+        if d.response:
+            analysis.plot_point_statistics(
+                table, d.response, out / "point_statistics.png", d.monte_carlo.quantiles
+            )
+        if "range_std" in res.analysis:
+            res.analysis["range_std"].to_csv(out / "range_std.csv", index=False)
+            ranking = " > ".join(f"{r.label}" for r in res.analysis["range_std"].itertuples())
+            echo(f"sensitivity ranking of the scatter (std) of {d.response}: {ranking}")
+        echo(f"{len(table)} design points x {d.monte_carlo.per_point} draws → point_statistics.csv")
     if res.pareto is not None:
         res.pareto.to_csv(out / "pareto.csv", index=False)
         res.selections.to_csv(out / "selections.csv", index=False)

@@ -10,6 +10,12 @@ and the range R_j = max_i k̄_ij − min_i k̄_ij; factors are ranked by decreas
 (orthogonal) design the level means of one factor average out every other factor's main effect, so
 for an additive model y = μ + Σ_j a_j(x_j) the range equals the spread of a_j exactly
 (Taguchi 1987; Phadke 1989 ch. 3).
+
+Levels × samples designs (:func:`point_statistics`): at every design point p the N draws of an output
+y give the sample mean ȳ_p, the sample standard deviation s_p (ddof = 1), the extremes and the
+requested quantiles (linear interpolation between order statistics, numpy/pandas' default). The
+range analysis of ȳ_p ranks the factors' effect on the mean; that of s_p their effect on the scatter
+(Taguchi's dispersion effects, Phadke 1989 ch. 5).
 """
 
 from __future__ import annotations
@@ -83,6 +89,52 @@ def range_analysis(results, factors: Sequence[str], response: str, labels: dict 
     out = pd.DataFrame(rows)
     out["rank"] = out["range"].rank(ascending=False, method="min").astype(int)
     return out.sort_values("rank", kind="stable").reset_index(drop=True)
+
+
+def quantile_label(q: float) -> str:
+    """Column suffix of a quantile: 0.05 → ``q5``, 0.5 → ``q50``, 0.025 → ``q2.5``."""
+    return f"q{100.0 * float(q):.6g}"
+
+
+def point_statistics(results, outputs: Sequence[str], quantiles: Sequence[float] = (0.05, 0.5, 0.95)):
+    """Statistics of each output over the draws of every design point (levels × samples studies).
+
+    Parameters
+    ----------
+    results : DataFrame
+        One row per case with a ``point`` column and the output columns.
+    outputs : sequence of str
+        Output columns. Numeric ones get ``<out>_mean``, ``_std`` (sample, ddof = 1; NaN for one
+        draw), ``_min``, ``_max`` and ``_q<percent>`` per quantile; boolean ones (flags such as
+        ``converged``) get ``<out>_fraction`` (share of True). NaN draws are left out.
+    quantiles : sequence of float
+        Probabilities in (0, 1).
+
+    Returns
+    -------
+    DataFrame
+        One row per ``point`` (ascending): ``point``, ``n_draws``, then the statistics.
+    """
+    import pandas as pd
+
+    g = results.groupby("point", sort=True)
+    flags = [o for o in outputs if pd.api.types.is_bool_dtype(results[o])]
+    numeric = [o for o in outputs if o not in flags and pd.api.types.is_numeric_dtype(results[o])]
+    count = g.size()
+    cols = {"point": count.index.to_numpy(), "n_draws": count.to_numpy()}
+    if numeric:
+        x = results[["point", *numeric]].astype({o: float for o in numeric}).groupby("point", sort=True)
+        stats = {"mean": x.mean(), "std": x.std(ddof=1), "min": x.min(), "max": x.max()}
+        for q in quantiles:
+            stats[quantile_label(q)] = x.quantile(float(q))
+        for o in numeric:  # columns grouped by output: mean, std, min, max, quantiles
+            for name, frame in stats.items():
+                cols[f"{o}_{name}"] = frame[o].to_numpy()
+    if flags:
+        share = g[flags].mean()
+        for o in flags:
+            cols[f"{o}_fraction"] = share[o].to_numpy()
+    return pd.DataFrame(cols)
 
 
 def sensitivity_ranking(results, factors: Sequence[str], response: str) -> list[str]:
@@ -163,6 +215,25 @@ def plot_interaction(results, factor_a: str, factor_b: str, response: str, path)
     ax.set(xlabel=factor_a, ylabel=f"mean {response}")
     ax.legend(fontsize=8)
     ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_point_statistics(table, response: str, path, quantiles: Sequence[float] = (0.05, 0.95)):
+    """Mean of ``response`` per design point with a band between two quantiles (PNG)."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(max(4.0, 0.45 * len(table) + 2.0), 3.4))
+    x = table["point"].to_numpy()
+    q_lo, q_hi = quantile_label(min(quantiles)), quantile_label(max(quantiles))
+    lo, hi = f"{response}_{q_lo}", f"{response}_{q_hi}"
+    if lo in table.columns and hi in table.columns:
+        ax.fill_between(x, table[lo], table[hi], alpha=0.25, step="mid", label=f"{q_lo}–{q_hi}")
+    ax.plot(x, table[f"{response}_mean"], marker="o", label="mean")
+    ax.set(xlabel="design point", ylabel=response, title="statistics per design point")
+    ax.set_xticks(x)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)

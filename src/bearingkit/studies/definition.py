@@ -28,6 +28,17 @@ File layout (all sections but ``[study]`` optional)::
     # column = 1                (orthogonal: 1-based array column; default the next free one)
     # distribution = "normal", mean = "...", std = "..."   (or low/high)
 
+    [monte_carlo]               # levels x samples: per_point random draws at every design point
+    per_point = 2000            # (sweep, factorial and orthogonal designs)
+    sampler = "lhs"             # random | lhs | sobol (default random)
+    seed = 2022                 # default study.seed
+    common = true               # same draws at every point (common random numbers; default true)
+    quantiles = [0.05, 0.5, 0.95]   # reported per point with mean, std, min, max
+    [[monte_carlo.factors]]     # sampled factors: a distribution as in [[factors]]
+    name = "z1"
+    distribution = "normal"; mean = 0; std = 1
+    # deviation = true          (a design factor's tolerance: value = its level + the draw)
+
     [[variables]]               # optimize: design variables
     name = "x1"; low = 0; high = 1; integer = false
     [[objectives]]
@@ -73,6 +84,18 @@ class FactorDef(_Strict):
     std: float | None = None
     low: float | None = None
     high: float | None = None
+    deviation: bool = False
+
+
+class MonteCarloDef(_Strict):
+    """Random draws at every design point of a levels × samples study (``[monte_carlo]``)."""
+
+    per_point: int = Field(ge=1)
+    sampler: Literal["random", "lhs", "sobol"] = "random"
+    seed: int | None = None
+    common: bool = True
+    quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
+    factors: tuple[FactorDef, ...] = ()
 
 
 class VariableDef(_Strict):
@@ -125,6 +148,7 @@ class StudyDefinition(_Strict):
     objectives: tuple[ObjectiveDef, ...] = ()
     constraints: tuple[ConstraintDef, ...] = ()
     optimizer: OptimizerDef = OptimizerDef()
+    monte_carlo: MonteCarloDef | None = None
     targets: dict = Field(default_factory=dict)
     source: str = "<dict>"
 
@@ -174,6 +198,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         "objectives",
         "constraints",
         "optimizer",
+        "monte_carlo",
         "targets",
     }
     if unknown:
@@ -195,17 +220,34 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     fixed = {
         k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}") for k, v in data.get("fixed", {}).items()
     }
-    factors = []
-    for i, f in enumerate(data.get("factors", [])):
-        f = dict(f)
-        spec = factor(f.get("name"), f"factors[{i}].name")
-        w = f"{source}: factors[{i}] ({spec.name})"
-        if "levels" in f:
-            f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
-        for key in ("base", "mean", "std", "low", "high"):
-            if key in f:
-                f[key] = _si(f[key], spec, f"{w}.{key}")
-        factors.append(f)
+
+    def factor_list(items, where):
+        if not isinstance(items, list):
+            raise InputError(f"{source}: {where} must be an array of tables ([[{where}]])")
+        out = []
+        for i, f in enumerate(items):
+            if not isinstance(f, dict):
+                raise InputError(f"{source}: {where}[{i}] ({f!r}) must be a table")
+            f = dict(f)
+            spec = factor(f.get("name"), f"{where}[{i}].name")
+            w = f"{source}: {where}[{i}] ({spec.name})"
+            if "levels" in f:
+                f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
+            for key in ("base", "mean", "std", "low", "high"):
+                if key in f:
+                    f[key] = _si(f[key], spec, f"{w}.{key}")
+            out.append(f)
+        return out
+
+    factors = factor_list(data.get("factors", []), "factors")
+    monte_carlo = data.get("monte_carlo")
+    if monte_carlo is not None:
+        if not isinstance(monte_carlo, dict):
+            raise InputError(f"{source}: monte_carlo ({monte_carlo!r}) must be a table ([monte_carlo])")
+        monte_carlo = {
+            **monte_carlo,
+            "factors": factor_list(monte_carlo.get("factors", []), "monte_carlo.factors"),
+        }
     variables = []
     for i, v in enumerate(data.get("variables", [])):
         v = dict(v)
@@ -234,6 +276,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         "objectives": data.get("objectives", []),
         "constraints": data.get("constraints", []),
         "optimizer": data.get("optimizer", {}),
+        "monte_carlo": monte_carlo,
         "targets": targets,
         "source": source,
     }
@@ -249,6 +292,11 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
 
 def _check(d: StudyDefinition) -> None:
     src = d.source
+    if d.monte_carlo is not None and d.design not in ("sweep", "factorial", "orthogonal"):
+        raise InputError(
+            f"{src}: [monte_carlo] draws samples at the points of a design; study.design ({d.design!r}) "
+            "must be sweep, factorial or orthogonal (a plain monte_carlo study samples its [[factors]])"
+        )
     if d.design == "optimize":
         if not d.variables or not d.objectives:
             raise InputError(f"{src}: an optimize study needs [[variables]] and [[objectives]]")
@@ -268,5 +316,50 @@ def _check(d: StudyDefinition) -> None:
     for f in d.factors:
         if not f.levels:
             raise InputError(f"{src}: factors ({f.name}) needs levels in a {d.design} study")
+        if f.deviation:
+            raise InputError(
+                f"{src}: factors ({f.name}).deviation (true) belongs in [[monte_carlo.factors]], "
+                "next to the tolerance's distribution"
+            )
     if d.design == "orthogonal" and d.array is None:
         raise InputError(f"{src}: study.array (None) must name an orthogonal array, e.g. 'L9'")
+    if d.monte_carlo is not None:
+        _check_monte_carlo(d)
+
+
+def _check_monte_carlo(d: StudyDefinition) -> None:
+    """A levels × samples study: sampled factors distinct, distributions given, tolerances on levels."""
+    from bearingkit.studies import evaluators
+
+    src, mc = d.source, d.monte_carlo
+    if not mc.factors:
+        raise InputError(f"{src}: monte_carlo.factors (none) must list at least one sampled factor")
+    design = {f.name for f in d.factors}
+    seen = set()
+    for f in mc.factors:
+        where = f"{src}: monte_carlo.factors ({f.name})"
+        if f.name in seen:
+            raise InputError(f"{where} is sampled twice; expected each factor once")
+        seen.add(f.name)
+        if f.distribution is None:
+            raise InputError(
+                f"{where}.distribution (None) must be one of normal, uniform, lognormal, truncnormal"
+            )
+        if f.levels is not None:
+            raise InputError(f"{where}.levels ({list(f.levels)}) are not used; put levels in [[factors]]")
+        if f.name in d.fixed:
+            raise InputError(f"{where} is also in [fixed]; expected a factor to be either fixed or sampled")
+        if f.deviation and f.name not in design:
+            raise InputError(
+                f"{where}.deviation (true) needs {f.name!r} among the design [[factors]] "
+                f"({sorted(design)}): the draw is added to its level"
+            )
+        if f.name in design and not f.deviation:
+            raise InputError(
+                f"{where} is also a design factor; expected deviation = true (level + draw) or another factor"
+            )
+        if evaluators.get(d.evaluator).factors[f.name].dimension in evaluators.NON_PHYSICAL:
+            raise InputError(f"{where} is a count or a name; expected a continuous factor to sample")
+    for q in mc.quantiles:
+        if not 0.0 < q < 1.0:
+            raise InputError(f"{src}: monte_carlo.quantiles ({q}) must lie strictly between 0 and 1")

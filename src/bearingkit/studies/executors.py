@@ -11,13 +11,132 @@ which chunks finish differs, and the runner puts them back in order.
 - :class:`DaskExecutor` — a Dask ``distributed`` cluster: ``scheduler="tcp://host:8786"`` connects to a
   running scheduler, ``client=`` reuses a :class:`distributed.Client` (tests start a ``LocalCluster``),
   and neither starts a ``LocalCluster`` of ``workers`` single-threaded processes.
+
+One solver thread per worker: the quasi-static solver splits a large batch over a thread pool of
+:func:`bearingkit.analysis.quasistatic.solver_threads` threads (all cores unless ``$BEARINGKIT_THREADS``
+says otherwise). Inside a pool of worker processes that pool would put every core under every worker,
+so two workers on two cores ran four busy threads and scaled 1.37× instead of ~2× (issue 9 note).
+The process pool and the Dask executor therefore set ``BEARINGKIT_THREADS`` (and the BLAS thread
+limits) in their workers: ``solver_threads=1`` by default, ``None`` leaves the workers untouched.
 """
 
 from __future__ import annotations
 
+import os
+import threading
 from collections.abc import Callable, Iterator, Sequence
 
+from bearingkit.analysis.quasistatic import THREADS_ENV
 from bearingkit.errors import InputError
+
+#: Environment variables of the BLAS/OpenMP libraries numpy may load; set with ``THREADS_ENV`` so a
+#: worker process started with this environment never spawns more threads than it is given.
+BLAS_ENV = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+#: Variables of Dask's default ``distributed.nanny.pre-spawn-environ`` that a LocalCluster started by
+#: :class:`DaskExecutor` does NOT pass on. ``MALLOC_TRIM_THRESHOLD_=65536`` makes glibc hand freed
+#: memory back to the OS at once (and fixes its mmap threshold at 128 KiB), so the solver's large
+#: per-iteration temporaries are page-faulted in afresh every time: measured on the seed-000 sweep,
+#: 8.6x the page faults and 30-40 % fewer cases/s per worker than glibc's default (issue 9 benchmark).
+DASK_MALLOC_ENV = ("MALLOC_TRIM_THRESHOLD_",)
+
+
+def worker_environment(threads: int = 1) -> dict[str, str]:
+    """Environment variables that give a worker process ``threads`` solver and BLAS threads."""
+    if int(threads) < 1:
+        raise InputError(f"solver_threads ({threads}) must be >= 1")
+    return {name: str(int(threads)) for name in (THREADS_ENV, *BLAS_ENV)}
+
+
+# Worker state changed by :func:`limit_worker_threads`: one count per process, because in-process Dask
+# workers (``LocalCluster(processes=False)``) share the process and must restore it only when the last
+# of them closes.
+_LIMIT_LOCK = threading.Lock()
+_LIMIT_STATE: dict = {"users": 0, "environ": {}, "blas": None}
+
+
+def limit_worker_threads(threads: int = 1) -> None:
+    """Give this (worker) process ``threads`` solver threads and ``threads`` BLAS threads.
+
+    Sets the variables of :func:`worker_environment` in ``os.environ`` (the solver reads
+    ``BEARINGKIT_THREADS`` at every call) and limits the BLAS libraries already loaded (their thread
+    count was fixed when numpy was imported, so the environment alone is too late). Undone by
+    :func:`restore_worker_threads` once every caller has restored.
+    """
+    from threadpoolctl import threadpool_limits
+
+    env = worker_environment(threads)
+    with _LIMIT_LOCK:
+        if _LIMIT_STATE["users"] == 0:
+            _LIMIT_STATE["environ"] = {k: os.environ.get(k) for k in env}
+            _LIMIT_STATE["blas"] = threadpool_limits(limits=int(threads), user_api="blas")
+        else:
+            threadpool_limits(limits=int(threads), user_api="blas")
+        _LIMIT_STATE["users"] += 1
+        os.environ.update(env)
+
+
+def restore_worker_threads() -> None:
+    """Undo :func:`limit_worker_threads` when its last caller in this process restores."""
+    with _LIMIT_LOCK:
+        if _LIMIT_STATE["users"] == 0:
+            return
+        _LIMIT_STATE["users"] -= 1
+        if _LIMIT_STATE["users"]:
+            return
+        for k, v in _LIMIT_STATE["environ"].items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+        if _LIMIT_STATE["blas"] is not None:
+            _LIMIT_STATE["blas"].restore_original_limits()
+        _LIMIT_STATE.update(environ={}, blas=None)
+
+
+def _init_pool_worker(threads: int | None) -> None:
+    """Initializer of a process-pool worker (top-level: picklable under ``spawn``)."""
+    if threads is not None:
+        limit_worker_threads(threads)
+
+
+def _make_plugin_class():
+    from distributed.diagnostics.plugin import WorkerPlugin
+
+    class SolverThreadsPlugin(WorkerPlugin):
+        """Dask worker plugin: ``threads`` solver/BLAS threads in every worker (also later joiners)."""
+
+        name = "bearingkit-solver-threads"
+        idempotent = False
+
+        def __init__(self, threads: int = 1):
+            self.threads = int(threads)
+
+        def setup(self, worker):
+            limit_worker_threads(self.threads)
+
+        def teardown(self, worker):
+            restore_worker_threads()
+
+    SolverThreadsPlugin.__module__ = __name__
+    return SolverThreadsPlugin
+
+
+def solver_threads_plugin(threads: int = 1):
+    """A ``SolverThreadsPlugin`` giving every Dask worker ``threads`` solver and BLAS threads."""
+    return __getattr__("SolverThreadsPlugin")(threads)
+
+
+def __getattr__(name):
+    # The plugin class subclasses distributed's WorkerPlugin; it is built on first use so that this
+    # module (imported by every study run and every process-pool worker) does not import distributed.
+    # Cached as a module attribute, it pickles by reference like any top-level class.
+    if name == "SolverThreadsPlugin":
+        cls = _make_plugin_class()
+        globals()[name] = cls
+        return cls
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class InProcessExecutor:
@@ -49,15 +168,21 @@ class ProcessPoolExecutor(InProcessExecutor):
         Number of processes (≥ 1).
     max_in_flight : int or None
         Chunks submitted at once (default 2 × workers).
+    solver_threads : int or None
+        Solver and BLAS threads in each process (default 1: the processes already use the cores);
+        None leaves the solver its default (every core per process).
     """
 
     name = "process-pool"
 
-    def __init__(self, workers: int = 2, max_in_flight: int | None = None):
+    def __init__(self, workers: int = 2, max_in_flight: int | None = None, solver_threads: int | None = 1):
         if int(workers) < 1:
             raise InputError(f"workers ({workers}) must be >= 1")
+        if solver_threads is not None:
+            worker_environment(solver_threads)  # validates
         self.workers = int(workers)
         self.max_in_flight = max_in_flight or 2 * self.workers
+        self.solver_threads = solver_threads
         self._pool = None
 
     def _ensure(self):
@@ -65,7 +190,12 @@ class ProcessPoolExecutor(InProcessExecutor):
             import multiprocessing as mp
             from concurrent.futures import ProcessPoolExecutor as _Pool
 
-            self._pool = _Pool(max_workers=self.workers, mp_context=mp.get_context("spawn"))
+            self._pool = _Pool(
+                max_workers=self.workers,
+                mp_context=mp.get_context("spawn"),
+                initializer=_init_pool_worker,
+                initargs=(self.solver_threads,),
+            )
         return self._pool
 
     def map_unordered(self, fn, items):
@@ -101,13 +231,31 @@ class DaskExecutor(InProcessExecutor):
         processes (default 2).
     max_in_flight : int or None
         Chunks submitted at once (default 4 × the cluster's thread count).
+    solver_threads : int or None
+        Solver and BLAS threads per worker (default 1). A LocalCluster started here gets them in its
+        worker processes' environment; every cluster also gets a worker plugin
+        (``SolverThreadsPlugin``) that sets them in running and later workers. None: leave workers as
+        they are.
+
+    Notes
+    -----
+    A LocalCluster started here keeps glibc's default memory trimming in its workers (Dask's
+    ``MALLOC_TRIM_THRESHOLD_`` is left out, see :data:`DASK_MALLOC_ENV`). Workers of a cluster started
+    elsewhere keep their own settings; remove that variable from their
+    ``distributed.nanny.pre-spawn-environ`` for the same speed.
     """
 
     name = "dask"
 
     def __init__(
-        self, scheduler: str | None = None, client=None, workers: int | None = None, max_in_flight=None
+        self,
+        scheduler: str | None = None,
+        client=None,
+        workers: int | None = None,
+        max_in_flight=None,
+        solver_threads: int | None = 1,
     ):
+        env = worker_environment(solver_threads) if solver_threads is not None else {}
         self._own = client is None
         self._cluster = None
         if client is None:
@@ -116,13 +264,26 @@ class DaskExecutor(InProcessExecutor):
             if scheduler:
                 client = Client(scheduler)
             else:
+                import dask
                 from distributed import LocalCluster
 
-                self._cluster = LocalCluster(
-                    n_workers=int(workers or 2), threads_per_worker=1, processes=True, dashboard_address=None
-                )
+                pre_spawn = {
+                    k: v
+                    for k, v in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
+                    if k not in DASK_MALLOC_ENV
+                }
+                with dask.config.set({"distributed.nanny.pre-spawn-environ": pre_spawn}):
+                    self._cluster = LocalCluster(
+                        n_workers=int(workers or 2),
+                        threads_per_worker=1,
+                        processes=True,
+                        dashboard_address=None,
+                        env=env,  # set in the worker process before it runs any task
+                    )
                 client = Client(self._cluster)
         self.client = client
+        if solver_threads is not None:
+            client.register_plugin(solver_threads_plugin(solver_threads))
         info = client.scheduler_info()
         threads = sum(w.get("nthreads", 1) for w in info.get("workers", {}).values()) or 1
         self.workers = threads

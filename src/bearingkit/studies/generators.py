@@ -1,4 +1,5 @@
-"""Case generators of design studies: sweeps, full factorials, orthogonal arrays, Monte Carlo samples.
+"""Case generators of design studies: sweeps, full factorials, orthogonal arrays, Monte Carlo samples,
+and levels × samples (Monte Carlo draws at every point of a design).
 
 SI units: factor values are passed through unchanged (the study definition has already parsed them
 to SI). Every generator returns a :class:`pandas.DataFrame` with one row per case and one column per
@@ -260,3 +261,74 @@ def monte_carlo(distributions: Mapping[str, Distribution], n: int, seed: int, sa
         u = eng.random(n)
     u = np.clip(u, 1e-12, 1 - 1e-12)
     return _frame({k: dist.ppf(u[:, i]) for i, (k, dist) in enumerate(distributions.items())})
+
+
+def _point_seeds(seed: int, n_points: int) -> list[int]:
+    """Independent, reproducible seeds of the design points (numpy SeedSequence children)."""
+    children = np.random.SeedSequence(int(seed)).spawn(int(n_points))
+    return [int(c.generate_state(1, np.uint64)[0]) for c in children]
+
+
+def levels_by_samples(
+    design,
+    distributions: Mapping[str, Distribution],
+    per_point: int,
+    seed: int,
+    sampler: str = "random",
+    common: bool = True,
+    deviations: Sequence[str] = (),
+):
+    """Every design point repeated with ``per_point`` Monte Carlo draws (a levels × samples design).
+
+    Parameters
+    ----------
+    design : DataFrame
+        The design points, one row each (from :func:`orthogonal_design`, :func:`full_factorial` or
+        :func:`sweep`), factor values in SI.
+    distributions : mapping name → Distribution
+        Sampled factors (SI).
+    per_point : int
+        Draws per design point, N.
+    seed : int
+        Seed of the draws (reproducible).
+    sampler : str
+        ``"random"``, ``"lhs"`` or ``"sobol"`` (:func:`monte_carlo`).
+    common : bool
+        True: the same N draws at every point (common random numbers: differences between points
+        are not blurred by different draws); False: independent draws per point, from seeds spawned
+        by :class:`numpy.random.SeedSequence` (``seed``) in point order.
+    deviations : sequence of str
+        Sampled factors that are tolerances of design factors: their value is the point's level plus
+        the draw, and the level is kept in ``nominal_<name>``.
+
+    Returns
+    -------
+    DataFrame
+        P·N rows, point-major (row p·N + k is draw k of point p): ``point``, ``draw``, the design's
+        columns, ``nominal_<name>`` for each deviation, and the sampled factors.
+    """
+    import pandas as pd
+
+    n_points, n = len(design), int(per_point)
+    if n < 1:
+        raise InputError(f"per_point ({per_point}) must be >= 1")
+    if n_points < 1:
+        raise InputError("levels x samples needs at least one design point")
+    missing = [k for k in deviations if k not in design.columns]
+    if missing:
+        raise InputError(f"deviations {missing} must be design factors ({list(design.columns)})")
+    if common:
+        draws = monte_carlo(distributions, n, seed, sampler)
+        values = {k: np.tile(draws[k].to_numpy(float), n_points) for k in distributions}
+    else:
+        frames = [monte_carlo(distributions, n, s, sampler) for s in _point_seeds(seed, n_points)]
+        values = {k: np.concatenate([f[k].to_numpy(float) for f in frames]) for k in distributions}
+    point = np.repeat(np.arange(n_points), n)
+    out = design.iloc[point].reset_index(drop=True)
+    out.insert(0, "draw", np.tile(np.arange(n), n_points))
+    out.insert(0, "point", point)
+    for k in deviations:
+        out[f"nominal_{k}"] = out[k].to_numpy(float)
+    for k, v in values.items():
+        out[k] = out[k].to_numpy(float) + v if k in deviations else v
+    return pd.DataFrame(out)

@@ -6,7 +6,10 @@ SI units throughout (factor values and outputs as the evaluator defines them, un
 :func:`bearingkit.studies.__main__.run_cli`). The cases are fixed before anything runs (Monte Carlo
 samples come from the study's seed) and split into chunks of ``chunk_size`` cases; a chunk is the unit
 of parallel work and of resume. Each chunk is one call of the evaluator (one batched solve per group
-of cases), so results do not depend on the executor. Optimisation studies evaluate one population
+of cases), so results do not depend on the executor. A study with a ``[monte_carlo]`` section is a
+levels × samples design: every point of its sweep/factorial/orthogonal design is repeated with
+``per_point`` random draws (cases ``point``-major, indexed by ``point`` and ``draw``), and its
+analysis gives the statistics of every output per design point. Optimisation studies evaluate one population
 per generation through the same machinery (chunk id = generation) and replay deterministically on
 resume.
 """
@@ -35,14 +38,17 @@ class StudyResult:
     definition : StudyDefinition
     cases : DataFrame
         The generated cases (``case`` id, design columns such as ``level_<factor>`` or ``swept``, and
-        every factor value in SI).
+        every factor value in SI); levels × samples designs add ``point``, ``draw`` and
+        ``nominal_<factor>`` for toleranced design factors.
     results : DataFrame
         ``cases`` joined with the evaluator's outputs (one row per case, ordered by ``case``); for an
         optimisation, every evaluated point with its ``generation``.
     stats : dict
         ``chunks`` (total), ``computed`` (this run), ``reused`` (found in the store), ``seconds``.
     analysis : dict of DataFrame
-        ``main_effects`` and ``range`` (designs with levels and a ``response``).
+        ``main_effects`` and ``range`` (designs with levels and a ``response``); levels × samples:
+        ``point_statistics`` (one row per design point) and, with a response, the main effects and
+        ranges of its per-point mean and of its per-point standard deviation (``range_std``).
     pareto : DataFrame or None
         Non-dominated feasible points of an optimisation.
     selections : DataFrame or None
@@ -98,6 +104,20 @@ def build_cases(definition: StudyDefinition):
         design = generators.monte_carlo(dists, d.samples, d.seed, d.sampler)
     else:
         raise InputError(f"{d.source}: design ({d.design!r}) has no case table (use run_study)")
+    if d.monte_carlo is not None:
+        mc = d.monte_carlo
+        dists = {
+            f.name: generators.Distribution(f.distribution, f.mean, f.std, f.low, f.high) for f in mc.factors
+        }
+        design = generators.levels_by_samples(
+            design,
+            dists,
+            mc.per_point,
+            d.seed if mc.seed is None else mc.seed,
+            mc.sampler,
+            mc.common,
+            deviations=[f.name for f in mc.factors if f.deviation],
+        )
     for k, v in base.items():
         if k not in design.columns:
             design[k] = v
@@ -159,6 +179,7 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
     cases = build_cases(d)
     ev = evaluators.get(d.evaluator)
     inputs = cases[["case", *[c for c in cases.columns if c in ev.factors]]]
+    index = [c for c in INDEX_COLUMNS if c in cases.columns]
     bounds = list(range(0, len(cases), d.chunk_size))
     done = store.open(_fingerprint(d, cases), len(bounds), d.chunk_size, resume)
     todo = [i for i in range(len(bounds)) if i not in done]
@@ -168,10 +189,13 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
     with prog:
         advance(prog, task, sum(min(d.chunk_size, len(cases) - bounds[i]) for i in done))
         for pos, out in executor.map_unordered(fn, chunks):
-            store.write(todo[pos], _select(out, d.outputs))
+            out = _select(out, d.outputs)
+            for k, col in enumerate(index):  # the chunk files say which point and draw they hold
+                out.insert(1 + k, col, cases[col].to_numpy()[out["case"].to_numpy()])
+            store.write(todo[pos], out)
             advance(prog, task, len(out))
     outputs = store.read()
-    results = cases.merge(outputs, on="case", how="left", validate="one_to_one")
+    results = cases.merge(outputs, on=["case", *index], how="left", validate="one_to_one")
     result = StudyResult(
         d,
         cases,
@@ -184,12 +208,51 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
             "executor": getattr(executor, "name", type(executor).__name__),
         },
     )
-    if d.response and d.design in ("orthogonal", "factorial"):
+    if d.monte_carlo is not None:
+        _levels_by_samples_analysis(result, outputs.columns.difference(["case", *index], sort=False))
+    elif d.response and d.design in ("orthogonal", "factorial"):
         names = [f.name for f in d.factors]
         result.analysis["main_effects"] = analysis.main_effects(results, names, d.response)
         labels = {f.name: f.label or f.name for f in d.factors}
         result.analysis["range"] = analysis.range_analysis(results, names, d.response, labels)
     return result
+
+
+#: Index columns of a levels × samples study: design point and draw (also kept in the chunk files).
+INDEX_COLUMNS = ("point", "draw")
+
+
+def design_points(cases, factors):
+    """The design points of a levels × samples case table: one row per ``point``.
+
+    Columns: ``point``, the design columns (``level_<factor>``, ``swept``) and the design ``factors``
+    at their levels (a toleranced factor shows its level, ``nominal_<factor>``, not a draw).
+    """
+    import pandas as pd
+
+    first = cases.groupby("point", sort=True).first()
+    cols = {"point": first.index.to_numpy()}
+    for c in cases.columns:
+        if c.startswith("level_") or c == "swept":
+            cols[c] = first[c].to_numpy()
+    for f in factors:
+        cols[f] = first[f"nominal_{f}" if f"nominal_{f}" in first.columns else f].to_numpy()
+    return pd.DataFrame(cols)
+
+
+def _levels_by_samples_analysis(result: StudyResult, outputs) -> None:
+    d = result.definition
+    stats = analysis.point_statistics(result.results, list(outputs), d.monte_carlo.quantiles)
+    names = [f.name for f in d.factors]
+    table = design_points(result.cases, names).merge(stats, on="point", validate="one_to_one")
+    result.analysis["point_statistics"] = table
+    if d.response and d.design in ("orthogonal", "factorial"):
+        labels = {f.name: f.label or f.name for f in d.factors}
+        mean, std = f"{d.response}_mean", f"{d.response}_std"
+        result.analysis["main_effects"] = analysis.main_effects(table, names, mean)
+        result.analysis["range"] = analysis.range_analysis(table, names, mean, labels)
+        if d.monte_carlo.per_point > 1:
+            result.analysis["range_std"] = analysis.range_analysis(table, names, std, labels)
 
 
 def _select(frame, outputs):
