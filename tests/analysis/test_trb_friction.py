@@ -61,20 +61,71 @@ def test_outer_torque_change_is_jensen_of_q_to_031(solved):
     assert abs(got[0]) < abs(got[2]) < abs(got[4]) and abs(got[1]) < abs(got[3]) < abs(got[5])
 
 
-def test_sliding_increment_ratio_constant_in_cage_slip(solved):
+def _increment_ratios(s, cage_slip, model="limiting_shear"):
+    m = s.friction(TRBOperatingPoint(cage_slip=cage_slip, sliding_model=model)).max_sliding_inner
+    return m[1:] - m[0], m[1:] / m[0] - 1.0
+
+
+def test_sliding_increment_ratio_constant_in_cage_slip_with_printed_eq8(solved):
+    # Fig. 7a,b: the increment grows with S_c at a constant ratio — exact for eq. (8) as printed,
+    # which is linear in v_s (u_i shifts by v_si/2 only).
     for s in solved.values():
-        lo = s.friction(TRBOperatingPoint(cage_slip=1e-4)).max_sliding_inner
-        hi = s.friction(TRBOperatingPoint(cage_slip=5e-4)).max_sliding_inner
-        inc_lo, inc_hi = lo[1:] - lo[0], hi[1:] - hi[0]
-        assert np.all(inc_hi > inc_lo) and np.all(inc_lo > 0)  # Fig. 7a,b: the increment grows with S_c …
-        np.testing.assert_allclose(inc_hi / hi[0], inc_lo / lo[0], rtol=1e-3)  # … at a constant ratio
+        inc_lo, r_lo = _increment_ratios(s, 1e-4, "newtonian")
+        inc_hi, r_hi = _increment_ratios(s, 5e-4, "newtonian")
+        assert np.all(inc_hi > inc_lo) and np.all(inc_lo > 0)
+        np.testing.assert_allclose(r_hi, r_lo, rtol=1e-3)
+
+
+def test_sliding_increment_ratio_with_limiting_shear(solved):
+    # Default reading: at 2 kN the cone contacts stay near-Newtonian (F_rs/Q ~ 1e-4 ideal), so Fig. 7's
+    # invariance holds to ~1 % for S_d = 0.5 µm and ~5 % for the most loaded roller of S_d = 1.5 µm; at
+    # 10 kN they saturate towards Λ_L Q and the ratio falls with S_c — the known deviation of
+    # seed001/finding/sliding-increment-ratio-slip-invariance.
+    inc_lo, r_lo = _increment_ratios(solved[2e3], 1e-4)
+    inc_hi, r_hi = _increment_ratios(solved[2e3], 5e-4)
+    assert np.all(inc_hi > inc_lo) and np.all(inc_lo > 0)
+    np.testing.assert_allclose(r_hi[:2], r_lo[:2], rtol=0.015)
+    np.testing.assert_allclose(r_hi, r_lo, rtol=0.06)
+    inc_lo, r_lo = _increment_ratios(solved[10e3], 1e-4)
+    inc_hi, r_hi = _increment_ratios(solved[10e3], 5e-4)
+    assert np.all(r_hi < 0.6 * r_lo) and np.all(r_hi > 0)
+    assert np.all(inc_hi < inc_lo)  # near the plateau even the absolute increment shrinks with S_c
+
+
+def test_default_cone_traction_is_bounded_and_reduces_to_eq8_when_light(solved):
+    for f, s in solved.items():
+        for sc in (1e-4, 5e-4):
+            lim = s.friction(TRBOperatingPoint(cage_slip=sc))
+            newt = s.friction(TRBOperatingPoint(cage_slip=sc, sliding_model="newtonian"))
+            assert np.all(lim.sliding_inner <= lim.operating_point.limiting_shear_coeff * lim.load_inner)
+            assert np.all(lim.sliding_inner <= newt.sliding_inner * (1 + 1e-12))
+            if f == 2e3:  # ideal rollers in the Newtonian regime, τ_N ≪ τ_L
+                np.testing.assert_allclose(lim.sliding_inner[0], newt.sliding_inner[0], rtol=0.01)
+    ideal = solved[10e3].friction(TRBOperatingPoint())
+    mu = ideal.sliding_inner[0] / ideal.load_inner[0]
+    assert np.all((0.03 < mu) & (mu < 0.045))  # near the Λ_L = 0.075 plateau already at S_c = 0.01 %
+
+
+def test_inner_torque_change_by_reading_of_eq8(solved):
+    # Fig. 6a / §3.2: M_ir falls for every series, by ~1e-2 %. Readings of eq. (8) (docs/seed001.md):
+    s = solved[10e3]
+
+    def change(model):
+        r = s.friction(TRBOperatingPoint(sliding_model=model))
+        return r.torque_inner[1:] / r.torque_inner[0] - 1.0
+
+    newt, lim, mpa = change("newtonian"), change("limiting_shear"), change("newtonian_mpa")
+    # as printed: F_rs ~ Q^6 dominates M_ir, Jensen raises it by ~3 % (series 1) … ~30 % (series 5)
+    assert np.all(newt > 0) and 0.02 < newt[0] < 0.05
+    # default: series 1-2 fall within the 1e-2 % decade, series 3-6 rise (known deviation)
+    assert np.all(lim[:2] < 0) and np.all(np.abs(lim[:2]) < 10**-3.5)
+    assert np.all(lim[2:] > 0) and np.all(lim[2:] < 1e-2)
+    # p-in-MPa unit slip: isoviscous, F_rs negligible, every series falls (the paper's finding)
+    assert np.all(mpa < 0) and np.all(np.abs(mpa[:2]) < 10**-3.5)
 
 
 def test_sliding_increment_relatively_larger_at_light_load(solved):
-    ratios = {
-        f: (lambda m: m[1:] / m[0] - 1.0)(s.friction(TRBOperatingPoint(cage_slip=5e-4)).max_sliding_inner)
-        for f, s in solved.items()
-    }
+    ratios = {f: _increment_ratios(s, 5e-4)[1] for f, s in solved.items()}
     assert np.all(ratios[2e3] > ratios[10e3])  # conclusions: more pronounced under light axial load
     # deviation value dominates the arrangement (Fig. 7a): S_d effect ≫ random-vs-descending effect
     r = ratios[10e3]
@@ -145,6 +196,8 @@ def test_monte_carlo_dataframe():
         (dict(roughness_rib=0.0, roughness_roller_end=0.0), "roughness"),
         (dict(flange_arm="x"), "flange_arm"),
         (dict(rolling_model="x"), "rolling_model"),
+        (dict(sliding_model="eyring"), "sliding_model"),
+        (dict(limiting_shear_coeff=-0.1), "limiting_shear_coeff"),
         (dict(cage_slip=np.array([1e-4, 2e-4])), "cage_slip"),
     ],
 )
@@ -164,12 +217,20 @@ def test_bad_calls():
 
 def test_validation_cases():
     cases = {c.id: c for c in all_cases(["seed001/finding/"])}
-    assert set(cases) >= {
+    passing = {
         "seed001/finding/torque-change-ratio",
         "seed001/finding/torque-change-ratio-inner",
+        "seed001/finding/torque-decrease-fraction-outer",
+        "seed001/finding/sliding-increment-ratio-slip-invariance-newtonian",
+    }
+    known = {
+        "seed001/finding/torque-decrease-fraction-inner",
         "seed001/finding/sliding-increment-ratio-slip-invariance",
     }
-    assert run_case(cases["seed001/finding/torque-change-ratio"]).passed
-    assert run_case(cases["seed001/finding/sliding-increment-ratio-slip-invariance"]).passed
-    inner = run_case(cases["seed001/finding/torque-change-ratio-inner"])
-    assert inner.error is None and inner.case.known_deviation
+    assert set(cases) >= passing | known
+    for cid in passing:
+        res = run_case(cases[cid])
+        assert res.passed and cases[cid].known_deviation is None, cid
+    for cid in known:
+        res = run_case(cases[cid])  # still missing: a stale known deviation must be removed
+        assert res.error is None and not res.passed and cases[cid].known_deviation, cid

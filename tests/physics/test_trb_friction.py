@@ -86,15 +86,27 @@ def test_rolling_friction_magnitude_is_hydrodynamic():
     assert 1e-5 < mu < 1e-2
 
 
-def _sliding(vs=2.5e-4, load=1776.0, u=1.39, z=tf.ROELANDS_EXPONENT_LIU2022):
-    return tf.sliding_friction_force(vs, load, ETA, u, ALPHA, E_RED, R_X, L, z)
+def _sliding(
+    vs=2.5e-4, load=1776.0, u=1.39, z=tf.ROELANDS_EXPONENT_LIU2022, model="limiting_shear", lam=None
+):
+    kw = {} if lam is None else {"limiting_shear_coeff": lam}
+    return tf.sliding_friction_force(vs, load, ETA, u, ALPHA, E_RED, R_X, L, z, model=model, **kw)
 
 
-def test_sliding_traction_is_linear_and_odd_in_slide_speed():
-    assert _sliding(5e-4) / _sliding(2.5e-4) == pytest.approx(2.0, rel=1e-12)
-    assert _sliding(-2.5e-4) == pytest.approx(-_sliding(2.5e-4))
-    assert _sliding(0.0) == 0.0
-    assert _sliding(load=0.0) == 0.0
+def test_newtonian_sliding_traction_is_linear_and_odd_in_slide_speed():
+    n = "newtonian"
+    assert _sliding(5e-4, model=n) / _sliding(2.5e-4, model=n) == pytest.approx(2.0, rel=1e-12)
+    assert _sliding(-2.5e-4, model=n) == pytest.approx(-_sliding(2.5e-4, model=n))
+    assert _sliding(0.0, model=n) == 0.0
+    assert _sliding(load=0.0, model=n) == 0.0
+
+
+def test_limited_sliding_traction_is_odd_monotone_and_sublinear():
+    assert _sliding(-2.5e-4) == pytest.approx(-_sliding(2.5e-4), rel=1e-12)
+    assert _sliding(0.0) == 0.0 and _sliding(load=0.0) == 0.0
+    f = _sliding(np.array([1e-6, 1e-5, 1e-4, 2.5e-4, 1e-3, 1e-2]))
+    assert np.all(np.diff(f) > 0)
+    assert np.all(np.diff(f / [1e-6, 1e-5, 1e-4, 2.5e-4, 1e-3, 1e-2]) < 0)  # F/v_s falls: saturating
 
 
 def test_sliding_traction_equals_newtonian_shear_with_implied_film():
@@ -104,7 +116,7 @@ def test_sliding_traction_equals_newtonian_shear_with_implied_film():
     c = line_contact(1776.0, L, R_X, E_RED)
     i = tf.tractive_integral(c.max_pressure, c.half_width, ETA)
     h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, 1776.0, L)
-    assert _sliding() == pytest.approx(2.5e-4 * ETA * L * i / h, rel=1e-12)
+    assert _sliding(model="newtonian") == pytest.approx(2.5e-4 * ETA * L * i / h, rel=1e-12)
 
 
 @pytest.mark.parametrize("load", [355.0, 1776.0, 2500.0])
@@ -114,6 +126,54 @@ def test_implied_film_is_the_central_film_over_the_full_strip(load):
     h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, load, L)
     hc = ehl.film_line_pan_hamrock(ETA, 1.39, ALPHA, E_RED, R_X, load, L).central
     assert 2 * h / hc == pytest.approx(1.0, abs=0.1)
+
+
+@pytest.mark.parametrize("p_max, rate", [(3e8, 1e3), (1.3e9, 1e2), (1.3e9, 1e4), (2.5e9, 1e3)])
+def test_limited_shear_integral_against_adaptive_quadrature(p_max, rate):
+    b, lam = 6e-5, 0.075
+
+    def tau(x):
+        p = p_max * np.sqrt(max(1.0 - (x / b) ** 2, 0.0))
+        if p == 0.0:
+            return 0.0
+        tau_n = ETA * tf.roelands_viscosity_ratio(p, ETA) * rate
+        return lam * p * -np.expm1(-tau_n / (lam * p))
+
+    ref = 2.0 * integrate.quad(tau, 0.0, b, epsabs=0, epsrel=1e-12, limit=400)[0]
+    assert tf.limited_shear_integral(p_max, b, ETA, rate, limiting_shear_coeff=lam) == pytest.approx(
+        ref, rel=1e-7
+    )
+
+
+def test_limiting_shear_reading_has_both_limits():
+    # τ_N ≪ τ_L: eq. (8) exactly (same film, whole strip over 2h*); τ_N ≫ τ_L: Λ_L Q.
+    small = _sliding(1e-9)
+    assert small == pytest.approx(_sliding(1e-9, model="newtonian"), rel=1e-5)  # 1 − e^−x ≈ x(1 − x/2)
+    for lam in (0.05, 0.075, 0.1):
+        assert _sliding(10.0, lam=lam) == pytest.approx(lam * 1776.0, rel=2e-3)
+    vs = np.geomspace(1e-7, 1e-1, 13)
+    for q in (355.0, 1776.0):
+        lim, newt = _sliding(vs, load=q), _sliding(vs, load=q, model="newtonian")
+        assert np.all(lim <= newt * (1 + 1e-12)) and np.all(lim <= 0.075 * q)
+
+
+def test_printed_newtonian_traction_is_not_physical_but_the_limited_one_is():
+    # Seed contact at 10 kN (Q = 1776 N), S_c = 0.05 %: v_s = ω_i R_i S_c = 104.7·0.0238·5e-4 m/s.
+    from bearingkit.physics.traction import MU_BOUNDARY
+
+    vs = 104.72 * 0.02383 * 5e-4
+    assert _sliding(vs, model="newtonian") / 1776.0 > MU_BOUNDARY  # above dry/boundary friction
+    assert _sliding(vs) / 1776.0 < tf.SLIDING_LIMITING_SHEAR_COEFF
+
+
+def test_mpa_reading_is_isoviscous():
+    # p in MPa inside Roelands' per-Pa constant: η(p)/η0 ≈ 1, I ≈ b (no piezoviscosity).
+    from bearingkit.physics.hertz import line_contact
+
+    b = line_contact(1776.0, L, R_X, E_RED).half_width
+    h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, 1776.0, L)
+    assert _sliding(model="newtonian_mpa") == pytest.approx(2.5e-4 * ETA * L * b / h, rel=1e-4)
+    assert _sliding(model="newtonian_mpa") < 1e-6 * _sliding(model="newtonian")
 
 
 def test_sliding_traction_needs_a_film_when_sliding():
@@ -182,3 +242,7 @@ def test_unknown_rolling_model_and_bad_values():
         _rolling(load=np.nan)
     with pytest.raises(InputError, match="slide_speed"):
         _sliding(vs=np.inf)
+    with pytest.raises(InputError, match="sliding_model"):
+        _sliding(model="eyring")
+    with pytest.raises(InputError, match="limiting_shear_coeff"):
+        _sliding(lam=0.0)

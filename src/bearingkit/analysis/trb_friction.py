@@ -6,14 +6,21 @@ Result keys carry their unit (``torque_inner_Nm`` …).
 Method (Liu et al. 2022, eqs. 7–13): the quasi-static solve of a :class:`~bearingkit.rows.tapered.
 TaperedRow` gives per roller the cone, cup and rib loads (per slice for sliced rows). With outer-raceway
 control (cage slip S_c, :func:`~bearingkit.physics.trb_friction.outer_control_kinematics`) every
-roller carries EHL rolling resistance F_ro on both raceways, Newtonian sliding traction F_rs on the
-cone (v_si = ω_i R_i S_c; none on the cup) and rib sliding F_fs = Q_f μ₀ e^(−1.8Λ^1.2); the torques are
+roller carries EHL rolling resistance F_ro on both raceways, sliding traction F_rs on the cone
+(v_si = ω_i R_i S_c; none on the cup) and rib sliding F_fs = Q_f μ₀ e^(−1.8Λ^1.2); the torques are
 M_er = Σ F_ro,e R_e and M_ir = Σ (F_ro,i + F_rs,i) R_i + F_fs·arm. Everything is batched over the case
 axis (deviation realisations) and the rollers; no Python loop over either.
 
+F_rs is eq. (8) (Newtonian shear with Roelands viscosity over the Hertz strip) capped by the limiting
+shear stress τ_L = 0.075 p by default (``sliding_model="limiting_shear"``): as printed
+(``"newtonian"``) it reaches F_rs/Q = 0.075 at 10 kN and S_c = 0.01 % and 0.38 at 0.05 %, above boundary
+friction. The cap does not make it small: at 10 kN the cone contacts are near the plateau
+(F_rs/Q ≈ 0.04 at S_c = 0.01 %), so F_rs is ~99 % of M_ir there (docs/seed001.md).
+
 Choices where the paper is silent (see :class:`TRBOperatingPoint`): lubricant ISO VG 46 mineral oil at
 40 °C (η₀ = 0.039 Pa·s, α = 2e-8 1/Pa), roller-end and rib roughness, μ₀, the rib film by
-Hamrock–Dowson for the spherical roller end on a flat rib, the rib moment arm from the row geometry.
+Hamrock–Dowson for the spherical roller end on a flat rib, the rib moment arm from the row geometry,
+the limiting-shear coefficient Λ_L = 0.075 (Bair & Winer 1979, mid-range of 0.05–0.1 for mineral oils).
 """
 
 from __future__ import annotations
@@ -79,6 +86,11 @@ class TRBOperatingPoint:
         roelands_exponent`). Default: the seed's 0.601.
     flange_arm : str
         :data:`FLANGE_ARMS`.
+    sliding_model : str
+        Reading of eq. (8), :data:`bearingkit.physics.trb_friction.SLIDING_MODELS`: ``"limiting_shear"``
+        (default; Newtonian shear capped by τ_L = Λ_L p) or ``"newtonian"`` (eq. 8 as printed).
+    limiting_shear_coeff : float [-]
+        Λ_L = τ_L/p of the ``"limiting_shear"`` reading (default 0.075, Bair & Winer 1979).
     """
 
     speed: float = SEED001_SPEED
@@ -91,6 +103,8 @@ class TRBOperatingPoint:
     rolling_model: str = "aihara1987"
     roelands_exponent: float | None = tf.ROELANDS_EXPONENT_LIU2022
     flange_arm: str = "geometric"
+    sliding_model: str = "limiting_shear"
+    limiting_shear_coeff: float = tf.SLIDING_LIMITING_SHEAR_COEFF
 
     def __post_init__(self):
         for name in (
@@ -100,6 +114,7 @@ class TRBOperatingPoint:
             "roughness_roller_end",
             "roughness_rib",
             "mu_coulomb",
+            "limiting_shear_coeff",
         ):
             if np.ndim(getattr(self, name)) != 0:
                 raise InputError(f"{name} (shape {np.shape(getattr(self, name))}) must be a scalar")
@@ -119,6 +134,8 @@ class TRBOperatingPoint:
         if self.roelands_exponent is not None:
             checks.positive("roelands_exponent", self.roelands_exponent)
         checks.one_of("flange_arm", self.flange_arm, FLANGE_ARMS)
+        checks.one_of("sliding_model", self.sliding_model, tf.SLIDING_MODELS)
+        checks.positive("limiting_shear_coeff", self.limiting_shear_coeff)
 
     @property
     def viscosity(self) -> float:
@@ -144,7 +161,8 @@ class TRBFrictionResult:
     rolling_inner, rolling_outer : ndarray (C, Z) [N]
         F_ro on the cone and cup (eq. 7).
     sliding_inner, sliding_outer : ndarray (C, Z) [N]
-        F_rs on the cone and cup (eq. 8; cup 0 under outer-raceway control).
+        F_rs on the cone and cup (eq. 8 in the operating point's ``sliding_model`` reading; cup 0 under
+        outer-raceway control).
     flange : ndarray (C, Z) [N]
         F_fs (eq. 9).
     film_parameter_flange : ndarray (C, Z) [-]
@@ -247,11 +265,30 @@ def friction_from_state(
     ro_e = tf.rolling_friction_force(
         q_e, eta, kin.entrainment_outer, alpha, e_red, geo.radius_x_outer, width, model
     )
+    sliding = dict(model=op.sliding_model, limiting_shear_coeff=op.limiting_shear_coeff)
     rs_i = tf.sliding_friction_force(
-        kin.slide_inner, q_i, eta, kin.entrainment_inner, alpha, e_red, geo.radius_x_inner, width, op.exponent
+        kin.slide_inner,
+        q_i,
+        eta,
+        kin.entrainment_inner,
+        alpha,
+        e_red,
+        geo.radius_x_inner,
+        width,
+        op.exponent,
+        **sliding,
     )
     rs_e = tf.sliding_friction_force(
-        kin.slide_outer, q_e, eta, kin.entrainment_outer, alpha, e_red, geo.radius_x_outer, width, op.exponent
+        kin.slide_outer,
+        q_e,
+        eta,
+        kin.entrainment_outer,
+        alpha,
+        e_red,
+        geo.radius_x_outer,
+        width,
+        op.exponent,
+        **sliding,
     )
     # Rib: spherical roller end (radius kernel.end_radius) on a flat rib, Hamrock–Dowson circular contact.
     loaded = q_f > 0

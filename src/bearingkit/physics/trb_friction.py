@@ -3,7 +3,7 @@
 SI units throughout (N, m, Pa, Pa·s, 1/Pa, m/s, rad/s, N·m). Pure numpy functions broadcasting over
 their arguments (leading case axis first). They implement seed 001 (Liu et al. 2022, §2.2, eqs. 7–13,
 doi:10.3390/lubricants10070154); the extracted seed text lost exponents and minus signs, so every
-form is re-derived here and the reading is stated.
+form is re-derived here and the reading is stated. docs/seed001.md summarises the readings and results.
 
 Readings of the seed's equations
 --------------------------------
@@ -14,17 +14,31 @@ Readings of the seed's equations
   seed bearing C = 88 puts the rolling torque within a factor 2 of the SKF catalogue's rolling moment
   of a 320-series TRB (tests), whereas C = 0.88 × 10⁻² would make it 10⁴ times smaller. The literal
   negative-exponent reading is kept as ``"liu2022_literal"`` for comparison.
-- **Eq. (8), sliding traction** (Harris 1966, after Zhou & Hoeprich 1991 for I):
-  ``F_rs = 0.168 v_s η₀ l I U^−0.74 G^−0.4 W^0.2 / R``. Dimensions: [m/s][Pa·s][m][m]/[m] = N. It is
-  Newtonian shear τ = η(p) v_s / h integrated over the Hertz strip, F = v_s l ∫η dx / h, with the film
-  h* = R U^0.74 G^0.4 W^−0.2 / 0.168 (:func:`sliding_film_thickness`; for the seed contact h* is
-  within a factor 2 of the Pan–Hamrock central film, see the tests). As printed the integral runs over
-  half the strip (0 … b); kept as printed.
+- **Eq. (8), sliding traction** (Harris 1966, after Zhou & Hoeprich 1991 for I). Printed (flattened)
+  "F r s = 0.168 v s η 0 l w I U 0.74 G 0.4 W 0.2 R 1". The trailing "R 1" is R⁻¹ with its minus sign
+  lost, so the other exponents may have lost theirs too; dimensions decide part of it:
+  [v_s η₀ l_w / R] = Pa·m = N/m, so I must be a length for F_rs to be a force — a dimensionless mean
+  ∫…dx/b is excluded. The groups read U^−0.74 G^−0.4 W^0.2 (a Newtonian shear force falls with the
+  film, which grows with U and G and falls with W): ``F_rs = v_s η₀ l I / h*`` with the film
+  h* = R U^0.74 G^0.4 W^−0.2 / 0.168 (:func:`sliding_film_thickness`). 2h* is within 10 % of the
+  Pan–Hamrock central film for the seed contacts (tests), which fixes the half-strip integral as
+  printed: eq. (8) is Newtonian shear over the whole strip (2I) across the central film (2h*).
 - **Eq. (10), tractive integral**: ``I = ∫₀ᵇ exp{(ln η₀ + 9.67)[(1 + 5.1×10⁻⁹ p)^Z − 1]} dx`` —
-  Roelands' viscosity ratio η(p)/η₀ (η₀ in Pa·s, p in Pa, so 5.1 × 10⁻⁹ 1/Pa = 1/p_r with
-  p_r = 1.96 × 10⁸ Pa) over a Hertz pressure p = p_max √(1 − x²/b²); I has the unit of length. The
-  seed prints Z = 0.601 (:data:`ROELANDS_EXPONENT_LIU2022`); :func:`roelands_exponent` gives the Z that
-  matches a lubricant's Barus α instead.
+  Roelands' viscosity ratio η(p)/η₀ (η₀ in Pa·s, p in Pa: 5.1 × 10⁻⁹ 1/Pa = 1/p_r with
+  p_r = 1.96 × 10⁸ Pa) over a Hertz pressure p = p_max √(1 − x²/b²); I has the unit of length. Two
+  other readings the flattened text admits are rejected: p in MPa (η(p) ≈ η₀, i.e. no
+  piezoviscosity, contrary to Roelands' p_r) and exp applied to (ln η₀ + 9.67) alone (the integrand
+  η₀/η_∞ · [(1 + p/p_r)^Z − 1] is not a viscosity). The seed prints Z = 0.601
+  (:data:`ROELANDS_EXPONENT_LIU2022`); :func:`roelands_exponent` gives the Z that matches a
+  lubricant's Barus α instead.
+- **Limiting shear stress (bearingkit default, not in the seed)**: Newtonian shear with Roelands
+  viscosity at p_max ≈ 1.3 GPa gives local stresses of ~0.3 p at a slide-to-roll ratio of 2e-4
+  (S_c = 0.01 %), several times the limiting shear stress of mineral oils, τ_L = Λ_L p with
+  Λ_L ≈ 0.05…0.1 (Bair & Winer 1979); the Newtonian integral then grows like Q^~5. bearingkit's
+  default (``model="limiting_shear"``, :data:`SLIDING_MODELS`) keeps eqs. (8) and (10) unchanged and
+  caps the local stress with the Bair–Winer law τ = τ_L[1 − exp(−τ_N/τ_L)], τ_N = η(p) v_s/(2h*), over
+  the full strip: it equals eq. (8) where τ_N ≪ τ_L and is bounded by Λ_L Q. ``model="newtonian"``
+  is eq. (8) as printed.
 - **Eq. (9), rib sliding**: :func:`bearingkit.physics.traction.flange_friction_force` (reused).
 - **Eq. (13), kinematics under outer-raceway control**: v_se = 0, v_si = ω_i R_i S_c, derived in
   :func:`outer_control_kinematics`.
@@ -40,6 +54,7 @@ import numpy as np
 from bearingkit import checks, references
 from bearingkit.errors import InputError
 from bearingkit.physics import friction_components as fc
+from bearingkit.physics.traction import LIMITING_SHEAR_COEFF
 
 references.add(
     "harris1966",
@@ -58,7 +73,7 @@ references.add(
 )
 
 #: Citation keys used by this module.
-REFERENCE_KEYS = ("liu2022", "aihara1987", "harris1966", "zhou1991", "roelands1966")
+REFERENCE_KEYS = ("liu2022", "aihara1987", "harris1966", "zhou1991", "roelands1966", "bair1979")
 
 # --- Eq. (7): EHL rolling resistance -----------------------------------------------------------
 #: Coefficient C of eq. (7) by reading (documented names). ``"aihara1987"``: 0.88 × 10² (Aihara's
@@ -77,6 +92,15 @@ SLIDING_COEFF = 0.168  # [-]
 SLIDING_U_EXP = -0.74  # [-]
 SLIDING_G_EXP = -0.4  # [-]
 SLIDING_W_EXP = 0.2  # [-]
+#: Readings of eq. (8) (documented names): ``"limiting_shear"`` (default) caps the Newtonian shear of
+#: eq. (8) by the Bair–Winer limiting shear stress τ_L = Λ_L p; ``"newtonian"`` is eq. (8) as printed.
+SLIDING_MODELS = ("limiting_shear", "newtonian", "newtonian_mpa")
+#: Pressure unit factor of the ``"newtonian_mpa"`` reading: p in MPa inserted into Roelands' per-Pa
+#: constant 5.1e-9 (a unit slip the flattened eq. 10 admits; diagnostic only, it drops piezoviscosity).
+MPA_READING_SCALE = 1e-6  # [MPa/Pa]
+#: Λ_L = τ_L/p of the ``"limiting_shear"`` reading [-]: bearingkit's mineral-oil value (Bair & Winer
+#: 1979, range 0.05…0.1; :data:`bearingkit.physics.traction.LIMITING_SHEAR_COEFF`), not fitted to seed 001.
+SLIDING_LIMITING_SHEAR_COEFF = LIMITING_SHEAR_COEFF
 
 # --- Eq. (10): Roelands viscosity ------------------------------------------------------------------
 #: Roelands constant: ln η₀ + 9.67 = ln(η₀/η_∞) with η_∞ = 6.31e-5 Pa·s (Roelands 1966; η₀ in Pa·s).
@@ -209,6 +233,75 @@ def tractive_integral(max_pressure, half_width, viscosity, exponent=ROELANDS_EXP
     return _arr(half_width) * (ratio * np.cos(_THETA) * _THETA_W).sum(-1)
 
 
+def limited_shear_integral(
+    max_pressure,
+    half_width,
+    viscosity,
+    shear_rate,
+    exponent=ROELANDS_EXPONENT_LIU2022,
+    limiting_shear_coeff=SLIDING_LIMITING_SHEAR_COEFF,
+):
+    """Shear force per unit length of a Hertz strip with a limiting shear stress [N/m].
+
+    Parameters
+    ----------
+    max_pressure : array_like
+        Hertz maximum pressure p_max [Pa], ``>= 0``.
+    half_width : array_like
+        Hertz semi-width b [m], ``>= 0``.
+    viscosity : array_like
+        η₀ [Pa·s].
+    shear_rate : array_like
+        Film shear rate |v_s|/h [1/s], ``>= 0``.
+    exponent : array_like
+        Roelands index Z [-].
+    limiting_shear_coeff : array_like
+        Λ_L = τ_L/p [-], ``> 0``.
+
+    Returns
+    -------
+    ndarray
+        ∫ τ dx over the whole strip −b … b [N/m]; ≤ Λ_L π p_max b / 2 = Λ_L Q/l.
+
+    Notes
+    -----
+    Bair–Winer fluid (viscous with a limiting shear stress) at the local Hertz pressure:
+
+    .. math::
+
+        \\tau = \\tau_L\\left[1 - e^{-\\tau_N/\\tau_L}\\right],\\quad \\tau_L = \\Lambda_L\\,p,\\quad
+        \\tau_N = \\eta_0\\,\\frac{\\eta(p)}{\\eta_0}\\,\\dot\\gamma,\\quad
+        \\int_{-b}^{b}\\tau\\,dx = 2b\\int_0^{\\pi/2}\\tau(p_{max}\\cos\\theta)\\cos\\theta\\,d\\theta
+
+    with Roelands' η(p)/η₀ (:func:`roelands_viscosity_ratio`). For τ_N ≪ τ_L it is
+    2 η₀ γ̇ I (eq. 10's I); for τ_N ≫ τ_L it is Λ_L Q/l.
+
+    References
+    ----------
+    Bair S., Winer W.O. (1979) J. Lubr. Technol. 101(3):258-264; Liu et al. (2022) eq. (10).
+    """
+    checks.non_negative("max_pressure", max_pressure, "Pa")
+    checks.non_negative("half_width", half_width, "m")
+    checks.non_negative("shear_rate", shear_rate, "1/s")
+    k = _log_ratio_coeff(viscosity)
+    checks.positive("roelands_exponent", exponent)
+    checks.positive("limiting_shear_coeff", limiting_shear_coeff)
+    p = _arr(max_pressure)[..., None] * np.cos(_THETA)
+    tau_l = _arr(limiting_shear_coeff)[..., None] * p
+    log_ratio = _arr(k)[..., None] * ((1.0 + p / ROELANDS_PRESSURE) ** _arr(exponent)[..., None] - 1.0)
+    # τ_N/τ_L in logs: η(p) overflows long before τ_N/τ_L does (Roelands ratios reach 1e300 at 3 GPa).
+    with np.errstate(divide="ignore"):
+        log_arg = (
+            np.log(_arr(viscosity))[..., None]
+            + log_ratio
+            + np.log(_arr(shear_rate))[..., None]
+            - np.log(tau_l)
+        )
+    arg = np.exp(np.minimum(log_arg, 700.0))
+    tau = np.where((tau_l > 0) & (_arr(shear_rate)[..., None] > 0), -tau_l * np.expm1(-arg), 0.0)
+    return 2.0 * _arr(half_width) * (tau * np.cos(_THETA) * _THETA_W).sum(-1)
+
+
 def rolling_friction_force(
     load,
     viscosity,
@@ -336,6 +429,8 @@ def sliding_friction_force(
     radius_x,
     effective_length,
     exponent=ROELANDS_EXPONENT_LIU2022,
+    model="limiting_shear",
+    limiting_shear_coeff=SLIDING_LIMITING_SHEAR_COEFF,
 ):
     """Sliding traction of one roller–raceway line contact (seed 001 eqs. 8, 10) [N].
 
@@ -359,6 +454,12 @@ def sliding_friction_force(
         l [m].
     exponent : array_like
         Roelands index Z of the tractive integral [-].
+    model : str
+        Reading of eq. (8), :data:`SLIDING_MODELS`: ``"limiting_shear"`` (default), ``"newtonian"`` (as
+        printed) or ``"newtonian_mpa"`` (diagnostic: p in MPa inside Roelands' per-Pa constant).
+    limiting_shear_coeff : array_like
+        Λ_L = τ_L/p of the ``"limiting_shear"`` reading [-] (default
+        :data:`SLIDING_LIMITING_SHEAR_COEFF`).
 
     Returns
     -------
@@ -367,20 +468,33 @@ def sliding_friction_force(
 
     Notes
     -----
+    ``"newtonian"`` (eq. 8 as printed, Newtonian shear across the film h*):
+
     .. math::
 
-        F_{rs} = 0.168\\,\\frac{v_s\\,\\eta_0\\,l\\,I}{R}\\,U^{-0.74} G^{-0.4} W^{0.2},
+        F_{rs} = 0.168\\,\\frac{v_s\\,\\eta_0\\,l\\,I}{R}\\,U^{-0.74} G^{-0.4} W^{0.2}
+               = \\frac{v_s\\,\\eta_0\\,l\\,I}{h^*},
         \\quad I = \\int_0^b \\eta(p)/\\eta_0\\,dx
 
-    with the Hertz strip b = √(8QR/(πlE′)), p_max = √(QE′/(2πlR)).
+    with the Hertz strip b = √(8QR/(πlE′)), p_max = √(QE′/(2πlR)). ``"limiting_shear"``: the same
+    Newtonian stress τ_N = η(p)|v_s|/(2h*) over the whole strip (−b … b), capped by the Bair–Winer
+    limiting shear stress (:func:`limited_shear_integral`):
+
+    .. math::
+
+        F_{rs} = \\operatorname{sgn}(v_s)\\,l\\int_{-b}^{b}\\tau_L
+                 \\left[1 - e^{-\\tau_N/\\tau_L}\\right]dx,\\quad \\tau_L = \\Lambda_L\\,p
+
+    — equal to the ``"newtonian"`` value where τ_N ≪ τ_L, and at most Λ_L Q.
 
     References
     ----------
-    Harris (1966) ASLE Trans. 9:229; Zhou & Hoeprich (1991);
-    Liu et al. (2022) eqs. (8), (10).
+    Harris (1966) ASLE Trans. 9:229; Zhou & Hoeprich (1991); Bair & Winer (1979) J. Lubr. Technol.
+    101:258; Liu et al. (2022) eqs. (8), (10).
     """
     from bearingkit.physics.hertz import line_contact
 
+    checks.one_of("sliding_model", model, SLIDING_MODELS)
     checks.finite("slide_speed", slide_speed, "m/s")
     u_dim, g_dim, w_dim = _groups(
         viscosity, entrainment_speed, pressure_viscosity, e_reduced, radius_x, load, effective_length
@@ -393,12 +507,22 @@ def sliding_friction_force(
     if not np.any(vs):  # no sliding anywhere (e.g. the cup under outer-raceway control)
         return np.zeros(np.broadcast_shapes(vs.shape, u_dim.shape, w_dim.shape))
     contact = line_contact(load, effective_length, radius_x, e_reduced)
-    integral = tractive_integral(contact.max_pressure, contact.half_width, viscosity, exponent)
     on = (u_dim > 0) & (w_dim > 0)
     u_safe = np.where(on, u_dim, 1.0)
-    factor = u_safe**SLIDING_U_EXP * g_dim**SLIDING_G_EXP * w_dim**SLIDING_W_EXP
-    force = SLIDING_COEFF * vs * _arr(viscosity) * _arr(effective_length) * integral / _arr(radius_x) * factor
-    return np.where(on, force, 0.0)
+    factor = u_safe**SLIDING_U_EXP * g_dim**SLIDING_G_EXP * np.where(on, w_dim, 1.0) ** SLIDING_W_EXP
+    if model in ("newtonian", "newtonian_mpa"):
+        scale = MPA_READING_SCALE if model == "newtonian_mpa" else 1.0
+        integral = tractive_integral(scale * contact.max_pressure, contact.half_width, viscosity, exponent)
+        force = (
+            SLIDING_COEFF * vs * _arr(viscosity) * _arr(effective_length) * integral / _arr(radius_x) * factor
+        )
+        return np.where(on, force, 0.0)
+    # 1/h* = 0.168 U^-0.74 G^-0.4 W^0.2 / R; the whole strip shears across 2h* (module docstring).
+    shear_rate = np.abs(vs) * SLIDING_COEFF * factor / (2.0 * _arr(radius_x))
+    per_length = limited_shear_integral(
+        contact.max_pressure, contact.half_width, viscosity, shear_rate, exponent, limiting_shear_coeff
+    )
+    return np.where(on, np.sign(vs) * _arr(effective_length) * per_length, 0.0)
 
 
 class TRBKinematics(NamedTuple):
@@ -525,7 +649,10 @@ def ring_torques(
 __all__ = [
     "REFERENCE_KEYS",
     "ROLLING_COEFFICIENTS",
+    "SLIDING_LIMITING_SHEAR_COEFF",
+    "SLIDING_MODELS",
     "TRBKinematics",
+    "limited_shear_integral",
     "outer_control_kinematics",
     "ring_torques",
     "roelands_exponent",
