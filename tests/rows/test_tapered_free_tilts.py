@@ -9,7 +9,7 @@ from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
 from bearingkit.physics.profiles import make_profile
-from bearingkit.rows import tapered
+from bearingkit.rows import tapered, tapered_kernel
 
 #: Combined loads on a pair: (F_x, F_y, F_z [N], M_x, M_y [N·m]); the first is issue #4's stall.
 PAIR_LOADS = load_vector(
@@ -254,7 +254,7 @@ def test_single_whole_roller_row_refuses_a_moment_free_radial_load_quickly():
     assert all("cannot be carried" in r and "M_y" in r for r in res.reason)
     assert res.iterations.max() <= opts.max_iterations * (1 + opts.continuation_steps)
     kernel = model.kernels[0]
-    assert kernel.inner_iterations_max < tapered.ROLLER_MAX_ITER
+    assert kernel.inner_iterations_max < tapered_kernel.ROLLER_MAX_ITER
     assert np.isfinite(res.displacement).all() and np.isfinite(res.residual_norm).all()
 
 
