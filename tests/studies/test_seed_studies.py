@@ -164,6 +164,14 @@ def test_seed001_evaluator_reproduces_table2_series1_and_the_ideal_bearing():
     assert out["sliding_increment_N"].iloc[1] == pytest.approx(0.0, abs=1e-9)
     with pytest.raises(InputError):
         evaluators.get("seed001_scatter")(cases.assign(magnitude=-1e-6))
+    # eq. (8) as printed, selected per study case, is the validation module's "newtonian" reading
+    printed = evaluators.get("seed001_scatter")(cases.assign(sliding_model="newtonian"))
+    assert printed["sliding_increment_ratio"].iloc[0] == pytest.approx(
+        increment_ratio(1e-4, "newtonian"), rel=1e-9
+    )
+    assert printed["max_sliding_inner_N"].iloc[0] > out["max_sliding_inner_N"].iloc[0]  # uncapped
+    with pytest.raises(InputError, match="sliding_model"):
+        evaluators.get("seed001_scatter")(cases.assign(sliding_model="viscous"))
 
 
 def test_seed001_study_agrees_with_friction_monte_carlo_in_distribution(mc):

@@ -366,7 +366,12 @@ register(
 # for ball-row / roller-row radial clearances and loads (rigid, or flexible outer ring).
 # ``seed004_ptrb``: seed-004 PTRB §6 objectives (Zheng et al. 2022) C0, C, M of a design population.
 def _seed001_factors() -> dict[str, Factor]:
-    from bearingkit.analysis.trb_friction import DEFAULT_LUBRICANT, DEFAULT_TEMPERATURE_C, SEED001_SPEED
+    from bearingkit.analysis.trb_friction import (
+        DEFAULT_LUBRICANT,
+        DEFAULT_TEMPERATURE_C,
+        SEED001_SPEED,
+        TRBOperatingPoint,
+    )
     from bearingkit.bearings.tapered import SEED001_GEOMETRY
 
     out = {
@@ -379,6 +384,9 @@ def _seed001_factors() -> dict[str, Factor]:
     out["cage_slip"] = Factor("cage_slip", "dimensionless", 1.0e-4, batched=False)
     out["lubricant"] = Factor("lubricant", "text", DEFAULT_LUBRICANT, batched=False)
     out["temperature"] = Factor("temperature", "temperature", DEFAULT_TEMPERATURE_C, batched=False)
+    # Reading of seed 001 eq. (8) (bearingkit.physics.trb_friction.SLIDING_MODELS), so a study can
+    # compare the capped default with the equation as printed ("newtonian").
+    out["sliding_model"] = Factor("sliding_model", "text", TRBOperatingPoint().sliding_model, batched=False)
     return out
 
 
@@ -397,7 +405,8 @@ def seed001_scatter(cases):
     S_d [m] and the unit draws ``z1…zZ`` [1] (sampled by the study), arranged by ``arrangement``
     (:data:`bearingkit.physics.deviations.ARRANGEMENTS`). Each group of cases is one batched solve
     (:func:`bearingkit.analysis.trb_friction.tapered_friction`) with the ideal bearing as an extra case,
-    at ``axial_load`` [N], ``speed`` [rad/s], ``cage_slip`` [1], ``lubricant`` at ``temperature`` [°C].
+    at ``axial_load`` [N], ``speed`` [rad/s], ``cage_slip`` [1], ``lubricant`` at ``temperature`` [°C],
+    with eq. (8) read as ``sliding_model`` (default: the capped ``"limiting_shear"``).
 
     Outputs: ``max_contact_force_N`` (max_j Q_e,j), its ``contact_force_increment_ratio`` over the ideal
     bearing's, ``contact_force_variance_N2``, ``max_sliding_inner_N`` (max_j F_rs,i), the
@@ -422,6 +431,7 @@ def seed001_scatter(cases):
             cage_slip=float(key["cage_slip"]),
             lubricant=str(key["lubricant"]),
             temperature_C=float(key["temperature"]),
+            sliding_model=str(key["sliding_model"]),
         )
         res = tapered_friction(row, float(key["axial_load"]), op, dev)
         q_max = res.load_outer.max(axis=-1)
