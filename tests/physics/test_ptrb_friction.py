@@ -145,9 +145,8 @@ def test_mu_range_of_the_power_balance_reading_is_stated_not_hidden():
     """The former default reaches 0.00242 axially: 0.8 % above the printed 0.0024. Only the rounding of
     a two-digit number (0.0024 stands for 0.00235–0.00245) admits it — stated here, not widened."""
     lo_a, hi_a = v.mu_range("axial", PTRBFrictionParameters.power_balance())
-    assert hi_a > 0.0024
-    assert hi_a / 0.0024 - 1 == pytest.approx(0.008, abs=0.002)
-    assert 0.00235 <= hi_a < 0.00245 and lo_a >= 0.0011
+    assert hi_a > 0.0024  # outside the printed bound …
+    assert 0.00235 <= hi_a < 0.00245 and lo_a >= 0.0011  # … inside its two-digit rounding interval
 
 
 def test_published_simulation_data_carry_harris_exponents():

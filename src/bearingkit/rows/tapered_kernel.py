@@ -410,8 +410,10 @@ class TaperedKernel(KernelBase):
         force = -(qi.reshape(c, -1) @ self.G_flat_i + qf @ self.g_f)
         schur, sens = self._condense(ki, ke, kf, sensitivity=True)
         # Keep the roller sensitivity: the next call (a Newton or line-search trial nearby) starts
-        # from the first-order prediction of its roller positions.
-        self._cache = (self._cache[0], xr, sens)
+        # from the first-order prediction of its roller positions. Built from this call's own values
+        # and stored in one assignment, so a concurrent call on the same kernel (a user's threads)
+        # can only replace the warm start, never mix two calls' arrays.
+        self._cache = (relative_displacement(q, offset), xr, sens)
         energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c * xr[..., 0].sum(-1)
         return RowResponse(force, -schur, energy)
 

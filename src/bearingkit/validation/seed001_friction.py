@@ -111,6 +111,26 @@ register(
         tolerance=ORDER_TOLERANCE,
     )
 )
+MAX_CHANGE_DEVIATION = (
+    "the change grows with the scatter: series 1-2 (S_d = 0.5 um) sit in the 10^-2 % decade, the 1.5 um "
+    "series 5-6 reach ~0.1-0.2 % on the outer ring (and +0.5 % on the inner, see the inner-decrease case). "
+    "The paper's own contact-force scatter (Table 3) is 1.62x larger than bearingkit's, so its torque "
+    "changes cannot be smaller: its '10^-2 % order' is read as holding for the small-scatter series"
+)
+for _ring, _fig in (("outer", "6b"), ("inner", "6a")):
+    register(
+        Case(
+            id=f"seed001/finding/torque-change-ratio-{_ring}-max",
+            source=f"{SOURCE}, §3.2 / Fig. {_fig} ('only a 10^-2 % order of magnitude')",
+            quantity=f"max over Table 2 series 1-6 of |ΔM/M|, {_ring}-ring friction torque vs ideal, 10 kN, "
+            "S_c = 0.01 %",
+            unit="1",
+            published=TORQUE_CHANGE_ORDER,
+            compute=lambda _ring=_ring: float(np.abs(torque_changes(_ring)).max()),
+            tolerance=ORDER_TOLERANCE,
+            known_deviation=MAX_CHANGE_DEVIATION,
+        )
+    )
 register(
     Case(
         id="seed001/finding/torque-change-ratio-inner",
