@@ -226,6 +226,8 @@ def test_validation_cases():
     known = {
         "seed001/finding/torque-decrease-fraction-inner",
         "seed001/finding/sliding-increment-ratio-slip-invariance",
+        "seed001/finding/torque-change-ratio-outer-max",
+        "seed001/finding/torque-change-ratio-inner-max",
     }
     assert set(cases) >= passing | known
     for cid in passing:
@@ -234,3 +236,14 @@ def test_validation_cases():
     for cid in known:
         res = run_case(cases[cid])  # still missing: a stale known deviation must be removed
         assert res.error is None and not res.passed and cases[cid].known_deviation, cid
+
+
+def test_sliding_dominated_inner_torque_is_flagged():
+    from bearingkit.validation.seed001_friction import _friction
+
+    for model, flagged in (("limiting_shear", True), ("newtonian", True), ("newtonian_mpa", False)):
+        r = _friction(1e-4, model)
+        rolling_and_rib = r.torque_inner * (1.0 - r.sliding_share_inner)
+        assert np.all(rolling_and_rib > 0) and np.all(r.sliding_share_inner < 1)
+        assert all(bool(w) == flagged for w in r.warnings), model
+        assert r.to_dict(0)["warnings"] == r.warnings[0]

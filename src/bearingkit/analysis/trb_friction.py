@@ -150,6 +150,11 @@ class TRBOperatingPoint:
         return float(tf.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
 
 
+#: Share of M_ir carried by cone sliding traction above which the result warns [-] (bearingkit's
+#: choice: beyond one half, M_ir describes the imposed cage slip more than the rolling losses).
+SLIDING_DOMINANCE_WARN = 0.5
+
+
 @dataclass(frozen=True)
 class TRBFrictionResult:
     """Per-roller friction forces and ring torques of a batch of solved TRB cases (SI).
@@ -169,6 +174,8 @@ class TRBFrictionResult:
         Λ of the rib contact (0 where unloaded).
     torque_outer, torque_inner : ndarray (C,) [N·m]
         M_er, M_ir (eqs. 11–12).
+    sliding_share_inner : ndarray (C,) [-]
+        Share of M_ir that is cone sliding traction, Σ F_rs,i R_i / M_ir (0 where M_ir = 0).
     converged : ndarray (C,) of bool
     kinematics : TRBKinematics
     operating_point : TRBOperatingPoint
@@ -186,10 +193,26 @@ class TRBFrictionResult:
     film_parameter_flange: np.ndarray
     torque_outer: np.ndarray
     torque_inner: np.ndarray
+    sliding_share_inner: np.ndarray
     converged: np.ndarray
     kinematics: tf.TRBKinematics
     operating_point: TRBOperatingPoint
     references: tuple = field(default=tf.REFERENCE_KEYS)
+
+    @property
+    def warnings(self) -> list[list[str]]:
+        """Per case: what a reader of M_ir should know (empty when nothing to say)."""
+        out = []
+        for share in self.sliding_share_inner:
+            w = []
+            if share > SLIDING_DOMINANCE_WARN:
+                w.append(
+                    f"{share:.0%} of M_ir is cone sliding traction F_rs·R_i at the imposed cage slip "
+                    "(seed 001 eq. 12 adds forces times radii): the power it dissipates is F_rs·v_s, "
+                    "far below M_ir·ω; compare sliding models before using M_ir as a loss"
+                )
+            out.append(w)
+        return out
 
     @property
     def max_sliding_inner(self) -> np.ndarray:
@@ -203,6 +226,8 @@ class TRBFrictionResult:
             "torque_outer_Nm": float(self.torque_outer[case]),
             "torque_inner_Nm": float(self.torque_inner[case]),
             "max_sliding_inner_N": float(self.max_sliding_inner[case]),
+            "sliding_share_inner": float(self.sliding_share_inner[case]),
+            "warnings": self.warnings[case],
             "rolling_inner_N": self.rolling_inner[case].tolist(),
             "rolling_outer_N": self.rolling_outer[case].tolist(),
             "sliding_inner_N": self.sliding_inner[case].tolist(),
@@ -319,6 +344,9 @@ def friction_from_state(
         film_parameter_flange=lam,
         torque_outer=m_e,
         torque_inner=m_i,
+        sliding_share_inner=np.divide(
+            rs_i.sum(-1) * geo.radius_inner, m_i, out=np.zeros_like(np.asarray(m_i, float)), where=m_i != 0
+        ),
         converged=conv,
         kinematics=kin,
         operating_point=op,
