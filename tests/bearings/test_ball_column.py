@@ -14,6 +14,7 @@ from bearingkit.bearings.ball_column import (
     ball_column,
     outer_ring_of,
     solve_flexible_input,
+    wall_housing_stiffness,
 )
 from bearingkit.errors import InputError
 from bearingkit.io.loader import from_dict, load_file
@@ -31,7 +32,9 @@ def test_examples_load_and_solve(cond, fr, fa):
     g = bearing.model.metadata["geometry"]
     assert g.n_balls == 74 and g.n_rollers == 78 and g.ball_diameter == pytest.approx(0.015)
     assert g.support_positions == pytest.approx((-0.025, 0.025))
-    assert bearing.model.metadata["ring"] == RingOptions(flexible=True, compliance_scale=1.0, bending=True)
+    assert bearing.model.metadata["ring"] == RingOptions(
+        flexible=True, compliance_scale=1.0, bending=True, housing_wall_thickness=0.020
+    )
     model = ball_column(replace(g, n_slices=6), ring=bearing.model.metadata["ring"])
     res = solve(model, bearing.load_matrix())
     assert res.converged.all()
@@ -63,9 +66,9 @@ def _file(**geometry):
 
 def test_ring_options_from_the_input_format():
     b = from_dict(
-        _file(support_positions=["-20 mm", "30 mm"], ring={"compliance_scale": 0.5, "bending": False})
+        _file(support_positions=["-30 mm", "35 mm"], ring={"compliance_scale": 0.5, "bending": False})
     )
-    assert b.model.metadata["geometry"].support_positions == pytest.approx((-0.02, 0.03))
+    assert b.model.metadata["geometry"].support_positions == pytest.approx((-0.03, 0.035))
     ring = outer_ring_of(b.model)
     assert ring.compliance_scale == 0.5 and not ring.bending and ring.beam_mode == "clearance"
     assert ring.youngs_modulus == pytest.approx(b.material.youngs_modulus)
@@ -73,6 +76,9 @@ def test_ring_options_from_the_input_format():
         from_dict(_file(support_positions=["-50 mm", "50 mm"]))
     with pytest.raises(InputError, match=r"support_positions"):
         from_dict(_file(support_positions=["-20 mm"]))
+    # a ball row (at ∓25 mm) outside the supports is refused when the file is read, naming the field
+    with pytest.raises(InputError, match=r"geometry\.support_positions.*between the housing supports"):
+        from_dict(_file(support_positions=["-20 mm", "30 mm"]))
     with pytest.raises(InputError, match=r"geometry\.ring\.stiffness.*unknown field"):
         from_dict(_file(ring={"stiffness": 1.0}))
     with pytest.raises(InputError, match=r"compliance_scale"):
@@ -107,3 +113,31 @@ def test_bad_input():
         ball_column(ring={"bending": False})
     with pytest.raises(InputError, match="clearance_ball"):
         BallColumnGeometry(clearance_ball=-1e-6)
+
+
+def test_housing_options_from_the_input_format():
+    """[geometry.ring] housing_wall_thickness → k_h = E_h t_h b/R_h² (R_h = D/2 + t_h/2); housing_stiffness
+    given directly; the default is a 20 mm steel wall; negative or both → InputError naming the field."""
+    g = BallColumnGeometry()
+    default = outer_ring_of(from_dict(_file()).model)
+    r_h = g.outer_diameter / 2 + 0.010
+    assert default.housing_stiffness == pytest.approx(2.08e11 * 0.020 * g.width / r_h**2, rel=1e-12)
+    wall = outer_ring_of(from_dict(_file(ring={"housing_wall_thickness": "40 mm"})).model)
+    assert wall.housing_stiffness == pytest.approx(
+        2.08e11 * 0.040 * g.width / (g.outer_diameter / 2 + 0.02) ** 2
+    )
+    iron = from_dict(_file(ring={"housing_wall_thickness": "40 mm", "housing_youngs_modulus": "104 GPa"}))
+    assert outer_ring_of(iron.model).housing_stiffness == pytest.approx(wall.housing_stiffness / 2)
+    free = outer_ring_of(from_dict(_file(ring={"housing_stiffness": "0 N/m^2"})).model)
+    assert free.housing_stiffness == 0.0
+    given = outer_ring_of(from_dict(_file(ring={"housing_stiffness": "5e9 N/m^2"})).model)
+    assert given.housing_stiffness == pytest.approx(5e9)
+    assert wall_housing_stiffness(g, 0.040) == pytest.approx(wall.housing_stiffness)
+    with pytest.raises(InputError, match=r"geometry\.ring\.housing_stiffness.*non-negative"):
+        from_dict(_file(ring={"housing_stiffness": "-1e9 N/m^2"}))
+    with pytest.raises(InputError, match=r"housing_wall_thickness.*positive"):
+        from_dict(_file(ring={"housing_wall_thickness": "0 mm"}))
+    with pytest.raises(InputError, match=r"housing_stiffness.*housing_wall_thickness.*not both"):
+        from_dict(_file(ring={"housing_stiffness": "1e9 N/m^2", "housing_wall_thickness": "20 mm"}))
+    with pytest.raises(InputError, match=r"housing_stiffness \(-1 N/m²\)"):
+        RingOptions(housing_stiffness=-1.0)

@@ -18,7 +18,12 @@ Values the paper does not give, and the values chosen (all overridable):
 - roller slices 20, straight rollers (no crowning data), Kunert law, both contacts in series;
 - outer ring: arc-backed section, bore = outer raceway radius (d_m + D_roller)/2, sphere radius
   = D/2; housing supports at the two ball rows (seed 002 §2.3.1: "A and B … parallel to the bearing
-  centres of the first- and third-row bearings"); beam strip width π R_c/2 (assumed).
+  centres of the first- and third-row bearings"); beam strip width π R_c/2 (assumed);
+- housing: the outer ring sits without radial play in a steel housing wall of 20 mm
+  (:data:`DEFAULT_HOUSING_WALL`, E = 208 GPa), a bilateral Winkler foundation of stiffness
+  k_h = E_h t_h b/R_h² on the ring's ovalisation (:mod:`bearingkit.physics.thin_ring`). The paper
+  says only that the arc back sits in the housing; a free ring (k_h = 0, ``housing_stiffness = 0``)
+  would let the unloaded side move ~40 µm outward through the housing wall.
 
 Input files: ``bearing.type = "ball_column"`` (:mod:`bearingkit.io.schema`), the ring options in
 ``[geometry.ring]`` (:class:`RingOptions`); :func:`solve_flexible_input` runs the coupled solve.
@@ -33,6 +38,7 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.analysis.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
+from bearingkit.physics import thin_ring
 from bearingkit.rings.flexible import BEAM_MODES, FlexibleOuterRing
 from bearingkit.rings.section import RingSection
 from bearingkit.rows.ball import BallRow
@@ -43,6 +49,12 @@ ROWS = ("ball_1", "roller_2", "ball_3")
 DEFAULT_SLICES = 20
 #: Young's modulus of the GCr15 outer ring [Pa] (bearing steel, 208 GPa).
 RING_E = 2.08e11
+#: Young's modulus of the housing [Pa] (steel, 208 GPa; a cast-iron housing would be ~110-170 GPa).
+HOUSING_E = 2.08e11
+#: Default housing wall thickness around the outer ring [m]: 20 mm of steel, the middle (on a log
+#: scale) of the 10-40 mm walls of housings for bearings of this size; an assumption (seed 002 gives
+#: no housing). docs/seed002.md shows the counts and shares from a free ring to a rigid housing.
+DEFAULT_HOUSING_WALL = 0.020
 
 
 @dataclass(frozen=True)
@@ -91,6 +103,12 @@ class BallColumnGeometry:
                     f"support_positions ({za:.6g}, {zb:.6g} m): the support span must lie within the ring "
                     f"(−{half:.6g} … {half:.6g} m, width {self.width:.6g} m) with z_A < z_B"
                 )
+            a = self.inner_ring_width  # the ball rows sit at ∓a, the roller row at 0
+            if not (za <= -a + 1e-12 and zb >= a - 1e-12):
+                raise checks.InputError(
+                    f"support_positions ({za:.6g}, {zb:.6g} m): every row must lie between the housing "
+                    f"supports (rows at −{a:.6g}, 0, {a:.6g} m)"
+                )
 
     @property
     def row_spacing(self) -> float:
@@ -115,6 +133,15 @@ class RingOptions:
         How the beam deflection acts on a row (:data:`bearingkit.rings.flexible.BEAM_MODES`).
     beam_tilt : bool
         Apply the beam slope as a rigid raceway tilt.
+    housing_stiffness : float or None [N/m²]
+        Winkler stiffness k_h of the housing on the ring's ovalisation, given directly (0 = free
+        ring, np.inf = rigid housing). Exclusive with ``housing_wall_thickness``.
+    housing_wall_thickness : float or None [m]
+        Housing wall thickness t_h: k_h = E_h t_h b/R_h² (:func:`bearingkit.physics.thin_ring.
+        housing_wall_stiffness`, R_h = outer radius + t_h/2, b = ring width). When neither is given:
+        :data:`DEFAULT_HOUSING_WALL`.
+    housing_youngs_modulus : float [Pa]
+        E_h of the housing (:data:`HOUSING_E`).
     """
 
     flexible: bool = True
@@ -122,6 +149,9 @@ class RingOptions:
     bending: bool = True
     beam_mode: str = "clearance"
     beam_tilt: bool = False
+    housing_stiffness: float | None = None
+    housing_wall_thickness: float | None = None
+    housing_youngs_modulus: float = HOUSING_E
 
     def __post_init__(self):
         checks.non_negative("compliance_scale", self.compliance_scale)
@@ -129,6 +159,40 @@ class RingOptions:
         for name in ("flexible", "bending", "beam_tilt"):
             if not isinstance(getattr(self, name), bool):
                 raise checks.InputError(f"{name} ({getattr(self, name)!r}) must be true or false")
+        if self.housing_stiffness is not None:
+            k = float(self.housing_stiffness)
+            if np.isnan(k) or k < 0:
+                raise checks.InputError(
+                    f"housing_stiffness ({k:.6g} N/m²) must be non-negative "
+                    "(0 = free ring, inf = rigid housing)"
+                )
+            if self.housing_wall_thickness is not None:
+                raise checks.InputError(
+                    f"housing_stiffness ({k:.6g} N/m²) and housing_wall_thickness "
+                    f"({self.housing_wall_thickness:.6g} m): give one of them, not both"
+                )
+        if self.housing_wall_thickness is not None:
+            checks.positive("housing_wall_thickness", self.housing_wall_thickness, "m")
+        checks.positive("housing_youngs_modulus", self.housing_youngs_modulus, "Pa")
+
+    def housing_stiffness_of(self, geometry: BallColumnGeometry) -> float:
+        """The housing's Winkler stiffness k_h [N/m²] for this bearing geometry (see the fields)."""
+        if self.housing_stiffness is not None:
+            return float(self.housing_stiffness)
+        return wall_housing_stiffness(geometry, self.housing_wall_thickness, self.housing_youngs_modulus)
+
+
+def wall_housing_stiffness(
+    geometry: BallColumnGeometry | None = None, wall_thickness=None, youngs_modulus=HOUSING_E
+):
+    """k_h [N/m²] of a housing wall of thickness t_h around the ring (default :data:`DEFAULT_HOUSING_WALL`).
+
+    k_h = E_h t_h b/R_h² with R_h = D/2 + t_h/2 and b the ring width
+    (:func:`bearingkit.physics.thin_ring.housing_wall_stiffness`, Roark & Young 2012 Table 13.1).
+    """
+    g = geometry or BallColumnGeometry()
+    t = DEFAULT_HOUSING_WALL if wall_thickness is None else float(wall_thickness)
+    return float(thin_ring.housing_wall_stiffness(youngs_modulus, t, g.outer_diameter / 2 + t / 2, g.width))
 
 
 def ball_column(
@@ -199,8 +263,13 @@ def outer_ring(
     youngs_modulus=RING_E,
     beam_mode="clearance",
     beam_tilt=False,
+    housing_stiffness=None,
 ) -> FlexibleOuterRing:
-    """The arc-backed flexible outer ring of the seed-002 bearing."""
+    """The arc-backed flexible outer ring of the seed-002 bearing.
+
+    ``housing_stiffness`` k_h [N/m²]: None = the default housing (a :data:`DEFAULT_HOUSING_WALL` steel
+    wall, :func:`wall_housing_stiffness`), 0 = free ring, np.inf = rigid housing.
+    """
     g = geometry or BallColumnGeometry()
     bore_radius = (g.pitch_diameter + max(g.roller_diameter, g.ball_diameter)) / 2
     section = RingSection.arc_backed(g.width, bore_radius, g.outer_diameter / 2, beam_width=g.beam_width)
@@ -214,6 +283,9 @@ def outer_ring(
         compliance_scale=compliance_scale,
         beam_mode=beam_mode,
         beam_tilt=beam_tilt,
+        housing_stiffness=wall_housing_stiffness(g)
+        if housing_stiffness is None
+        else float(housing_stiffness),
     )
 
 
@@ -232,6 +304,7 @@ def outer_ring_of(model: BearingModel) -> FlexibleOuterRing | None:
         youngs_modulus=model.metadata.get("ring_youngs_modulus", RING_E),
         beam_mode=opts.beam_mode,
         beam_tilt=opts.beam_tilt,
+        housing_stiffness=opts.housing_stiffness_of(g),
     )
 
 

@@ -118,6 +118,8 @@ NonNegativeLength = quantity("length", "non_negative")
 Force = quantity("force")
 Moment = quantity("moment")
 PositivePressure = quantity("pressure", "positive")
+#: Force per length per displacement [N/m²] (a Winkler foundation on a ring): the dimension of a pressure.
+NonNegativeStiffnessPerLength = quantity("pressure", "non_negative")
 Angle = quantity("angle")
 AngularVelocity = quantity("angular_velocity")
 Temperature = quantity("temperature")
@@ -500,6 +502,20 @@ class BallColumnRingSpec(_Strict):
         None, description="How the beam deflection acts on a row. Default 'clearance'."
     )
     beam_tilt: bool | None = Field(None, description="Beam slope as a rigid raceway tilt. Default false.")
+    housing_stiffness: NonNegativeStiffnessPerLength | None = Field(
+        None,
+        description="Winkler stiffness k_h of the housing on the ring's ovalisation, per unit "
+        "circumferential length (N/m^2, e.g. '6.9e9 N/m^2'; 0 = free ring). "
+        "Exclusive with housing_wall_thickness.",
+    )
+    housing_wall_thickness: PositiveLength | None = Field(
+        None,
+        description="Housing wall thickness t_h: k_h = E_h t_h b / R_h^2 (bilateral fit). "
+        "Default (neither given): 20 mm of steel.",
+    )
+    housing_youngs_modulus: PositivePressure | None = Field(
+        None, description="Young's modulus E_h of the housing. Default 208 GPa (steel)."
+    )
 
 
 def _support_positions(value, info: ValidationInfo):

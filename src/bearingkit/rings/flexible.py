@@ -4,7 +4,8 @@ SI units (m, N, Pa, rad). Two compliances, superposed (Li et al. 2025, Machines 
 
 1. thin-ring in-plane bending (eqs. 7–10, :mod:`bearingkit.physics.thin_ring`): the outward
    radial components of all element loads of all carried rows bend one ring of centroidal radius R;
-   the deflection at each element (modes n ≥ 2 only, the housing takes the net force) opens its gap
+   the deflection at each element (modes n ≥ 2 only, the housing takes the net force; optionally
+   held by the housing wall, ``housing_stiffness``) opens its gap
    (``RacewayOffset.radial``);
 2. axial beam between the housing supports A and B (eqs. 4–6, :mod:`bearingkit.physics.ring_beam`):
    the radial force of each row deflects the ring as a simply supported beam; at each row the beam
@@ -24,6 +25,12 @@ How the beam deflection enters the contacts (``beam_mode``, documented names in 
 θ = θ_b − θ_B, eq. 11). It is off by default: the slope of a locally bent strip rotates the groove
 section at the loaded azimuth, it does not tilt the whole raceway about a diameter (which would move
 the raceway at ψ = 0 axially by r·θ_B — hundreds of µm for the seed-002 section).
+
+``housing_stiffness`` k_h [N/m²] holds the ring in its housing bore as a bilateral Winkler
+foundation (:mod:`bearingkit.physics.thin_ring`): the ovalisation modes n ≥ 2 then have the
+stiffness π [EI (n²−1)² + k_h R⁴]/R³ instead of π EI (n²−1)²/R³. 0 (the dataclass default) is the
+free ring, np.inf a rigid housing (no ovalisation: the beam model alone). The housing is not scaled
+by ``compliance_scale`` (it is not part of the ring).
 
 ``compliance_scale`` multiplies both compliances (0: rigid ring; used for the rigid → flexible
 study of seed 002 §3.2, where the paper varies the outer-ring deflection as a parameter).
@@ -69,6 +76,9 @@ class FlexibleOuterRing:
         ``"clearance"`` or ``"translation"`` (:data:`BEAM_MODES`).
     beam_tilt : bool
         Apply the beam slope as a rigid raceway tilt (seed 002's θ_B; off by default).
+    housing_stiffness : float [N/m²]
+        Winkler stiffness k_h of the housing that holds the ring's ovalisation (≥ 0; 0 = free ring,
+        np.inf = rigid housing). See :func:`bearingkit.physics.thin_ring.housing_wall_stiffness`.
     """
 
     section: RingSection
@@ -80,9 +90,15 @@ class FlexibleOuterRing:
     rows: tuple | None = None
     beam_mode: str = "clearance"
     beam_tilt: bool = False
+    housing_stiffness: float = 0.0
 
     def __post_init__(self):
         checks.one_of("beam_mode", self.beam_mode, BEAM_MODES)
+        k = float(self.housing_stiffness)
+        if np.isnan(k) or k < 0:
+            raise checks.InputError(
+                f"housing_stiffness ({k:.6g} N/m²) must be non-negative (0 = free ring, inf = rigid housing)"
+            )
         if not isinstance(self.section, RingSection):
             raise checks.InputError(f"section ({self.section!r}) must be a RingSection")
         checks.positive("youngs_modulus", self.youngs_modulus, "Pa")
@@ -193,7 +209,9 @@ class FlexibleOuterRing:
         psi = np.atleast_2d(azimuth)
         if not self.bending or self.compliance_scale == 0:
             return np.zeros((psi.shape[0], psi.shape[-1], psi.shape[-1]))
-        return thin_ring.radial_influence(psi, psi, self.section.centroid_radius, self.flexural_rigidity)
+        return thin_ring.radial_influence(
+            psi, psi, self.section.centroid_radius, self.flexural_rigidity, self.housing_stiffness
+        )
 
     @staticmethod
     def element_loads(states):
@@ -235,7 +253,12 @@ class FlexibleOuterRing:
         if not self.bending or self.compliance_scale == 0:
             return np.zeros((loads.radial.shape[0], theta.shape[-1]))
         return thin_ring.radial_deflection(
-            theta, loads.azimuth, loads.radial, self.section.centroid_radius, self.flexural_rigidity
+            theta,
+            loads.azimuth,
+            loads.radial,
+            self.section.centroid_radius,
+            self.flexural_rigidity,
+            housing_stiffness=self.housing_stiffness,
         )
 
 

@@ -5,8 +5,10 @@ names). ``python -m bearingkit.studies.seed002 OUT_DIR [FIGURES_DIR]`` writes th
 plots (PNG; ``docs/figures`` holds the committed ones).
 
 Ring models: rigid (``scale`` None), or the flexible outer ring at a compliance scale, by default the
-full model — beam between the housing supports + thin-ring ovalisation — solved by Newton
-(:mod:`bearingkit.analysis.flexible`). Results are summarised in docs/seed002.md.
+full model — beam between the housing supports + thin-ring ovalisation held by the default housing
+(a 20 mm steel wall, :data:`bearingkit.bearings.ball_column.DEFAULT_HOUSING_WALL`) — solved by Newton
+(:mod:`bearingkit.analysis.flexible`). :func:`housing_study` sweeps the housing from a free ring to
+a rigid housing. Results are summarised in docs/seed002.md.
 """
 
 from __future__ import annotations
@@ -18,7 +20,13 @@ import numpy as np
 
 from bearingkit.analysis.flexible import solve_flexible
 from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.bearings.ball_column import ROWS, BallColumnGeometry, ball_column, outer_ring
+from bearingkit.bearings.ball_column import (
+    ROWS,
+    BallColumnGeometry,
+    ball_column,
+    outer_ring,
+    wall_housing_stiffness,
+)
 
 #: Table 2 operating conditions: (radial, axial) load [N].
 CONDITIONS = {1: (20000.0, 0.0), 2: (30000.0, 20000.0), 3: (13500.0, 0.0)}
@@ -26,11 +34,20 @@ CONDITIONS = {1: (20000.0, 0.0), 2: (30000.0, 20000.0), 3: (13500.0, 0.0)}
 #: eqs. 11 and 19 acting as a uniform clearance) loads 21 rollers under condition 1 (identified from
 #: the sweep of :func:`deflection_study`; roller-row opening ≈ 7.4 µm). Seed 002 does not give the
 #: ring section, so this deflection is identified, not predicted. The full model (beam + thin-ring
-#: ovalisation) at the same scale loads 51 rollers and 57 balls per ball row: ovalisation closes the
-#: gaps at ψ ≈ ±90° and widens every zone (see docs/seed002.md).
+#: ovalisation) at the same scale loads 29 rollers and 41 balls per ball row in the default housing
+#: (20 mm steel wall) and 51 / 57 as a free ring: ovalisation closes the gaps at ψ ≈ ±90° and widens
+#: every zone; a rigid housing gives back the beam model (see docs/seed002.md, :func:`housing_study`).
 IDENTIFIED_SCALE = 0.5
-#: The ring models of the studies: label → thin-ring bending on/off (the beam is always on).
-RING_MODELS = {"beam": False, "beam+ovalisation": True}
+#: The ring models of the studies: label → (thin-ring bending on/off, housing stiffness k_h [N/m²]:
+#: None = the default housing, 0 = free ring). The beam is always on.
+RING_MODELS = {
+    "beam": (False, None),
+    "beam+ovalisation": (True, None),
+    "beam+ovalisation (free ring)": (True, 0.0),
+}
+#: Housing walls of :func:`housing_study` [m] (steel): 10-40 mm brackets the walls of housings of
+#: bearings of this size.
+HOUSING_WALLS = (0.005, 0.010, 0.020, 0.040, 0.080)
 
 
 def _table(res, extra: dict, flex=None) -> dict:
@@ -51,12 +68,23 @@ def _table(res, extra: dict, flex=None) -> dict:
         out["roller_offset_max_m"] = radial.max(axis=-1) if radial is not None else 0.0
         out["roller_offset_min_m"] = radial.min(axis=-1) if radial is not None else 0.0
         out["coupling_iterations"] = flex.iterations
+        # which ring model produced the line (solve_case may fall back to the beam model)
+        out["ring_bending"] = np.full(len(flex.iterations), bool(flex.ring.bending))
+        out["housing_stiffness_N_per_m2"] = np.full(len(flex.iterations), float(flex.ring.housing_stiffness))
     return out
 
 
-def solve_case(geometry: BallColumnGeometry, load, scale: float | None = None, bending: bool = True):
+def solve_case(
+    geometry: BallColumnGeometry,
+    load,
+    scale: float | None = None,
+    bending: bool = True,
+    housing_stiffness: float | None = None,
+):
     """Rigid (scale None/0) or coupled flexible solve; returns (result, flexible result or None).
 
+    ``housing_stiffness`` k_h [N/m²] of the housing on the ring's ovalisation: None = the default
+    housing of :func:`~bearingkit.bearings.ball_column.outer_ring`, 0 = free ring, np.inf = rigid.
     ``bending=True`` (default) is the full ring model, beam + thin-ring ovalisation, solved by Newton
     (:func:`~bearingkit.analysis.flexible.solve_flexible`). Should a case not converge, the whole
     batch is solved again with the beam model only, and the returned flexible result says so
@@ -66,26 +94,27 @@ def solve_case(geometry: BallColumnGeometry, load, scale: float | None = None, b
     model = ball_column(geometry)
     if not scale:
         return solve(model, load), None
-    flex = solve_flexible(model, load, outer_ring(geometry, compliance_scale=scale, bending=bending))
+    kw = {"compliance_scale": scale, "housing_stiffness": housing_stiffness}
+    flex = solve_flexible(model, load, outer_ring(geometry, bending=bending, **kw))
     if bending and not flex.converged.all():
-        flex = solve_flexible(model, load, outer_ring(geometry, compliance_scale=scale, bending=False))
+        flex = solve_flexible(model, load, outer_ring(geometry, bending=False, **kw))
     return flex.result, flex
 
 
 def deflection_study(scales=(0.0, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0), condition: int = 1, models=None):
     """§3.2: outer-ring deflection, rigid → flexible (compliance scale of the ring), per ring model.
 
-    ``models`` (default :data:`RING_MODELS`): label → thin-ring bending on/off; one line per scale and
-    model (column ``ring_model``; the rigid scale 0 appears once per model).
+    ``models`` (default :data:`RING_MODELS`): label → (thin-ring bending, housing k_h); one line per
+    scale and model (column ``ring_model``; the rigid scale 0 appears once per model).
     """
     import pandas as pd
 
     g = BallColumnGeometry()
     fr, fa = CONDITIONS[condition]
     rows = []
-    for label, bending in (RING_MODELS if models is None else models).items():
+    for label, (bending, k_h) in (RING_MODELS if models is None else models).items():
         for s in scales:
-            res, flex = solve_case(g, load_vector(F_x=fr, F_z=fa), s, bending=bending)
+            res, flex = solve_case(g, load_vector(F_x=fr, F_z=fa), s, bending=bending, housing_stiffness=k_h)
             t = _table(res, {"compliance_scale": np.array([s])}, flex)
             for key in ("roller_opening_m", "roller_offset_max_m", "roller_offset_min_m"):
                 t.setdefault(key, np.array([0.0]))
@@ -103,12 +132,43 @@ def ring_shape_plot(path, scale: float = IDENTIFIED_SCALE, condition: int = 1):
     fr, fa = CONDITIONS[condition]
     load = load_vector(F_x=fr, F_z=fa)
     rigid, _ = solve_case(g, load)
-    flex = {label: solve_case(g, load, scale, bending=b)[1] for label, b in RING_MODELS.items()}
+    flex = {label: solve_case(g, load, scale, b, k)[1] for label, (b, k) in RING_MODELS.items()}
     title = (
         f"Seed 002 condition {condition} (F_r = {fr / 1e3:g} kN, F_a = {fa / 1e3:g} kN), "
         f"compliance scale {scale:g}"
     )
     return write_ring_shape(path, rigid, flex, title=title)
+
+
+def housing_stiffnesses(walls=HOUSING_WALLS) -> dict:
+    """Housing label → k_h [N/m²]: free ring, steel walls ``walls`` [m] (k_h = E t b/R_h²), rigid."""
+    out = {"free ring": 0.0}
+    out.update({f"steel wall {t * 1e3:g} mm": wall_housing_stiffness(None, t) for t in walls})
+    out["rigid housing"] = np.inf
+    return out
+
+
+def housing_study(walls=HOUSING_WALLS, scale: float = IDENTIFIED_SCALE, heavy_load: float = 100000.0):
+    """Free ring → rigid housing at a compliance scale: condition-1 counts and shares, heavy-load share.
+
+    One line per housing (:func:`housing_stiffnesses`): the condition-1 table of :func:`_table`
+    (zero clearance, F_r = 20 kN) plus ``heavy_roller_radial_share``, the roller-row share of the
+    radial load at ``heavy_load`` with ball clearance 10 µm and roller clearance 20 µm (§3.5.2).
+    """
+    import pandas as pd
+
+    g = BallColumnGeometry()
+    gh = BallColumnGeometry(clearance_ball=10e-6, clearance_roller=20e-6)
+    fr, fa = CONDITIONS[1]
+    out = []
+    for label, k_h in housing_stiffnesses(walls).items():
+        res, flex = solve_case(g, load_vector(F_x=fr, F_z=fa), scale, housing_stiffness=k_h)
+        t = _table(res, {"housing": [label], "housing_stiffness_N_per_m2": np.array([k_h])}, flex)
+        heavy, hflex = solve_case(gh, load_vector(F_x=heavy_load), scale, housing_stiffness=k_h)
+        t["heavy_roller_radial_share"] = _table(heavy, {}, hflex)["roller_2_radial_share"]
+        t["heavy_converged"] = hflex.converged
+        out.append(pd.DataFrame(t))
+    return pd.concat(out, ignore_index=True)
 
 
 def _sweep(field, values, condition, scale=None, **fixed):
@@ -193,7 +253,7 @@ def main(out_dir: str, figures_dir: str | None = None) -> None:
     d.to_csv(out / "seed002_deflection.csv", index=False)
     for label in RING_MODELS:
         sub = d[d.ring_model == label]
-        name = label.replace("+", "_")
+        name = label.replace("+", "_").replace(" (", "_").replace(")", "").replace(" ", "_")
         plot(
             sub,
             "compliance_scale",
@@ -217,6 +277,26 @@ def main(out_dir: str, figures_dir: str | None = None) -> None:
         True,
     )
     ring_shape_plot(figs / "seed002_ring_shape.png")
+    h = housing_study()
+    h.to_csv(out / "seed002_housing.csv", index=False)
+    k = h["housing_stiffness_N_per_m2"].to_numpy()
+    finite = np.isfinite(k) & (k > 0)
+    hp = h[finite].assign(
+        **{f"{n}_loaded_count_over_10": h[finite][f"{n}_loaded_count"] / 10 for n in ("roller_2", "ball_3")}
+    )
+    plot(
+        hp,
+        "housing_stiffness_N_per_m2",
+        [
+            "roller_2_loaded_count_over_10",
+            "ball_3_loaded_count_over_10",
+            "roller_2_radial_share",
+            "heavy_roller_radial_share",
+        ],
+        figs / "seed002_housing.png",
+        "count / 10, share (steel housing walls)",
+        True,
+    )
     for suffix, scale in (("", None), ("_flexible", IDENTIFIED_SCALE)):
         contact_angle_study(scale=scale).to_csv(out / f"seed002_contact_angle{suffix}.csv", index=False)
         clearance_study(scale=scale).to_csv(out / f"seed002_clearance{suffix}.csv", index=False)

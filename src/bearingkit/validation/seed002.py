@@ -6,7 +6,9 @@ axial force along +z; rows ``ball_1`` (z = −25 mm), ``roller_2`` (z = 0), ``ba
 Ring models (:data:`bearingkit.studies.seed002.RING_MODELS`): ``flexible`` = the beam between the
 housing supports only (seed 002's u_s acting as a uniform clearance, eqs. 11 and 19), at the compliance
 scale identified from the roller count (:data:`~bearingkit.studies.seed002.IDENTIFIED_SCALE`);
-``flexible-ovalised`` = the full model, beam + thin-ring ovalisation (eqs. 7–10), same scale.
+``flexible-ovalised`` = the full model, beam + thin-ring ovalisation (eqs. 7–10) held by the default
+housing (a 20 mm steel wall as a bilateral Winkler foundation,
+:data:`bearingkit.bearings.ball_column.DEFAULT_HOUSING_WALL`), same scale.
 """
 
 from __future__ import annotations
@@ -31,10 +33,12 @@ _BEAM_BALLS = (
     "so their count stays 37 (see the rigid case for 37 vs 19); the full model (ovalisation on) gives 57"
 )
 _OVAL = (
-    "thin-ring ovalisation (modes n ≥ 2, housing reaction = the n = 0, 1 harmonics) pushes the raceway "
-    "out at ψ = 0 and in at ψ ≈ ±90°, closing the gaps there: every zone widens (51 rollers, 57 balls per "
-    "ball row at the identified scale) instead of the paper's 21 rollers; our section (arc-backed, "
-    "EI = 572 N·m²) is ~2,500× softer in-plane than the contacts and the paper's section is not given"
+    "thin-ring ovalisation (modes n ≥ 2) pushes the raceway out at ψ = 0 and in towards ψ ≈ ±90°, "
+    "closing the gaps there: the zones widen. In the default housing (20 mm steel wall, k_h = 6.9e9 "
+    "N/m²) the identified scale gives 29 rollers and 41 balls per ball row; a free ring gives 51 / 57, "
+    "a rigid housing the beam model's 21 / 37. No steel wall of 5–80 mm gives 21 rollers (35 … 25), and "
+    "no housing brings the ball rows below the rigid ring's 37 (see the rigid case); the paper gives "
+    "neither the ring section nor the housing"
 )
 
 
@@ -93,7 +97,8 @@ def _register():
         ),
         (
             "flexible-ovalised/roller-loaded-count",
-            "loaded rollers, flexible ring (beam + ovalisation) at the identified compliance scale",
+            "loaded rollers, flexible ring (beam + ovalisation, default housing) at the identified "
+            "compliance scale",
             21.0,
             "roller_2",
             s,
@@ -102,7 +107,8 @@ def _register():
         ),
         (
             "flexible-ovalised/ball-row3-loaded-count",
-            "loaded balls of row 3, flexible ring (beam + ovalisation) at the identified compliance scale",
+            "loaded balls of row 3, flexible ring (beam + ovalisation, default housing) at the identified "
+            "compliance scale",
             27.0,
             "ball_3",
             s,
@@ -140,15 +146,16 @@ def _register():
             "seed002/gradient/heavy-load/roller-radial-share-flexible",
             f"{SOURCE}, §3.5.2 and §4(3): 70–90 %",
             "roller-row share of the radial load at F_r = 100 kN (clearances as above), flexible ring "
-            "(beam + ovalisation) at the identified compliance scale",
+            "(beam + ovalisation, default housing) at the identified compliance scale",
             "1",
             0.80,
             lambda: _heavy_share(IDENTIFIED_SCALE),
             0.125,
-            "the flexible ring opens the roller row (beam deflection at mid-span) and ovalisation "
-            "spreads the ball zones: the rollers keep ≈ 42 % of a 100 kN radial load; the band is "
-            "reached with the rigid ring (0.81), and the paper's ring section, which sets how much "
-            "load moves, is not given",
+            "the flexible ring opens the roller row (beam deflection at mid-span): the rollers keep "
+            "≈ 39 % of a 100 kN radial load in the default housing (0.39–0.42 for any housing from a "
+            "free ring to a rigid one: the housing acts on the ovalisation, not on the beam opening). "
+            "The band is reached with the rigid ring (0.81); the compliance scale that loads 21 rollers "
+            "under condition 1 is too soft for it, and the paper's ring section is not given",
         )
     )
 
