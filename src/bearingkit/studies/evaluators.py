@@ -501,7 +501,8 @@ def seed002_clearance(cases):
     +x and ``axial_load`` [N] along +z. ``compliance_scale`` 0 solves with rigid rings
     (:func:`bearingkit.analysis.quasistatic.solve`); > 0 couples the flexible outer ring of
     :func:`bearingkit.bearings.ball_column.outer_ring` (:func:`bearingkit.analysis.flexible.solve_flexible`,
-    via :func:`bearingkit.studies.seed002.solve_case`). The share of row r is |F_r,radial| / Σ_rows.
+    via :func:`bearingkit.studies.seed002.solve_case`: beam + ovalisation in the default housing). The
+    share of row r is |F_r,radial| / Σ_rows.
     """
     from bearingkit.analysis.quasistatic import load_vector
     from bearingkit.bearings.ball_column import BallColumnGeometry
