@@ -703,6 +703,32 @@ class LineContact(NamedTuple):
     max_pressure: np.ndarray  #: p_max [Pa]
 
 
+def line_pressure_factor(effective_length, radius_x, e_reduced):
+    """Factor c of the Hertz line-contact maximum pressure p_max = c √Q [Pa/√N].
+
+    Parameters
+    ----------
+    effective_length : array_like
+        l [m], > 0 (not checked: callers pass validated geometry).
+    radius_x : array_like
+        Effective radius R_x in the rolling direction [m], > 0.
+    e_reduced : array_like
+        E' [Pa], > 0.
+
+    Notes
+    -----
+    .. math:: c = \\sqrt{\\frac{E'}{2\\pi\\,l\\,R_x}}
+
+    so that p_max = √(Q E′/(2π l R_x)) as in :func:`line_contact`; taking √Q once and scaling it per
+    raceway is what the per-slice post-processing of a batch needs. Johnson (1985), Contact
+    Mechanics, section 4.2 with E* = E'/2.
+    """
+    return np.sqrt(
+        np.asarray(e_reduced, float)
+        / (2.0 * np.pi * np.asarray(effective_length, float) * np.asarray(radius_x, float))
+    )
+
+
 def line_contact(load, effective_length, radius_x, e_reduced) -> LineContact:
     """Hertz line contact (two parallel cylinders): half-width and maximum pressure.
 
@@ -737,6 +763,6 @@ def line_contact(load, effective_length, radius_x, e_reduced) -> LineContact:
     r = np.asarray(radius_x, float)
     e_r = np.asarray(e_reduced, float)
     b = np.sqrt(8.0 * q * r / (np.pi * e_r))
-    p_max = np.sqrt(q * e_r / (2.0 * np.pi * r))
+    p_max = np.sqrt(np.asarray(load, float)) * line_pressure_factor(effective_length, r, e_r)
     b, p_max = np.broadcast_arrays(b, p_max)
     return LineContact(_out(b), _out(p_max))
