@@ -109,18 +109,28 @@ def validate(
         raise typer.Exit(1)
 
 
+#: Arguments and options shared by the commands that read a bearing file.
+_FILE_ARGUMENT = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md.")
+_LOAD_OPTION = typer.Option(
+    None,
+    "--load",
+    "-l",
+    help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
+)
+_CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
+_JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
+_SPEED_OPTION = typer.Option(
+    None, "--speed", help="Speed of the rotating ring, e.g. 5rpm (default: the cases')."
+)
+
+
 @app.command()
 @one_line_errors
 def analyze(
-    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
-    load: list[str] = typer.Option(
-        None,
-        "--load",
-        "-l",
-        help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
-    ),
-    case: list[str] = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name."),
-    as_json: bool = typer.Option(False, "--json", help="Print JSON (SI values, units in keys)."),
+    file: Path = _FILE_ARGUMENT,
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    as_json: bool = _JSON_OPTION,
 ):
     """Quasi-static load distribution of every load case; exit 1 if a case does not converge."""
     from bearingkit.io import export
@@ -303,25 +313,13 @@ def _fail_unconverged(file, bearing, result) -> None:
         _fail(f"{file}: load case {bearing.cases[i].name!r} did not converge: {result.reason[i]}", 1)
 
 
-_LOAD_OPTION = typer.Option(
-    None,
-    "--load",
-    "-l",
-    help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
-)
-_CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
-_JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
-
-
 @app.command()
 @one_line_errors
 def rating(
-    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    file: Path = _FILE_ARGUMENT,
     load: list[str] = _LOAD_OPTION,
     case: list[str] = _CASE_OPTION,
-    speed: str = typer.Option(
-        None, "--speed", help="Speed of the rotating ring, e.g. 5rpm (default: the cases')."
-    ),
+    speed: str = _SPEED_OPTION,
     reliability: str = typer.Option("0.9", "--reliability", help="Reliability of L_nr, 0.9 … 0.9995."),
     rotating: str = typer.Option(
         "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
@@ -438,12 +436,10 @@ FRICTION_MODELS = ("components", "skf", "palmgren")
 @app.command()
 @one_line_errors
 def friction(
-    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    file: Path = _FILE_ARGUMENT,
     load: list[str] = _LOAD_OPTION,
     case: list[str] = _CASE_OPTION,
-    speed: str = typer.Option(
-        None, "--speed", help="Speed of the rotating ring, e.g. 5rpm (default: the cases')."
-    ),
+    speed: str = _SPEED_OPTION,
     rotating: str = typer.Option(
         "inner", "--rotating", help="Rotating ring: inner|outer (the other is at rest)."
     ),
@@ -609,7 +605,7 @@ def study(
 @app.command()
 @one_line_errors
 def report(
-    file: Path = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md."),
+    file: Path = _FILE_ARGUMENT,
     output: Path = typer.Option(Path("out/report.html"), "-o", "--output", help="HTML file to write."),
     speed: str = typer.Option(None, "--speed", help="Speed of the rotating ring, e.g. 5rpm."),
     temperature: str = typer.Option(None, "--temperature", help="Operating temperature, e.g. 40degC."),
