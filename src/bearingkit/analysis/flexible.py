@@ -415,14 +415,15 @@ def solve_flexible(
     history = []
     failed = ~res.converged
     r = residual(res, x)
-    for _ in range(max_iterations):
+    # max_iterations steps, each judged after it (the state returned is the state judged).
+    for step_no in range(max_iterations + 1):
         r = np.where(failed[:, None], 0.0, r)  # a failed engine solve freezes its case
         change = np.where(done | failed, change, np.abs(r).max(axis=-1) if r.shape[-1] else 0.0)
         history.append(change.copy())
         size = np.abs(x).max(axis=-1) if x.shape[-1] else np.zeros(n_cases)
         done = done | ((change <= atol + rtol * size) & ~failed)
         active = ~(done | failed)
-        if not active.any():
+        if not active.any() or step_no == max_iterations:
             break
         iterations += active
         if method == "newton":
@@ -446,13 +447,6 @@ def solve_flexible(
             r = residual(res, x)
         failed = failed | ~res.converged | ~np.isfinite(res.displacement).all(axis=-1)
         q = np.where(np.isfinite(res.displacement), res.displacement, 0.0)
-    else:
-        # The iteration budget ran out after a step: judge (and report) the state actually returned.
-        r = np.where(failed[:, None], 0.0, r)
-        last = np.abs(r).max(axis=-1) if r.shape[-1] else np.zeros(n_cases)
-        change = np.where(done | failed, change, last)
-        size = np.abs(x).max(axis=-1) if x.shape[-1] else np.zeros(n_cases)
-        done = done | ((change <= atol + rtol * size) & ~failed)
     converged = done & res.converged & ~failed
     offsets = _unpack(ring, names, sizes, x, length)
     return FlexibleResult(res, ring, converged, iterations, change, history, offsets, method)
