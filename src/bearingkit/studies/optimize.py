@@ -28,6 +28,8 @@ import numpy as np
 from bearingkit import references
 from bearingkit.errors import InputError
 from bearingkit.studies import evaluators
+from bearingkit.studies.cases import StudyResult, base_values, fingerprint
+from bearingkit.studies.store import advance, progress_bar
 
 references.add(
     "deb2002",
@@ -168,15 +170,12 @@ def run_optimization(d, executor, store, resume: bool, progress):
     import pandas as pd
     from pymoo.optimize import minimize
 
-    from bearingkit.studies.runner import StudyResult, _fingerprint, base_values
-    from bearingkit.studies.store import advance, progress_bar
-
     t0 = time.perf_counter()
     ev = evaluators.get(d.evaluator)
     base = base_values(d)
     names = [v.name for v in d.variables]
     o = d.optimizer
-    done = store.open(_fingerprint(d), o.generations, d.chunk_size, resume)
+    done = store.open(fingerprint(d, base=base), o.generations, d.chunk_size, resume)
     counts = {"computed": 0, "reused": 0, "generation": 0}
     fn = functools.partial(evaluators.evaluate_chunk, d.evaluator)
     prog, task = progress_bar(o.pop_size * o.generations, d.name, progress)
