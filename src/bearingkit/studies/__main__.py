@@ -1,4 +1,5 @@
-"""``python -m bearingkit.studies FILE [--scheduler ADDRESS] [--workers N] [--resume] [--out DIR]``.
+"""``python -m bearingkit.studies FILE [--scheduler ADDRESS] [--workers N] [--resume] [--out DIR]
+[--allow-plugin MODULE:ATTR]``.
 
 SI units in every written table (units in the column names). :func:`run_cli` is what the
 ``bearingkit study`` command calls; it runs the study (:func:`bearingkit.studies.runner.run_study`),
@@ -32,6 +33,7 @@ def run_cli(
     out=None,
     progress: bool | None = None,
     echo=print,
+    allow_plugins=(),
 ):
     """Run the study in ``file`` and write its outputs; returns the StudyResult.
 
@@ -47,13 +49,18 @@ def run_cli(
         Continue a killed run in ``out`` (chunks already there are not recomputed).
     out : path or None
         Output directory (default ``study-<name>`` in the current directory).
+    allow_plugins : sequence of str
+        Evaluator plugins ``"package.module:attribute"`` the study file may name (the explicit opt-in
+        of ``--allow-plugin``; a file alone can name only built-in and installed evaluators).
     """
-    from bearingkit.studies import analysis
+    from bearingkit.studies import analysis, evaluators
     from bearingkit.studies.definition import load_study
     from bearingkit.studies.executors import make_executor
     from bearingkit.studies.runner import run_study
     from bearingkit.studies.store import ParquetStore
 
+    for spec in allow_plugins:
+        evaluators.allow_plugin(spec)
     d = load_study(file)
     out = Path(out or f"study-{d.name}")
     out.mkdir(parents=True, exist_ok=True)
@@ -109,9 +116,24 @@ def main(argv=None) -> int:
     p.add_argument("--resume", action="store_true", help="continue a killed run in --out")
     p.add_argument("--out", default=None, help="output directory")
     p.add_argument("--no-progress", action="store_true")
+    p.add_argument(
+        "--allow-plugin",
+        action="append",
+        default=[],
+        metavar="MODULE:ATTR",
+        help="let the study use this evaluator plugin (a study file alone cannot import code)",
+    )
     a = p.parse_args(argv)
     try:
-        run_cli(a.file, a.scheduler, a.workers, a.resume, a.out, progress=False if a.no_progress else None)
+        run_cli(
+            a.file,
+            a.scheduler,
+            a.workers,
+            a.resume,
+            a.out,
+            progress=False if a.no_progress else None,
+            allow_plugins=a.allow_plugin,
+        )
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -25,6 +25,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 
 from bearingkit.analysis.quasistatic import THREADS_ENV
 from bearingkit.errors import InputError
@@ -93,6 +94,87 @@ def restore_worker_threads() -> None:
         if _LIMIT_STATE["blas"] is not None:
             _LIMIT_STATE["blas"].restore_original_limits()
         _LIMIT_STATE.update(environ={}, blas=None)
+
+
+# One BLAS thread while a chunk is evaluated, counted per process. Measured with numpy's OpenBLAS 0.3.31:
+# - threadpoolctl's limit (``openblas_set_num_threads``) set from a thread other than the main one has
+#   no effect on that thread's products, while ``openblas_set_num_threads_local`` (OpenBLAS >= 0.3.27)
+#   does, from any thread;
+# - the value the latter returns is shared between threads: two chunks restoring their "previous"
+#   values in the wrong order left the process at one thread.
+# So every chunk sets one thread in its own thread, the first chunk in remembers the previous count and
+# the last one out restores it (the first out must not lift the limit of a chunk still running). For
+# BLAS libraries without the thread-local call, threadpoolctl's process-wide limit, counted the same way.
+_BLAS_LOCK = threading.Lock()
+_BLAS_STATE: dict = {"users": 0, "limiter": None, "previous": None}
+_LOCAL_SETTERS: list | None = None
+
+#: Names of OpenBLAS's thread-local setter in the builds numpy and scipy ship (plain and prefixed).
+_LOCAL_SETTER_NAMES = (
+    "openblas_set_num_threads_local",
+    "scipy_openblas_set_num_threads_local64_",
+    "scipy_openblas_set_num_threads_local_64_",
+    "scipy_openblas_set_num_threads_local",
+)
+
+
+def _thread_local_setters() -> list:
+    """``openblas_set_num_threads_local`` of every loaded OpenBLAS that has it (looked up once)."""
+    global _LOCAL_SETTERS
+    if _LOCAL_SETTERS is None:
+        import ctypes
+
+        from threadpoolctl import threadpool_info
+
+        setters = []
+        for lib in threadpool_info():
+            if lib.get("internal_api") != "openblas":
+                continue
+            try:
+                handle = ctypes.CDLL(lib["filepath"])
+            except OSError:  # pragma: no cover - a library threadpoolctl saw but ctypes cannot open
+                continue
+            for name in _LOCAL_SETTER_NAMES:
+                fn = getattr(handle, name, None)
+                if fn is not None:
+                    fn.restype, fn.argtypes = ctypes.c_int, [ctypes.c_int]
+                    setters.append(fn)
+                    break
+        _LOCAL_SETTERS = setters
+    return _LOCAL_SETTERS
+
+
+@contextmanager
+def one_blas_thread():
+    """Run the body with one BLAS thread (what every executor does around a chunk).
+
+    Why: OpenBLAS partitions a matrix product (the row kernels' ``(C, N) @ (N, 5)`` products) by its
+    thread count, and the edge blocks of a partition are summed in another order, so a case's last
+    bits depended on the thread count: 32 of 3,000 seed-000 sweep cases (chunks of 250) differed by up
+    to 8e-16 between the in-process run (2 BLAS threads) and the worker processes (1). The solver
+    already runs large batches with one BLAS thread per solver thread, so this costs nothing there.
+    """
+    from threadpoolctl import threadpool_limits
+
+    setters = _thread_local_setters()
+    with _BLAS_LOCK:
+        previous = [set_local(1) for set_local in setters]
+        if _BLAS_STATE["users"] == 0:
+            _BLAS_STATE["previous"] = previous
+            if not setters:
+                _BLAS_STATE["limiter"] = threadpool_limits(limits=1, user_api="blas")
+        _BLAS_STATE["users"] += 1
+    try:
+        yield
+    finally:
+        with _BLAS_LOCK:
+            _BLAS_STATE["users"] -= 1
+            if _BLAS_STATE["users"] == 0:
+                for set_local, old in zip(setters, _BLAS_STATE["previous"], strict=True):
+                    set_local(old)
+                if _BLAS_STATE["limiter"] is not None:
+                    _BLAS_STATE["limiter"].restore_original_limits()
+                _BLAS_STATE.update(limiter=None, previous=None)
 
 
 def _init_pool_worker(threads: int | None) -> None:

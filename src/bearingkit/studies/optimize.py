@@ -177,7 +177,7 @@ def run_optimization(d, executor, store, resume: bool, progress):
     o = d.optimizer
     done = store.open(fingerprint(d, base=base), o.generations, d.chunk_size, resume)
     counts = {"computed": 0, "reused": 0, "generation": 0}
-    fn = functools.partial(evaluators.evaluate_chunk, d.evaluator)
+    fn = functools.partial(evaluators.evaluate_chunk, ev)
     prog, task = progress_bar(o.pop_size * o.generations, d.name, progress)
 
     def evaluate(X):

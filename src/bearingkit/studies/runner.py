@@ -76,7 +76,7 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
     done = store.open(fingerprint(d, cases), len(bounds), d.chunk_size, resume)
     todo = [i for i in range(len(bounds)) if i not in done]
     chunks = [inputs.iloc[bounds[i] : bounds[i] + d.chunk_size].reset_index(drop=True) for i in todo]
-    fn = functools.partial(evaluators.evaluate_chunk, d.evaluator)
+    fn = functools.partial(evaluators.evaluate_chunk, ev)
     prog, task = progress_bar(len(cases), d.name, progress)
     with prog:
         advance(prog, task, sum(min(d.chunk_size, len(cases) - bounds[i]) for i in done))
