@@ -35,6 +35,9 @@ from bearingkit.errors import InputError
 BLAS_ENV = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 
 
+#: The interface a LocalCluster started by :class:`DaskExecutor` listens on.
+LOOPBACK = "127.0.0.1"
+
 #: Variables of Dask's default ``distributed.nanny.pre-spawn-environ`` that a LocalCluster started by
 #: :class:`DaskExecutor` does NOT pass on. ``MALLOC_TRIM_THRESHOLD_=65536`` makes glibc hand freed
 #: memory back to the OS at once (and fixes its mmap threshold at 128 KiB), so the solver's large
@@ -177,8 +180,32 @@ def one_blas_thread():
                 _BLAS_STATE.update(limiter=None, previous=None)
 
 
+def exit_with_parent() -> None:
+    """End this worker process as soon as the process that started it ends, however it ends.
+
+    A pool worker otherwise outlives a parent killed with SIGKILL (measured: over a minute, finishing
+    the chunks it had queued). ``multiprocessing`` gives every spawned child a sentinel that becomes
+    ready when its parent is gone (the pipe's other end closes with the parent); a daemon thread waits
+    on it and exits the process at once. No polling, any platform, and it does not depend on which
+    thread of the parent started the worker (Linux's ``PR_SET_PDEATHSIG`` would).
+    """
+    import multiprocessing
+    from multiprocessing.connection import wait
+
+    parent = multiprocessing.parent_process()
+    if parent is None or getattr(parent, "sentinel", None) is None:
+        return
+
+    def watch():
+        wait([parent.sentinel])
+        os._exit(1)
+
+    threading.Thread(target=watch, name="bearingkit-exit-with-parent", daemon=True).start()
+
+
 def _init_pool_worker(threads: int | None) -> None:
     """Initializer of a process-pool worker (top-level: picklable under ``spawn``)."""
+    exit_with_parent()
     if threads is not None:
         limit_worker_threads(threads)
 
@@ -318,9 +345,22 @@ class DaskExecutor(InProcessExecutor):
         worker processes' environment; every cluster also gets a worker plugin
         (``SolverThreadsPlugin``) that sets them in running and later workers. None: leave workers as
         they are.
+    dashboard : str or None
+        A LocalCluster started here serves Dask's dashboard only when asked: ``"127.0.0.1:8787"``
+        (or any address you choose). Default None: no dashboard and no HTTP endpoint at all.
 
     Notes
     -----
+    A LocalCluster started here listens on the loopback interface only (127.0.0.1, random ports for
+    the scheduler and workers). Dask's servers start an HTTP server even with
+    ``dashboard_address=None`` (the scheduler then binds the default 8787 and serves its health,
+    info, JSON and proxy routes; each worker serves its own on a random port), so without
+    ``dashboard`` the executor gives those servers no routes (``distributed.scheduler.http.routes``
+    and ``distributed.worker.http.routes`` empty: every request is a 404) and binds them to a random
+    loopback port. The scheduler's comm port has no authentication: any local user can connect to it
+    (Dask's own model; use TLS through ``distributed.Security`` on shared machines, or the process
+    pool, which opens no port).
+
     A LocalCluster started here keeps glibc's default memory trimming in its workers (Dask's
     ``MALLOC_TRIM_THRESHOLD_`` is left out, see :data:`DASK_MALLOC_ENV`). Workers of a cluster started
     elsewhere keep their own settings; remove that variable from their
@@ -336,6 +376,7 @@ class DaskExecutor(InProcessExecutor):
         workers: int | None = None,
         max_in_flight=None,
         solver_threads: int | None = 1,
+        dashboard: str | None = None,
     ):
         env = worker_environment(solver_threads) if solver_threads is not None else {}
         self._own = client is None
@@ -354,13 +395,23 @@ class DaskExecutor(InProcessExecutor):
                     for k, v in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
                     if k not in DASK_MALLOC_ENV
                 }
-                with dask.config.set({"distributed.nanny.pre-spawn-environ": pre_spawn}):
+                config = {"distributed.nanny.pre-spawn-environ": pre_spawn}
+                http = {}
+                if dashboard is None:  # no dashboard, no HTTP routes (see Notes)
+                    config.update(
+                        {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": []}
+                    )
+                    http = {"scheduler_kwargs": {"dashboard": False, "dashboard_address": f"{LOOPBACK}:0"}}
+                with dask.config.set(config):
                     self._cluster = LocalCluster(
                         n_workers=int(workers or 2),
                         threads_per_worker=1,
                         processes=True,
-                        dashboard_address=None,
+                        host=LOOPBACK,
+                        dashboard_address=dashboard,
+                        worker_dashboard_address=None,
                         env=env,  # set in the worker process before it runs any task
+                        **http,
                     )
                 client = Client(self._cluster)
         self.client = client
