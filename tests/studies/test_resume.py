@@ -8,6 +8,7 @@ import time
 from pathlib import Path
 
 import pandas as pd
+import pytest
 
 from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
@@ -67,7 +68,8 @@ def test_kill_and_resume(tmp_path, monkeypatch):
     evaluators.allow_plugin("bk_study_helpers:SLOW")
     monkeypatch.setenv("BK_CALL_LOG", str(log2))
     monkeypatch.setenv("BK_SLEEP", "0")
-    resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
+    with pytest.warns(UserWarning, match="recovered the stale lock of study 'resume_probe'"):
+        resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
     # nothing finished is recomputed: the resumed run called the evaluator once per missing chunk
     recomputed = {int(x / 0.5) // 4 for x in _calls(log2)}
     assert recomputed == set(range(N_CHUNKS)) - finished

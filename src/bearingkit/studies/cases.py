@@ -89,6 +89,19 @@ def build_cases(definition: StudyDefinition):
     """The cases of a non-optimisation study (DataFrame with a ``case`` id column first)."""
     d = definition
     base = base_values(d)
+    try:
+        design = _design(d, base)
+    except InputError as exc:  # a generator's message names the factor; say which file and section
+        raise InputError(f"{d.source}: factors: {exc}") from None
+    for k, v in base.items():
+        if k not in design.columns:
+            design[k] = v
+    design.insert(0, "case", np.arange(len(design)))
+    return design
+
+
+def _design(d: StudyDefinition, base: dict):
+    """The design columns of the cases (before the base values and the ``case`` id)."""
     levels = {f.name: list(f.levels or ()) for f in d.factors}
     if d.design == "orthogonal":
         cols = [f.column for f in d.factors]
@@ -119,11 +132,44 @@ def build_cases(definition: StudyDefinition):
             mc.common,
             deviations=[f.name for f in mc.factors if f.deviation],
         )
-    for k, v in base.items():
-        if k not in design.columns:
-            design[k] = v
-    design.insert(0, "case", np.arange(len(design)))
     return design
+
+
+@dataclass
+class StudyPlan:
+    """What a study will run, known before anything is written: every check of the inputs is done.
+
+    Attributes
+    ----------
+    definition : StudyDefinition
+    evaluator : Evaluator
+        Resolved once here (workers receive this object, never a name to resolve).
+    cases : DataFrame or None
+        The case table (None for an optimisation, whose cases come per generation).
+    base : dict
+        The value of every factor not varied (evaluator default < bearing file < [fixed]).
+    fingerprint : str
+        The study's identity in a store (:func:`fingerprint`).
+    """
+
+    definition: StudyDefinition
+    evaluator: evaluators.Evaluator
+    cases: object
+    base: dict
+    fingerprint: str
+
+
+def plan_study(definition: StudyDefinition) -> StudyPlan:
+    """Resolve the evaluator, read the bearing file, build the cases and the fingerprint.
+
+    Everything that can refuse a study happens here, before a study touches its output folder.
+    """
+    ev = evaluators.get(definition.evaluator)
+    base = base_values(definition)
+    if definition.design == "optimize":
+        return StudyPlan(definition, ev, None, base, fingerprint(definition, base=base))
+    cases = build_cases(definition)
+    return StudyPlan(definition, ev, cases, base, fingerprint(definition, cases))
 
 
 def evaluator_identity(evaluator: evaluators.Evaluator) -> str:
