@@ -332,7 +332,7 @@ def test_per_case_clearance_batch_equals_single_solves():
 
 def test_slice_pressures_are_hertz_line_contacts(composite):
     """The per-slice pressures of the state equal hertz.line_contact of each slice load, both raceways."""
-    from bearingkit.physics import hertz
+    from bearingkit.physics.contact import hertz
 
     res = solve(composite, eccentric_axial_load(np.array([2000.0, 6000.0]), 0.3, radial_load=3000.0))
     for kernel, state in zip(composite.kernels, res.rows, strict=True):

@@ -13,7 +13,7 @@ SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s,
 - computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
   slice loads (rollers), with the rotating ring chosen by ``rotating``;
 - computes the static safety s0 = (p_limit / p_max)^n from the largest contact pressure
-  (:func:`bearingkit.physics.iso76.static_safety_from_pressure`);
+  (:func:`bearingkit.physics.life.iso76.static_safety_from_pressure`);
 - flags truncated contact ellipses (ball rows), edge loading (roller rows), stress above the ISO 76 limit,
   unloaded rows and non-converged cases as warnings;
 
@@ -50,7 +50,7 @@ from bearingkit.analysis.rating_rows import (
     register_row_rater,
 )
 from bearingkit.errors import InputError
-from bearingkit.physics import iso281
+from bearingkit.physics.life import iso281
 
 __all__ = [
     "DEFAULT_EDGE_PRESSURE_RATIO",

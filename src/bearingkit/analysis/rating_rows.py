@@ -24,7 +24,7 @@ import numpy as np
 
 from bearingkit import references
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281, iso281_life, iso16281
+from bearingkit.physics.life import iso76, iso281, iso281_life, iso16281
 
 if TYPE_CHECKING:
     from bearingkit.analysis.rating import RatingOptions
@@ -396,7 +396,7 @@ def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
 
     Radial rows → ``cylindrical_roller`` (α = 0; ISO 281 f_c from the ISO/TR 1281-1 closed form, ISO 76
     eq. (3)); thrust rows → ``thrust_cylindrical_roller`` (α = 90°; ISO 76 eq. (8); ISO 281 f_c from the
-    ISO/TR 1281-1 thrust closed form, :func:`~bearingkit.physics.iso281.fc_thrust_roller`). L10r from the
+    ISO/TR 1281-1 thrust closed form, :func:`~bearingkit.physics.life.iso281.fc_thrust_roller`). L10r from the
     slice loads (ISO/TS 16281 eq. (58)-(65)), with the edge-stress factor f_k of eq. (60) per
     ``edge_stress_factor``. Edge loading: an end slice whose pressure reaches ``edge_pressure_ratio`` of the
     row's largest slice pressure (not assessed for n_s = 1).
@@ -508,7 +508,7 @@ def threaded_ratings(geometry):
     tuple of float
         (C_r, C0r) [N].
     """
-    from bearingkit.physics import ptrb_rating as pr
+    from bearingkit.physics.life import ptrb_rating as pr
     from bearingkit.rows.threaded import contact_pairs
 
     g = geometry
@@ -575,7 +575,7 @@ def rate_threaded_row(row, state, ctx: RowContext) -> RowRating:
     a loaded contact (a when the meridional curvature sum ρ_A is the smaller, else b) exceeds the flank
     half-height h/sin α (dedendum h; a symmetric tooth is assumed).
     """
-    from bearingkit.physics.ptrb_rating import thread_contact_curvature
+    from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 
     notes: list[str] = []
     g = row.geometry

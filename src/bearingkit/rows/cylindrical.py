@@ -10,7 +10,7 @@ its approach is the ring approach at the slice, minus the gap, minus twice the c
                                                                   σ = ±1 the row's direction)
 
 with c = clearance/2, and slice load q_jk = c_s ⟨δ_jk⟩^(10/9), c_s = c_l·w/l (Kunert/Palmgren or
-ISO/TS 16281 line law, :mod:`bearingkit.physics.hertz`). The slice approach is affine in q, so the
+ISO/TS 16281 line law, :mod:`bearingkit.physics.contact.hertz`). The slice approach is affine in q, so the
 whole row is two matrix products per Newton iteration: δ = q Gᵀ + δ₀, f = −q_s G, J = −Gᵀ diag(q_s′) G.
 
 The roller is rigid and held between two rigid raceways, as in the seed papers; roller tilting
@@ -74,7 +74,7 @@ class CylindricalRow:
     n_slices : int
         Slices per roller (≥ 1).
     profile : Profile or None
-        Crowning profile (:mod:`bearingkit.physics.profiles`); None = straight roller.
+        Crowning profile (:mod:`bearingkit.physics.contact.profiles`); None = straight roller.
     line_law : str
         ``"kunert"`` or ``"iso16281"``.
     pairing : str
@@ -111,7 +111,7 @@ class CylindricalRow:
         checks.integer("n_slices", self.n_slices, low=1)
         if self.e_reduced is not None:
             checks.positive("e_reduced", self.e_reduced, "Pa")
-        from bearingkit.physics.hertz import LINE_LAWS
+        from bearingkit.physics.contact.hertz import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
         checks.one_of("pairing", self.pairing, PAIRINGS)
@@ -156,7 +156,7 @@ class CylindricalKernel(KernelBase):
     _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "delta0_flat", "c_s", "x", "X2", "X3")
 
     def __init__(self, row: CylindricalRow):
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
         from bearingkit.rows.ball import _steel_e_reduced
 
         self.row = row
@@ -306,7 +306,7 @@ class CylindricalKernel(KernelBase):
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller and per-slice results at displacements q (C, 5)."""
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
 
         row = self.row
         n_s = self.shape[1]

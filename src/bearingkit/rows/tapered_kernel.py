@@ -93,7 +93,7 @@ class TaperedKernel(KernelBase):
     _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
 
     def __init__(self, row: TaperedRow):
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
         from bearingkit.rows.ball import _steel_e_reduced
 
         self.row = row
@@ -439,7 +439,7 @@ class TaperedKernel(KernelBase):
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller results: ``load`` is the cup (outer raceway) contact force Q_e (seed 001 Fig. 4)."""
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
 
         row, geo = self.row, self.geo
         st = self.roller_state(q, offset)

@@ -23,7 +23,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
-from bearingkit.physics.ehl import MIXED_COEFF, MIXED_EXP, mixed_load_share
+from bearingkit.physics.lubrication.ehl import MIXED_COEFF, MIXED_EXP, mixed_load_share
 
 # Boundary-lubrication coefficient. SKF rolling bearing catalogue, frictional moment model:
 # μ_bl = 0.15 by default, 0.12 after running-in (used for the SKF sliding-friction weighting).

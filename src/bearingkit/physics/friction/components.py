@@ -166,7 +166,7 @@ def sliding_power(load, slide_velocity, traction):
     slide_velocity : array_like [m/s]
         Sliding velocity v (any sign).
     traction : array_like [-]
-        Traction coefficient μ (≥ 0), e.g. :func:`bearingkit.physics.traction.traction_mixed`.
+        Traction coefficient μ (≥ 0), e.g. :func:`bearingkit.physics.lubrication.traction.traction_mixed`.
 
     Notes
     -----

@@ -16,7 +16,7 @@ housing reaction as the n = 0 and n = 1 harmonics of the load (a uniform plus a 
 radial pressure, which balance the net force and produce no bending). The ring then bends only in
 the modes n ≥ 2, and the deflection returned here contains **no rigid-body component**: its
 n = 0 and n = 1 Fourier coefficients vanish. The rigid translation of the ring (and its tilt between
-housing supports) is the beam model of :mod:`bearingkit.physics.ring_beam`. For a self-equilibrated
+housing supports) is the beam model of :mod:`bearingkit.physics.structure.ring_beam`. For a self-equilibrated
 set of loads (e.g. two opposite forces) the result is the free-ring solution of Roark.
 
 **Housing as a Winkler foundation (optional).** A ring fitted in a housing bore is also held by

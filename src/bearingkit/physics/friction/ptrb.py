@@ -53,9 +53,9 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit import checks, references
-from bearingkit.physics import friction_components as fc
-from bearingkit.physics import hertz
-from bearingkit.physics.ptrb_rating import thread_contact_curvature
+from bearingkit.physics.contact import hertz
+from bearingkit.physics.friction import components as fc
+from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 
 __all__ = [
     "CARRIER_FRICTION",
@@ -96,7 +96,7 @@ references.add(
 REFERENCE_KEYS = ("zheng2022", "zheng2021", "harris2007", "tabor1955", "houpert1999", "heathcote1921")
 
 #: Hysteresis loss fraction β of hardened bearing steel [1] (equivalent balls of a PTRB are steel balls
-#: rolling on steel). Same value as :data:`bearingkit.physics.friction_components.HYSTERESIS_BALL`
+#: rolling on steel). Same value as :data:`bearingkit.physics.friction.components.HYSTERESIS_BALL`
 #: (Tian et al. 2025 §4.1, β = 0.007); Tabor-type rolling tests give 0.005–0.02. Not in Zheng et al.
 HYSTERESIS_PTRB = fc.HYSTERESIS_BALL
 #: Sliding traction coefficient μ_c of the lubricated thread contacts [1], used for spin and
@@ -188,7 +188,7 @@ COMPONENTS = ("elastic", "spin", "differential", "viscous")
 #: not re-checked against the printed page). Independently, the paper's own simulation data carry
 #: exactly these U and W exponents: from §4 (30 kN: 0.715 / 0.786 / 1.045 N·m at 100 / 600 / 4000 rpm)
 #: the speed-dependent part grows as n^0.66, and Table 8's slopes at 2, 5, 8 kN and §4's at 30 kN grow
-#: as F^0.47 (``tests/physics/test_ptrb_friction.py`` recomputes both from the published numbers).
+#: as F^0.47 (``tests/physics/friction/test_ptrb.py`` recomputes both from the published numbers).
 HARRIS_ROLLING = {"coeff": 2.86, "k": 0.348, "G": 0.022, "U": 0.66, "W": 0.47}
 
 
@@ -384,7 +384,7 @@ def viscous_rolling_harris(
 
 
 #: EHL rolling-resistance models a PTRB contact can use: Harris's (default) and the common
-#: point-contact models of :data:`bearingkit.physics.friction_components.VISCOUS_POINT_MODELS`.
+#: point-contact models of :data:`bearingkit.physics.friction.components.VISCOUS_POINT_MODELS`.
 VISCOUS_MODELS = ("harris", *fc.VISCOUS_POINT_MODELS)
 
 
@@ -491,7 +491,7 @@ def contact_torques(
 
     (``"eq13"``; ``"power"`` puts cos α on F_v R_x as well, giving F_v u/ω).
     M_e :func:`hysteresis_moment`; M_s = (3/8) μ Q a E(e) (Harris & Kotzalas 2007,
-    :func:`~bearingkit.physics.friction_components.spin_moment`); M_d :func:`heathcote_moment`;
+    :func:`~bearingkit.physics.friction.components.spin_moment`); M_d :func:`heathcote_moment`;
     F_v EHL rolling resistance (Harris's form by default) at u = rolling speed relative to the carrier,
     R_x = 1/ρ_B the rolling-direction radius and R_y per ``viscous_radius_y`` (default D_w/2 =
     d_R/(2 cos α), the paper's equivalent ball).

@@ -9,8 +9,8 @@ Arrays carry leading case axes: element loads are ``Q[..., element]`` (balls) an
 ``q[..., element, slice]`` (rollers); ratings broadcast against the leading axes.
 
 The modified reference rating life is ``a1 · a_ISO · L10r`` with the factors of
-:mod:`bearingkit.physics.iso281` (:func:`~bearingkit.physics.iso281.modified_rating_life`), a_ISO being
-evaluated with the reference equivalent load of :func:`reference_equivalent_load`.
+:mod:`bearingkit.physics.life.iso281` (:func:`~bearingkit.physics.life.iso281.modified_rating_life`),
+a_ISO being evaluated with the reference equivalent load of :func:`reference_equivalent_load`.
 
 References: ISO/TS 16281:2008 (``cite("iso16281")``) eq. (19)-(29) ball, (47)-(65) roller (equation
 numbers as used by a public implementation of the TS; the TS text itself was not available);

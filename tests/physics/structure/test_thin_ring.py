@@ -6,7 +6,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import thin_ring
+from bearingkit.physics.structure import thin_ring
 
 N = np.arange(2, 200001, dtype=float)
 

@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.ehl: closed forms, scaling invariants, input checking."""
+"""Tests of bearingkit.physics.lubrication.ehl: closed forms, scaling invariants, input checking."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import ehl
+from bearingkit.physics.lubrication import ehl
 from bearingkit.references import cite
 
 # A steel ball–inner-race contact of typical size (SI): E' of steel on steel, mineral oil.

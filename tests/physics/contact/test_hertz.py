@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.hertz (SI units throughout).
+"""Tests of bearingkit.physics.contact.hertz (SI units throughout).
 
 Kinds: literature (Harris & Kotzalas Table 6.1, Harris' steel shortcuts, Palmgren's line-contact
 constant, ISO/TS 16281 constants), accuracy of Hamrock–Brewe against the exact solution,
@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from scipy import special
 
 from bearingkit.errors import InputError
-from bearingkit.physics import hertz
+from bearingkit.physics.contact import hertz
 from bearingkit.validation import all_cases, run_cases
 from bearingkit.validation.literature_hertz import HARRIS_TABLE_6_1, TOLERANCE_TABLE_6_1
 

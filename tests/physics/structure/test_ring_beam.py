@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.physics import ring_beam
+from bearingkit.physics.structure import ring_beam
 from bearingkit.rings.section import RingSection
 
 

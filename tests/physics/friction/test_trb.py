@@ -7,8 +7,8 @@ from hypothesis import strategies as st
 from scipy import integrate, special
 
 from bearingkit.errors import InputError
-from bearingkit.physics import ehl
-from bearingkit.physics import trb_friction as tf
+from bearingkit.physics.friction import trb as tf
+from bearingkit.physics.lubrication import ehl
 
 ETA = 0.04  # Pa·s
 ALPHA = 2e-8  # 1/Pa
@@ -111,7 +111,7 @@ def test_limited_sliding_traction_is_odd_monotone_and_sublinear():
 
 def test_sliding_traction_equals_newtonian_shear_with_implied_film():
     # eq. (8) = v_s η0 l I / h* with h* = R U^0.74 G^0.4 W^-0.2 / 0.168
-    from bearingkit.physics.hertz import line_contact
+    from bearingkit.physics.contact.hertz import line_contact
 
     c = line_contact(1776.0, L, R_X, E_RED)
     i = tf.tractive_integral(c.max_pressure, c.half_width, ETA)
@@ -159,7 +159,7 @@ def test_limiting_shear_reading_has_both_limits():
 
 def test_printed_newtonian_traction_is_not_physical_but_the_limited_one_is():
     # Seed contact at 10 kN (Q = 1776 N), S_c = 0.05 %: v_s = ω_i R_i S_c = 104.7·0.0238·5e-4 m/s.
-    from bearingkit.physics.traction import MU_BOUNDARY
+    from bearingkit.physics.lubrication.traction import MU_BOUNDARY
 
     vs = 104.72 * 0.02383 * 5e-4
     assert _sliding(vs, model="newtonian") / 1776.0 > MU_BOUNDARY  # above dry/boundary friction
@@ -168,7 +168,7 @@ def test_printed_newtonian_traction_is_not_physical_but_the_limited_one_is():
 
 def test_mpa_reading_is_isoviscous():
     # p in MPa inside Roelands' per-Pa constant: η(p)/η0 ≈ 1, I ≈ b (no piezoviscosity).
-    from bearingkit.physics.hertz import line_contact
+    from bearingkit.physics.contact.hertz import line_contact
 
     b = line_contact(1776.0, L, R_X, E_RED).half_width
     h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, 1776.0, L)

@@ -3,7 +3,7 @@
 SI in and out: loads in N, lengths in m, speeds in rad/s, kinematic viscosity in m²/s, lives in
 revolutions (ISO 281 quotes millions) or seconds. ISO 281 writes ν1 in mm²/s with n in r/min and Dpw in
 mm; the conversion happens inside each function. The load ratings these lives use are in
-:mod:`bearingkit.physics.iso281`, which re-exports everything here.
+:mod:`bearingkit.physics.life.iso281`, which re-exports everything here.
 
 References: ISO 281:2007 (``cite("iso281")``) clauses 8–9 and Annex B; Harris & Kotzalas 2007 vol. 2
 ch. 8 (``cite("harris2007")``).

@@ -2,7 +2,7 @@
 
 SI units throughout (m, N, Pa, rad); the only exception is inside the ISO-281-type dynamic rating,
 whose constants are defined with D_w in mm and C in N (converted at the function boundary, as in
-:mod:`bearingkit.physics.iso281`).
+:mod:`bearingkit.physics.life.iso281`).
 
 Each thread tooth of a roller touches the inner ring (ITP) and the outer ring (OTP). Zheng et al.
 (2022) treat every tooth pair as an *equivalent steel ball* of diameter D_w = d_R / cos α whose
@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit import checks, references
-from bearingkit.physics import hertz
+from bearingkit.physics.contact import hertz
 
 __all__ = [
     "BM_BALL",
@@ -402,7 +402,7 @@ def basic_dynamic_axial(thread_rating, n_teeth, f_amax):
         Axial load distribution coefficient of the most loaded tooth.
 
     n^0.7 C_Da is ISO 281 eq. (7) for n identical rows,
-    (Σ Z)[Σ (Z/C_D)^(10/3)]^(−0.3) (:func:`bearingkit.physics.iso281.combine_thrust_rows`); f_amax
+    (Σ Z)[Σ (Z/C_D)^(10/3)]^(−0.3) (:func:`bearingkit.physics.life.iso281.combine_thrust_rows`); f_amax
     corrects for the uneven axial share of the teeth of a roller.
     """
     checks.positive("f_amax", f_amax)

@@ -5,7 +5,7 @@ import pytest
 from scipy.integrate import quad
 
 from bearingkit.errors import InputError
-from bearingkit.physics import friction_components as fc
+from bearingkit.physics.friction import components as fc
 
 
 def test_registry_names():

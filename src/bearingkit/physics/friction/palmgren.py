@@ -27,7 +27,8 @@ import numpy as np
 
 from bearingkit import checks, references
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, tables
+from bearingkit.physics import tables
+from bearingkit.physics.life import iso76
 
 references.add(
     "harris2007_ch11",

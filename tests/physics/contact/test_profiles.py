@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.profiles (roller crowning profiles). SI units throughout.
+"""Tests of bearingkit.physics.contact.profiles (roller crowning profiles). SI units throughout.
 
 Expected values are computed here from the geometry (circles through given points) or from the
 published formulas written out independently, never copied from the code's output.
@@ -14,8 +14,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import profiles as pr
-from bearingkit.physics.profiles import PROFILES, SEED000_CROWNING, make_profile, seed000_profile
+from bearingkit.physics.contact import profiles as pr
+from bearingkit.physics.contact.profiles import PROFILES, SEED000_CROWNING, make_profile, seed000_profile
 from bearingkit.references import cite
 
 # Seed 000 rollers: axial 4 mm x 4.8 mm, radial 5 mm x 8 mm (Tian et al. 2025, Table 1).

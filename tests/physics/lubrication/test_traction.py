@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.traction: closed forms, odd symmetry, bounds, limits, registry."""
+"""Tests of bearingkit.physics.lubrication.traction: closed forms, odd symmetry, bounds, limits, registry."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import traction
+from bearingkit.physics.lubrication import traction
 from bearingkit.references import cite
 
 slip = st.floats(min_value=-5.0, max_value=5.0, allow_nan=False)

@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.iso16281 (ISO/TS 16281 reference rating life). SI units throughout.
+"""Tests of bearingkit.physics.life.iso16281 (ISO/TS 16281 reference rating life). SI units throughout.
 
 The load distributions are written analytically here (no solver): zero clearance and pure radial load
 give the Stribeck distribution Q_j = Q_max cos^n(psi_j) for |psi_j| < 90 deg (n = 3/2 point contact,
@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import iso281, iso16281
+from bearingkit.physics.life import iso281, iso16281
 
 MM = 1e-3
 INCH = 25.4e-3

@@ -15,8 +15,8 @@ from bearingkit.analysis.ptrb_friction import (
 )
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
-from bearingkit.physics import ptrb_friction as pf
-from bearingkit.physics.ptrb_rating import thread_contact_curvature
+from bearingkit.physics.friction import ptrb as pf
+from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 from bearingkit.validation import seed004_friction as v
 
 G = ptrb_prototype()
@@ -199,7 +199,7 @@ def _outer_contact(q, alpha, **kw):
 
 def _outer_fv(q, alpha, speed, radius_y):
     """Harris's F_v of the prototype's OTP contact, built by hand [N]."""
-    from bearingkit.physics import hertz
+    from bearingkit.physics.contact import hertz
 
     u = pf.kinematics(*PROTO_OUTER[:3])["rolling_speed"] * speed
     s, f, ra, rb = thread_contact_curvature(PROTO_OUTER[0], PROTO_OUTER[2], 5.1e-3, np.inf, alpha, "outer")

@@ -39,7 +39,7 @@ Readings of the seed's equations
   caps the local stress with the Bair–Winer law τ = τ_L[1 − exp(−τ_N/τ_L)], τ_N = η(p) v_s/(2h*), over
   the full strip: it equals eq. (8) where τ_N ≪ τ_L and is bounded by Λ_L Q. ``model="newtonian"``
   is eq. (8) as printed.
-- **Eq. (9), rib sliding**: :func:`bearingkit.physics.traction.flange_friction_force` (reused).
+- **Eq. (9), rib sliding**: :func:`bearingkit.physics.lubrication.traction.flange_friction_force` (reused).
 - **Eq. (13), kinematics under outer-raceway control**: v_se = 0, v_si = ω_i R_i S_c, derived in
   :func:`outer_control_kinematics`.
 - **Eqs. (11)–(12), ring torques**: :func:`ring_torques`.
@@ -53,8 +53,8 @@ import numpy as np
 
 from bearingkit import checks, references
 from bearingkit.errors import InputError
-from bearingkit.physics import friction_components as fc
-from bearingkit.physics.traction import LIMITING_SHEAR_COEFF
+from bearingkit.physics.friction import components as fc
+from bearingkit.physics.lubrication.traction import LIMITING_SHEAR_COEFF
 
 references.add(
     "harris1966",
@@ -99,7 +99,8 @@ SLIDING_MODELS = ("limiting_shear", "newtonian", "newtonian_mpa")
 #: constant 5.1e-9 (a unit slip the flattened eq. 10 admits; diagnostic only, it drops piezoviscosity).
 MPA_READING_SCALE = 1e-6  # [MPa/Pa]
 #: Λ_L = τ_L/p of the ``"limiting_shear"`` reading [-]: bearingkit's mineral-oil value (Bair & Winer
-#: 1979, range 0.05…0.1; :data:`bearingkit.physics.traction.LIMITING_SHEAR_COEFF`), not fitted to seed 001.
+#: 1979, range 0.05…0.1; :data:`bearingkit.physics.lubrication.traction.LIMITING_SHEAR_COEFF`),
+#: not fitted to seed 001.
 SLIDING_LIMITING_SHEAR_COEFF = LIMITING_SHEAR_COEFF
 
 # --- Eq. (10): Roelands viscosity ------------------------------------------------------------------
@@ -492,7 +493,7 @@ def sliding_friction_force(
     Harris (1966) ASLE Trans. 9:229; Zhou & Hoeprich (1991); Bair & Winer (1979) J. Lubr. Technol.
     101:258; Liu et al. (2022) eqs. (8), (10).
     """
-    from bearingkit.physics.hertz import line_contact
+    from bearingkit.physics.contact.hertz import line_contact
 
     checks.one_of("sliding_model", model, SLIDING_MODELS)
     checks.finite("slide_speed", slide_speed, "m/s")

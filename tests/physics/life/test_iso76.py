@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.iso76 (ISO 76:2006 static ratings). SI units throughout."""
+"""Tests of bearingkit.physics.life.iso76 (ISO 76:2006 static ratings). SI units throughout."""
 
 import numpy as np
 import pytest
@@ -8,7 +8,7 @@ from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76
+from bearingkit.physics.life import iso76
 
 MM = 1e-3
 INCH = 25.4e-3

@@ -1,4 +1,4 @@
-"""Tests of bearingkit.physics.iso281 (ISO 281:2007 ratings and life). SI units throughout."""
+"""Tests of bearingkit.physics.life.iso281 (ISO 281:2007 ratings and life). SI units throughout."""
 
 import numpy as np
 import pytest
@@ -6,7 +6,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281, iso281_life
+from bearingkit.physics.life import iso76, iso281, iso281_life
 
 MM = 1e-3
 INCH = 25.4e-3

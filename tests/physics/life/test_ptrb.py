@@ -6,9 +6,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics import hertz, iso281
-from bearingkit.physics import ptrb_rating as pr
-from bearingkit.physics import ptrb_strength as ps
+from bearingkit.physics.contact import hertz
+from bearingkit.physics.life import iso281
+from bearingkit.physics.life import ptrb_rating as pr
+from bearingkit.physics.structure import ptrb_strength as ps
 
 E_RED = 212e9 / (1 - 0.29**2)
 

@@ -20,7 +20,7 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.physics import tables
-from bearingkit.physics.iso281_life import (  # noqa: F401  (the life half of ISO 281, re-exported)
+from bearingkit.physics.life.iso281_life import (  # noqa: F401  (the life half of ISO 281, re-exported)
     AISO_MODELS,
     BEARING_KINDS,
     LIFE_EXPONENTS,
