@@ -25,7 +25,7 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.analysis.kinematics import RACEWAY_CONTROLS, element_kinematics, thrust_roller_kinematics
 from bearingkit.lubricants import Lubricant, as_lubricant
-from bearingkit.physics.contact import hertz
+from bearingkit.physics.contact import hertz, line
 from bearingkit.physics.friction import components as fc
 from bearingkit.physics.lubrication import ehl
 from bearingkit.physics.lubrication.traction import MU_BOUNDARY, MU_EHL_SKF_CYLINDRICAL, traction_mixed
@@ -265,7 +265,7 @@ def _roller_row(row, kernel, state, op, ctx):
         u_act, u_n, u_slice_n, slide_n = speeds[side]
         film = ehl.film_line_pan_hamrock(ctx["eta"], u_act, ctx["alpha_p"], e_red, rx, qs, length)
         lam = ehl.film_parameter(film.minimum, op.roughness_element, op.roughness_raceway)
-        b = hertz.line_contact(q_s, width, rx[..., None], e_red).half_width
+        b = line.line_contact(q_s, width, rx[..., None], e_red).half_width
         f_h = fc.hysteresis_force_line(q_s, b, rx[..., None], op.hysteresis_roller)
         u_roll = u_n[..., None] if u_slice_n is None else u_slice_n
         out["hysteresis_roller"] += (f_h * u_roll).sum(axis=-1)

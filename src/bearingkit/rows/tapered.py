@@ -125,7 +125,7 @@ class TaperedRow:
     profile : Profile or None
         Crown drop of the roller (e.g. ``make_profile("iso16281_tapered", …)``).
     line_law : str
-        ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.contact.hertz.LINE_LAWS`).
+        ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.contact.line.LINE_LAWS`).
     e_reduced : float or None [Pa]
         E′ (steel–steel from the materials by default).
     flange_contact_height : float or None [m]
@@ -216,7 +216,7 @@ class TaperedRow:
         checks.finite("clearance", self.clearance, "m")
         checks.one_of("deviation_model", self.deviation_model, DEVIATION_MODELS)
         checks.integer("n_slices", self.n_slices, low=1)
-        from bearingkit.physics.contact.hertz import LINE_LAWS
+        from bearingkit.physics.contact.line import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
         if self.e_reduced is not None:

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from scipy import special
 
 from bearingkit.errors import InputError
-from bearingkit.physics.contact import hertz
+from bearingkit.physics.contact import hertz, line
 from bearingkit.validation import all_cases, run_cases
 from bearingkit.validation.literature_hertz import HARRIS_TABLE_6_1, TOLERANCE_TABLE_6_1
 
@@ -301,7 +301,7 @@ def test_large_batch_is_vectorised_and_fast():
     modulus_strategy,
 )
 def test_line_contact_closed_forms(q, length, radius, e_r):
-    lc = hertz.line_contact(q, length, radius, e_r)
+    lc = line.line_contact(q, length, radius, e_r)
     q_l = q / length
     e_star = e_r / 2.0  # Johnson's E* (formulas.md A4)
     assert lc.half_width == pytest.approx(np.sqrt(4 * q_l * radius / (np.pi * e_star)), rel=1e-12)
@@ -317,12 +317,12 @@ def test_kunert_reproduces_palmgren_constant():
     """Palmgren (1959) / Harris & Kotzalas (2007), ch. 6: delta = 3.84e-5 Q^0.9/l^0.8 (mm, N) for
     steel. With eta = 2/E' (E = 2.075e5 N/mm^2, nu = 0.3) Kunert's 1.36 eta^0.9 = 3.82e-5 (0.5 %)."""
     q, length = 5000.0, 15e-3
-    delta = hertz.line_deflection(q, length, STEEL_E_REDUCED, law="kunert")
+    delta = line.line_deflection(q, length, STEEL_E_REDUCED, law="kunert")
     palmgren_mm = 3.84e-5 * q**0.9 / (length * 1e3) ** 0.8
     assert delta * 1e3 == pytest.approx(palmgren_mm, rel=1e-2)
     # dimensional consistency: scaling all lengths by s and moduli by 1/s^2 (loads fixed) scales delta by s
     s = 3.0
-    d2 = hertz.line_deflection(q, length * s, STEEL_E_REDUCED / s**2, law="kunert")
+    d2 = line.line_deflection(q, length * s, STEEL_E_REDUCED / s**2, law="kunert")
     assert d2 == pytest.approx(s * delta, rel=1e-12)
 
 
@@ -330,34 +330,34 @@ def test_kunert_slice_law_of_seed_000():
     """q_slice = w A^(-10/9) l^(-1/9) delta^(10/9), A = 1.36 eta^0.9 (seed 000's law)."""
     length, e_r, n = 20e-3, STEEL_E_REDUCED, 10
     a = 1.36 * (2.0 / e_r) ** 0.9
-    _, w = hertz.slice_grid(length, n)
-    c_l = hertz.line_stiffness(length, e_r, "kunert")
+    _, w = line.slice_grid(length, n)
+    c_l = line.line_stiffness(length, e_r, "kunert")
     assert c_l * w / length == pytest.approx(w * a ** (-10 / 9) * length ** (-1 / 9), rel=1e-12)
 
 
 def test_iso16281_two_contacts_give_the_standard_constant():
     """ISO/TS 16281: c_L = 35948 L_we^(8/9) N/mm^(10/9) for the roller's two contacts together."""
     length = 14e-3
-    c_one = hertz.line_stiffness(length, hertz.ISO16281_STEEL_E_REDUCED, "iso16281")
+    c_one = line.line_stiffness(length, line.ISO16281_STEEL_E_REDUCED, "iso16281")
     c_pair = hertz.series_stiffness(c_one, c_one, 10.0 / 9.0)
     # back to N/mm^(10/9): Q = c delta^(10/9)  ->  c_mm = c_SI * (1e-3)^(10/9)
     assert c_pair * 1e-3 ** (10 / 9) == pytest.approx(35948.0 * (length * 1e3) ** (8 / 9), rel=1e-12)
     # both laws describe steel rollers: measured ratio ISO/Kunert = 0.947 at E = 210 GPa
-    ratio = c_one / hertz.line_stiffness(length, hertz.ISO16281_STEEL_E_REDUCED, "kunert")
+    ratio = c_one / line.line_stiffness(length, line.ISO16281_STEEL_E_REDUCED, "kunert")
     assert 0.93 < ratio < 0.96
     # linear in E'
-    assert hertz.line_stiffness(length, 2 * hertz.ISO16281_STEEL_E_REDUCED, "iso16281") == pytest.approx(
+    assert line.line_stiffness(length, 2 * line.ISO16281_STEEL_E_REDUCED, "iso16281") == pytest.approx(
         2 * c_one
     )
 
 
 def test_slice_grid():
-    pos, w = hertz.slice_grid(np.array([10e-3, 20e-3]), 5)
+    pos, w = line.slice_grid(np.array([10e-3, 20e-3]), 5)
     assert pos.shape == (2, 5)
     np.testing.assert_allclose(w, [2e-3, 4e-3])
     np.testing.assert_allclose(pos[0], [-4e-3, -2e-3, 0.0, 2e-3, 4e-3], atol=1e-15)
     np.testing.assert_allclose(pos.sum(axis=-1), 0.0, atol=1e-15)
-    pos1, w1 = hertz.slice_grid(8e-3, 1)
+    pos1, w1 = line.slice_grid(8e-3, 1)
     assert pos1.shape == (1,) and pos1[0] == 0.0 and w1 == 8e-3
 
 
@@ -386,11 +386,11 @@ def test_slice_grid():
         (lambda: hertz.point_contact(1.0, 100.0, 0.5, 0.0), "e_reduced"),
         (lambda: hertz.point_stiffness(100.0, np.nan, 2e11), "curvature_difference"),
         (lambda: hertz.series_stiffness(-1.0, 1.0), "k_1"),
-        (lambda: hertz.line_stiffness(10e-3, 2e11, law="hertz"), "law"),
-        (lambda: hertz.line_stiffness(-10e-3, 2e11), "effective_length"),
-        (lambda: hertz.line_contact(1.0, 10e-3, -1e-3, 2e11), "radius_x"),
-        (lambda: hertz.line_contact(-1.0, 10e-3, 1e-3, 2e11), "load"),
-        (lambda: hertz.slice_grid(10e-3, 0), "n_slices"),
+        (lambda: line.line_stiffness(10e-3, 2e11, law="hertz"), "law"),
+        (lambda: line.line_stiffness(-10e-3, 2e11), "effective_length"),
+        (lambda: line.line_contact(1.0, 10e-3, -1e-3, 2e11), "radius_x"),
+        (lambda: line.line_contact(-1.0, 10e-3, 1e-3, 2e11), "load"),
+        (lambda: line.slice_grid(10e-3, 0), "n_slices"),
         (lambda: hertz.reduced_modulus(2e11, 0.3, -2e11, 0.3), "youngs_modulus_2"),
         (lambda: hertz.reduced_modulus(2e11, 0.7, 2e11, 0.3), "poisson_ratio_1"),
     ],
@@ -406,4 +406,4 @@ def test_unknown_method_lists_valid_names():
     with pytest.raises(InputError, match="exact, hamrock_brewe"):
         hertz.contact_coefficients(0.3, method="nope")
     with pytest.raises(InputError, match="iso16281, kunert"):
-        hertz.line_stiffness(1e-2, 2e11, law="nope")
+        line.line_stiffness(1e-2, 2e11, law="nope")

@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics.contact import profiles as pr
+from bearingkit.physics.contact import profile_base as pr
 from bearingkit.physics.contact.profiles import PROFILES, SEED000_CROWNING, make_profile, seed000_profile
 from bearingkit.references import cite
 

@@ -111,7 +111,7 @@ def test_limited_sliding_traction_is_odd_monotone_and_sublinear():
 
 def test_sliding_traction_equals_newtonian_shear_with_implied_film():
     # eq. (8) = v_s η0 l I / h* with h* = R U^0.74 G^0.4 W^-0.2 / 0.168
-    from bearingkit.physics.contact.hertz import line_contact
+    from bearingkit.physics.contact.line import line_contact
 
     c = line_contact(1776.0, L, R_X, E_RED)
     i = tf.tractive_integral(c.max_pressure, c.half_width, ETA)
@@ -168,7 +168,7 @@ def test_printed_newtonian_traction_is_not_physical_but_the_limited_one_is():
 
 def test_mpa_reading_is_isoviscous():
     # p in MPa inside Roelands' per-Pa constant: η(p)/η0 ≈ 1, I ≈ b (no piezoviscosity).
-    from bearingkit.physics.contact.hertz import line_contact
+    from bearingkit.physics.contact.line import line_contact
 
     b = line_contact(1776.0, L, R_X, E_RED).half_width
     h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, 1776.0, L)

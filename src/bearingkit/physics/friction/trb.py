@@ -493,7 +493,7 @@ def sliding_friction_force(
     Harris (1966) ASLE Trans. 9:229; Zhou & Hoeprich (1991); Bair & Winer (1979) J. Lubr. Technol.
     101:258; Liu et al. (2022) eqs. (8), (10).
     """
-    from bearingkit.physics.contact.hertz import line_contact
+    from bearingkit.physics.contact.line import line_contact
 
     checks.one_of("sliding_model", model, SLIDING_MODELS)
     checks.finite("slide_speed", slide_speed, "m/s")
