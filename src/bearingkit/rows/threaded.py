@@ -95,7 +95,8 @@ class PTRBGeometry:
         d_0, D_0, H_0 of the envelope (the rollers' thread length n·P must fit in H_0).
     contact_radius_inner, contact_radius_outer : float [m]
         r_I, r_O, flank arc radii of the ring threads (concave, > R_rr); ``inf`` = flat flank. Table 1
-        leaves them blank; flat flanks reproduce the paper's C_r exactly (see validation seed004).
+        leaves them blank; flat flanks reproduce the paper's C_r exactly (validation cases of
+        bearingkit.papers.zheng2022).
     inner_pitch_diameter, outer_pitch_diameter : float [m] or None
         d_I, d_O; None = D_pw ∓ d_R.
     youngs_modulus : float [Pa], poisson_ratio : float

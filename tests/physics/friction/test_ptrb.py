@@ -5,19 +5,13 @@ import pytest
 from scipy import integrate
 from scipy.special import ellipe
 
-from bearingkit.analysis.ptrb_friction import (
-    RPM,
-    PTRBFrictionParameters,
-    calibrate_contact_traction,
-    design_geometry,
-    ptrb_friction,
-    ptrb_objectives,
-)
+from bearingkit.analysis.ptrb_friction import RPM, PTRBFrictionParameters, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
+from bearingkit.papers.zheng2022 import validation_friction as v
+from bearingkit.papers.zheng2022.design import calibrate_contact_traction, design_geometry, ptrb_objectives
 from bearingkit.physics.friction import ptrb as pf
 from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
-from bearingkit.validation import seed004_friction as v
 
 G = ptrb_prototype()
 

@@ -103,7 +103,7 @@ HYSTERESIS_PTRB = fc.HYSTERESIS_BALL
 #: differential sliding, for the default reading (``convention="paper"``, ``"axis"``, ``"ball"``).
 #: **CALIBRATED** — the ONE fitted friction parameter of bearingkit's PTRB model: fitted once so that
 #: the prototype's axial friction torque at 20 kN and 600 rpm equals Zheng et al. (2022) Table 7,
-#: simulation column, 0.476 N·m (:func:`bearingkit.analysis.ptrb_friction.calibrate_contact_traction`
+#: simulation column, 0.476 N·m (:func:`bearingkit.papers.zheng2022.design.calibrate_contact_traction`
 #: recomputes it). Every other Table 5/7/8 number follows. A free least-squares fit of μ_c together
 #: with a factor on F_v over all 62 Table 7–8 values gives μ_c = 0.0828 and factor 1.05: the
 #: calibration point is not special and the viscous term needs no factor. 0.083 lies between the SKF

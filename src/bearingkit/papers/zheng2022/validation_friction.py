@@ -38,8 +38,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.analysis.ptrb_friction import RPM, design_geometry, ptrb_friction
+from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype
+from bearingkit.papers.zheng2022.design import design_geometry
 from bearingkit.validation.registry import Case, register
 
 SOURCE = "Zheng et al. (2022) Machines 10:1051, doi:10.3390/machines10111051"

@@ -25,9 +25,9 @@ Studies (Tian et al. 2025, Machines 13:588, doi:10.3390/machines13070588):
 Model readings (:data:`VARIANTS`, keyed by documented names) fix the choices the paper leaves open
 (slice-law pairing, crowning of the base bearing, the spin coefficient f_s of M4, the viscous
 models, the YRT clearance); ``"seed000"`` is the validated reading of
-:mod:`bearingkit.validation.seed000_friction`. A variant with ``viscosity_factor=None`` is
+:mod:`bearingkit.papers.tian2025.validation`. A variant with ``viscosity_factor=None`` is
 recalibrated once against Table 3 run 1 (the single calibration of the seed-000 reproduction) by
-:func:`calibrated_factor`. ``python -m bearingkit.studies.seed000_friction OUT`` writes CSV + PNG.
+:func:`calibrated_factor`. ``python -m bearingkit.papers.tian2025.friction OUT`` writes CSV + PNG.
 """
 
 from __future__ import annotations
@@ -46,9 +46,9 @@ from bearingkit.analysis.kinematics import RACEWAY_CONTROLS
 from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
+from bearingkit.papers.tian2025 import validation as v000
 from bearingkit.physics.contact.profiles import SEED000_CROWNING
 from bearingkit.physics.friction.components import VISCOUS_LINE_MODELS, VISCOUS_POINT_MODELS
-from bearingkit.validation import seed000_friction as v000
 
 references.add(
     "schaeffler_yrt",
@@ -135,7 +135,7 @@ VARIANTS: dict[str, FrictionVariant] = {
         FrictionVariant(
             "seed000",
             viscosity_factor=v000.VISCOSITY_FACTOR,
-            description="validated reading (validation/seed000_friction.py)",
+            description="validated reading (papers/tian2025/validation.py)",
         ),
         FrictionVariant("spin_ehl", spin="ehl", description="f_s = mu_EHL (full-film traction in the spin)"),
         FrictionVariant("spin_boundary", spin="boundary", description="f_s = mu_bl (Harris: Coulomb)"),

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from bearingkit.studies import seed002
+from bearingkit.papers.li2025 import studies as seed002
 from bearingkit.validation.registry import all_cases, run_case
 
 

@@ -3,9 +3,9 @@
 Coordinate mapping: the paper's radial force F_r acts along +x on the inner body (u_x = δ_r), the
 axial force along +z; rows ``ball_1`` (z = −25 mm), ``roller_2`` (z = 0), ``ball_3`` (z = +25 mm).
 
-Ring models (:data:`bearingkit.studies.seed002.RING_MODELS`): ``flexible`` = the beam between the
+Ring models (:data:`bearingkit.papers.li2025.studies.RING_MODELS`): ``flexible`` = the beam between the
 housing supports only (seed 002's u_s acting as a uniform clearance, eqs. 11 and 19), at the compliance
-scale identified from the roller count (:data:`~bearingkit.studies.seed002.IDENTIFIED_SCALE`);
+scale identified from the roller count (:data:`~bearingkit.papers.li2025.studies.IDENTIFIED_SCALE`);
 ``flexible-ovalised`` = the full model, beam + thin-ring ovalisation (eqs. 7–10) held by the default
 housing (a 20 mm steel wall as a bilateral Winkler foundation,
 :data:`bearingkit.bearings.ball_column.DEFAULT_HOUSING_WALL`), same scale.
@@ -45,7 +45,7 @@ _OVAL = (
 def _count(row: str, scale: float | None, bending: bool = False) -> float:
     from bearingkit.analysis.quasistatic import load_vector
     from bearingkit.bearings.ball_column import BallColumnGeometry
-    from bearingkit.studies.seed002 import CONDITIONS, solve_case
+    from bearingkit.papers.li2025.studies import CONDITIONS, solve_case
 
     fr, fa = CONDITIONS[1]
     res, flex = solve_case(BallColumnGeometry(), load_vector(F_x=fr, F_z=fa), scale, bending=bending)
@@ -55,14 +55,14 @@ def _count(row: str, scale: float | None, bending: bool = False) -> float:
 
 
 def _heavy_share(scale: float | None = None) -> float:
-    from bearingkit.studies.seed002 import gradient_curve
+    from bearingkit.papers.li2025.studies import gradient_curve
 
     df = gradient_curve([100000.0], scale=scale)
     return float(df["roller_2_radial_share"].iloc[0])
 
 
 def _register():
-    from bearingkit.studies.seed002 import IDENTIFIED_SCALE
+    from bearingkit.papers.li2025.studies import IDENTIFIED_SCALE
 
     count_tol = 0.1  # ±2 elements: the loaded count moves in steps of 2 (symmetric zone)
     s = IDENTIFIED_SCALE

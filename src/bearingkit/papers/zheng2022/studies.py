@@ -16,9 +16,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingkit.analysis.ptrb_friction import RPM, design_geometry, ptrb_friction
+from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
+from bearingkit.papers.zheng2022.design import design_geometry
 from bearingkit.physics.life import iso76, iso281
 
 __all__ = [
@@ -257,7 +258,7 @@ def nearest_table6(objectives: dict, case: str = "axial") -> pd.DataFrame:
     ----------
     objectives : dict
         Arrays ``C0`` [N], ``C`` [N], ``mu`` [1] of a population (e.g. a pymoo front evaluated with
-        :func:`bearingkit.analysis.ptrb_friction.ptrb_objectives`).
+        :func:`bearingkit.papers.zheng2022.design.ptrb_objectives`).
     case : {"axial", "radial"}
 
     Returns
@@ -298,12 +299,12 @@ def table6_at_published_designs(parameters=None) -> pd.DataFrame:
     """Table 6 recomputed at the PUBLISHED design variables of each point (no optimiser involved).
 
     The friction model's own check of §6: α, n, R_rr, d_R of xa1, xa2, xr1, xr2 and the prototype (D_pw,
-    n·P = 12 mm and Z = 11 held, as :func:`bearingkit.analysis.ptrb_friction.ptrb_objectives`), at the §6
+    n·P = 12 mm and Z = 11 held, as :func:`bearingkit.papers.zheng2022.design.ptrb_objectives`), at the §6
     operating point (20 kN, 4000 rpm). Columns: ``point``, computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N,
     mu_r``, the published values (``*_pub``) and relative errors (``*_err``). ``parameters``: a
     :class:`~bearingkit.analysis.ptrb_friction.PTRBFrictionParameters` (None: the defaults).
     """
-    from bearingkit.analysis.ptrb_friction import ptrb_objectives
+    from bearingkit.papers.zheng2022.design import ptrb_objectives
 
     names = list(TABLE6)
     x = [TABLE6[k] for k in names]

@@ -3,10 +3,11 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.ptrb_friction import RPM, PTRBFrictionParameters, ptrb_friction, ptrb_objectives
+from bearingkit.analysis.ptrb_friction import RPM, PTRBFrictionParameters, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype
-from bearingkit.studies import seed004 as s
-from bearingkit.validation import seed004_friction as v
+from bearingkit.papers.zheng2022 import studies as s
+from bearingkit.papers.zheng2022 import validation_friction as v
+from bearingkit.papers.zheng2022.design import ptrb_objectives
 
 # Table 5 directions (sign of M(high) − M(low)) that bearingkit reproduces / does not: 9 of 10 with
 # eq. (13)–(15) summed as printed (the default); 7 of 10 with the power balance.
@@ -40,7 +41,7 @@ def test_table5_trends(parameter, case, sign):
 
 @pytest.mark.parametrize("parameter,case,sign", NOT_REPRODUCED)
 def test_table5_trends_not_reproduced_are_opposite(parameter, case, sign):
-    """Known deviation (stated in bearingkit.validation.seed004_friction): pinned so a model change
+    """Known deviation (stated in bearingkit.papers.zheng2022.validation_friction): pinned so a model change
     that flips it is noticed."""
     steps, _ = _direction(parameter, case)
     assert np.all(steps == -sign)

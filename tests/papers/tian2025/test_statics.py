@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from bearingkit.studies.seed000_statics import clearance_map, eccentricity_sweep
+from bearingkit.papers.tian2025.statics import clearance_map, eccentricity_sweep
 
 
 @pytest.fixture(scope="module")

@@ -5,8 +5,8 @@ import pytest
 
 from bearingkit.analysis.friction import COMPONENT_NAMES
 from bearingkit.errors import InputError
-from bearingkit.studies import seed000_friction as sf
-from bearingkit.validation import seed000_friction as v000
+from bearingkit.papers.tian2025 import friction as sf
+from bearingkit.papers.tian2025 import validation as v000
 
 
 @pytest.fixture(scope="module")

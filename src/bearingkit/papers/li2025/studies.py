@@ -1,7 +1,7 @@
 """Seed-002 studies (Li et al. 2025, Machines 13:785, §3): load sharing of the ball–column bearing.
 
 SI units; every function returns a :class:`pandas.DataFrame` (one line per case, units in column
-names). ``python -m bearingkit.studies.seed002 OUT_DIR [FIGURES_DIR]`` writes the tables (CSV) and
+names). ``python -m bearingkit.papers.li2025.studies OUT_DIR [FIGURES_DIR]`` writes the tables (CSV) and
 plots (PNG; ``docs/figures`` holds the committed ones).
 
 Ring models: rigid (``scale`` None), or the flexible outer ring at a compliance scale, by default the

@@ -6,7 +6,7 @@ SI units. Two studies of the ball–roller composite turntable bearing, each ret
 - :func:`clearance_map` — axial roller clearance × axial ball clearance at F_a = 5 kN;
 - :func:`eccentricity_sweep` — F_a = F_r = 3 kN applied at eccentricity 0–0.6 m (M_y = −e·F_a).
 
-``python -m bearingkit.studies.seed000_statics OUT_DIR`` writes both tables (CSV) and their plots (PNG).
+``python -m bearingkit.papers.tian2025.statics OUT_DIR`` writes both tables (CSV) and their plots (PNG).
 """
 
 from __future__ import annotations

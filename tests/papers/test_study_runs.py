@@ -8,12 +8,16 @@ import pandas as pd
 import pytest
 
 from bearingkit.errors import InputError
+from bearingkit.papers import examples as ex
+from bearingkit.papers.li2025 import study_runs as s002
+from bearingkit.papers.liu2022 import study_runs as s001
+from bearingkit.papers.tian2025 import study_runs as s000
+from bearingkit.papers.tian2025.validation import TABLE3
+from bearingkit.papers.zheng2022 import study_runs as s004
+from bearingkit.papers.zheng2022.studies import TABLE6_OBJECTIVES
 from bearingkit.studies import evaluators
-from bearingkit.studies import seed_studies as S
 from bearingkit.studies.definition import load_study
-from bearingkit.studies.seed004 import TABLE6_OBJECTIVES
 from bearingkit.validation.registry import all_cases, failures, run_cases
-from bearingkit.validation.seed000_friction import TABLE3
 
 EXAMPLES = ("seed000_l9", "seed001_monte_carlo", "seed002_clearance_map")
 EXAMPLES += ("seed004_axial_nsga2", "seed004_radial_nsga2")
@@ -21,35 +25,35 @@ EXAMPLES += ("seed004_axial_nsga2", "seed004_radial_nsga2")
 
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_example_files_load(name):
-    d = load_study(S.example(name))
+    d = load_study(ex.example(name))
     assert evaluators.get(d.evaluator).name == d.evaluator
 
 
 def test_unknown_example_is_an_input_error():
     with pytest.raises(InputError, match="not found"):
-        S.example("no_such_study")
+        ex.example("no_such_study")
 
 
 # ------------------------------------------------------------------------------------------ seed 000
 @pytest.fixture(scope="module")
 def l9():
-    return S.run_example("seed000_l9")
+    return ex.run_example("seed000_l9")
 
 
 def test_seed000_published_ranges_give_the_published_ranking():
     """Range analysis of the PUBLISHED Table 3 torques reproduces §6.2's ranking D > A > C > B."""
-    r = S.seed000_published_ranges()
+    r = s000.seed000_published_ranges()
     t = np.array([row[4] for row in TABLE3]) / 1e3
     # D (eccentricity) levels 0.2/0.3/0.4 m are runs (1,5,9), (2,6,7), (3,4,8)
     r_d = t[[2, 3, 7]].mean() - t[[0, 4, 8]].mean()
     assert r["D"] == pytest.approx(r_d, rel=1e-12)
-    assert tuple(sorted(r, key=r.get, reverse=True)) == S.SEED000_PUBLISHED_RANKING
+    assert tuple(sorted(r, key=r.get, reverse=True)) == s000.SEED000_PUBLISHED_RANKING
 
 
 def test_seed000_study_holds_every_table3_run_and_matches_the_direct_path(l9):
-    from bearingkit.validation.seed000_friction import table3_torque
+    from bearingkit.papers.tian2025.validation import table3_torque
 
-    table = S.seed000_table3(l9)
+    table = s000.seed000_table3(l9)
     assert list(table["run"]) == list(range(1, 10))
     assert sorted(table["case"]) == list(range(9))  # the L9 design is exactly Table 3's nine runs
     assert table.loc[0, "torque_Nm"] == pytest.approx(table3_torque(1), rel=1e-6)
@@ -58,14 +62,15 @@ def test_seed000_study_holds_every_table3_run_and_matches_the_direct_path(l9):
 
 
 def test_seed000_ranking_leaders_and_cases(l9):
-    rank = S.ranking(l9.analysis["range"])
+    rank = s000.ranking(l9.analysis["range"])
     assert set(rank) == set("ABCD")
-    assert rank[:2] == S.SEED000_PUBLISHED_RANKING[:2]  # eccentricity, then roller clearance
+    assert rank[:2] == s000.SEED000_PUBLISHED_RANKING[:2]  # eccentricity, then roller clearance
     results = run_cases(all_cases(["seed000/study/"]))
     assert len(results) == 9 + 1 + 4
     assert not failures(results)
     by_id = {r.case.id: r for r in results}
-    assert by_id["seed000/study/table3/range-ranking"].computed == float(rank == S.SEED000_PUBLISHED_RANKING)
+    matches = float(rank == s000.SEED000_PUBLISHED_RANKING)
+    assert by_id["seed000/study/table3/range-ranking"].computed == matches
     direct = {r.case.id: r for r in run_cases(all_cases(["seed000/table3/run2/"]))}
     assert by_id["seed000/study/table3/run2/friction-torque"].computed == pytest.approx(
         direct["seed000/table3/run2/friction-torque"].computed, rel=1e-6
@@ -75,7 +80,7 @@ def test_seed000_ranking_leaders_and_cases(l9):
 # ------------------------------------------------------------------------------------------ seed 004
 @pytest.fixture(scope="module", params=["axial", "radial"])
 def nsga(request):
-    return request.param, S.seed004_optimize(request.param, pop_size=40, generations=30)
+    return request.param, s004.seed004_optimize(request.param, pop_size=40, generations=30)
 
 
 def test_seed004_front_is_feasible_bounded_and_non_dominated(nsga):
@@ -100,7 +105,7 @@ def test_seed004_selections_and_table6(nsga, tmp_path):
     case, res = nsga
     points = ("xa1", "xa2") if case == "axial" else ("xr1", "xr2")
     assert set(points) <= set(res.selections["selection"])
-    cmp = S.table6_comparison(res).set_index("point")
+    cmp = s004.table6_comparison(res).set_index("point")
     assert list(cmp.index) == list(points)
     s = "a" if case == "axial" else "r"
     hi = points[0]  # xa1 / xr1: about twice the prototype's ratings (§6)
@@ -109,7 +114,7 @@ def test_seed004_selections_and_table6(nsga, tmp_path):
     assert abs(cmp.loc[hi, "C0_err"]) < 0.10 and abs(cmp.loc[hi, "C_err"]) < 0.10
     # §6 / §8: ratings up to ~200 % of the prototype's are reachable
     assert res.pareto["C0_N"].max() > 2.0 * TABLE6_OBJECTIVES["prototype"][f"C0{s}_kN"] * 1e3
-    paths = S.export_front(res, tmp_path)
+    paths = s004.export_front(res, tmp_path)
     assert len(pd.read_csv(paths["pareto"])) == len(res.pareto)
     assert paths["plot"].stat().st_size > 0
     assert len(pd.read_csv(paths["table6"])) == 2
@@ -118,7 +123,7 @@ def test_seed004_selections_and_table6(nsga, tmp_path):
 @pytest.mark.slow
 def test_seed004_full_nsga2_within_60_s_and_cases():
     t0 = time.perf_counter()
-    res = S.seed004_optimize("axial")
+    res = s004.seed004_optimize("axial")
     assert time.perf_counter() - t0 <= 60.0  # issue 9: 100 × 100 evaluations in ≤ 60 s
     assert res.stats["evaluations"] >= 100 * 99
     assert not failures(run_cases(all_cases(["seed004/study/"])))
@@ -127,7 +132,7 @@ def test_seed004_full_nsga2_within_60_s_and_cases():
 # ------------------------------------------------------------------------------------------ seed 001
 @pytest.fixture(scope="module")
 def mc():
-    return S.seed001_monte_carlo(samples=60)
+    return s001.seed001_monte_carlo(samples=60)
 
 
 def test_seed001_common_random_numbers_and_distribution(mc):
@@ -141,7 +146,7 @@ def test_seed001_common_random_numbers_and_distribution(mc):
     assert mc["converged"].all()
     # Σ_j Q_j sin α balances F_a: the largest of unequal roller forces exceeds the ideal (equal) one
     assert (mc["max_contact_force_N"] > mc["ideal_max_contact_force_N"]).all()
-    summ = S.seed001_summary(mc)
+    summ = s001.seed001_summary(mc)
     inc = summ["max_contact_force_mean_N"] - summ["ideal_max_contact_force_N"]
     # same draws, small ΔD, every roller loaded: the force increment is first order in S_d
     assert inc.to_numpy() / inc.iloc[0] == pytest.approx([1.0, 2.0, 3.0], rel=0.1)
@@ -150,8 +155,8 @@ def test_seed001_common_random_numbers_and_distribution(mc):
 
 
 def test_seed001_evaluator_reproduces_table2_series1_and_the_ideal_bearing():
+    from bearingkit.papers.liu2022.validation_friction import increment_ratio
     from bearingkit.physics.deviations import seed001_series
-    from bearingkit.validation.seed001_friction import increment_ratio
 
     z = seed001_series(1) / 0.5e-6
     cases = pd.DataFrame({f"z{j + 1}": [z[j], z[j]] for j in range(23)})
@@ -192,7 +197,7 @@ def test_seed001_study_agrees_with_friction_monte_carlo_in_distribution(mc):
 # ------------------------------------------------------------------------------------------ seed 002
 @pytest.fixture(scope="module")
 def cmap_result():
-    return S.run_example("seed002_clearance_map")
+    return ex.run_example("seed002_clearance_map")
 
 
 def test_seed002_adaptive_gradient(cmap_result):
@@ -201,7 +206,7 @@ def test_seed002_adaptive_gradient(cmap_result):
     shares = res[["ball_1_radial_share", "roller_2_radial_share", "ball_3_radial_share"]].sum(axis=1)
     assert np.allclose(shares, 1.0)
     assert np.allclose(res["ball_1_radial_share"], res["ball_3_radial_share"])  # symmetric rows
-    m = S.seed002_clearance_map(cmap_result)
+    m = s002.seed002_clearance_map(cmap_result)
     assert len(m) == 25
     wider = m["clearance_roller"] > m["clearance_ball"] + 1e-12
     narrower = m["clearance_roller"] < m["clearance_ball"] - 1e-12
@@ -216,7 +221,7 @@ def test_seed002_adaptive_gradient(cmap_result):
 
 
 def test_seed002_evaluator_matches_gradient_curve_and_flexible_ring_unloads_rollers():
-    from bearingkit.studies.seed002 import gradient_curve
+    from bearingkit.papers.li2025.studies import gradient_curve
 
     ev = evaluators.get("seed002_clearance")
     loads = [1e3, 3e4, 1e5]
@@ -233,8 +238,8 @@ def test_seed002_run_cli_writes_results(tmp_path):
     from bearingkit.studies.__main__ import run_cli
 
     lines = []
-    res = run_cli(S.example("seed002_clearance_map"), out=tmp_path, progress=False, echo=lines.append)
+    res = run_cli(ex.example("seed002_clearance_map"), out=tmp_path, progress=False, echo=lines.append)
     assert len(pd.read_csv(tmp_path / "results.csv")) == len(res.results) == 50
     assert any("seed002_clearance_map" in s for s in lines)
-    png = S.plot_clearance_map(S.seed002_clearance_map(res), tmp_path / "map.png")
+    png = s002.plot_clearance_map(s002.seed002_clearance_map(res), tmp_path / "map.png")
     assert png.stat().st_size > 0
