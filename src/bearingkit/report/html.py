@@ -349,20 +349,20 @@ def _row_table(data: dict) -> str:
 def _friction_html(friction, case: int, n: int) -> str:
     total = float(friction.total[case])
     comp = [
-        [_e(k), fmt(v[case], 5, 1e3), fmt(v[case] / total * 100 if total else 0.0, 3)]
+        [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.components.items()
     ]
     rows = [
-        [_e(k), fmt(v[case], 5, 1e3), fmt(v[case] / total * 100 if total else 0.0, 3)]
+        [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
     return (
         f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5, 1e3)} N·mm</b>; on the inner ring "
-        f"{fmt(friction.torque_inner[case], 5, 1e3)} N·mm, on the outer ring "
-        f"{fmt(friction.torque_outer[case], 5, 1e3)} N·mm (about +z).</p>"
-        + _table(["component", "M [N·mm]", "share [%]"], comp)
-        + _table(["row", "M [N·mm]", "share [%]"], rows)
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>; on the inner ring "
+        f"{fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
+        f"{fmt(friction.torque_outer[case], 5)} N·m (about +z).</p>"
+        + _table(["component", "M [N·m]", "share [%]"], comp)
+        + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
             plots.friction_figure(friction, case),
             "friction breakdown",
@@ -432,7 +432,7 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int) -> str:
+def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
@@ -444,7 +444,7 @@ def _case_html(bearing, result, friction, rating, case: int) -> str:
         f'<p class="sub">{int(result.iterations[case])} iterations, residual '
         f"{float(result.residual_norm[case]):.2e} (relative to the load scale){reason}</p>"
     )
-    parts.append("<h4>1. Load and displacement of the inner ring</h4>")
+    parts.append(f"<h4>{case + 2}.1. Load and displacement of the inner ring</h4>")
     parts.append(
         _table(
             [f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY],
@@ -465,7 +465,7 @@ def _case_html(bearing, result, friction, rating, case: int) -> str:
             cls="displacement",
         )
     )
-    parts.append("<h4>2. Rows</h4>")
+    parts.append(f"<h4>{case + 2}.2. Rows</h4>")
     parts.append(_row_table(data))
     parts.append(
         _figure_html(
@@ -477,7 +477,7 @@ def _case_html(bearing, result, friction, rating, case: int) -> str:
     )
     k = 3
     if plots.roller_rows(result):
-        parts.append(f"<h4>{k}. Slice pressure map of the roller rows</h4>")
+        parts.append(f"<h4>{case + 2}.{k}. Slice pressure map of the roller rows</h4>")
         parts.append(
             _figure_html(
                 plots.slice_pressure_figure(result, case),
@@ -488,13 +488,13 @@ def _case_html(bearing, result, friction, rating, case: int) -> str:
         )
         k += 1
     if friction is not None:
-        parts.append(_friction_html(friction, case, k))
+        parts.append(_friction_html(friction, case, f"{case + 2}.{k}"))
         k += 1
     if rating is not None:
-        parts.append(_rating_html(rating, case, k))
+        parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
         k += 1
-    parts.append(f"<h4>{k}. Warnings</h4>")
-    parts.append(_warning_list(case_warnings(result, rating, case)))
+    parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
+    parts.append(_warning_list(warnings[case]))
     parts.append("</section>")
     return "".join(parts)
 
@@ -524,27 +524,27 @@ def _references_html(keys, n: int) -> str:
     )
 
 
-def _summary_html(bearing, result, friction, rating) -> str:
+def _summary_html(bearing, result, friction, rating, warnings) -> str:
     headers = [
         "case",
         "status",
         "max p_max [MPa]",
         "min s0 [-]",
-        "friction [N·mm]",
+        "friction [N·m]",
         "system L10r [rev]",
         "warnings",
     ]
     rows = []
     for c, lc in enumerate(bearing.cases):
         p_max = max((float(np.max(s.max_pressure[c])) for s in result.rows), default=float("nan"))
-        n_warn = len(case_warnings(result, rating, c))
+        n_warn = len(warnings[c])
         rows.append(
             [
                 f'<a href="#case-{c}">{_e(lc.name)}</a>',
                 _badge(bool(result.converged[c])),
                 fmt(p_max, 5, 1e-6),
                 "—" if rating is None else fmt(rating.static_safety[c], 4),
-                "—" if friction is None else fmt(friction.total[c], 5, 1e3),
+                "—" if friction is None else fmt(friction.total[c], 5),
                 "—" if rating is None else fmt(rating.life[c], 4),
                 str(n_warn),
             ]
@@ -564,7 +564,9 @@ def _check_shapes(bearing, result, friction, rating) -> None:
         raise InputError(f"rating ({rating.n_cases} cases) must rate the result's {n} cases")
 
 
-def build_report(bearing_input, result, *, friction=None, rating=None, title=None, notes=()) -> str:
+def build_report(
+    bearing_input, result, *, friction=None, rating=None, title=None, notes=(), warnings=None
+) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
     Parameters
@@ -581,6 +583,9 @@ def build_report(bearing_input, result, *, friction=None, rating=None, title=Non
         Page title (default: "bearingkit report — <bearing name>").
     notes : sequence of str
         Assumptions of the run shown under "Run notes" (e.g. the friction operating point).
+    warnings : list of list of str, optional
+        Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
+        default: non-convergence and the rating's warnings (:func:`case_warnings`).
 
     Returns
     -------
@@ -593,9 +598,9 @@ def build_report(bearing_input, result, *, friction=None, rating=None, title=Non
     name = bearing_input.model.name
     title = title or f"bearingkit report — {name}"
     n_cases = result.n_cases
-    all_warnings = [
-        (lc.name, w) for c, lc in enumerate(bearing_input.cases) for w in case_warnings(result, rating, c)
-    ]
+    if warnings is None:
+        warnings = [case_warnings(result, rating, c) for c in range(n_cases)]
+    all_warnings = [(lc.name, w) for c, lc in enumerate(bearing_input.cases) for w in warnings[c]]
     nav = "".join(
         ['<li><a href="#inputs">Inputs</a></li>']
         + [
@@ -615,13 +620,13 @@ def build_report(bearing_input, result, *, friction=None, rating=None, title=Non
         f'<p class="sub">{_e(name)} · <code>{_e(bearing_input.bearing_type)}</code> · '
         f"{n_cases} load case(s) · "
         f"bearingkit {_e(__version__)} · SI results shown in engineering units (unit in every header)</p>",
-        _summary_html(bearing_input, result, friction, rating),
+        _summary_html(bearing_input, result, friction, rating, warnings),
         f"<nav><b>Contents</b><ol>{nav}</ol></nav>",
     ]
     if notes:
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
-    body.extend(_case_html(bearing_input, result, friction, rating, c) for c in range(n_cases))
+    body.extend(_case_html(bearing_input, result, friction, rating, c, warnings) for c in range(n_cases))
     body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
     body.append(
         "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "
