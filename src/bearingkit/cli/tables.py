@@ -74,6 +74,13 @@ def _compact(x, scale: float = 1.0) -> str:
     return f"{mantissa}e{int(exponent)}" if e else text
 
 
+def _lnm(value) -> str:
+    """L_nmr in 10⁶ rev, or why it is missing (a_ISO needs e_C, a lubricant, a temperature and a speed)."""
+    if value is None:
+        return "— (a_ISO needs --contamination, a lubricant, a temperature and a speed)"
+    return f"{_num(value, 1e-6)} 10⁶ rev"
+
+
 def rating_table(c: dict) -> Table:
     """A rich table of one case dict of :func:`bearingkit.io.export.rating_dict`."""
     speed = "speed not given" if c["speed_rad_s"] is None else f"{c['speed_rad_s'] * 30 / math.pi:.4g} r/min"
@@ -81,7 +88,7 @@ def rating_table(c: dict) -> Table:
     s = c["system"]
     caption = (
         f"bearing: L10r = {_num(s['L10r_rev'], 1e-6)} 10⁶ rev, L10h = {_num(s['L10h_h'])} h, "
-        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_num(s['Lnmr_rev'], 1e-6)} 10⁶ rev, "
+        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}, "
         f"s0 = {_num(s['static_safety'], fmt='.3g')}"
     )
     table = Table(title=escape(title), caption=escape(caption))
