@@ -110,7 +110,11 @@ def validate(
 
 
 #: Arguments and options shared by the commands that read a bearing file.
-_FILE_ARGUMENT = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md.")
+_FILE_ARGUMENT = typer.Argument(
+    ...,
+    help="Input file (TOML with units, docs/input-format.md) or a standard bearing designation such as "
+    "6205-2RS C3 (docs/catalogue.md).",
+)
 _LOAD_OPTION = typer.Option(
     None,
     "--load",
@@ -130,12 +134,18 @@ def analyze(
     file: Path = _FILE_ARGUMENT,
     load: list[str] = _LOAD_OPTION,
     case: list[str] = _CASE_OPTION,
+    speed: str = _SPEED_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """Quasi-static load distribution of every load case; exit 1 if a case does not converge."""
+    import dataclasses
+
     from bearingkit.io import export
 
     bearing = _load_bearing(file, load, case)
+    if speed is not None:  # stored with the cases (reported; the quasi-static solve does not use it)
+        omega = _quantity(speed, "angular_velocity", "--speed")
+        bearing = bearing.with_cases([dataclasses.replace(c, speed=omega) for c in bearing.cases])
     result = bearing.solve()
     data = export.analysis_dict(bearing, result)
     flex = _flexible_ring(bearing)
@@ -145,7 +155,7 @@ def analyze(
     if as_json:
         _print_json(file, data)
     else:
-        console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+        _print_header(bearing, file)
         for c in data["cases"]:
             console.print(case_table(c))
             if "flexible" in c:
@@ -171,14 +181,29 @@ def _flexible_ring(bearing):
 
 def _load_bearing(file: Path, load: list[str] | None, case: list[str] | None):
     """The input file with ``--load`` (replacing its cases) or ``--case`` (selecting some) applied."""
-    from bearingkit.io.loader import load_file, parse_load_options
+    from bearingkit.io.loader import from_dict, load_file, parse_load_options
 
-    bearing = load_file(file)
+    if _is_designation(file):
+        bearing = from_dict({"bearing": {"designation": str(file)}}, source=str(file))
+    else:
+        bearing = load_file(file)
     if load:
         if case:
             raise InputError("--case selects file load cases; it cannot be combined with --load")
         return bearing.with_cases([parse_load_options(load)])
     return bearing.select(case)
+
+
+def _is_designation(file: Path) -> bool:
+    """A command-line argument that names no existing file and no TOML/JSON path is a designation."""
+    return not file.exists() and file.suffix.lower() not in (".toml", ".json") and "/" not in str(file)
+
+
+def _print_header(bearing, file) -> None:
+    """The bearing's name and, for a designation, that (and how) its geometry is estimated."""
+    console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+    if bearing.spec.bearing.designation is not None:
+        console.print(f"  note: {bearing.spec.bearing.source}", markup=False, highlight=False)
 
 
 def _print_json(file, data: dict) -> None:
@@ -368,7 +393,7 @@ def rating(
     if as_json:
         _print_json(file, data)
     else:
-        console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+        _print_header(bearing, file)
         for c in data["cases"]:
             console.print(rating_table(c))
             _print_warnings(c["warnings"])
@@ -482,7 +507,7 @@ def friction(
     if as_json:
         _print_json(file, data)
     else:
-        console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+        _print_header(bearing, file)
         for c in data["cases"]:
             console.print(friction_table(c))
 
@@ -620,6 +645,60 @@ def report(
         temperature=_quantity(temperature, "temperature", "--temperature"),
     )
     console.print(f"wrote {path}")
+
+
+@app.command()
+@one_line_errors
+def catalogue(
+    pattern: str = typer.Argument("*", help="Designation pattern, e.g. '62*', 'NU22*', '7206*'."),
+    as_json: bool = _JSON_OPTION,
+):
+    """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
+    from bearingkit.catalogue import estimate, find, ratings
+
+    rows = find(pattern)
+    if not rows:
+        raise InputError(f"catalogue pattern ({pattern!r}) matches no designation; try '62*' or '*'")
+    out = []
+    for e in rows:
+        try:
+            c, c0 = ratings(estimate(e))
+        except InputError:
+            c = c0 = None
+        out.append(
+            {
+                "designation": e.designation,
+                "family": e.family,
+                "d_m": e.bore,
+                "D_m": e.outer_diameter,
+                "B_m": e.width,
+                "C_catalogue_N": e.C,
+                "C0_catalogue_N": e.C0,
+                "C_estimate_N": c,
+                "C0_estimate_N": c0,
+                "source": e.source,
+            }
+        )
+    if as_json:
+        sys.stdout.write(json.dumps(out, indent=1) + "\n")
+        return
+    table = Table(title=f"bearingkit catalogue {pattern}: {len(out)} designations (C, C0 in kN)")
+    for col in ("designation", "d mm", "D mm", "B mm", "C cat.", "C est.", "C0 cat.", "C0 est.", "source"):
+        table.add_column(col, justify="left" if col in ("designation", "source") else "right", no_wrap=True)
+    for r in out:
+        table.add_row(
+            r["designation"],
+            f"{r['d_m'] * 1e3:g}",
+            f"{r['D_m'] * 1e3:g}",
+            f"{r['B_m'] * 1e3:g}",
+            _num(r["C_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C_estimate_N"], 1e-3, ".3g"),
+            _num(r["C0_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C0_estimate_N"], 1e-3, ".3g"),
+            r["source"],
+        )
+    console.print(table)
+    console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
 
 
 def main() -> None:
