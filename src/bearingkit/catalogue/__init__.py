@@ -16,8 +16,8 @@ import fnmatch
 
 from bearingkit.catalogue.clearances import CLASSES, clearance, clearance_range
 from bearingkit.catalogue.designation import Designation, nearest, parse
-from bearingkit.catalogue.estimate import RULES, Estimate, estimate, fill_angle
-from bearingkit.catalogue.ratings import ratings
+from bearingkit.catalogue.internal import RULES, Estimate, estimate, fill_angle
+from bearingkit.catalogue.iso_ratings import ratings
 from bearingkit.catalogue.resolve import Resolved, resolve
 from bearingkit.catalogue.tables import FAMILIES, Entry, all_entries, entries
 

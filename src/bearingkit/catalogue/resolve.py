@@ -1,7 +1,7 @@
 """A designation → bearing type, geometry (SI, the input format's ``[geometry]`` fields) and notes.
 
 :func:`resolve` is what the input loader and the command line call for ``designation = "6205-2RS C3"``:
-it parses the designation (:mod:`.designation`), estimates the internal geometry (:mod:`.estimate`),
+it parses the designation (:mod:`.designation`), estimates the internal geometry (:mod:`.internal`),
 optionally scales the element size so the ISO 281 C matches a catalogue C the user gives, adds the
 ISO 5753-1 clearance of the designation's class (CN when none is given) and returns everything with
 notes saying that and how the geometry is estimated.
@@ -15,8 +15,8 @@ from dataclasses import dataclass
 from bearingkit.catalogue import clearances as clearance_mod
 from bearingkit.catalogue import designation as designation_mod
 from bearingkit.catalogue import tables
-from bearingkit.catalogue.estimate import Estimate, envelope_margins, estimate, with_element_diameter
-from bearingkit.catalogue.ratings import ratings
+from bearingkit.catalogue.internal import Estimate, envelope_margins, estimate, with_element_diameter
+from bearingkit.catalogue.iso_ratings import ratings
 from bearingkit.errors import InputError
 
 #: Relative band in which a user's catalogue C may move the element diameter (beyond it the rules no

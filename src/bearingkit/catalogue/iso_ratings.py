@@ -1,4 +1,4 @@
-"""ISO 281 C and ISO 76 C0 of an estimated catalogue geometry (:mod:`.estimate`). SI units.
+"""ISO 281 C and ISO 76 C0 of an estimated catalogue geometry (:mod:`.internal`). SI units.
 
 The formulas are those of :mod:`bearingkit.physics.iso281` and :mod:`bearingkit.physics.iso76`,
 evaluated on the estimate as a catalogue would rate the bearing (one rating for the whole bearing):
@@ -13,7 +13,7 @@ evaluated on the estimate as a catalogue would rate the bearing (one rating for 
 
 from __future__ import annotations
 
-from bearingkit.catalogue.estimate import Estimate
+from bearingkit.catalogue.internal import Estimate
 from bearingkit.physics import iso76, iso281
 
 #: ISO 281 bearing types (Table 1 b_m) per family.
