@@ -19,7 +19,9 @@ def test_analyze_designation_prints_estimated_geometry():
 
 
 def test_analyze_designation_json_has_source_and_balance():
-    result = runner.invoke(app, ["analyze", "6205-2RS C3", "--load", "Fr=2kN", "--load", "Fa=0.5kN", "--json"])
+    result = runner.invoke(
+        app, ["analyze", "6205-2RS C3", "--load", "Fr=2kN", "--load", "Fa=0.5kN", "--json"]
+    )
     data = json.loads(result.stdout)
     assert data["bearing_type"] == "deep_groove_ball" and "ESTIMATED" in data["source"]
     case = data["cases"][0]

@@ -1,5 +1,7 @@
 """ISO 5753-1 radial internal clearance groups (as reproduced in NSK E1102, Tables 9.9 and 9.14)."""
 
+import itertools
+
 import pytest
 
 from bearingkit.catalogue import clearance, clearance_range
@@ -38,7 +40,7 @@ def test_default_is_class_mean_and_position_interpolates():
 
 def test_classes_grow_from_c2_to_c5():
     means = [clearance("deep_groove_ball", 0.060, c) for c in ("C2", "CN", "C3", "C4", "C5")]
-    assert all(a < b for a, b in zip(means, means[1:], strict=False))
+    assert all(a < b for a, b in itertools.pairwise(means))
 
 
 @pytest.mark.parametrize(

@@ -20,7 +20,19 @@ FAMILIES = [f for f in RULES]
 
 #: Sizes whose C and C0 must lie within 10 % of NSK E1102 (per family, ≥ 5).
 RATED_SIZES = {
-    "deep_groove_ball": ["6004", "6005", "6006", "6204", "6205", "6206", "6207", "6208", "6209", "6304", "6305"],
+    "deep_groove_ball": [
+        "6004",
+        "6005",
+        "6006",
+        "6204",
+        "6205",
+        "6206",
+        "6207",
+        "6208",
+        "6209",
+        "6304",
+        "6305",
+    ],
     "angular_contact_ball": ["7204B", "7206B", "7207B", "7208B", "7209B", "7305B", "7306B", "7208C"],
     "double_row_angular_contact_ball": ["3201", "3203", "3303", "3204", "3205", "3306", "3211"],
     "cylindrical_roller": ["NU207E", "NU209E", "NU306E", "NU2306E", "NU2207E", "NU1006", "NU1008"],

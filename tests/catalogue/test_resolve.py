@@ -2,7 +2,7 @@
 
 import pytest
 
-from bearingkit.catalogue import clearance, estimate, entries, ratings, resolve
+from bearingkit.catalogue import clearance, entries, estimate, ratings, resolve
 from bearingkit.errors import InputError
 
 

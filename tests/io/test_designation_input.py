@@ -21,7 +21,9 @@ def test_designation_builds_the_estimated_bearing():
 
 
 def test_explicit_geometry_overrides_the_estimate():
-    b = loads('[bearing]\ndesignation = "6205"\n[geometry]\nn_elements = 9\nelement_diameter = "7.938 mm"\n' + CASE)
+    b = loads(
+        '[bearing]\ndesignation = "6205"\n[geometry]\nn_elements = 9\nelement_diameter = "7.938 mm"\n' + CASE
+    )
     row = b.model.rows[0]
     assert row.n_elements == 9 and float(row.element_diameter) == pytest.approx(7.938e-3)
     assert float(row.pitch_diameter) == pytest.approx(resolve("6205").geometry["pitch_diameter"])

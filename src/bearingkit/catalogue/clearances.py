@@ -40,7 +40,10 @@ def clearance_range(group: str, bore: float, cls: str = "CN") -> tuple[float, fl
         raise InputError(f"clearance class ({cls!r}) must be one of {', '.join(CLASSES)}")
     rows = [r for r in clearance_rows() if r.element == group]
     if not rows:
-        raise InputError(f"clearance group ({group!r}) must be one of {', '.join(sorted({r.element for r in clearance_rows()}))}")
+        raise InputError(
+            f"clearance group ({group!r}) must be one of "
+            f"{', '.join(sorted({r.element for r in clearance_rows()}))}"
+        )
     d_mm = bore * 1e3
     for r in rows:
         lo, hi = r.bore_over * 1e3, r.bore_incl * 1e3
@@ -57,6 +60,8 @@ def clearance_range(group: str, bore: float, cls: str = "CN") -> tuple[float, fl
 def clearance(group: str, bore: float, cls: str = "CN", position: float = 0.5) -> float:
     """Radial internal clearance [m] at ``position`` in the class range (0 = min, 0.5 = mean, 1 = max)."""
     if not 0.0 <= position <= 1.0:
-        raise InputError(f"clearance position ({position!r}) must lie in [0, 1] (0 = min, 0.5 = mean, 1 = max)")
+        raise InputError(
+            f"clearance position ({position!r}) must lie in [0, 1] (0 = min, 0.5 = mean, 1 = max)"
+        )
     lo, hi = clearance_range(group, bore, cls)
     return lo + position * (hi - lo)

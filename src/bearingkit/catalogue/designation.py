@@ -33,10 +33,64 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d)(.*)$")),
 )
 #: Known suffixes (longest first when matching). Clearance classes are extracted separately.
-SEAL_SUFFIXES = ("2RS1", "2RSR", "2RSH", "2RS", "RS1", "RSR", "RSH", "RS", "2RZ", "RZ", "2Z", "ZZ", "Z",
-                 "LLU", "LLB", "LLH", "DDU", "DD", "VV", "NR", "N")
-DESIGN_SUFFIXES = ("ECBP", "ECBM", "ECBY", "BP", "BM", "BY", "ECP", "ECJ", "ECM", "ECML", "EC", "EW", "ET", "EM", "E", "XJ", "J2", "J", "X", "TN9", "TN",
-                   "MA", "M", "CBP", "CB", "BEP", "BE", "P6", "P5", "A", "W64", "HT", "C")
+SEAL_SUFFIXES = (
+    "2RS1",
+    "2RSR",
+    "2RSH",
+    "2RS",
+    "RS1",
+    "RSR",
+    "RSH",
+    "RS",
+    "2RZ",
+    "RZ",
+    "2Z",
+    "ZZ",
+    "Z",
+    "LLU",
+    "LLB",
+    "LLH",
+    "DDU",
+    "DD",
+    "VV",
+    "NR",
+    "N",
+)
+DESIGN_SUFFIXES = (
+    "ECBP",
+    "ECBM",
+    "ECBY",
+    "BP",
+    "BM",
+    "BY",
+    "ECP",
+    "ECJ",
+    "ECM",
+    "ECML",
+    "EC",
+    "EW",
+    "ET",
+    "EM",
+    "E",
+    "XJ",
+    "J2",
+    "J",
+    "X",
+    "TN9",
+    "TN",
+    "MA",
+    "M",
+    "CBP",
+    "CB",
+    "BEP",
+    "BE",
+    "P6",
+    "P5",
+    "A",
+    "W64",
+    "HT",
+    "C",
+)
 CLEARANCE_SUFFIXES = ("C2", "CN", "C3", "C4", "C5")
 ANGLE_SUFFIXES = ("AC", "A", "B", "C")
 _SUFFIX_RE = re.compile(
@@ -118,7 +172,7 @@ def parse(text: str) -> Designation:
                     f"designation ({raw!r}): an angular contact bearing needs its contact angle suffix "
                     f"B (40°), AC (25°), A (30°) or C (15°), e.g. '{series}{code}B'"
                 )
-            angle, rest = am.group(1), rest[am.end():]
+            angle, rest = am.group(1), rest[am.end() :]
         if family == "tapered_roller" and series == "320":
             rest = re.sub(r"^\s?X", "", rest)
             angle = "X"
@@ -134,7 +188,9 @@ def parse(text: str) -> Designation:
         suffixes = _split_suffixes(raw, rest)
         clearance = [s for s in suffixes if s in CLEARANCE_SUFFIXES]
         if len(clearance) > 1:
-            raise InputError(f"designation ({raw!r}): two clearance classes ({', '.join(clearance)}); give one")
+            raise InputError(
+                f"designation ({raw!r}): two clearance classes ({', '.join(clearance)}); give one"
+            )
         table = tables.entries(family)
         if base not in table:
             bore = bore_from_code(code)
@@ -154,6 +210,7 @@ def parse(text: str) -> Designation:
         return Designation(raw, family, base, clearance[0] if clearance else None, others)
     raise InputError(
         f"designation ({raw!r}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, 63, "
-        f"72, 73, 32, 33, QJ2, QJ3, 12, 22, N/NU/NJ/NUP 10/2/22/3/23, 302, 303, 313, 320, 322, 323, 511, 512, "
+        f"72, 73, 32, 33, QJ2, QJ3, 12, 22, N/NU/NJ/NUP 10/2/22/3/23, 302, 303, 313, 320, 322, 323, "
+        "511, 512, "
         f"513, 811, 812); nearest: {', '.join(nearest(raw))}"
     )

@@ -137,12 +137,12 @@ class Estimate:
 
 
 def _pitch_count(d_m: float, d_w: float, pitch: float) -> int:
-    return int(math.floor(math.pi * d_m / (pitch * d_w)))
+    return math.floor(math.pi * d_m / (pitch * d_w))
 
 
 def _conrad_count(d_m: float, d_w: float) -> int:
     """Largest Z with Harris's assembly angle 2(Z − 1) D_w/d_m ≤ φ_max."""
-    return int(math.floor(CONRAD_FILL_ANGLE * d_m / (2.0 * d_w))) + 1
+    return math.floor(CONRAD_FILL_ANGLE * d_m / (2.0 * d_w)) + 1
 
 
 def fill_angle(n_elements: int, element_diameter: float, pitch_diameter: float) -> float:
@@ -164,7 +164,9 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
     rule = SERIES_RULES.get((fam, entry.series), RULES[fam])
     d, big_d, width = entry.bore, entry.outer_diameter, entry.width
     d_m = 0.5 * (d + big_d)
-    notes = [f"internal geometry ESTIMATED from the boundary dimensions of {entry.designation} ({entry.source})"]
+    notes = [
+        f"internal geometry ESTIMATED from the boundary dimensions of {entry.designation} ({entry.source})"
+    ]
     extra: dict = {}
     length = None
     if fam == "thrust_ball":
@@ -172,7 +174,10 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         z = _pitch_count(d_m, d_w, rule.pitch)
         alpha = 0.5 * math.pi
         extra["conformity"] = CONFORMITY_THRUST
-        notes.append(f"D_w = min({rule.k_w} T, {rule.k_b} (D - d)), Z from cage pitch {rule.pitch} D_w, d_m = (d + D)/2")
+        notes.append(
+            f"D_w = min({rule.k_w} T, {rule.k_b} (D - d)), Z from cage pitch {rule.pitch} D_w, "
+            "d_m = (d + D)/2"
+        )
     elif fam == "thrust_cylindrical_roller":
         d_w = rule.k_w * width
         length = rule.length * 0.5 * (big_d - d)
@@ -208,9 +213,18 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             notes.append(
                 f"{what} = {rule.k_w} (D - d), Z from cage pitch {rule.pitch} {what}, "
                 + ("d_m = (d + D)/2" if "F_w" not in notes[-1] else "")
-                + (f", L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}" if length else "")
+                + (
+                    f", L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}"
+                    if length
+                    else ""
+                )
             )
-    if fam in ("deep_groove_ball", "angular_contact_ball", "double_row_angular_contact_ball", "four_point_contact_ball"):
+    if fam in (
+        "deep_groove_ball",
+        "angular_contact_ball",
+        "double_row_angular_contact_ball",
+        "four_point_contact_ball",
+    ):
         extra.update(conformity_inner=CONFORMITY_INNER, conformity_outer=CONFORMITY_OUTER)
     if fam == "tapered_roller":
         half = TAPER_HALF_ANGLE
@@ -228,7 +242,9 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         extra["row_spacing"] = 0.5 * width
         notes.append("modelled as an angular contact pair DB with the rows B/2 apart")
     if z < 3:
-        raise InputError(f"{entry.designation}: estimated element count ({z}) below 3; the rules do not apply")
+        raise InputError(
+            f"{entry.designation}: estimated element count ({z}) below 3; the rules do not apply"
+        )
     return Estimate(
         entry=entry,
         n_elements=z,

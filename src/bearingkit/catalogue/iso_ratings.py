@@ -42,5 +42,7 @@ def ratings(est: Estimate) -> tuple[float | None, float | None]:
     else:
         lw = est.effective_length
         c = iso281.dynamic_rating_roller(dw, lw, dm, a, z, est.rows, kind)
-        c0 = iso76.static_rating_roller(dw, lw, dm, a, z, est.rows, "thrust" if kind.startswith("thrust") else "radial")
+        c0 = iso76.static_rating_roller(
+            dw, lw, dm, a, z, est.rows, "thrust" if kind.startswith("thrust") else "radial"
+        )
     return float(c), float(c0)

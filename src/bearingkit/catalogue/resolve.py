@@ -80,7 +80,9 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) 
     if des.suffixes:
         notes.append(f"suffixes {' '.join(des.suffixes)} noted (no effect on the mechanics)")
     if entry.C is not None:
-        notes.append(f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})")
+        notes.append(
+            f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
+        )
     return Resolved(des, est, bearing_type, geometry, c, c0, tuple(notes))
 
 
@@ -98,8 +100,9 @@ def _calibrate(est: Estimate, target: float) -> Estimate:
     c_lo, c_hi = c_of(lo), c_of(hi)
     if not c_lo <= target <= c_hi:
         raise InputError(
-            f"C ({target / 1e3:g} kN) lies outside what {est.entry.designation} can reach by its element size "
-            f"(±{CALIBRATION_BAND:.0%} of D_w: {c_lo / 1e3:.3g}–{c_hi / 1e3:.3g} kN); check the value or give the "
+            f"C ({target / 1e3:g} kN) lies outside what {est.entry.designation} can reach by its element "
+            f"size (±{CALIBRATION_BAND:.0%} of D_w: {c_lo / 1e3:.3g}–{c_hi / 1e3:.3g} kN); check the value "
+            "or give the "
             "geometry explicitly"
         )
     for _ in range(60):  # bisection: C grows monotonically with D_w at fixed Z and d_m
@@ -115,7 +118,9 @@ def _calibrate(est: Estimate, target: float) -> Estimate:
     )
     out = with_element_diameter(est, dw, note)
     if (envelope_margins(out) <= 0).any():
-        raise InputError(f"C ({target / 1e3:g} kN): the calibrated elements of {est.entry.designation} no longer fit")
+        raise InputError(
+            f"C ({target / 1e3:g} kN): the calibrated elements of {est.entry.designation} no longer fit"
+        )
     return out
 
 

@@ -97,7 +97,9 @@ def entries(family: str) -> dict[str, Entry]:
     for row in _read(path):
         width_key = next(k for k in _WIDTHS if k in row)
         kw = {attr: float(row[col]) * MM for col, attr in _LENGTHS.items()}
-        ratings = {attr: float(row[col]) if row[col] else None for col, attr in _RATINGS.items() if col in row}
+        ratings = {
+            attr: float(row[col]) if row[col] else None for col, attr in _RATINGS.items() if col in row
+        }
         known = {"designation", "series", "source", width_key, *_LENGTHS, *_RATINGS}
         extra = {k: v for k, v in row.items() if k not in known}
         out[row["designation"]] = Entry(

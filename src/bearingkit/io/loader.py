@@ -402,10 +402,12 @@ def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFi
     try:
         found = resolve(header.designation, C=header.C)
     except InputError as exc:
-        raise InputError(f"{source}: bearing.{exc}" if str(exc).startswith("designation") else f"{source}: {exc}") from None
+        field = "bearing." if str(exc).startswith("designation") else ""
+        raise InputError(f"{source}: {field}{exc}") from None
     if found.bearing_type is None:
         raise InputError(
-            f"{source}: bearing.designation ({header.designation!r}): {found.designation.family.replace('_', ' ')} "
+            f"{source}: bearing.designation ({header.designation!r}): "
+            f"{found.designation.family.replace('_', ' ')} "
             "bearings have no row kind in the engine yet; the estimated geometry is available from "
             "bearingkit.catalogue.resolve"
         )
@@ -417,7 +419,8 @@ def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFi
     geometry = {k: _catalogue_value(k, v) for k, v in found.geometry.items() if v is not None}
     geometry.update(spec.geometry)
     overridden = sorted(set(spec.geometry) & set(found.geometry))
-    note = found.source + (f"; given in the file, not estimated: {', '.join(overridden)}" if overridden else "")
+    given = f"; given in the file, not estimated: {', '.join(overridden)}" if overridden else ""
+    note = found.source + given
     bearing = header.model_copy(
         update={
             "type": found.bearing_type,

@@ -147,7 +147,8 @@ class BearingHeader(_Strict):
     """``[bearing]``: which builder, a designation and where the geometry comes from."""
 
     type: str = Field(
-        "", description="Builder name, one of GEOMETRY_MODELS (see docs/input-format.md); optional with designation."
+        "",
+        description="Builder name, one of GEOMETRY_MODELS (docs/input-format.md); optional with designation.",
     )
     designation: str | None = Field(
         None,
@@ -155,7 +156,8 @@ class BearingHeader(_Strict):
         "estimated from the catalogue; [geometry] fields given override the estimate.",
     )
     C: quantity("force", "positive") | None = Field(
-        None, description="Catalogue dynamic load rating to calibrate the estimated element size to (with designation)."
+        None,
+        description="Catalogue C the estimated element size is scaled to (with designation)."
     )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
@@ -255,7 +257,7 @@ class BearingFile(_Strict):
     bearing: BearingHeader
     geometry: dict[str, Any] = Field(
         default_factory=dict,
-        description="Keyword arguments of the builder (see GEOMETRY_MODELS); optional with bearing.designation.",
+        description="Keyword arguments of the builder (see GEOMETRY_MODELS); optional with designation.",
     )
     material: MaterialSpec | None = Field(None, description="Default: GCr15 (the builders' default).")
     lubricant: LubricantSpec | None = None
