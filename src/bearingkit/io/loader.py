@@ -343,8 +343,8 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         raise _one_line(source, exc, (), _section_models(None)) from None
     if spec.bearing.designation is not None:
         spec = _from_designation(source, spec)
-    elif not spec.geometry:
-        raise InputError(f"{source}: geometry: missing required section (or give bearing.designation)")
+    elif "geometry" not in data:
+        raise InputError(f"{source}: geometry: missing required field (or give bearing.designation)")
     gmodel = schema.GEOMETRY_MODELS[spec.bearing.type]
     try:
         geometry = gmodel.model_validate(_profile_as_table(spec.geometry))
