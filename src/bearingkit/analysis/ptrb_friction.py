@@ -1,7 +1,7 @@
 """PTRB friction torque assembly (Zheng et al. 2022 §3.3) and the vectorised §6 objectives.
 
 SI units: N, m, rad/s, N·m. ``ptrb_friction`` sums the per-contact torques of
-:mod:`bearingkit.physics.ptrb_friction` over the loaded ITP and OTP contacts and adds the carrier term:
+:mod:`bearingkit.physics.friction.ptrb` over the loaded ITP and OTP contacts and adds the carrier term:
 
 * axial load F_a: every roller carries F_a/Z on one flank of each of its n teeth,
   Q_i = f_a,i F_a/(Z n sin α); M_PTRBa = Z Σ_i (M_I,i + M_O,i) + M_h (eq. 14);
@@ -10,9 +10,9 @@ SI units: N, m, rad/s, N·m. ``ptrb_friction`` sums the per-contact torques of
   Q_j = f_r,j F_r/(2n cos α); M_PTRBr = 2n Σ_j (M_I,j + M_O,j) + M_h (eq. 15).
 
 ``ptrb_objectives`` is the same model as a pure function of design-variable arrays (the population
-axis of an optimiser), with the ratings of :mod:`bearingkit.physics.ptrb_rating`.
+axis of an optimiser), with the ratings of :mod:`bearingkit.physics.life.ptrb_rating`.
 
-References: ``zheng2022``, ``zheng2021``, plus those of :mod:`bearingkit.physics.ptrb_friction`.
+References: ``zheng2022``, ``zheng2021``, plus those of :mod:`bearingkit.physics.friction.ptrb`.
 """
 
 from __future__ import annotations
@@ -24,8 +24,8 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
-from bearingkit.physics import ptrb_friction as pf
-from bearingkit.physics import ptrb_rating as pr
+from bearingkit.physics.friction import ptrb as pf
+from bearingkit.physics.life import ptrb_rating as pr
 from bearingkit.rows.threaded import PTRBGeometry, axial_tooth_distribution, radial_roller_distribution
 
 __all__ = [
@@ -62,7 +62,7 @@ TEST_TEMPERATURE_C = 40.0
 
 @dataclass(frozen=True)
 class PTRBFrictionParameters:
-    """Friction parameters the paper does not give (defaults: see :mod:`bearingkit.physics.ptrb_friction`).
+    """Friction parameters the paper does not give (defaults: see :mod:`bearingkit.physics.friction.ptrb`).
 
     Parameters
     ----------
@@ -75,18 +75,18 @@ class PTRBFrictionParameters:
     journal_ratio : float [1]
         Journal diameter / d_R.
     viscous_model : str
-        EHL rolling-resistance model, one of :data:`~bearingkit.physics.ptrb_friction.VISCOUS_MODELS`
+        EHL rolling-resistance model, one of :data:`~bearingkit.physics.friction.ptrb.VISCOUS_MODELS`
         (``harris``, the default; ``houpert`` or ``fujiwara``).
     convention : str
         ``paper`` (default: eq. (13)–(15) summed as printed) or ``power`` (power balance)
-        (:data:`~bearingkit.physics.ptrb_friction.CONVENTIONS`).
+        (:data:`~bearingkit.physics.friction.ptrb.CONVENTIONS`).
     viscous_projection : str or None
         ``axis`` or ``contact`` (paper convention), ``eq13`` or ``power`` (power convention); None: the
         convention's default (``axis``, ``eq13``)
-        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_PROJECTIONS`).
+        (:data:`~bearingkit.physics.friction.ptrb.VISCOUS_PROJECTIONS`).
     viscous_radius_y : str
         R_y of Harris's F_v: ``ball`` (default, D_w/2), ``flank`` or ``rolling``
-        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_RADII_Y`).
+        (:data:`~bearingkit.physics.friction.ptrb.VISCOUS_RADII_Y`).
 
     Notes
     -----
@@ -105,7 +105,7 @@ class PTRBFrictionParameters:
 
     @classmethod
     def power_balance(cls, **changes) -> PTRBFrictionParameters:
-        """The power-balance reading (the former default), :data:`~bearingkit.physics.ptrb_friction.
+        """The power-balance reading (the former default), :data:`~bearingkit.physics.friction.ptrb.
         POWER_BALANCE_OPTIONS` with its calibrated traction; ``changes`` override fields."""
         return cls(**{**pf.POWER_BALANCE_OPTIONS, **changes})
 
@@ -279,7 +279,7 @@ def ptrb_friction(
         M_{PTRBr} = 2n\\sum_{j=1}^{Z_e}(M_{I,j} + M_{O,j}) + M_h
 
     Zheng et al. (2022) eq. (14)-(15); per-contact torques from
-    :func:`bearingkit.physics.ptrb_friction.contact_torques`.
+    :func:`bearingkit.physics.friction.ptrb.contact_torques`.
     """
     if not isinstance(geometry, PTRBGeometry):
         raise InputError(f"geometry ({type(geometry).__name__}) must be a PTRBGeometry")
@@ -331,13 +331,13 @@ def calibrate_contact_traction(
     convention: str | None = None,
     parameters: PTRBFrictionParameters | None = None,
 ) -> float:
-    """Recompute :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED` [1].
+    """Recompute :data:`~bearingkit.physics.friction.ptrb.CONTACT_TRACTION_CALIBRATED` [1].
 
     The torque is affine in μ_c (spin and differential sliding ∝ μ_c, the rest independent of it), so
     two evaluations at :data:`CALIBRATION_POINT` give the μ_c that reproduces 0.476 N·m exactly.
     ``parameters`` (its ``traction`` ignored) sets the other model choices (default: the default
     reading; ``PTRBFrictionParameters.power_balance()`` recomputes
-    :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
+    :data:`~bearingkit.physics.friction.ptrb.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
     given, overrides its convention (with that convention's default viscous projection).
     """
     from bearingkit.bearings.ptrb import ptrb_prototype

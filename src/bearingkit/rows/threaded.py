@@ -33,8 +33,8 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
-from bearingkit.physics import hertz
-from bearingkit.physics.ptrb_rating import thread_contact_curvature
+from bearingkit.physics.contact import hertz
+from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 from bearingkit.rows.base import (
     KernelBase,
     RacewayOffset,
@@ -249,8 +249,8 @@ def contact_pairs(geometry: PTRBGeometry, load=0.0) -> dict[str, ContactPair]:
 
     Notes
     -----
-    Curvatures from :func:`bearingkit.physics.ptrb_rating.thread_contact_curvature`; Hertz solution and
-    stiffness K from :mod:`bearingkit.physics.hertz` (exact elliptic integrals).
+    Curvatures from :func:`bearingkit.physics.life.ptrb_rating.thread_contact_curvature`; Hertz solution and
+    stiffness K from :mod:`bearingkit.physics.contact.hertz` (exact elliptic integrals).
     """
     g = geometry
     out = {}

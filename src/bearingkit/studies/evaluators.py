@@ -384,7 +384,7 @@ def _seed001_factors() -> dict[str, Factor]:
     out["cage_slip"] = Factor("cage_slip", "dimensionless", 1.0e-4, batched=False)
     out["lubricant"] = Factor("lubricant", "text", DEFAULT_LUBRICANT, batched=False)
     out["temperature"] = Factor("temperature", "temperature", DEFAULT_TEMPERATURE_C, batched=False)
-    # Reading of seed 001 eq. (8) (bearingkit.physics.trb_friction.SLIDING_MODELS), so a study can
+    # Reading of seed 001 eq. (8) (bearingkit.physics.friction.trb.SLIDING_MODELS), so a study can
     # compare the capped default with the equation as printed ("newtonian").
     out["sliding_model"] = Factor("sliding_model", "text", TRBOperatingPoint().sliding_model, batched=False)
     return out

@@ -46,8 +46,8 @@ from bearingkit.analysis.kinematics import RACEWAY_CONTROLS
 from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
-from bearingkit.physics.friction_components import VISCOUS_LINE_MODELS, VISCOUS_POINT_MODELS
-from bearingkit.physics.profiles import SEED000_CROWNING
+from bearingkit.physics.contact.profiles import SEED000_CROWNING
+from bearingkit.physics.friction.components import VISCOUS_LINE_MODELS, VISCOUS_POINT_MODELS
 from bearingkit.validation import seed000_friction as v000
 
 references.add(

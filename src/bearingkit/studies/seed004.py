@@ -19,7 +19,7 @@ import pandas as pd
 from bearingkit.analysis.ptrb_friction import RPM, design_geometry, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281
+from bearingkit.physics.life import iso76, iso281
 
 __all__ = [
     "STANDARD_BEARINGS",

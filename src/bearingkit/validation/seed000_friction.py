@@ -6,7 +6,8 @@ Inputs the paper does not give, and the values chosen here:
 
 - lubricant: ``seed000_grease_assumed`` (ISO VG 100 mineral base oil) at 25 °C (room-temperature rig);
 - roughness R_q 0.05 µm (elements), 0.10 µm (raceways); μ_bl 0.12, μ_EHL 0.02 (SKF catalogue values,
-  :mod:`bearingkit.physics.traction`); hysteresis ξ = 0.01 (rollers), β = 0.007 (balls) from the paper;
+  :mod:`bearingkit.physics.lubrication.traction`); hysteresis ξ = 0.01 (rollers), β = 0.007 (balls)
+  from the paper;
 - cages: two brass cages (8500 kg/m³), annulus Ø160–185 mm × 3.5 mm minus 31 roller and 31 ball
   pockets → 1.86e-5 m³ each, 2 × 0.158 kg = :data:`CAGE_MASS`; f_c = 0.1; guide at the mean pitch
   diameter;

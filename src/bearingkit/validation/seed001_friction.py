@@ -20,7 +20,7 @@ upper edge, 2.16.
 Operating point (bearingkit's choices, the paper gives no lubricant): 1000 rpm inner ring, ISO VG 46
 mineral oil at 40 °C, α = 2e-8 1/Pa, Roelands Z = 0.601 (as printed), rib Rq 0.1/0.2 µm, μ₀ = 0.12,
 eq. (7) constant 88, eq. (8) capped by the limiting shear stress τ_L = 0.075 p (bearingkit default,
-:mod:`bearingkit.physics.trb_friction`; not fitted to these findings); row and K_a as :mod:`.seed001`.
+:mod:`bearingkit.physics.friction.trb`; not fitted to these findings); row and K_a as :mod:`.seed001`.
 Readings and results: docs/seed001.md.
 """
 

@@ -4,7 +4,7 @@ SI values (N). Geometry: :func:`bearingkit.bearings.ptrb.ptrb_prototype` (Table 
 
 * ``seed004/prototype/{C0a,Ca,C0r,Cr}`` — §4 and Table 3, tolerance 2 % (the task's). C0a and C0r are
   reproduced BY CALIBRATION of f_amax and f_rmax
-  (:func:`bearingkit.physics.ptrb_rating.calibrated_distribution_coefficients`); Ca and Cr follow
+  (:func:`bearingkit.physics.life.ptrb_rating.calibrated_distribution_coefficients`); Ca and Cr follow
   without any fitted number.
 * ``seed004/table4/<parameter>/<value>/<rating>`` — each structural parameter's sweep endpoints of
   Table 4, with the other parameters at the prototype values, D_pw fixed (d_I = D_pw − d_R,
