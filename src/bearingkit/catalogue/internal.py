@@ -53,7 +53,7 @@ TAPER_HALF_ANGLE = 1.5 * DEG
 CONFORMITY_INNER = 0.52
 CONFORMITY_OUTER = 0.53
 CONFORMITY_THRUST = 0.54
-#: ISO 281 cl. 7.2 / 8.2: e = 1.5 tan α for roller bearings (also bearingkit.physics.iso281.E_TAN_FACTOR).
+#: ISO 281 cl. 7.2 / 8.2: e = 1.5 tan α for roller bearings (bearingkit.physics.life.iso281.E_TAN_FACTOR).
 E_TAN_FACTOR = 1.5
 
 

@@ -1,6 +1,6 @@
 """ISO 281 C and ISO 76 C0 of an estimated catalogue geometry (:mod:`.internal`). SI units.
 
-The formulas are those of :mod:`bearingkit.physics.iso281` and :mod:`bearingkit.physics.iso76`,
+The formulas are those of :mod:`bearingkit.physics.life.iso281` and :mod:`bearingkit.physics.life.iso76`,
 evaluated on the estimate as a catalogue would rate the bearing (one rating for the whole bearing):
 
 - radial ball / roller rows: C_r with i rows, C_0r (ISO 281 cl. 5.1, 7.1; ISO 76 cl. 6.1, 7.1);
@@ -14,7 +14,7 @@ evaluated on the estimate as a catalogue would rate the bearing (one rating for 
 from __future__ import annotations
 
 from bearingkit.catalogue.internal import Estimate
-from bearingkit.physics import iso76, iso281
+from bearingkit.physics.life import iso76, iso281
 
 #: ISO 281 bearing types (Table 1 b_m) per family.
 ISO281_TYPES = {
