@@ -92,7 +92,11 @@ def validate(
 
 
 #: Arguments and options shared by the commands that read a bearing file.
-_FILE_ARGUMENT = typer.Argument(..., help="Input file (TOML with units), see docs/input-format.md.")
+_FILE_ARGUMENT = typer.Argument(
+    ...,
+    help="Input file (TOML with units, docs/input-format.md) or a standard bearing designation such as "
+    "6205-2RS C3 (docs/catalogue.md).",
+)
 _LOAD_OPTION = typer.Option(
     None,
     "--load",
@@ -167,7 +171,11 @@ def _print_json(file, data: dict) -> None:
 
 
 def _header(analysis, file) -> None:
-    console.print(f"{analysis.input.model.name}  ({file})", markup=False, highlight=False)
+    """The bearing's name and, for a designation, that (and how) its geometry is estimated."""
+    bearing = analysis.input
+    console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+    if bearing.spec.bearing.designation is not None:
+        console.print(f"  note: {bearing.spec.bearing.source}", markup=False, highlight=False)
 
 
 def _fail_unconverged(file, analysis) -> None:
@@ -380,6 +388,61 @@ def report(
     )
     path = a.report(output)
     console.print(f"wrote {path}")
+
+
+@app.command()
+@one_line_errors
+def catalogue(
+    pattern: str = typer.Argument("*", help="Designation pattern, e.g. '62*', 'NU22*', '7206*'."),
+    as_json: bool = _JSON_OPTION,
+):
+    """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
+    from bearingkit.catalogue import estimate, find, ratings
+    from bearingkit.cli.tables import _num
+
+    rows = find(pattern)
+    if not rows:
+        raise InputError(f"catalogue pattern ({pattern!r}) matches no designation; try '62*' or '*'")
+    out = []
+    for e in rows:
+        try:
+            c, c0 = ratings(estimate(e))
+        except InputError:
+            c = c0 = None
+        out.append(
+            {
+                "designation": e.designation,
+                "family": e.family,
+                "d_m": e.bore,
+                "D_m": e.outer_diameter,
+                "B_m": e.width,
+                "C_catalogue_N": e.C,
+                "C0_catalogue_N": e.C0,
+                "C_estimate_N": c,
+                "C0_estimate_N": c0,
+                "source": e.source,
+            }
+        )
+    if as_json:
+        sys.stdout.write(json.dumps(out, indent=1) + "\n")
+        return
+    table = Table(title=f"bearingkit catalogue {pattern}: {len(out)} designations (C, C0 in kN)")
+    for col in ("designation", "d mm", "D mm", "B mm", "C cat.", "C est.", "C0 cat.", "C0 est.", "source"):
+        table.add_column(col, justify="left" if col in ("designation", "source") else "right", no_wrap=True)
+    for r in out:
+        table.add_row(
+            r["designation"],
+            f"{r['d_m'] * 1e3:g}",
+            f"{r['D_m'] * 1e3:g}",
+            f"{r['B_m'] * 1e3:g}",
+            _num(r["C_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C_estimate_N"], 1e-3, ".3g"),
+            _num(r["C0_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C0_estimate_N"], 1e-3, ".3g"),
+            r["source"],
+        )
+    console.print(table)
+    console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
 
 
 def main() -> None:

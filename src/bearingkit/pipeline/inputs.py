@@ -43,13 +43,21 @@ def load_cases_from(load, name: str = "load") -> list:
     return [loader.parse_load_options(_as_items(load), name)]
 
 
+def _is_designation(source) -> bool:
+    """Text that names no existing file and no TOML/JSON path is a bearing designation (``6205-2RS C3``)."""
+    path = Path(source)
+    return not path.exists() and path.suffix.lower() not in (".toml", ".json") and "/" not in str(source)
+
+
 def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> loader.BearingInput:
     """The bearing input an analysis runs on.
 
     Parameters
     ----------
     source : str, Path, dict or BearingInput
-        An input file (docs/input-format.md), an already parsed file (dict), or a loaded input.
+        An input file (docs/input-format.md), a standard bearing designation (``"6205-2RS C3"``,
+        docs/catalogue.md: its internal geometry is estimated), an already parsed file (dict), or a
+        loaded input.
     load : optional
         Load case(s) replacing the file's (see :func:`load_cases_from`).
     cases : sequence of str, optional
@@ -65,7 +73,10 @@ def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> load
     elif isinstance(source, Mapping):
         bearing = loader.from_dict(dict(source))
     elif isinstance(source, (str, Path)):
-        bearing = loader.load_file(Path(source))
+        if _is_designation(source):
+            bearing = loader.from_dict({"bearing": {"designation": str(source)}}, source=str(source))
+        else:
+            bearing = loader.load_file(Path(source))
     else:
         raise InputError(
             f"source ({type(source).__name__}) must be an input file path, a dict or a BearingInput"
