@@ -38,6 +38,7 @@ import numpy as np
 
 from bearingkit.catalogue.tables import Entry
 from bearingkit.errors import InputError
+from bearingkit.physics.life.iso281_load import E_TAN_FACTOR
 
 DEG = math.pi / 180.0
 
@@ -53,8 +54,6 @@ TAPER_HALF_ANGLE = 1.5 * DEG
 CONFORMITY_INNER = 0.52
 CONFORMITY_OUTER = 0.53
 CONFORMITY_THRUST = 0.54
-#: ISO 281 cl. 7.2 / 8.2: e = 1.5 tan α for roller bearings (bearingkit.physics.life.iso281.E_TAN_FACTOR).
-E_TAN_FACTOR = 1.5
 
 
 @dataclass(frozen=True)
