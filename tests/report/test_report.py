@@ -22,7 +22,7 @@ from bearingkit.io.loader import load_file, loads
 from bearingkit.pipeline import analyze
 from bearingkit.references import REFERENCES
 from bearingkit.report import build_report, report_file, write_report
-from bearingkit.report.html import fmt, warning_kind
+from bearingkit.report.html_format import fmt, warning_kind
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SEED000 = EXAMPLES / "seed000_composite.toml"
