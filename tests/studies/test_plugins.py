@@ -103,15 +103,16 @@ def test_a_plugin_cannot_take_a_builtin_name(no_plugins, tmp_path, monkeypatch):
 
 
 def test_installed_entry_point_is_found_by_name(no_plugins, monkeypatch):
-    eps = [EntryPoint("slow_model", "bk_study_helpers:SLOW", evaluators.PLUGIN_GROUP)]
+    eps = [EntryPoint("slow_model", "bk_study_helpers:SLOW", evaluators.ENTRY_POINT_GROUP)]
 
-    def entry_points(group=None):
-        return [e for e in eps if e.group == group]
+    def entry_points(group=None, name=None):
+        return [e for e in eps if e.group == group and name in (None, e.name)]
 
     monkeypatch.setattr("importlib.metadata.entry_points", entry_points)
+    monkeypatch.setattr(evaluators, "REGISTRY", dict(evaluators.REGISTRY))  # it registers on first use
     d = sd.from_dict(_study("slow_model"))
     assert evaluators.get(d.evaluator).name == "slow_counter"
-    with pytest.raises(InputError, match="installed plugin"):
+    with pytest.raises(InputError, match="entry point group"):
         sd.from_dict(_study("not_installed"))
 
 
