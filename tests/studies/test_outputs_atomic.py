@@ -16,6 +16,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+from bearingkit.studies import outputs
 from bearingkit.studies.__main__ import run_cli
 from bearingkit.studies.outputs import OUTPUTS_DIR, publish
 
@@ -37,6 +38,7 @@ def _consistent(out: Path) -> str:
     """The study whose complete set ``out`` shows (asserts that every file belongs to it)."""
     summary = json.loads((out / "summary.json").read_text())
     study = summary["study"]
+    assert summary.get("cases", ROWS[study]) == ROWS[study]
     assert len(pd.read_csv(out / "results.csv")) == ROWS[study], "results.csv is not the summary's"
     assert len(pd.read_parquet(out / "results.parquet")) == ROWS[study]
     return study
@@ -60,6 +62,27 @@ def test_publish_keeps_the_old_set_when_a_write_fails(tmp_path):
     assert (out / "results.csv").read_text() == "a\n4\n" and (out / "pareto.csv").read_text() == "p"
     assert not (out / "summary.json").exists(), "a name the new set lacks is gone with the old set"
     assert len(list((out / OUTPUTS_DIR).iterdir())) == 1, "older and unfinished sets are removed"
+
+
+def test_without_symbolic_links_every_file_is_replaced_whole(tmp_path, monkeypatch):
+    """The fallback (Windows without the link privilege): files atomic one by one, summary last."""
+    monkeypatch.setattr(outputs, "symlinks_work", lambda d: False)
+    out = tmp_path / "out"
+    out.mkdir()
+    order = []
+
+    def writer(text):
+        def write(path):
+            order.append(path.name)
+            path.write_text(text)
+
+        return write
+
+    publish(out, {"summary.json": writer("{}"), "results.csv": writer("a\n1\n"), "pareto.csv": writer("p")})
+    assert order[-1].startswith(".summary.json.") and not (out / OUTPUTS_DIR).exists()
+    publish(out, {"results.csv": writer("a\n2\n"), "summary.json": writer('{"n": 2}')})
+    assert sorted(p.name for p in out.iterdir()) == ["results.csv", "summary.json"]
+    assert not any(p.is_symlink() for p in out.iterdir()) and (out / "results.csv").read_text() == "a\n2\n"
 
 
 def test_an_interrupted_final_write_leaves_the_previous_set(tmp_path, monkeypatch):

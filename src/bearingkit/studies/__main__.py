@@ -142,7 +142,8 @@ def _writers(res, fingerprint: str, echo) -> dict:
 
     def summary(path):
         files = {n: (path.parent / n).stat().st_size for n in w if n != "summary.json"}
-        data = {"study": d.name, **res.stats, "fingerprint": fingerprint, "files": files}
+        data = {"study": d.name, "cases": len(res.results), **res.stats, "fingerprint": fingerprint}
+        data["files"] = files
         path.write_text(json.dumps(data, indent=1, default=str), encoding="utf-8")
 
     w["summary.json"] = summary
