@@ -95,10 +95,13 @@ def test_a_plugin_cannot_take_a_builtin_name(no_plugins, tmp_path, monkeypatch):
     (tmp_path / "shadow_probe.py").write_text(
         "from bearingkit.studies.evaluators import Evaluator, Factor\n"
         "Z = Evaluator('zdt1', lambda c: c, {'x1': Factor('x1', 'dimensionless', 0.0)})\n"
+        "S = Evaluator('seed000_statics', lambda c: c, {'x1': Factor('x1', 'dimensionless', 0.0)})\n"
     )
     monkeypatch.syspath_prepend(str(tmp_path))
-    with pytest.raises(InputError, match="built-in evaluator"):
+    with pytest.raises(InputError, match="built-in or installed evaluator"):
         evaluators.allow_plugin("shadow_probe:Z")
+    with pytest.raises(InputError, match="built-in or installed evaluator"):  # an entry point's name
+        evaluators.allow_plugin("shadow_probe:S")
     assert evaluators.get("zdt1").function is evaluators.zdt1
 
 

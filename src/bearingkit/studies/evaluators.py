@@ -136,8 +136,13 @@ def allow_plugin(spec: str) -> Evaluator:
         raise InputError(f"--allow-plugin ({spec!r}) cannot be imported: {exc}".replace("\n", " ")) from None
     if not isinstance(obj, Evaluator):
         raise InputError(f"--allow-plugin ({spec!r}) is a {type(obj).__name__}, not an Evaluator")
-    if obj.name in REGISTRY and REGISTRY[obj.name] is not obj:
-        raise InputError(f"--allow-plugin ({spec!r}): its name {obj.name!r} is a built-in evaluator's")
+    from importlib.metadata import entry_points
+
+    taken = set(REGISTRY) | {ep.name for ep in entry_points(group=ENTRY_POINT_GROUP)}
+    if obj.name in taken and REGISTRY.get(obj.name) is not obj:
+        raise InputError(
+            f"--allow-plugin ({spec!r}): its name {obj.name!r} is that of a built-in or installed evaluator"
+        )
     ALLOWED_PLUGINS[spec] = obj
     return obj
 
