@@ -49,16 +49,20 @@ try:  # POSIX
 except ImportError:  # pragma: no cover - Windows
     import msvcrt
 
+    # Windows locks byte ranges and a locked range cannot be read by others: lock one byte far past
+    # the record, so a refused run can still read who holds the folder.
+    _LOCK_OFFSET = 1 << 20
+
     def _try_lock(fd: int) -> bool:
-        os.lseek(fd, 0, os.SEEK_SET)
+        os.lseek(fd, _LOCK_OFFSET, os.SEEK_SET)
         try:
             msvcrt.locking(fd, msvcrt.LK_NBLCK, 1)
-        except OSError:
+        except PermissionError:
             return False
         return True
 
     def _unlock(fd: int) -> None:
-        os.lseek(fd, 0, os.SEEK_SET)
+        os.lseek(fd, _LOCK_OFFSET, os.SEEK_SET)
         msvcrt.locking(fd, msvcrt.LK_UNLCK, 1)
 
 
@@ -119,7 +123,15 @@ class StoreLock:
             fd = os.open(self.path, flags, 0o644)
         except OSError as exc:
             raise InputError(f"{self.directory}: cannot create the lock file {LOCK_FILE} ({exc})") from None
-        if not _try_lock(fd):
+        try:
+            locked = _try_lock(fd)
+        except OSError as exc:  # a file system without locks (some network or FUSE mounts)
+            os.close(fd)
+            raise InputError(
+                f"{self.directory}: cannot lock {LOCK_FILE} ({exc.strerror or exc}); choose an --out on a "
+                "local disk"
+            ) from None
+        if not locked:
             holder = _read_record(fd) or {}
             os.close(fd)
             raise InputError(
