@@ -178,7 +178,9 @@ def test_runs_one_after_the_other_share_a_folder(tmp_path, slow):
     (tmp_path / "a.toml").write_text(_toml("study_a", range(4)))
     (tmp_path / "b.toml").write_text(_toml("study_b", range(10, 16)))
     run_cli(tmp_path / "a.toml", out=out, progress=False, echo=lambda s: None)
-    res = run_cli(tmp_path / "b.toml", out=out, progress=False, echo=lambda s: None)
+    lines = []
+    res = run_cli(tmp_path / "b.toml", out=out, progress=False, echo=lines.append)
+    assert f"{out}: replacing the chunks of study 'study_a'" in lines
     assert list(pd.read_csv(out / "results.csv")["y"]) == [x * x + 1.0 for x in range(10, 16)]
     assert json.loads((out / "summary.json").read_text())["study"] == "study_b"
     assert {s["fingerprint"] for s in _stamps(out)} == {

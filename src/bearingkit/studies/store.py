@@ -64,6 +64,15 @@ def write_atomic(path: Path, data: bytes) -> None:
     _fsync_dir(path.parent)
 
 
+def _read_manifest(path: Path) -> dict:
+    """The manifest of a store, {} when absent or unreadable."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
 def foreign_entries(directory: Path) -> list[str]:
     """Names in ``directory`` that a study does not write (empty for a new or a study folder)."""
     if not directory.is_dir():
@@ -89,6 +98,7 @@ class ParquetStore:
         self.discarded = 0
         self._lock: StoreLock | None = None
         self._fingerprint: str | None = None
+        self._notify = warnings.warn
 
     # -- lifecycle -----------------------------------------------------------------------------
     @property
@@ -103,6 +113,7 @@ class ParquetStore:
         """
         if self.locked:
             return
+        self._notify = notify or warnings.warn
         d = self.directory
         if d.exists() and not d.is_dir():
             raise InputError(f"{d} is a file; expected a folder for the study's outputs (--out)")
@@ -122,7 +133,7 @@ class ParquetStore:
         self._lock = StoreLock(d, study)
         stale = self._lock.acquire()
         if stale is not None:
-            (notify or warnings.warn)(
+            self._notify(
                 f"{d}: recovered the stale lock of {describe(stale)}: that run ended without releasing it"
             )
 
@@ -174,17 +185,17 @@ class ParquetStore:
         }
         mpath = self.directory / MANIFEST
         if resume and mpath.exists():
-            try:
-                old = json.loads(mpath.read_text(encoding="utf-8"))
-            except (OSError, ValueError):
-                old = {}
-            if not isinstance(old, dict) or old.get("fingerprint") != fingerprint:
-                other = old.get("study", "?") if isinstance(old, dict) else "?"
+            old = _read_manifest(mpath)
+            if old.get("fingerprint") != fingerprint:
+                other = old.get("study", "?")
                 raise InputError(
                     f"{self.directory}: resume (True) but the store holds another study ({other!r}; "
                     "definition, evaluator or cases changed); use another --out or run without --resume"
                 )
             return self._valid_chunks(n_chunks)
+        old = _read_manifest(mpath)
+        if old.get("fingerprint") not in (None, fingerprint) and self.finished_files():
+            self._notify(f"{self.directory}: replacing the chunks of study {old.get('study', '?')!r}")
         for f in self.finished_files():
             f.unlink()
         write_atomic(mpath, json.dumps(manifest, indent=1).encode())
