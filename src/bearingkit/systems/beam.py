@@ -11,8 +11,8 @@ y–z plane θ_x = −du_y/dz: the y–z plane uses the textbook planar element 
 rotation DOFs flipped.
 
 Planar element (Przemieniecki 1968, *Theory of Matrix Structural Analysis*, ch. 5, the beam element
-with shear deformation; Davis, Henshell & Warburton 1972, J. Sound Vib. 22(4) 475–487): with DOFs (v₁, θ₁, v₂, θ₂), θ = dv/dz for
-the bending part, and the shear parameter Φ = 12 E I / (κ G A L²),
+with shear deformation; Davis, Henshell & Warburton 1972, J. Sound Vib. 22(4) 475–487): with DOFs
+(v₁, θ₁, v₂, θ₂), θ = dv/dz for the bending part, and the shear parameter Φ = 12 E I / (κ G A L²),
 
     K = E I / ((1 + Φ) L³) · [[ 12,       6L,   −12,       6L     ],
                                [ 6L, (4+Φ)L²,   −6L, (2−Φ)L²     ],

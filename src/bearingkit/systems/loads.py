@@ -135,7 +135,7 @@ class Gear:
         checks.non_negative("mass", self.mass, "kg")
 
     def load(self, torque) -> np.ndarray:
-        """Mesh load (C, 5) [N, N, N, N·m, N·m] on the shaft axis for torques T (C,) [N·m] (module docstring)."""
+        """Mesh load (C, 5) [N, N, N, N·m, N·m] on the shaft axis for mesh torques T (C,) [N·m]."""
         t = np.asarray(torque, dtype=float).reshape(-1)
         ft = 2.0 * t / self.pitch_diameter
         fr = np.abs(ft) * np.tan(self.pressure_angle) / np.cos(self.helix_angle)

@@ -148,7 +148,7 @@ class ShaftResult:
         return self._bearing_states[self._index(name)][1].force @ b.transform
 
     def stiffness(self, name: str, frame: str = "shaft") -> np.ndarray:
-        """Tangent stiffness K = −∂f/∂q (C, 5, 5) of the bearing, in the ``"shaft"`` or ``"bearing"`` frame."""
+        """Tangent stiffness K = −∂f/∂q (C, 5, 5) of the bearing, in the "shaft" or "bearing" frame."""
         b = self.system.bearings[self._index(name)]
         k = -self._bearing_states[self._index(name)][1].jacobian
         if frame == "bearing":
@@ -229,7 +229,7 @@ class ShaftResult:
         return rate_system(self, **options)
 
     def plot(self, case: int = 0):
-        """Deflection and bending-moment figure of one case (:func:`bearingkit.report.shaft_plots.shaft_figure`)."""
+        """Deflection and bending moment of one case (:func:`bearingkit.report.shaft_plots.shaft_figure`)."""
         from bearingkit.report.shaft_plots import shaft_figure
 
         return shaft_figure(self, case)
@@ -284,7 +284,10 @@ class ShaftResult:
                 "max_bending_moment_at_m": float(z_m[int(np.argmax(bending))]),
                 "deflection": {
                     "z_m": self.z.tolist(),
-                    **{f"{n}_{un}": u[:, i].tolist() for i, (n, un) in enumerate(zip(DOF_NAMES, _DOF_UNITS, strict=True))},
+                    **{
+                        f"{n}_{un}": u[:, i].tolist()
+                        for i, (n, un) in enumerate(zip(DOF_NAMES, _DOF_UNITS, strict=True))
+                    },
                 },
                 "bending_moment": {
                     "z_m": z_m.tolist(),

@@ -10,6 +10,7 @@ length; the elements are the Timoshenko elements of :mod:`bearingkit.systems.bea
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -110,8 +111,8 @@ class Shaft:
                 )
             if cur.start > prev.end + POSITION_TOL:
                 raise InputError(
-                    f"shaft.sections[{i}].start ({cur.start * 1e3:.6g} mm) leaves a gap after sections[{i - 1}], "
-                    f"which ends at {prev.end * 1e3:.6g} mm; expected contiguous sections"
+                    f"shaft.sections[{i}].start ({cur.start * 1e3:.6g} mm) leaves a gap after "
+                    f"sections[{i - 1}], which ends at {prev.end * 1e3:.6g} mm; expected contiguous sections"
                 )
 
     @property
@@ -164,7 +165,7 @@ class Shaft:
         keep = np.concatenate([[True], np.diff(fixed) > POSITION_TOL])
         fixed = fixed[keep]
         z = [fixed[:1]]
-        for a, b in zip(fixed[:-1], fixed[1:], strict=True):
+        for a, b in itertools.pairwise(fixed):
             n = max(1, int(np.ceil((b - a) / h - 1e-9)))
             z.append(np.linspace(a, b, n + 1)[1:])
         return Mesh(self, np.concatenate(z))
@@ -210,7 +211,9 @@ class Mesh:
     def properties(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Area A (E,) [m²], second moment I (E,) [m⁴], shear coefficient κ (E,) [-]."""
         area, inertia = beam.section_properties(self.outer_diameter, self.inner_diameter)
-        kappa = beam.shear_coefficient(self.shaft.material.poisson_ratio, self.inner_diameter / self.outer_diameter)
+        kappa = beam.shear_coefficient(
+            self.shaft.material.poisson_ratio, self.inner_diameter / self.outer_diameter
+        )
         return area, inertia, kappa
 
     @cached_property

@@ -42,14 +42,20 @@ from bearingkit.systems.shaft import Shaft, nodal_loads
 from bearingkit.systems.supports import BearingSeat
 
 #: Names of the shaft's rigid-body modes, in the order of :func:`rigid_modes`.
-MODE_NAMES = ("translation along x", "translation along y", "translation along z", "tilt about x", "tilt about y")
+MODE_NAMES = (
+    "translation along x",
+    "translation along y",
+    "translation along z",
+    "tilt about x",
+    "tilt about y",
+)
 #: Relative singular value below which the bearings leave a rigid-body mode of the shaft free [-].
 SUPPORT_RTOL = 1e-9
 
 
 @dataclass(frozen=True)
 class SystemOptions:
-    """Tolerances and limits of the system Newton (the meaning of :class:`~bearingkit.analysis.quasistatic.SolverOptions`).
+    """Tolerances and limits of the system Newton (see the single-bearing ``SolverOptions``).
 
     Parameters
     ----------
@@ -149,7 +155,9 @@ class ShaftSystem:
         for b in self.bearings:
             if b.name == name:
                 return b
-        raise InputError(f"bearing ({name!r}) not in the system; bearings are {[b.name for b in self.bearings]}")
+        raise InputError(
+            f"bearing ({name!r}) not in the system; bearings are {[b.name for b in self.bearings]}"
+        )
 
     def _check_supports(self) -> None:
         """Refuse a shaft the bearings cannot hold: no axial locating bearing, or a free rigid-body mode."""
@@ -162,8 +170,8 @@ class ShaftSystem:
                 else "every bearing is floating"
             )
             raise InputError(
-                f"bearings: no axial locating bearing ({hint}); set axial = \"locating\" on a bearing that carries "
-                "axial load (deep groove, angular contact, tapered)"
+                f'bearings: no axial locating bearing ({hint}); set axial = "locating" on a bearing that '
+                "carries axial load (deep groove, angular contact, tapered)"
             )
         rows = [b.global_reach @ rigid_modes(b.position, self.char_length).T for b in self.bearings]
         g = np.concatenate(rows, axis=0)
@@ -459,7 +467,9 @@ def _diagnose(system: ShaftSystem, asm: _Assembly, case: int, diverged: bool, no
     # bearings' contact directions on the same modes.
     nodal = asm.nodal[case].reshape(-1, NODE_DOF)
     f = sum(rigid_modes(z, system.char_length) @ fz for z, fz in zip(asm.mesh.z, nodal, strict=True))
-    g = np.concatenate([b.global_reach @ rigid_modes(b.position, system.char_length).T for b in system.bearings])
+    g = np.concatenate(
+        [b.global_reach @ rigid_modes(b.position, system.char_length).T for b in system.bearings]
+    )
     # Contacts resist the directions g: the load must be a non-negative combination of them.
     _, miss = nnls(g.T, f)
     size = max(np.linalg.norm(f), 1e-300)
@@ -471,5 +481,7 @@ def _diagnose(system: ShaftSystem, asm: _Assembly, case: int, diverged: bool, no
             f"(unbalanced mainly in {worst} of the shaft)"
         )
     if diverged:
-        return "displacement diverged beyond half an element diameter: the load exceeds what the bearings carry"
+        return (
+            "displacement diverged beyond half an element diameter: the load exceeds what the bearings carry"
+        )
     return f"Newton did not reach the tolerance (residual {norm:.3g} of the load scale)"

@@ -176,8 +176,8 @@ class BearingSeat:
             k = np.asarray(self.housing_stiffness, dtype=float)
             if k.shape != (N_DOF,):
                 raise InputError(
-                    f"{self.name}.housing_stiffness (shape {k.shape}) must have 5 values (radial x, radial y, "
-                    "axial, tilt x, tilt y)"
+                    f"{self.name}.housing_stiffness (shape {k.shape}) must have 5 values (radial x, "
+                    "radial y, axial, tilt x, tilt y)"
                 )
             checks.non_negative(f"{self.name}.housing_stiffness", k)
             object.__setattr__(self, "housing_stiffness", k)
