@@ -150,7 +150,8 @@ class BearingSeat:
     axial_offset : float [m]
         Outer ring's prescribed axial position along the shaft's +z (preload adjustment).
     housing_stiffness : array_like (5,) or None [N/m, N/m, N/m, N·m/rad, N·m/rad]
-        Stiffness of the housing per outer-ring DOF in the shaft frame; None = rigid housing.
+        Stiffness of the housing per outer-ring DOF in the shaft frame (inf: that DOF held rigidly);
+        None = rigid housing.
     source : object
         The loaded input file (:class:`bearingkit.io.loader.BearingInput`) when the bearing came
         from one: its lubricant and name are used for ratings and friction.
@@ -179,7 +180,10 @@ class BearingSeat:
                     f"{self.name}.housing_stiffness (shape {k.shape}) must have 5 values (radial x, "
                     "radial y, axial, tilt x, tilt y)"
                 )
-            checks.non_negative(f"{self.name}.housing_stiffness", k)
+            if np.any(np.isnan(k)) or np.any(k < 0):
+                raise InputError(
+                    f"{self.name}.housing_stiffness ({k.tolist()}) must be non-negative (inf: held rigidly)"
+                )
             object.__setattr__(self, "housing_stiffness", k)
         object.__setattr__(self, "law", BearingLaw(self.bearing))
 
