@@ -116,8 +116,8 @@ class ShaftSpec(schema._Strict):
     max_element_length: schema.PositiveLength | None = None
     sections: list[SectionSpec]
     bearings: list[BearingSpec]
-    gears: list[GearSpec] = []
-    masses: list[MassSpec] = []
+    gears: list[GearSpec] = Field(default_factory=list)
+    masses: list[MassSpec] = Field(default_factory=list)
 
 
 class ForceSpec(schema._Strict):
@@ -152,8 +152,8 @@ class ShaftCaseSpec(schema._Strict):
     gears: dict[str, schema.Moment] = Field(
         default_factory=dict, description="Torque each gear mesh applies to the shaft about +z."
     )
-    forces: list[ForceSpec] = []
-    line_loads: list[LineLoadSpec] = []
+    forces: list[ForceSpec] = Field(default_factory=list)
+    line_loads: list[LineLoadSpec] = Field(default_factory=list)
 
 
 class ShaftSolverSpec(schema._Strict):
@@ -260,7 +260,8 @@ def _sections(specs: list[SectionSpec]) -> tuple:
         end = start + s.length if s.end is None else s.end
         if not end > start:
             raise InputError(
-                f"shaft.sections[{i}].end ({end * 1e3:.6g} mm) must lie after its start ({start * 1e3:.6g} mm)"
+                f"shaft.sections[{i}].end ({end * 1e3:.6g} mm) must lie after its start "
+                f"({start * 1e3:.6g} mm)"
             )
         try:
             out.append(Section(start, end, s.outer_diameter, s.inner_diameter))
@@ -360,8 +361,8 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
         total, size = float(np.sum(torques)) if torques else 0.0, max((abs(t) for t in torques), default=0.0)
         if abs(total) > 1e-6 * max(size, 1e-300):
             notes.append(
-                f"load case {name!r}: the gear torques do not balance (sum {total:.6g} N·m); the shaft's torsion "
-                "is not modelled, so the remainder is taken as passing to a coupling"
+                f"load case {name!r}: the gear torques do not balance (sum {total:.6g} N·m); the shaft's "
+                "torsion is not modelled, so the remainder is taken as passing to a coupling"
             )
     opts = {}
     if spec.solver is not None:

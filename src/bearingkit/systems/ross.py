@@ -108,8 +108,8 @@ def ross_bearing(table: StiffnessTable, node: int, *, damping: float = 0.0, tag:
         return rs.BearingElement(n=node, cxx=damping, tag=tag, **{n: float(v[0]) for n, v in coeff.items()})
     if len(np.unique(speeds)) != len(speeds):
         raise InputError(
-            f"stiffness table of {table.bearing!r} has {len(speeds)} points but repeated speeds; ROSS interpolates "
-            "over speed only: select one point per speed (StiffnessTable.select)"
+            f"stiffness table of {table.bearing!r} has {len(speeds)} points but repeated speeds; ROSS "
+            "interpolates over speed only: select one point per speed (StiffnessTable.select)"
         )
     return rs.BearingElement(
         n=node,
