@@ -379,3 +379,37 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
             )
         lubricant = LUBRICANTS[spec.lubricant.name]
     return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes))
+
+
+def shaft_dict(inp: ShaftInput, result) -> dict:
+    """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
+
+    Per case: :meth:`ShaftResult.to_dict`, each bearing's ratings and the system life
+    (:func:`bearingkit.systems.life.rate_system`), and each bearing's friction torque where a lubricant
+    and a speed are known (:func:`bearingkit.systems.life.friction_system`); plus the file's notes.
+    """
+    from bearingkit.systems.life import friction_system, rate_system
+
+    rating = rate_system(result)
+    torque, notes = friction_system(result, lubricant=inp.lubricant)
+    cases = []
+    for c in range(result.n_cases):
+        d = result.to_dict(c)
+        d["rating"] = rating.to_dict(c)
+        d["friction_Nm"] = {name: (None if np.isnan(t[c]) else float(t[c])) for name, t in torque.items()}
+        d["warnings"] = list(rating.warnings[c])
+        cases.append(d)
+    return {
+        "file": inp.source,
+        "shaft": inp.system.name,
+        "bearings": [
+            {
+                "name": b.name,
+                "bearing": getattr(b.bearing, "name", "linear bearing"),
+                "position_m": b.position,
+            }
+            for b in inp.system.bearings
+        ],
+        "notes": [*inp.warnings, *notes],
+        "cases": cases,
+    }

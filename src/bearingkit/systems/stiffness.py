@@ -220,3 +220,21 @@ def shaft_stiffness_table(result, name: str, frame: str = "shaft") -> StiffnessT
         converged=np.asarray(result.converged, bool),
         labels=tuple(result.loads.names),
     )
+
+
+def write_tables(tables, path) -> Path:
+    """Write several bearings' tables to one file: CSV (a ``bearing`` column) or JSON (a list)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if path.suffix == ".csv":
+        import pandas as pd
+
+        frames = [t.to_pandas().assign(bearing=t.bearing, frame=t.frame) for t in tables]
+        pd.concat(frames, ignore_index=True).to_csv(path, index=False)
+    elif path.suffix == ".json":
+        path.write_text(
+            json.dumps({"bearings": [t.to_dict() for t in tables]}, indent=1) + "\n", encoding="utf-8"
+        )
+    else:
+        raise InputError(f"stiffness file ({str(path)!r}) must end in .csv or .json")
+    return path
