@@ -680,7 +680,7 @@ def shaft(
                     b["name"],
                     f"{b['position_m'] * 1e3:.4g}",
                     f"{b['radial_load_N']:.1f}",
-                    f"{b['axial_load_N'] + 0.0:.1f}",
+                    f"{round(b['axial_load_N'], 1) + 0.0:.1f}",
                     f"{b['misalignment_rad'] * 1e3:.3g}",
                     f"{math.hypot(u['u_x_m'], u['u_y_m']) * 1e6:.3g}",
                     _num(r.get("L10h_h"), fmt=".4g"),
