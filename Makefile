@@ -9,7 +9,8 @@ STAMP  := $(VENV)/.installed
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[dev]'
+	@echo "installing bearingkit with the [dev] and [ross] extras: the ROSS export test (tests/systems/test_ross_export.py) must run in CI"
+	$(BIN)/python -m pip install -q -e '.[dev,ross]'
 	touch $(STAMP)
 
 run: $(STAMP)
@@ -19,6 +20,7 @@ test: $(STAMP)
 	$(BIN)/ruff check .
 	bash scripts/ensure_chromium.sh
 	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -m ross tests/systems
 	$(BIN)/bearingkit validate
 
 test-slow: $(STAMP)
