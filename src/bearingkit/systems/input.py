@@ -352,9 +352,17 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
         for g in s.gears
     )
     masses = tuple(PointMass(m.position, m.mass, m.name) for m in s.masses)
-    system = ShaftSystem(shaft, seats, gears, masses, s.max_element_length, s.name)
     loads = _loads(spec.load_cases, s.gravity)
-    system.check_loads(loads)
+    try:
+        system = ShaftSystem(shaft, seats, gears, masses, s.max_element_length, s.name)
+        system.check_loads(loads)
+    except InputError as exc:  # the system names its own fields: place them in the file
+        text = str(exc)
+        if text.startswith(("bearings", "gears", "masses")):
+            text = "shaft." + text
+        elif text.startswith(("forces", "line_loads")):
+            text = "load_cases: " + text
+        raise InputError(text) from None
     notes = []
     for c, name in enumerate(loads.names):
         torques = [np.broadcast_to(t, (loads.n_cases,))[c] for t in loads.gear_torques.values()]

@@ -15,7 +15,8 @@ stay in the JSON/CSV table. Damping is not computed by bearingkit: the element g
 bearingkit element (same lengths, diameters, material, Timoshenko shear on or off), a
 ``BearingElement`` at each seat node with that bearing's stiffness at the chosen load cases, and a
 ``DiskElement`` for each gear with a mass, taken as a solid disc of its pitch diameter
-(I_p = m d²/8, I_d = I_p/2 — an assumption: bearingkit does not know the gear's real inertia).
+(I_p = m d²/8, I_d = I_p/2 — an assumption: bearingkit does not know the gear's real inertia), and one
+without inertia for each point mass.
 """
 
 from __future__ import annotations
@@ -178,5 +179,8 @@ def ross_rotor(result, cases=None, *, damping: float = 0.0):
         if g.mass > 0:
             ip = g.mass * g.pitch_diameter**2 / 8.0
             disks.append(rs.DiskElement(n=mesh.node(g.position), m=g.mass, Id=ip / 2.0, Ip=ip, tag=g.name))
-    points = [rs.PointMass(n=mesh.node(m.position), m=m.mass, tag=m.name) for m in system.masses]
-    return rs.Rotor(shaft_elements, disks, bearings, point_mass_elements=points or None)
+    # ROSS's PointMass links bearing nodes; a lumped mass on the shaft is a disc without inertia.
+    disks += [
+        rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=m.name) for m in system.masses
+    ]
+    return rs.Rotor(shaft_elements, disks, bearings)

@@ -132,12 +132,12 @@ class Shaft:
         """G = E / (2 (1 + ν)) [Pa] (isotropic)."""
         return self.material.youngs_modulus / (2.0 * (1.0 + self.material.poisson_ratio))
 
-    def check_position(self, field: str, z: float) -> None:
-        """InputError naming ``field`` when ``z`` [m] is not on the shaft."""
+    def check_position(self, field: str, z: float, what: str = "") -> None:
+        """InputError naming ``field`` (and ``what`` it places) when ``z`` [m] is not on the shaft."""
         if not (self.start - POSITION_TOL <= z <= self.end + POSITION_TOL):
             raise InputError(
                 f"{field} ({z * 1e3:.6g} mm) is outside the shaft, which spans {self.start * 1e3:.6g}–"
-                f"{self.end * 1e3:.6g} mm"
+                f"{self.end * 1e3:.6g} mm{'; ' + what if what else ''}"
             )
 
     def section_at(self, z) -> np.ndarray:

@@ -131,15 +131,15 @@ class ShaftSystem:
         for i, b in enumerate(self.bearings):
             if not isinstance(b, BearingSeat):
                 raise InputError(f"bearings[{i}] ({b!r}) is not a BearingSeat")
-            self.shaft.check_position(f"bearings[{i}].position ({b.name})", b.position)
+            self.shaft.check_position(f"bearings[{i}].position", b.position, f"bearing {b.name!r}")
         for kind, items in (("bearings", self.bearings), ("gears", self.gears)):
             names = [x.name for x in items]
             if len(set(names)) != len(names):
                 raise InputError(f"{kind} names ({names}) must be unique")
         for i, g in enumerate(self.gears):
-            self.shaft.check_position(f"gears[{i}].position ({g.name})", g.position)
+            self.shaft.check_position(f"gears[{i}].position", g.position, f"gear {g.name!r}")
         for i, m in enumerate(self.masses):
-            self.shaft.check_position(f"masses[{i}].position ({m.name})", m.position)
+            self.shaft.check_position(f"masses[{i}].position", m.position, f"mass {m.name!r}")
         if self.max_element_length is not None:
             checks.positive("max_element_length", self.max_element_length, "m")
         self._check_supports()
@@ -198,10 +198,10 @@ class ShaftSystem:
     def check_loads(self, loads: ShaftLoads) -> None:
         """InputError naming the field for a load outside the shaft or an unknown gear."""
         for i, f in enumerate(loads.forces):
-            self.shaft.check_position(f"forces[{i}].position ({f.name})", f.position)
+            self.shaft.check_position(f"forces[{i}].position", f.position, f"force {f.name!r}")
         for i, q in enumerate(loads.line_loads):
-            self.shaft.check_position(f"line_loads[{i}].start ({q.name})", q.start)
-            self.shaft.check_position(f"line_loads[{i}].end ({q.name})", q.end)
+            self.shaft.check_position(f"line_loads[{i}].start", q.start, f"line load {q.name!r}")
+            self.shaft.check_position(f"line_loads[{i}].end", q.end, f"line load {q.name!r}")
         known = [g.name for g in self.gears]
         for name in loads.gear_torques:
             if name not in known:
