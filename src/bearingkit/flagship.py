@@ -79,11 +79,11 @@ class FlagshipContext:
     def operating_point(self):
         """Seed-000 friction operating point: exactly the validation's (Table 3 calibration), 5 r/min.
 
-        :func:`bearingkit.validation.seed000_friction.operating_point`: cage mass, the viscosity
+        :func:`bearingkit.papers.tian2025.validation.operating_point`: cage mass, the viscosity
         factor calibrated once on Table 3 run 1, roughness and traction defaults; lubricant
         :data:`FLAGSHIP_LUBRICANT` at the module's 25 °C.
         """
-        from bearingkit.validation import seed000_friction
+        from bearingkit.papers.tian2025 import validation as seed000_friction
 
         return seed000_friction.operating_point(seed000_friction.RPM, lubricant=FLAGSHIP_LUBRICANT)
 
@@ -187,12 +187,12 @@ def _load_distribution_section(ctx: FlagshipContext):
 def _friction_section(ctx: FlagshipContext):
     from bearingkit.cli import friction_table
     from bearingkit.io.export import friction_case_dict
-    from bearingkit.validation import seed000_friction
+    from bearingkit.papers.tian2025 import validation as seed000_friction
 
     data = friction_case_dict(ctx.case, ctx.operating_point, ctx.friction, 0)
     data["calibration"] = (
         f"viscosity_factor = {seed000_friction.VISCOSITY_FACTOR} solved once on Tian et al. (2025) Table 3 "
-        "run 1 (bearingkit.validation.seed000_friction); cage mass and lubricant assumed there"
+        "run 1 (bearingkit.papers.tian2025.validation); cage mass and lubricant assumed there"
     )
     return Group(friction_table(data), Text(data["calibration"], style="dim")), data
 

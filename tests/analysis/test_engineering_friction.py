@@ -16,8 +16,8 @@ from bearingkit.bearings.standard import (
     thrust_ball,
 )
 from bearingkit.errors import InputError
-from bearingkit.physics import friction_palmgren as pg
-from bearingkit.physics import friction_skf as skf
+from bearingkit.physics.friction import palmgren as pg
+from bearingkit.physics.friction import skf
 
 RPM = 2.0 * np.pi / 60.0
 # 6208-like deep groove ball bearing (d 40, D 80 mm), SI.

@@ -376,7 +376,7 @@ def test_flagship_report_uses_the_context_results(tmp_path):
 
 
 def test_flagship_fallback_uses_seed000_friction_data(flagship):
-    from bearingkit.validation import seed000_friction
+    from bearingkit.papers.tian2025 import validation as seed000_friction
 
     _, path, html = flagship
     assert f"viscosity factor {seed000_friction.VISCOSITY_FACTOR:g}" in html

@@ -4,14 +4,14 @@ bearingkit bearing so that users can compare them with the physics torque of
 
 SI units at the boundary: m, N, rad/s, m²/s, °C (temperature, as the lubricant API); moments in N·m,
 with the unit in every result key (``total_Nm`` …). The models themselves live in
-:mod:`bearingkit.physics.friction_skf` and :mod:`bearingkit.physics.friction_palmgren` (each converts
+:mod:`bearingkit.physics.friction.skf` and :mod:`bearingkit.physics.friction.palmgren` (each converts
 to its catalogue units inside).
 
 Registries
 ----------
 :data:`ENGINEERING_MODELS`
-    ``"skf"`` → :func:`~bearingkit.physics.friction_skf.skf_friction_moment`,
-    ``"palmgren"`` → :func:`~bearingkit.physics.friction_palmgren.palmgren_friction_moment`.
+    ``"skf"`` → :func:`~bearingkit.physics.friction.skf.skf_friction_moment`,
+    ``"palmgren"`` → :func:`~bearingkit.physics.friction.palmgren.palmgren_friction_moment`.
 :data:`BEARING_TYPES`
     Bearing type names each model knows (``deep_groove_ball``, ``angular_contact_ball``,
     ``four_point_contact_ball``, ``cylindrical_roller``, ``tapered_roller``, ``thrust_ball``,
@@ -25,7 +25,7 @@ built by :mod:`bearingkit.bearings.standard` (duck-typed: ``rows[0].kind``, ``co
 catalogue models need the boundary dimensions d and D, which the builders do not store: pass them
 (``bore_diameter``, ``outside_diameter``); otherwise they are **estimated** as
 d, D = d_m ∓ D_w / (2·:data:`ELEMENT_TO_SECTION`) (documented assumption, flagged in the result's
-``notes``). C0 for the ball-bearing laws comes from ISO 76 (:mod:`bearingkit.physics.iso76`).
+``notes``). C0 for the ball-bearing laws comes from ISO 76 (:mod:`bearingkit.physics.life.iso76`).
 """
 
 from __future__ import annotations
@@ -37,7 +37,9 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
-from bearingkit.physics import friction_palmgren, friction_skf, iso76
+from bearingkit.physics.friction import palmgren as friction_palmgren
+from bearingkit.physics.friction import skf as friction_skf
+from bearingkit.physics.life import iso76
 
 #: Registry of engineering friction models.
 ENGINEERING_MODELS = {
@@ -126,8 +128,8 @@ def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> Engi
         One of ``BEARING_TYPES[model]``.
     **kwargs
         The model's keyword arguments (SI), see
-        :func:`~bearingkit.physics.friction_skf.skf_friction_moment` and
-        :func:`~bearingkit.physics.friction_palmgren.palmgren_friction_moment`.
+        :func:`~bearingkit.physics.friction.skf.skf_friction_moment` and
+        :func:`~bearingkit.physics.friction.palmgren.palmgren_friction_moment`.
 
     Returns
     -------

@@ -52,7 +52,7 @@ LOAD_ALIASES: dict[str, str] = {
 # Builder registry: bearing type → function(geometry dict (SI), material, name) → BearingModel.
 # ---------------------------------------------------------------------------------------------
 def _profile(geometry: dict, diameter: float | None = None):
-    from bearingkit.physics.profiles import make_profile
+    from bearingkit.physics.contact.profiles import make_profile
 
     spec = geometry.get("profile")
     if spec is None:
@@ -82,7 +82,7 @@ def _standard(builder_name: str, renames: dict | None = None):
 def _turntable(builder_name: str):
     def build(geometry: dict, material, name: str) -> BearingModel:
         from bearingkit.bearings import turntable
-        from bearingkit.physics.profiles import PROFILES, SEED000_CROWNING
+        from bearingkit.physics.contact.profiles import PROFILES, SEED000_CROWNING
 
         crowning = geometry.get("crowning")
         if crowning is not None and crowning not in SEED000_CROWNING and crowning not in PROFILES:

@@ -255,7 +255,7 @@ class BearingFile(_Strict):
 # Geometry models, one per bearing type. Field names are the builders' keyword names (nomenclature).
 # ---------------------------------------------------------------------------------------------
 class ProfileSpec(_Strict):
-    """Crowning profile: a registry name of :mod:`bearingkit.physics.profiles` and its parameters."""
+    """Crowning profile: a registry name of :mod:`bearingkit.physics.contact.profiles` and its parameters."""
 
     name: str
     crown_radius: PositiveLength | None = None

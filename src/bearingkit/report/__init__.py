@@ -219,7 +219,7 @@ def report_file(path_to_toml, out_path, *, speed=None, temperature=None) -> Path
 
 def _flagship_operating_point() -> dict:
     """Seed-000 friction data of the validation module (calibrated viscosity factor, cage mass)."""
-    from bearingkit.validation import seed000_friction as s0f
+    from bearingkit.papers.tian2025 import validation as s0f
 
     return {"viscosity_factor": s0f.VISCOSITY_FACTOR, "cage_mass": s0f.CAGE_MASS}
 
@@ -230,7 +230,7 @@ def write_flagship_report(ctx, path) -> Path:
     Reads ``ctx.bearing`` (BearingInput of the flagship case) and ``ctx.result`` (its solve). Uses
     ``ctx.friction`` / ``ctx.rating`` when the context carries them (so the printed summary and the
     report agree); otherwise computes them here with the seed-000 friction data of
-    :mod:`bearingkit.validation.seed000_friction` (calibrated viscosity factor, cage mass) at
+    :mod:`bearingkit.papers.tian2025.validation` (calibrated viscosity factor, cage mass) at
     :data:`DEFAULT_TEMPERATURE`, the temperature of that calibration.
     """
     bearing, result = ctx.bearing, ctx.result

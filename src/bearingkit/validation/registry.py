@@ -91,12 +91,22 @@ def register(case: Case) -> Case:
     return case
 
 
+#: Entry-point group of packages that register validation cases on import (the paper reproductions of
+#: :mod:`bearingkit.papers` declare theirs): ``name = "package.module"``.
+ENTRY_POINT_GROUP = "bearingkit.validation"
+
+
 def _load_all() -> None:
+    """Import every case module: the literature cases of this package, then the declared ones."""
+    from importlib.metadata import entry_points
+
     import bearingkit.validation as pkg
 
     for mod in pkgutil.iter_modules(pkg.__path__):
         if mod.name != "registry":
             importlib.import_module(f"bearingkit.validation.{mod.name}")
+    for ep in entry_points(group=ENTRY_POINT_GROUP):
+        ep.load()
 
 
 def all_cases(prefixes: Iterable[str] = ()) -> list[Case]:
