@@ -288,3 +288,44 @@ def test_exported_stiffness_is_the_tangent_of_the_seat_force():
     assert np.allclose(-(f1 - f0), k @ dq, rtol=1e-3, atol=1e-4 * np.abs(k @ dq).max())
     assert np.allclose(table.radial()[0], k[:2, :2])
     assert abs(k[0, 1]) > 1e-3 * k[0, 0]  # a load not along x gives cross terms
+
+
+def test_unloaded_and_barely_loaded_bearings_with_clearance():
+    """Clearance (6209: 15 µm, NU 209: 30 µm) and a floating outer ring: zero load, weight only, and
+    a load a million times larger all converge in one batch (zero-stiffness start, mechanisms)."""
+    dgbb = load_file(EXAMPLES / "dgbb_6209.toml").model
+    nu = load_file(EXAMPLES / "crb_nu209.toml").model
+    shaft = Shaft((Section(0.0, 0.25, 0.05),))
+    system = ShaftSystem(
+        shaft,
+        (
+            BearingSeat("A", dgbb, 0.01, axial="floating"),
+            BearingSeat("B", dgbb, 0.12),
+            BearingSeat("C", nu, 0.24, axial="floating"),
+        ),
+    )
+    f = np.array([[0, 0, 0, 0, 0], [0, -1e-2, 0, 0, 0], [0, -1e2, 1.0, 0, 0], [3e3, -1e4, 500.0, 0, 0]])
+    res = solve(system, ShaftLoads(tuple("abcd"), forces=(PointLoad(0.06, f),)))
+    assert res.converged.all(), res.reason
+    assert np.all(res.residual_norm <= 1e-10)
+    # The full-shaft check is round-off limited by ‖K‖‖u‖ (u includes the rigid motion that closes the
+    # clearance), which is ~1e-8 of a 0.01 N load: check it on the loads that are not that small.
+    assert np.all(res.equilibrium_residual()[2:] <= 1e-9)
+    assert np.all(res.unknowns[0] == 0.0)  # nothing loaded, nothing moves
+    assert np.abs(res.reaction("A")[:, 2]).max() <= 1e-9 * np.abs(f).max()  # floating: no thrust
+
+
+def test_a_load_the_bearings_cannot_carry_is_reported():
+    """Thrust towards −z on a shaft held axially only by one angular contact bearing carrying +z."""
+    acbb = load_file(EXAMPLES / "acbb_7209.toml").model
+    nu = load_file(EXAMPLES / "crb_nu209.toml").model
+    system = ShaftSystem(
+        Shaft((Section(0.0, 0.2, 0.045),)),
+        (BearingSeat("A", acbb, 0.01), BearingSeat("B", nu, 0.19, axial="floating")),
+    )
+    res = solve(
+        system,
+        ShaftLoads(("ok", "bad"), forces=(PointLoad(0.1, [[1e3, 0, 2e3, 0, 0], [1e3, 0, -2e3, 0, 0]]),)),
+    )
+    assert res.converged.tolist() == [True, False]
+    assert "cannot be carried" in res.reason[1] and "F_z" in res.reason[1]

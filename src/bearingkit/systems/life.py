@@ -22,7 +22,7 @@ import numpy as np
 from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.rating import HOUR, system_life
 from bearingkit.errors import InputError
-from bearingkit.physics import iso281
+from bearingkit.physics.life import iso281
 
 
 @dataclass
