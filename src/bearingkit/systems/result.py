@@ -62,6 +62,7 @@ class ShaftResult:
     iterations: np.ndarray = None
     residual_norm: np.ndarray = None
     reason: list = None
+    _bearing_results: dict = field(default_factory=dict, repr=False)
 
     # -- shaft -------------------------------------------------------------------------------
     @property
@@ -183,8 +184,10 @@ class ShaftResult:
         b = self.system.bearings[self._index(name)]
         if not isinstance(b.bearing, BearingModel):
             raise InputError(f"bearing {name!r} is a linear stiffness: it has no rows to report")
+        if name in self._bearing_results:  # built once: its per-element state is computed lazily
+            return self._bearing_results[name]
         q, resp = self._bearing_states[self._index(name)]
-        return QuasiStaticResult(
+        self._bearing_results[name] = QuasiStaticResult(
             model=b.bearing,
             load=-resp.force,
             displacement=q,
@@ -196,6 +199,7 @@ class ShaftResult:
             free=np.ones(N_DOF, bool),
             references=tuple(b.bearing.references),
         )
+        return self._bearing_results[name]
 
     # -- checks ----------------------------------------------------------------------------------
     def equilibrium_residual(self) -> np.ndarray:
