@@ -171,3 +171,18 @@ def test_plot_draws_the_lines():
     assert np.allclose(moment.lines[2].get_ydata(), np.hypot(m[0, :, 0], m[0, :, 1]))
     assert np.allclose(deflection.lines[0].get_ydata(), res.displacement[0, :, 0] * 1e6)
     assert shaft_figure(res, 1).axes[1].get_title().endswith("deflection of the shaft axis")
+
+
+def test_bearing_by_designation_equals_its_catalogue_input():
+    """A seat given by designation uses the catalogue's estimated bearing, as a file would."""
+    from bearingkit.io.loader import from_dict
+
+    data = _data()
+    del data["shaft"]["bearings"][0]["file"]
+    data["shaft"]["bearings"][0]["designation"] = "6209"
+    inp = shaft_from_dict(data, "designation.toml", base=EXAMPLES)
+    assert inp.system.bearing("A").bearing.name == from_dict({"bearing": {"designation": "6209"}}).model.name
+    res = inp.solve()
+    assert res.converged.all()
+    data["shaft"]["bearings"][0]["file"] = "dgbb_6209.toml"
+    assert "exactly one of file" in _error(data)

@@ -5,7 +5,8 @@ for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
 
     [shaft]              name, material, gravity ("-y" …), shear_deformation, max_element_length
     [[shaft.sections]]   start (default: previous end), end or length, outer_diameter, inner_diameter
-    [[shaft.bearings]]   name, file (a bearing input file, relative to this file) or stiffness,
+    [[shaft.bearings]]   name, file (a bearing input file, relative to this file), designation
+                         (a standard bearing, e.g. "6209") or stiffness,
                          position, orientation ("+z"|"-z"), axial ("locating"|"floating"),
                          axial_offset, housing = {radial, axial, tilt}
     [[shaft.gears]]      name, position, pitch_diameter, pressure_angle, helix_angle, mesh_angle, mass
@@ -76,6 +77,7 @@ class BearingSpec(schema._Strict):
 
     name: str
     file: str | None = Field(None, description="Bearing input file (TOML), relative to the shaft file.")
+    designation: str | None = Field(None, description="A standard bearing (docs/catalogue.md), e.g. '6209'.")
     stiffness: LinearStiffnessSpec | None = None
     position: schema.Length
     orientation: Literal["+z", "-z"] = "+z"
@@ -273,9 +275,20 @@ def _sections(specs: list[SectionSpec]) -> tuple:
 
 def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
     where = f"shaft.bearings[{i}] ({b.name})"
-    if (b.file is None) == (b.stiffness is None):
-        raise InputError(f"{where}: give exactly one of file (a bearing input file) and stiffness")
-    if b.file is not None:
+    if sum(v is not None for v in (b.file, b.designation, b.stiffness)) != 1:
+        raise InputError(
+            f"{where}: give exactly one of file (a bearing input file), designation (e.g. '6209') "
+            "and stiffness"
+        )
+    if b.designation is not None:
+        from bearingkit.io.loader import from_dict
+
+        try:
+            source = from_dict({"bearing": {"designation": b.designation}}, source=b.designation)
+        except InputError as exc:
+            raise InputError(f"{where}.designation: {exc}") from None
+        bearing = source.model
+    elif b.file is not None:
         path = Path(b.file)
         path = path if path.is_absolute() else base / path
         try:
