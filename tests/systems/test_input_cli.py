@@ -165,7 +165,7 @@ def test_plot_draws_the_lines():
     from bearingkit.report.shaft_plots import shaft_figure
 
     res = load_shaft_file(COUNTERSHAFT).solve()
-    fig = res.plot(0)
+    fig = shaft_figure(res, 0)
     deflection, moment = fig.axes[1], fig.axes[2]
     _z, m = res.moment_line()
     assert np.allclose(moment.lines[2].get_ydata(), np.hypot(m[0, :, 0], m[0, :, 1]))

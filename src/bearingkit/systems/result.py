@@ -232,12 +232,6 @@ class ShaftResult:
 
         return rate_system(self, **options)
 
-    def plot(self, case: int = 0):
-        """Deflection and bending moment of one case (:func:`bearingkit.report.shaft_plots.shaft_figure`)."""
-        from bearingkit.report.shaft_plots import shaft_figure
-
-        return shaft_figure(self, case)
-
     # -- output ---------------------------------------------------------------------------------
     def bearing_dict(self, name: str, case: int) -> dict:
         """JSON-ready state of one bearing in one case (units in keys)."""
