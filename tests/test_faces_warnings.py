@@ -94,3 +94,17 @@ def test_report_numbers_its_sections_once_and_shows_friction_in_newton_metres(tm
     headings = re.findall(r"<h[24]>([\d.]+)\. ", html)
     assert len(headings) == len(set(headings))  # "5. Warnings" never followed by "3. Warnings"
     assert "N·mm" not in html and "friction [N·m]" in html
+
+
+def test_life_chart_labels_decades_only():
+    """One row spans ~1.3 decades on the life axis: only decade labels, no crowded minor labels."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from bearingkit.report import plots
+
+    a = analyze(DGBB, cases=["radial_4kN"], speed="1000 rpm")
+    fig = plots.rating_figure(a.rating, 0)
+    FigureCanvasAgg(fig).draw()
+    for ax in fig.axes:
+        assert [t.get_text() for t in ax.get_xticklabels(minor=True) if t.get_text()] == []
+        assert len([t for t in ax.get_xticklabels() if t.get_text()]) >= 1
