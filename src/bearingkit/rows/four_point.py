@@ -130,21 +130,23 @@ class FourPointRow:
         checks.finite("contact_angle", alpha, "rad")
         if np.any(alpha <= 0.0):
             raise checks.InputError(
-                f"contact_angle ({checks._fmt(alpha)} rad) must be positive: the two arc centres of each gothic "
-                "arch sit ±(f − 0.5)·D_w·sin(contact_angle) off the ball plane, so a zero or negative angle "
-                "makes them coincide or cross (a single groove: use a deep groove ball row)"
+                f"contact_angle ({checks._fmt(alpha)} rad) must be positive: the two arc centres of each "
+                "gothic arch sit ±(f − 0.5)·D_w·sin(contact_angle) off the ball plane, so a zero or "
+                "negative angle makes them coincide or cross (a single groove: use a deep groove ball row)"
             )
         if np.any(alpha >= MAX_CONTACT_ANGLE):
             raise checks.InputError(
                 f"contact_angle ({np.degrees(np.max(alpha)):.6g} deg) must be below "
-                f"{np.degrees(MAX_CONTACT_ANGLE):.0f} deg: the arches of a four-point groove need a radial flank"
+                f"{np.degrees(MAX_CONTACT_ANGLE):.0f} deg: the arches of a four-point groove need a "
+                "radial flank"
             )
         for f in ("conformity_inner", "conformity_outer"):
             val = np.asarray(getattr(self, f), dtype=float)
             checks.finite(f, val)
             if np.any(val <= 0.5):
                 raise checks.InputError(
-                    f"{f} ({np.min(val):.6g}) must exceed 0.5: each arc radius must exceed half the ball diameter"
+                    f"{f} ({np.min(val):.6g}) must exceed 0.5: each arc radius must exceed half the ball "
+                    "diameter"
                 )
             if np.any(val > MAX_CONFORMITY):
                 raise checks.InputError(f"{f} ({np.max(val):.6g}) must be at most {MAX_CONFORMITY:g}")
@@ -353,11 +355,16 @@ class FourPointKernel(KernelBase):
         a, b, cc, e = hxx[..., 0, 0] + mu, hxx[..., 0, 1], hxx[..., 1, 0], hxx[..., 1, 1] + mu
         det = a * e - b * cc
         det = np.where(det > 0, det, np.inf)[..., None]  # free balls: no stiffness to condense
-        inv_hxq = np.stack(
-            [e[..., None] * hxq[..., 0, :] - b[..., None] * hxq[..., 1, :],
-             a[..., None] * hxq[..., 1, :] - cc[..., None] * hxq[..., 0, :]],
-            axis=-2,
-        ) / det[..., None]
+        inv_hxq = (
+            np.stack(
+                [
+                    e[..., None] * hxq[..., 0, :] - b[..., None] * hxq[..., 1, :],
+                    a[..., None] * hxq[..., 1, :] - cc[..., None] * hxq[..., 0, :],
+                ],
+                axis=-2,
+            )
+            / det[..., None]
+        )
         schur = np.einsum("czai,czaj->cij", hxq, inv_hxq)
         jac = -(hqq - schur)
         jac = 0.5 * (jac + np.swapaxes(jac, 1, 2))
@@ -380,15 +387,19 @@ class FourPointKernel(KernelBase):
         line = np.concatenate([n[..., :2, :], -n[..., 2:, :]], axis=-2)  # load-line direction, outward
         angle = np.arctan2(line[..., 1], line[..., 0])  # (C, Z, 4)
         d, dm = _col(row.element_diameter)[..., None], _col(row.pitch_diameter)[..., None]
-        f = np.concatenate(
-            [_col(row.conformity_outer)] * 2 + [_col(row.conformity_inner)] * 2, axis=-1
-        )[:, None, :]
+        f = np.concatenate([_col(row.conformity_outer)] * 2 + [_col(row.conformity_inner)] * 2, axis=-1)[
+            :, None, :
+        ]
         semi_a, semi_b, p = (np.zeros_like(load) for _ in range(3))
         for k, side in enumerate(("outer", "outer", "inner", "inner")):
             a_k = np.clip(np.abs(angle[..., k]), 0.0, np.pi / 2)
             sr, fr = hertz.ball_raceway_curvature(d[..., 0], dm[..., 0], a_k, f[..., k] * d[..., 0], side)
             contact = hertz.point_contact(load[..., k], sr, fr, self.e_reduced, method=row.hertz_method)
-            semi_a[..., k], semi_b[..., k], p[..., k] = contact.semi_major, contact.semi_minor, contact.max_pressure
+            semi_a[..., k], semi_b[..., k], p[..., k] = (
+                contact.semi_major,
+                contact.semi_minor,
+                contact.max_pressure,
+            )
         top = np.argmax(load, axis=-1)
         pick = lambda a: np.take_along_axis(a, top[..., None], axis=-1)[..., 0]  # noqa: E731
         extras = {
