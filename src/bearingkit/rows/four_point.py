@@ -74,6 +74,9 @@ DIAGONALS = {"A": (0, 2), "B": (1, 3)}
 #: fraction of its largest contact load (near round-off, so the condensed force is exact to ~1e-13).
 BALL_ITERATIONS = 60
 BALL_RTOL = 1e-13
+#: Approach below which a contact counts as open, as a fraction of the ball diameter [-] (round-off of
+#: the centre distances, ~1e-16 of d_m, with margin).
+DELTA_FLOOR = 1e-12
 
 
 @dataclass(frozen=True)
@@ -268,7 +271,11 @@ class FourPointKernel(KernelBase):
         d = x[..., None, :] - centres  # (C, Z, 4, 2)
         length = np.sqrt(d[..., 0] ** 2 + d[..., 1] ** 2)
         n = d / np.maximum(length, 1e-300)[..., None]
-        delta = np.maximum(length - self.rho, 0.0)
+        delta = length - self.rho
+        # Approaches below the round-off of the centre distances are no contact: a ball leaving its last
+        # contact converges to it only geometrically (Newton on δ^2.5), and the 1e-20 N loads it would
+        # keep make the condensed stiffness of a free ball round-off noise of either sign.
+        delta = np.where(delta > DELTA_FLOOR * self._ball_scale, delta, 0.0)
         root = np.sqrt(delta)
         load = self.k * delta * root
         stiff = 1.5 * self.k * root
@@ -307,6 +314,14 @@ class FourPointKernel(KernelBase):
             det = np.where(det > 0, det, np.inf)  # a ball with no loaded contact does not move
             step = -np.stack([e * grad[..., 0] - b * grad[..., 1], a * grad[..., 1] - c * grad[..., 0]], -1)
             step /= det[..., None]
+            # A ball pressed by a single contact cannot be in equilibrium: it leaves that contact, exactly
+            # (Newton would only divide the approach by 3 per iteration).
+            lone = (load > 0).sum(axis=-1) == 1
+            if lone.any():
+                k1 = np.argmax(load, axis=-1)[..., None, None]
+                n1 = np.take_along_axis(n, np.broadcast_to(k1, (*shape, 1, 2)), axis=-2)[..., 0, :]
+                d1 = np.take_along_axis(delta, k1[..., 0], axis=-1)
+                step = np.where(lone[..., None], -d1 * n1, step)
             big = np.hypot(step[..., 0], step[..., 1])
             step *= np.minimum(1.0, cap / np.maximum(big, 1e-300))[..., None]
             active &= big > 1e-15 * self._ball_scale

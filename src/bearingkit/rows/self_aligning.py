@@ -398,6 +398,7 @@ class SelfAligningKernel(KernelBase):
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
         alpha, d, dm = float(row.contact_angle), float(row.element_diameter), float(row.pitch_diameter)
         self.psi = azimuths(row.n_elements, row.azimuth_phase)[0]  # (Z,)
+        self.m_rz = (np.cos(alpha), np.sin(alpha))  # the unloaded line in each element's (r, z) plane
         self.m = np.stack(
             [
                 np.cos(alpha) * np.cos(self.psi),
@@ -461,25 +462,39 @@ class SelfAligningKernel(KernelBase):
 
     # -- solver interface ------------------------------------------------------------------------
     def _lines(self, q, offset: RacewayOffset | None):
-        u = q[:, :3] if offset is None or offset.shift is None else (q - offset.shift)[:, :3]
-        v = (self.touch - self.gap)[..., None] * self.m + u[:, None, :]  # (C, Z, 3)
+        """Unit load lines n (C, Z, 2) in each element's (r, z) plane, approaches δ (C, Z), lengths (C, Z).
+
+        The element stays in its azimuth plane (as every row of the engine): the inner ring's translation
+        enters through its radial and axial components at the element, u_r = u_x cos ψ + u_y sin ψ and u_z;
+        the tilts do not enter at all (rotation about the sphere centre).
+        """
+        u = q if offset is None or offset.shift is None else q - offset.shift
+        u_r = u[:, :1] * np.cos(self.psi) + u[:, 1:2] * np.sin(self.psi)  # (C, Z)
+        reach = (self.touch - self.gap) * np.ones_like(u_r)
         if offset is not None and offset.radial is not None:  # outer raceway moved outward: opens the line
-            v = v - (offset.radial * np.cos(float(self.row.contact_angle)))[..., None] * self.m
-        length = np.sqrt(np.einsum("czi,czi->cz", v, v))
-        return v / length[..., None], length - self.touch
+            reach = reach - offset.radial * np.cos(float(self.row.contact_angle))
+        v = np.stack([reach * self.m_rz[0] + u_r, reach * self.m_rz[1] + u[:, 2:3]], axis=-1)
+        length = np.sqrt(v[..., 0] ** 2 + v[..., 1] ** 2)
+        return v / length[..., None], length - self.touch, length
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Force (through O: no moment), Jacobian (zero tilt columns) and energy for q (C, 5)."""
-        n, delta = self._lines(q, offset)
+        n, delta, length = self._lines(q, offset)
         load, stiff, energy, _, _ = self.element_law(delta)
         c = q.shape[0]
+        cos, sin = np.cos(self.psi), np.sin(self.psi)
         force = np.zeros((c, 5))
-        force[:, :3] = -np.einsum("cz,czi->ci", load, n)
-        length = delta + self.touch
+        f_r = -load * n[..., 0]
+        force[:, 0], force[:, 1] = f_r @ cos, f_r @ sin
+        force[:, 2] = -(load * n[..., 1]).sum(axis=-1)
+        # In-plane stiffness k = Q′ n nᵀ + (Q/L)(I − n nᵀ), mapped by u_r = (cos ψ, sin ψ, 0)·u, u_z.
+        geo = load / length
         nn = n[..., :, None] * n[..., None, :]
-        k3 = np.einsum("cz,czij->cij", stiff, nn) + np.einsum("cz,czij->cij", load / length, np.eye(3) - nn)
+        k2 = stiff[..., None, None] * nn + geo[..., None, None] * (np.eye(2) - nn)  # (C, Z, 2, 2)
+        b = np.zeros((len(self.psi), 2, 3))
+        b[:, 0, 0], b[:, 0, 1], b[:, 1, 2] = cos, sin, 1.0
         jac = np.zeros((c, 5, 5))
-        jac[:, :3, :3] = -k3
+        jac[:, :3, :3] = -np.einsum("zai,czab,zbj->cij", b, k2, b)
         return RowResponse(force, jac, energy.sum(axis=-1))
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
@@ -492,10 +507,9 @@ class SelfAligningKernel(KernelBase):
         from bearingkit.physics.contact import hertz, line
 
         row = self.row
-        n, delta = self._lines(q, offset)
+        n, delta, _ = self._lines(q, offset)
         load, _, _, d_o, d_i = self.element_law(delta)
-        radial = n[..., 0] * np.cos(self.psi) + n[..., 1] * np.sin(self.psi)
-        alpha = np.arctan2(n[..., 2], radial)
+        alpha = np.arctan2(n[..., 1], n[..., 0])
         d, dm = float(row.element_diameter), float(row.pitch_diameter)
         extras = {"approach_outer": d_o, "approach_inner": d_i}
         psi = np.broadcast_to(self.psi, load.shape)
