@@ -229,6 +229,7 @@ def case_table(c: dict) -> Table:
 @app.command()
 def schema():
     """Print the JSON Schema of the input file."""
+    from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
     from bearingkit.io.schema import json_schema
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
