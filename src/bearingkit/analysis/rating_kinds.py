@@ -100,10 +100,6 @@ def rate_four_point_row(row, state, ctx: RowContext) -> RowRating:
         c = _attempt(
             "C (ISO 281)", lambda: iso281.dynamic_rating_ball(d, dm, alpha, z, bearing_type=btype), notes
         )
-    notes.append(
-        "four-point row rated per diagonal as a single-row angular contact bearing (i = 1); the "
-        "ISO/TS 16281 life sums its four raceways"
-    )
     m_in, m_out = _means(ctx.options.rotating)
 
     def life_fn(c_arr, loaded):
@@ -219,9 +215,6 @@ def rate_spherical_roller_row(row, state, ctx: RowContext) -> RowRating:
             lambda: iso281.dynamic_rating_roller(d, length, dm, alpha, z, bearing_type=btype),
             notes,
         )
-    notes.append(
-        "rated per row (i = 1); the bearing's C is the rows' system (ISO 281: C_r(i=2) = 2^(7/9) C_row)"
-    )
     rot, stat = iso16281.ROLLER_ROTATING_MEAN, iso16281.ROLLER_STATIONARY_MEAN
     m_in, m_out = (rot, stat) if ctx.options.rotating == "inner" else (stat, rot)
 
