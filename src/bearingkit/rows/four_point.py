@@ -287,6 +287,25 @@ class FourPointKernel(KernelBase):
         geo = (load / np.maximum(length, 1e-300))[..., None, None]
         return stiff[..., None, None] * nn + geo * (np.eye(2) - nn)
 
+    def _initial_positions(self, centres):
+        """Ball positions of the one-diagonal (groove-centre) model: exact when a single diagonal is
+        closed, the mean of the two when both are, the unloaded position when none is."""
+        x = np.zeros((*centres.shape[:2], 2))
+        count = np.zeros(centres.shape[:2])
+        # share of a diagonal's approach taken by its outer contact: δ_o/δ_i = (K_i/K_o)^(2/3)
+        ratio = (self.k[..., 2] / self.k[..., 0]) ** (2.0 / 3.0)
+        w_out = ratio / (1.0 + ratio)
+        for k_out, k_in in DIAGONALS.values():
+            s = centres[..., k_in, :] - centres[..., k_out, :]
+            a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
+            gap = a - self.rho[..., k_out] - self.rho[..., k_in]
+            closed = gap > 0
+            reach = self.rho[..., k_out] + w_out * np.maximum(gap, 0.0)
+            on_line = centres[..., k_out, :] + (reach / np.maximum(a, 1e-300))[..., None] * s
+            x += np.where(closed[..., None], on_line, 0.0)
+            count += closed
+        return x / np.maximum(count, 1.0)[..., None]
+
     def _solve_balls(self, centres):
         """Ball positions x (C, Z, 2) minimising each ball's elastic energy (damped Newton, Armijo).
 
@@ -296,7 +315,7 @@ class FourPointKernel(KernelBase):
         its energy or halves its residual (then it is already at the round-off floor).
         """
         shape = centres.shape[:2]
-        x = np.zeros((*shape, 2))
+        x = self._initial_positions(centres)
         cap = 0.05 * self._ball_scale
         active = np.ones(shape, bool)
         for _ in range(BALL_ITERATIONS):
