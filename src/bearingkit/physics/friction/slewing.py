@@ -12,8 +12,9 @@ the start-up friction torque of a loaded, installed bearing (no seals, no unload
 maker quotes a scatter of ±25 %), D_L the raceway (pitch) diameter, μ a friction coefficient per bearing
 series. The drive power is P = M_r ω / η.
 
-References: thyssenkrupp rothe erde, "Calculation of the frictional torque" (technical basics of the
-slewing bearings catalogue): formula and symbols as above.
+References: Rothe Erde GmbH (2007) Slewing bearings catalogue, "Turning torque calculation" (p. 27);
+the same formula and symbols in thyssenkrupp rothe erde's current technical basics, "Calculation of the
+frictional torque".
 """
 
 from __future__ import annotations

@@ -41,7 +41,13 @@ _MM = 1.0e-3
 
 
 def sphere_conformity(gamma):
-    """Outer "conformity" R_o/D_w of a spherical outer raceway [-]: (1 + γ)/(2γ), γ = D_w cos α/d_m."""
+    """Outer "conformity" R_o/D_w of a spherical outer raceway [-]: (1 + γ)/(2γ).
+
+    Parameters
+    ----------
+    gamma : array_like
+        γ = D_w cos α / d_m [-] (R_o = d_m/(2 cos α) + D_w/2, Harris & Kotzalas 2007 ch. 1).
+    """
     g = np.asarray(gamma, float)
     return (1.0 + g) / (2.0 * g)
 
