@@ -219,6 +219,7 @@ def analyze(
 @app.command()
 def schema():
     """Print the JSON Schema of the input file."""
+    from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
     from bearingkit.io.schema import json_schema
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")

@@ -24,7 +24,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.io import schema
+from bearingkit.io import kinds, schema
 
 #: Inner-ring DOF names, in the solver's order.
 DOF_NAMES = schema.DOF_CHOICES
@@ -186,6 +186,7 @@ BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
     "ptrb": _ptrb,
     "ball_column": _ball_column,
 }
+kinds.register(BUILDERS, schema.GEOMETRY_MODELS)  # four-point, slewing, spherical, self-aligning, needle
 assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
 
 

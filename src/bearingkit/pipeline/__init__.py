@@ -7,6 +7,7 @@ the parts of the returned :class:`Analysis`; none of them orchestrates by itself
 from bearingkit.pipeline.analysis import RENDERERS, Analysis, analyze
 from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
 from bearingkit.pipeline.inputs import ModelInput, load_cases_from, load_input
+from bearingkit.pipeline.kinds import slewing_friction  # registers friction model "slewing"
 from bearingkit.pipeline.operating import DEFAULT_TEMPERATURE, Operating
 
 __all__ = [
@@ -21,4 +22,5 @@ __all__ = [
     "load_cases_from",
     "load_input",
     "register_friction_model",
+    "slewing_friction",
 ]

@@ -35,6 +35,7 @@ from bearingkit.report.html_format import (
     fmt,
 )
 from bearingkit.report.html_inputs import _inputs_html
+from bearingkit.report.slewing import slewing_section_html
 
 _CSS = """
 body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:0;background:#f4f6f8;color:#1c2833;
@@ -356,6 +357,7 @@ def build_report(
     if notes:
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
+    body.append(slewing_section_html(bearing_input))  # slewing rings: static load diagram ("" otherwise)
     body.extend(_case_html(bearing_input, result, friction, rating, c, warnings) for c in range(n_cases))
     body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
     body.append(
