@@ -30,6 +30,9 @@ SI_UNITS: dict[str, str] = {
     "mass": "kg",
     "thermal_conductivity": "W/(m*K)",
     "time": "s",
+    "power": "W",
+    "thermal_conductance": "W/K",
+    "volume_flow": "m^3/s",
     "dimensionless": "",
 }
 

@@ -587,6 +587,9 @@ def _section_models(geometry_model) -> dict:
         "lubricant": schema.LubricantSpec,
         "load_cases": schema.LoadCaseSpec,
         "solver": schema.SolverSpec,
+        "operating": schema.OperatingSpec,
+        "fits": schema.FitsSpec,
+        "lubrication": schema.LubricationSpec,
     }
     if geometry_model is not None:
         models["geometry"] = geometry_model

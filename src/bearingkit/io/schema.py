@@ -14,6 +14,9 @@ File layout (see docs/input-format.md)::
     [lubricant]    name = "ISO_VG100"                     (optional)
     [[load_cases]] name, F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature
     [solver]       free, rtol, max_iterations             (optional)
+    [operating]    speed effects, tilt, preload, temperatures (optional)
+    [fits]         shaft / housing tolerance fields      (optional)
+    [lubrication]  contamination, roughness, grease      (optional)
 
 The geometry table depends on ``bearing.type``; :data:`GEOMETRY_MODELS` maps each type to its
 model, and :func:`json_schema` writes the dependency as JSON Schema ``if``/``then`` clauses.
@@ -156,8 +159,7 @@ class BearingHeader(_Strict):
         "estimated from the catalogue; [geometry] fields given override the estimate.",
     )
     C: quantity("force", "positive") | None = Field(
-        None,
-        description="Catalogue C the estimated element size is scaled to (with designation)."
+        None, description="Catalogue C the estimated element size is scaled to (with designation)."
     )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
@@ -251,6 +253,66 @@ class SolverSpec(_Strict):
         return value
 
 
+class OperatingSpec(_Strict):
+    """``[operating]``: speed effects, imposed misalignment, preload and temperatures (docs/operating.md)."""
+
+    speed_effects: bool | None = Field(
+        None, description="Element inertia at speed in the statics (centrifugal force, gyroscopic moment)."
+    )
+    raceway_control: Literal["outer", "inner"] | None = Field(
+        None, description="Ball spin-axis hypothesis at speed (default outer)."
+    )
+    tilt_x: Angle | None = Field(None, description="Imposed tilt θ_x of the inner ring against the outer.")
+    tilt_y: Angle | None = Field(None, description="Imposed tilt θ_y of the inner ring against the outer.")
+    preload_force: quantity("force", "positive") | None = Field(
+        None, description="Axial preload force (the solver finds the displacement)."
+    )
+    preload_displacement: quantity("length", "positive") | None = Field(
+        None, description="Axial preload as a displacement (interference of the rows)."
+    )
+    temperature_inner_ring: Temperature | None = None
+    temperature_outer_ring: Temperature | None = None
+    temperature_shaft: Temperature | None = None
+    temperature_housing: Temperature | None = None
+    temperature_elements: Temperature | None = None
+    temperature_ambient: Temperature | None = Field(
+        None, description="Ambient (heat balance), default 20 °C."
+    )
+    heat_dissipation: quantity("thermal_conductance", "positive") | None = Field(
+        None, description="Heat flow out of the bearing per kelvin above ambient (heat balance)."
+    )
+
+
+class FitsSpec(_Strict):
+    """``[fits]``: shaft and housing seats → operating clearance (docs/operating.md)."""
+
+    shaft: str | None = Field(None, description="ISO 286 field of the shaft seat, e.g. k5.")
+    housing: str | None = Field(None, description="ISO 286 field of the housing seat, e.g. H7.")
+    statistic: Literal["mean", "min", "max"] | Dimensionless = Field(
+        "mean", description="mean, min, max or a percentile in (0, 100)."
+    )
+    shaft_interference: Length | None = None
+    housing_interference: Length | None = None
+    shaft_bore: NonNegativeLength | None = Field(None, description="Bore of a hollow shaft.")
+    housing_outer_diameter: PositiveLength | None = Field(None, description="Default: a large housing.")
+    shaft_material: str | None = Field(None, description="Material preset (default structural_steel).")
+    housing_material: str | None = Field(None, description="Material preset (default structural_steel).")
+
+
+class LubricationSpec(_Strict):
+    """``[lubrication]``: cleanliness, roughness and grease data (docs/operating.md)."""
+
+    contamination: str | Dimensionless | None = Field(
+        None, description="ISO 281 e_C or a level name (normal_cleanliness, slight_contamination, …)."
+    )
+    roughness_element: NonNegativeLength | None = None
+    roughness_raceway: NonNegativeLength | None = None
+    grease: Literal["general_purpose", "wide_range"] | None = None
+    grease_limiting_speed: AngularVelocity | None = Field(
+        None, description="Catalogue limiting speed with grease (grease life)."
+    )
+
+
 class BearingFile(_Strict):
     """A whole input file (geometry validated separately, by :data:`GEOMETRY_MODELS`)."""
 
@@ -263,6 +325,9 @@ class BearingFile(_Strict):
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(default_factory=list)
     solver: SolverSpec = Field(default_factory=SolverSpec)
+    operating: OperatingSpec | None = None
+    fits: FitsSpec | None = None
+    lubrication: LubricationSpec | None = None
 
     @field_validator("load_cases")
     @classmethod

@@ -142,9 +142,7 @@ def get(name: str) -> Evaluator:
         if not isinstance(obj, Evaluator):
             raise InputError(f"evaluator ({name!r}) is a {type(obj).__name__}, not an Evaluator")
         return obj
-    raise InputError(
-        f"evaluator ({name!r}) must be one of {', '.join(available())} or 'module:attribute'"
-    )
+    raise InputError(f"evaluator ({name!r}) must be one of {', '.join(available())} or 'module:attribute'")
 
 
 def evaluate_chunk(evaluator_name: str, cases):
