@@ -414,6 +414,22 @@ class Analysis:
         return RENDERERS["html"](self, path, **options)
 
 
+def _check_lubricant_range(bearing, operating) -> None:
+    """One line for a temperature outside the lubricant's viscosity–temperature range."""
+    from bearingkit.lubricants import WALTHER_TEMPERATURE_MAX_C, WALTHER_TEMPERATURE_MIN_C
+
+    if operating.lubricant is None:
+        return
+    for i, t in enumerate(operating.temperature):
+        if not WALTHER_TEMPERATURE_MIN_C <= t <= WALTHER_TEMPERATURE_MAX_C:
+            side = "below" if t < WALTHER_TEMPERATURE_MIN_C else "above"
+            raise InputError(
+                f"{bearing.source}: load case {bearing.cases[i].name!r}: temperature ({t:g} °C) is {side} "
+                f"the range of lubricant {operating.lubricant.name!r} ({WALTHER_TEMPERATURE_MIN_C:g} … "
+                f"{WALTHER_TEMPERATURE_MAX_C:g} °C, its viscosity–temperature law); expected one in it"
+            )
+
+
 def analyze(
     source,
     *,
@@ -476,6 +492,7 @@ def analyze(
         contamination=e_c,
         reliability=reliability,
     )
+    _check_lubricant_range(bearing, operating)
     out = Analysis(
         bearing,
         operating,

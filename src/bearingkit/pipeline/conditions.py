@@ -163,6 +163,13 @@ def preload_for_force(model, force: float, options=None, base_offsets=None) -> f
     return 0.5 * (lo + hi)
 
 
+def _sections(bearing):
+    """The input's parsed [operating]/[fits]/[lubrication] sections (empty for an input built in code)."""
+    from bearingkit.io.schema_operating import OperatingSections
+
+    return bearing.sections if bearing.sections is not None else OperatingSections()
+
+
 def _coplanar(model) -> bool:
     positions = {round(float(np.max(getattr(r, "axial_position", 0.0))), 12) for r in model.rows}
     return len(positions) == 1
@@ -191,8 +198,8 @@ def _clearance(analysis):
     from bearingkit.analysis.clearance import FitConditions, Temperatures, operating_clearance
     from bearingkit.materials import get_material
 
-    spec = analysis.input.spec
-    fits, opsec = spec.fits, spec.operating
+    sections = _sections(analysis.input)
+    fits, opsec = sections.fits, sections.operating
     temps_given = opsec is not None and any(
         getattr(opsec, f"temperature_{k}") is not None
         for k in ("inner_ring", "outer_ring", "shaft", "housing")
@@ -243,7 +250,7 @@ def _clearance(analysis):
 def statics_setup(analysis) -> StaticsSetup:
     """The solve arguments of ``analysis`` (module docstring)."""
     b = analysis.input
-    spec = b.spec.operating
+    spec = _sections(b).operating
     n = analysis.n_cases
     load = b.load_matrix().copy()
     free = np.array(b.free, dtype=bool)

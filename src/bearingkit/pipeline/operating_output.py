@@ -37,9 +37,11 @@ HOUR = 3600.0
 def resolve_contamination(bearing, value):
     """(e_C, level name or None) from a number, an ISO 281 level name, or the file's ``[lubrication]``."""
     from bearingkit.physics.life.iso281_contamination import contamination_factor, contamination_levels
+    from bearingkit.pipeline.conditions import _sections
 
-    if value is None and bearing.spec.lubrication is not None:
-        value = bearing.spec.lubrication.contamination
+    lub = _sections(bearing).lubrication
+    if value is None and lub is not None:
+        value = lub.contamination
     if value is None:
         return None, None
     if isinstance(value, str) and value.strip() in contamination_levels():
@@ -169,7 +171,10 @@ def lubrication(analysis):
     op, b = analysis.operating, analysis.input
     if op.lubricant is None:
         return None
-    spec = b.spec.lubrication
+    from bearingkit.pipeline.conditions import _sections
+
+    spec = _sections(b).lubrication
+    opsec = _sections(b).operating
     rough_e = ROUGHNESS_ELEMENT if spec is None or spec.roughness_element is None else spec.roughness_element
     rough_r = ROUGHNESS_RACEWAY if spec is None or spec.roughness_raceway is None else spec.roughness_raceway
     zero = np.zeros_like(op.speed)
@@ -190,8 +195,8 @@ def lubrication(analysis):
             from bearingkit.physics.lubrication.grease_life import grease_life
 
             outer = op.temperature
-            if b.spec.operating is not None and b.spec.operating.temperature_outer_ring is not None:
-                outer = np.full_like(op.temperature, b.spec.operating.temperature_outer_ring)
+            if opsec is not None and opsec.temperature_outer_ring is not None:
+                outer = np.full_like(op.temperature, opsec.temperature_outer_ring)
             grease = grease_life(op.abs_speed, spec.grease_limiting_speed, outer, spec.grease)
             notes.append(
                 "grease life: NSK catalogue formula for sealed deep groove ball bearings (loads ≤ C/10)"
