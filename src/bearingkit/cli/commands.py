@@ -315,7 +315,13 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings).",
+        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+    ),
+    compare: bool = typer.Option(
+        False, "--compare", help="Every model that applies side by side, with when each applies."
+    ),
+    heat: bool = typer.Option(
+        False, "--heat", help="Heat balance (operating temperature) and thermal reference speed (ISO 15312)."
     ),
     as_json: bool = _JSON_OPTION,
 ):
@@ -335,6 +341,21 @@ def friction(
         )
     if model == "components":
         _fail_unconverged(file, a)
+    if compare or heat:
+        from bearingkit.cli.operating_tables import comparison_text, heat_text
+
+        data = a.friction_comparison() if compare else a.heat_dict(model)
+        if compare and heat:
+            data["heat"] = a.heat_dict(model)
+        if as_json:
+            _print_json(file, data)
+            return
+        _header(a, file)
+        if compare:
+            console.print(comparison_text(data))
+        if heat:
+            console.print(heat_text(data["heat"] if compare else data))
+        return
     data = a.friction_dict(model)
     if as_json:
         _print_json(file, data)

@@ -87,3 +87,47 @@ def lubrication_table(c: dict):
             _opt(r["min_film_parameter"]),
         )
     return table
+
+
+def comparison_text(data: dict) -> Group:
+    """The friction models side by side (torque and power per case) and when each applies."""
+    table = Table(title="friction models side by side")
+    table.add_column("model", justify="left", no_wrap=True)
+    for case in data["cases"]:
+        table.add_column(f"{case} N·m", justify="right", no_wrap=True)
+        table.add_column(f"{case} W", justify="right", no_wrap=True)
+    lines = []
+    for name, m in data["models"].items():
+        if "not_applicable" in m:
+            table.add_row(name, *(["n/a"] * 2 * len(data["cases"])))
+            lines.append(Text(f"  {name}: not applicable here: {m['not_applicable']}", style="dim"))
+        else:
+            cells = [f"{v:.4g}" for pair in zip(m["total_Nm"], m["power_loss_W"], strict=True) for v in pair]
+            table.add_row(name, *cells)
+        lines.append(Text(f"  {name}: {m['when']}"))
+    lines += [Text(f"  note: {n}", style="dim") for n in data["notes"]]
+    return Group(table, *lines)
+
+
+def heat_text(data: dict) -> Group:
+    """Heat balance per case and the thermal reference speed."""
+    lines = []
+    n_ref = data["thermal_reference_speed_rad_s"]
+    if n_ref is None:
+        lines.append(f"  thermal reference speed: not available ({data['thermal_reference_speed_note']})")
+    else:
+        lines.append(
+            f"  thermal reference speed (ISO 15312 method, model's friction): {n_ref * RPM:.4g} r/min"
+        )
+    for c in data["cases"]:
+        t = (
+            "no balance below 250 °C (runaway)"
+            if c["temperature_C"] is None
+            else f"{c['temperature_C']:.4g} °C"
+        )
+        lines.append(
+            f"  case {c['case']!r}: heat balance at {t}, power loss {c['power_loss_W']:.4g} W, dissipation "
+            f"{c['heat_dissipation_W_K']:.3g} W/K to {c['ambient_C']:g} °C ({c['friction_model']} friction)"
+        )
+        lines += [f"  note: {n}" for n in c["notes"]]
+    return Group(*(Text(x) for x in lines))

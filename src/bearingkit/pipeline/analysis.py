@@ -362,6 +362,34 @@ class Analysis:
             cases.append(d)
         return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
 
+    def friction_comparison(self) -> dict:
+        """Every friction model that applies, side by side, with when each applies
+        (:func:`bearingkit.pipeline.friction_extra.compare`)."""
+        from bearingkit.pipeline.friction_extra import compare
+
+        return {**self._header(), **compare(self), "notes_run": self.notes}
+
+    def heat_dict(self, model: str | None = None) -> dict:
+        """Heat balance (operating temperature) and the model's thermal reference speed (ISO 15312
+        method), JSON-ready (:mod:`bearingkit.pipeline.thermal`)."""
+        from bearingkit.pipeline import thermal
+
+        model = model or self.friction_model
+        balance = self._in_file(thermal.heat_balance, self, model)
+        try:
+            n_ref = self._in_file(
+                thermal.thermal_reference_speed, self, "skf" if model == "components" else model
+            )
+            why = None
+        except InputError as exc:
+            n_ref, why = None, str(exc)
+        return {
+            **self._header(),
+            "thermal_reference_speed_rad_s": None if n_ref is None or np.isnan(n_ref) else float(n_ref),
+            "thermal_reference_speed_note": why,
+            "cases": [{"case": c, **balance.to_dict(i)} for i, c in enumerate(self.case_names)],
+        }
+
     def to_dict(self) -> dict:
         """Everything computed for every case, JSON-ready (SI values, units in keys)."""
         out = self.statics_dict()
