@@ -168,8 +168,10 @@ def flag_beyond_model(result) -> None:
         return
     from bearingkit.rows.ball_speed import ANGLE_LIMIT, beyond_model
 
-    for state in result.rows:
-        bad = beyond_model(state) & result.converged
+    for row, state in zip(result.model.rows, result.rows, strict=True):
+        if row.kind != "ball":
+            continue
+        bad = beyond_model(state, row.contact_angle) & result.converged
         if not bad.any():
             continue
         ex = state.extras
@@ -179,7 +181,7 @@ def flag_beyond_model(result) -> None:
             result.converged[c] = False
             result.reason[c] = (
                 f"speed {rpm:.6g} r/min is above what the high-speed ball model holds: in row "
-                f"{state.name!r} a loaded ball's contact angle reaches {worst:.1f} deg (limit "
-                f"{np.degrees(ANGLE_LIMIT):.1f}): the centrifugal force has pushed it over the raceway; "
-                "reduce the speed or add axial load"
+                f"{state.name!r} a loaded ball's contact angle reaches {worst:.1f} deg: the centrifugal "
+                "force has pushed it over the raceway (angular rows: limit "
+                f"{np.degrees(ANGLE_LIMIT):.1f} deg); reduce the speed or add axial load"
             )

@@ -35,6 +35,10 @@ __all__ = ["StaticsSetup", "preload_for_force", "row_directions", "statics_setup
 PRELOAD_SEARCH_LIMIT = 0.01
 #: Relative tolerance on the preload force.
 PRELOAD_RTOL = 1e-9
+#: Element centrifugal force below this share of the external load: speed effects are left out (the
+#: turntable bearings of the seeds at ≤ 90 rpm: F_c ~ 1e-8 of the load), so slow bearings keep exactly
+#: the zero-speed statics [-].
+NEGLIGIBLE_INERTIA = 1e-6
 
 
 @dataclass
@@ -175,6 +179,31 @@ def _coplanar(model) -> bool:
     return len(positions) == 1
 
 
+def _negligible(analysis, density: float) -> bool:
+    """True when every element's centrifugal force (at the orbital speed of the faster ring's half, an
+    upper bound) is below :data:`NEGLIGIBLE_INERTIA` of the case's load, in every case."""
+    from bearingkit.physics.dynamics import centrifugal
+
+    op = analysis.operating
+    load = np.abs(analysis.input.load_matrix()[:, :3]).max(axis=1)
+    if np.any(load == 0.0):
+        return False
+    f_c = np.zeros(op.n_cases)
+    for r in analysis.input.model.rows:
+        d = float(np.max(getattr(r, "element_diameter", getattr(r, "large_diameter", 0.0))))
+        dm = float(np.max(getattr(r, "pitch_diameter", 0.0)))
+        if d <= 0 or dm <= 0:
+            continue
+        length = float(np.max(getattr(r, "effective_length", d)))
+        mass = (
+            centrifugal.ball_mass(d, density)
+            if r.kind == "ball"
+            else centrifugal.roller_mass(d, length, density)
+        )
+        f_c = np.maximum(f_c, centrifugal.centrifugal_force(mass, dm / 2, op.abs_speed / 2))
+    return bool(np.all(f_c < NEGLIGIBLE_INERTIA * load))
+
+
 def _speed(analysis, spec):
     from bearingkit.analysis.speed import OperatingSpeed
 
@@ -184,6 +213,11 @@ def _speed(analysis, spec):
     if not np.any(op.speed != 0.0):
         return None, []
     density = float(getattr(analysis.input.material, "density", 7810.0))
+    if _negligible(analysis, density):
+        return None, [
+            "speed effects negligible at these speeds (element centrifugal forces below "
+            f"{NEGLIGIBLE_INERTIA:g} of the load): the zero-speed statics are used"
+        ]
     control = (spec.raceway_control if spec is not None else None) or "outer"
     zero = np.zeros_like(op.speed)
     inner, outer = (op.speed, zero) if op.rotating == "inner" else (zero, op.speed)

@@ -71,8 +71,6 @@ def reference_surface_of(analysis) -> float:
 def _sibling(analysis, *, temperature=None, speed=None, load=None, lubricant=None):
     """An Analysis of the same bearing at other operating values, sharing the solved statics when the
     loads are the same (friction depends on the temperature only through the lubricant)."""
-    from bearingkit.pipeline.analysis import Analysis
-
     op = analysis.operating
     n = op.n_cases
     changes = {}
@@ -84,7 +82,7 @@ def _sibling(analysis, *, temperature=None, speed=None, load=None, lubricant=Non
     if lubricant is not None:
         changes.update(lubricant=lubricant)
     bearing = analysis.input if load is None else analysis.input.with_cases(load)
-    sib = Analysis(
+    sib = type(analysis)(
         bearing,
         dataclasses.replace(op, **changes),
         friction_model=analysis.friction_model,

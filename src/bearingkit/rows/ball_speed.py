@@ -64,6 +64,10 @@ STEEL_DENSITY = 7810.0
 #: contact normal is axial and the raceway geometry of the row ends); the kinematics hold their
 #: value there so that the solver stays finite, and :func:`beyond_model` flags the case.
 ANGLE_LIMIT = np.radians(89.5)
+#: Free contact angle above which a row is a thrust row [rad]: its contacts sit near 90° by design; it is
+#: beyond the model when a loaded contact turns more than :data:`THRUST_SWING` from the free angle.
+THRUST_ANGLE = np.radians(60.0)
+THRUST_SWING = np.radians(45.0)
 
 
 def _rot(n):
@@ -134,6 +138,9 @@ class BallSpeedKernel(BallKernel):
         self.inertia = centrifugal.ball_inertia(d, density)
         self.density = float(density)
         # Tolerance floor of a ball's balance [N]: BALL_RTOL of a contact's load at 1e-4 D approach.
+        # Angular rows: the kinematics are held below 90° (past it the ball rides over the raceway);
+        # thrust rows (|α₀| > 60°) turn about 90° by design and keep their angles.
+        self.angle_cap = ANGLE_LIMIT if float(np.max(np.abs(row.contact_angle))) <= THRUST_ANGLE else np.pi
         self.force_floor = BALL_RTOL * float(np.max(self.k_o * (1e-4 * d) ** POINT_EXPONENT))
         # Regularisation of a ball's 2×2 system [N/m]: 1e-12 of a contact's stiffness at 1e-4 D, far
         # below any closed contact, never zero (a ball with both contacts open at zero speed).
@@ -156,9 +163,10 @@ class BallSpeedKernel(BallKernel):
         """F_c and M_g (C, Z) at the contact angles, with their derivatives by the complex step."""
         h = COMPLEX_STEP
         # Hold the kinematics at the limit angle beyond it (finite, zero derivative there).
-        in_i, in_o = np.abs(alpha_i) < ANGLE_LIMIT, np.abs(alpha_o) < ANGLE_LIMIT
-        alpha_i = np.where(in_i, alpha_i, np.sign(alpha_i) * ANGLE_LIMIT)
-        alpha_o = np.where(in_o, alpha_o, np.sign(alpha_o) * ANGLE_LIMIT)
+        cap = self.angle_cap
+        in_i, in_o = np.abs(alpha_i) < cap, np.abs(alpha_o) < cap
+        alpha_i = np.where(in_i, alpha_i, np.sign(alpha_i) * cap)
+        alpha_o = np.where(in_o, alpha_o, np.sign(alpha_o) * cap)
 
         def terms(a_i, a_o):
             sp = ball_kinematics.ball_speeds(self.w_i, self.w_o, a_i, a_o, self.d, self.dm, self.control)
@@ -382,7 +390,7 @@ class BallSpeedKernel(BallKernel):
         ev = dict(
             ev, alpha_i=np.where(idle, line, ev["alpha_i"]), alpha_o=np.where(idle, line, ev["alpha_o"])
         )
-        clip = lambda a: np.clip(a, -ANGLE_LIMIT, ANGLE_LIMIT)  # noqa: E731
+        clip = lambda a: np.clip(a, -self.angle_cap, self.angle_cap)  # noqa: E731
         sp = ball_kinematics.ball_speeds(
             self.w_i, self.w_o, clip(ev["alpha_i"]), clip(ev["alpha_o"]), self.d, self.dm, self.control
         )
@@ -449,13 +457,20 @@ def _merge(old: dict, new: dict, mask: np.ndarray) -> dict:
     return out
 
 
-def beyond_model(state: RowState) -> np.ndarray:
-    """Cases (C,) where a loaded ball of a row at speed has a contact angle beyond :data:`ANGLE_LIMIT`
-    or a ball sub-problem that did not converge: the speed is above what the model holds."""
+def beyond_model(state: RowState, free_angle) -> np.ndarray:
+    """Cases (C,) where the speed is above what the model holds for a row at speed: a loaded ball of an
+    angular row with a contact angle past :data:`ANGLE_LIMIT`, a loaded ball of a thrust row turned
+    more than :data:`THRUST_SWING` from its free angle ``free_angle`` [rad], or a ball sub-problem that
+    did not converge."""
     ex = state.extras
     if "contact_angle_outer" not in ex:
         return np.zeros(state.load.shape[0], bool)
-    loaded_i = ex["load_inner"] > 0.0
-    steep = (np.abs(ex["contact_angle_inner"]) >= ANGLE_LIMIT) & loaded_i
-    steep |= (np.abs(ex["contact_angle_outer"]) >= ANGLE_LIMIT) & (ex["load_outer"] > 0.0)
+    thrust = float(np.max(np.abs(free_angle))) > THRUST_ANGLE
+    steep = np.zeros(state.load.shape, bool)
+    for side in ("inner", "outer"):
+        angle, loaded = ex[f"contact_angle_{side}"], ex[f"load_{side}"] > 0.0
+        if thrust:
+            steep |= (np.abs(angle - np.asarray(free_angle).reshape(-1, 1)) >= THRUST_SWING) & loaded
+        else:
+            steep |= (np.abs(angle) >= ANGLE_LIMIT) & loaded
     return steep.any(-1) | ~ex["ball_converged"].all(-1)

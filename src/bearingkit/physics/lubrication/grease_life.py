@@ -13,7 +13,8 @@ wide-range greases about −40 … 130 °C). The validity conditions are as the 
 them (found with the search tool); the coefficients are from memory of the NSK catalogue [M].
 
 References: NSK Rolling Bearings catalogue, "Grease life of sealed ball bearings" (handbook section
-Lubrication), NSK Ltd.
+Lubrication), NSK Ltd.; Booser E.R. (1974) Grease life forecast for ball bearings, Lubrication
+Engineering 30(11):536-541 (the life–temperature–speed pattern these formulas follow).
 """
 
 from __future__ import annotations
