@@ -338,6 +338,13 @@ def statics_setup(analysis) -> StaticsSetup:
             delta = spec.preload_displacement
             if delta is None:
                 delta = preload_for_force(model, spec.preload_force, b.options, offsets)
+                if delta == 0.0:
+                    notes.append(
+                        f"preload force {spec.preload_force:.6g} N: the bearing already carries more at "
+                        "rest (negative "
+                        "clearance or fits), so no preload displacement is added; the preload shown per "
+                        "row is it"
+                    )
                 notes.append(
                     f"preload force {spec.preload_force:.6g} N: rows {names} pushed {delta * 1e6:.4g} µm "
                     "axially "
