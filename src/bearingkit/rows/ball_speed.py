@@ -383,16 +383,17 @@ class BallSpeedKernel(BallKernel):
         q = np.asarray(q, dtype=float)
         s, a = self._local(q, offset)
         x, ev, done = self._solve_balls(s, a)
-        # A ball touching neither raceway (at rest, outside the load zone) has no contact angle of
-        # its own: report the line of the groove centres, as the zero-speed row does.
-        idle = (ev["q_i"] == 0.0) & (ev["q_o"] == 0.0)
-        line = np.arctan2(s[..., 1], s[..., 0])
-        ev = dict(
-            ev, alpha_i=np.where(idle, line, ev["alpha_i"]), alpha_o=np.where(idle, line, ev["alpha_o"])
-        )
         clip = lambda a: np.clip(a, -self.angle_cap, self.angle_cap)  # noqa: E731
         sp = ball_kinematics.ball_speeds(
             self.w_i, self.w_o, clip(ev["alpha_i"]), clip(ev["alpha_o"]), self.d, self.dm, self.control
+        )
+        # An open contact (a ball off the inner ring at speed, or touching neither raceway at rest) has
+        # no contact angle of its own: report the line of the groove centres, as the zero-speed row does.
+        line = np.arctan2(s[..., 1], s[..., 0])
+        ev = dict(
+            ev,
+            alpha_i=np.where(ev["q_i"] == 0.0, line, ev["alpha_i"]),
+            alpha_o=np.where(ev["q_o"] == 0.0, line, ev["alpha_o"]),
         )
         shape = ev["q_i"].shape
         with np.errstate(divide="ignore", invalid="ignore"):
