@@ -47,7 +47,6 @@ PROTOTYPE_PITCH_DIAMETER = 42.5e-3
 #: n·P of the prototype, held when n changes (§5 (2): n = 8–16 ↔ P = 1.6–0.8 mm) [m].
 PROTOTYPE_THREAD_LENGTH = 12.0e-3
 
-
 def calibrate_contact_traction(
     geometry: PTRBGeometry | None = None,
     convention: str | None = None,
