@@ -159,7 +159,8 @@ class BearingHeader(_Strict):
         "estimated from the catalogue; [geometry] fields given override the estimate.",
     )
     C: quantity("force", "positive") | None = Field(
-        None, description="Catalogue C the estimated element size is scaled to (with designation)."
+        None,
+        description="Catalogue C the estimated element size is scaled to (with designation)."
     )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
