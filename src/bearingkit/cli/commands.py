@@ -119,7 +119,10 @@ _ROTATING_OPTION = typer.Option(
 )
 _LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
 _CONTAMINATION_OPTION = typer.Option(
-    None, "--contamination", help="ISO 281 e_C (0 … 1); with lubricant, speed and temperature gives a_ISO."
+    None,
+    "--contamination",
+    help="ISO 281 e_C (0 … 1) or a level (normal_cleanliness, slight_contamination, …); with lubricant, "
+    "speed and temperature gives a_ISO.",
 )
 
 
@@ -127,7 +130,6 @@ _CONTAMINATION_OPTION = typer.Option(
 _OPTION_UNITS = {
     "speed": ("angular_velocity", "--speed"),
     "temperature": ("temperature", "--temperature"),
-    "contamination": ("dimensionless", "--contamination"),
     "reliability": ("dimensionless", "--reliability"),
 }
 
@@ -205,8 +207,11 @@ def analyze(
         _print_json(file, data)
     else:
         _header(a, file)
+        from bearingkit.cli.operating_tables import operating_text
+
         for c in data["cases"]:
             console.print(case_table(c))
+            console.print(operating_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
@@ -270,20 +275,23 @@ def rating(
         reliability=reliability,
         load_ratings=_load_ratings(load_rating),
     )
-    if contamination is not None and a.operating.lubricant is None:
+    if a.operating.contamination is not None and a.operating.lubricant is None:
         raise InputError(
             f'{file}: lubricant: none given; add [lubricant] name = "ISO_VG100" (a preset of '
             "bearingkit.lubricants.LUBRICANTS) to the file or use --lubricant"
         )
-    if contamination is not None and not a.operating.temperature_given.all():
+    if a.operating.contamination is not None and not a.operating.temperature_given.all():
         raise InputError(f"{file}: --contamination needs a temperature: give --temperature 60degC")
     data = a.rating_dict()
     if as_json:
         _print_json(file, data)
     else:
         _header(a, file)
+        from bearingkit.cli.operating_tables import lubrication_table
+
         for c in data["cases"]:
             console.print(rating_table(c))
+            console.print(lubrication_table(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
     _fail_unconverged(file, a)
@@ -308,7 +316,13 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings).",
+        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+    ),
+    compare: bool = typer.Option(
+        False, "--compare", help="Every model that applies side by side, with when each applies."
+    ),
+    heat: bool = typer.Option(
+        False, "--heat", help="Heat balance (operating temperature) and thermal reference speed (ISO 15312)."
     ),
     as_json: bool = _JSON_OPTION,
 ):
@@ -328,6 +342,21 @@ def friction(
         )
     if model == "components":
         _fail_unconverged(file, a)
+    if compare or heat:
+        from bearingkit.cli.operating_tables import comparison_text, heat_text
+
+        data = a.friction_comparison() if compare else a.heat_dict(model)
+        if compare and heat:
+            data["heat"] = a.heat_dict(model)
+        if as_json:
+            _print_json(file, data)
+            return
+        _header(a, file)
+        if compare:
+            console.print(comparison_text(data))
+        if heat:
+            console.print(heat_text(data["heat"] if compare else data))
+        return
     data = a.friction_dict(model)
     if as_json:
         _print_json(file, data)

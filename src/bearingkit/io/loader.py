@@ -257,6 +257,8 @@ class BearingInput:
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
     options : bearingkit.analysis.quasistatic.SolverOptions
+    sections : bearingkit.io.schema_operating.OperatingSections
+        The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     """
 
     source: str
@@ -268,6 +270,7 @@ class BearingInput:
     cases: tuple
     free: np.ndarray
     options: object
+    sections: object = None
 
     @property
     def bearing_type(self) -> str:
@@ -365,6 +368,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     opts = {
         k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
     }
+    from bearingkit.io.schema_operating import validate_sections
+
+    sections = validate_sections(spec, source, _one_line)
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
@@ -378,6 +384,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         cases=cases,
         free=free,
         options=SolverOptions(**opts),
+        sections=sections,
     )
 
 

@@ -14,6 +14,9 @@ File layout (see docs/input-format.md)::
     [lubricant]    name = "ISO_VG100"                     (optional)
     [[load_cases]] name, F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature
     [solver]       free, rtol, max_iterations             (optional)
+    [operating]    speed effects, tilt, preload, temperatures (optional)
+    [fits]         shaft / housing tolerance fields      (optional)
+    [lubrication]  contamination, roughness, grease      (optional)
 
 The geometry table depends on ``bearing.type``; :data:`GEOMETRY_MODELS` maps each type to its
 model, and :func:`json_schema` writes the dependency as JSON Schema ``if``/``then`` clauses.
@@ -263,6 +266,15 @@ class BearingFile(_Strict):
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(default_factory=list)
     solver: SolverSpec = Field(default_factory=SolverSpec)
+    operating: dict[str, Any] | None = Field(
+        None, description="Speed effects, tilt, preload, temperatures (io.schema_operating.OperatingSpec)."
+    )
+    fits: dict[str, Any] | None = Field(
+        None, description="Shaft/housing fits (io.schema_operating.FitsSpec)."
+    )
+    lubrication: dict[str, Any] | None = Field(
+        None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
+    )
 
     @field_validator("load_cases")
     @classmethod

@@ -101,8 +101,14 @@ class _ModelHeader:
 
 
 @dataclass(frozen=True)
+class _ModelSolver:
+    free: tuple | None = None
+
+
+@dataclass(frozen=True)
 class _ModelSpec:
     bearing: _ModelHeader
+    solver: _ModelSolver
     geometry: dict = field(default_factory=dict)
 
 
@@ -124,6 +130,9 @@ class ModelInput:
     lubricant : Lubricant or str, optional
     source : str
         Name used in messages.
+    options : SolverOptions, optional
+    material : Material, optional
+        Element material (densities for speed effects); default GCr15 bearing steel.
     """
 
     model: object
@@ -132,6 +141,7 @@ class ModelInput:
     lubricant: object = None
     source: str = "<model>"
     options: object = None
+    material: object = None
 
     def __post_init__(self):
         from bearingkit.analysis.quasistatic import SolverOptions
@@ -147,6 +157,10 @@ class ModelInput:
             object.__setattr__(self, "lubricant", as_lubricant(self.lubricant))
         if self.options is None:
             object.__setattr__(self, "options", SolverOptions())
+        if self.material is None:  # the bearing steel the builders assume by default
+            from bearingkit.materials import get_material
+
+            object.__setattr__(self, "material", get_material("GCr15"))
 
     @functools.cached_property
     def cases(self) -> tuple:
@@ -158,8 +172,15 @@ class ModelInput:
         return str(self.model.metadata.get("bearing_type", "model"))
 
     @property
+    def sections(self):
+        """No [operating]/[fits]/[lubrication] sections: a model built in code has no file."""
+        return None
+
+    @property
     def spec(self) -> _ModelSpec:
-        return _ModelSpec(_ModelHeader(self.bearing_type, name=self.model.name))
+        free = tuple(n for n, f in zip(loader.DOF_NAMES, self.free, strict=True) if f)
+        # the code that built the model chose its free DOFs: no file defaults (such as fixed tilts) apply
+        return _ModelSpec(_ModelHeader(self.bearing_type, name=self.model.name), _ModelSolver(free))
 
     @property
     def geometry(self):

@@ -163,7 +163,7 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
+def _case_html(bearing, result, friction, rating, case: int, warnings, extra=None) -> str:
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
@@ -223,6 +223,9 @@ def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
         k += 1
     if rating is not None:
         parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
+        k += 1
+    if extra:
+        parts.append(extra(f"{case + 2}.{k}"))
         k += 1
     parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
@@ -296,7 +299,15 @@ def _check_shapes(bearing, result, friction, rating) -> None:
 
 
 def build_report(
-    bearing_input, result, *, friction=None, rating=None, title=None, notes=(), warnings=None
+    bearing_input,
+    result,
+    *,
+    friction=None,
+    rating=None,
+    title=None,
+    notes=(),
+    warnings=None,
+    case_extras=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -317,6 +328,8 @@ def build_report(
     warnings : list of list of str, optional
         Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
+    case_extras : list of callables, optional
+        Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
 
     Returns
     -------
@@ -358,7 +371,10 @@ def build_report(
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
     body.append(slewing_section_html(bearing_input))  # slewing rings: static load diagram ("" otherwise)
-    body.extend(_case_html(bearing_input, result, friction, rating, c, warnings) for c in range(n_cases))
+    extras = case_extras or [None] * n_cases
+    body.extend(
+        _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)
+    )
     body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
     body.append(
         "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "
