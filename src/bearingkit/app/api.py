@@ -30,6 +30,7 @@ from fastapi import FastAPI, HTTPException, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
+from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.middleware.trustedhost import TrustedHostMiddleware
 
 from bearingkit.app.form import (
@@ -37,6 +38,7 @@ from bearingkit.app.form import (
     MAX_TOML_BYTES,
     AnalyzeRequest,
     OpenRequest,
+    TooLarge,
     build_document,
     examples,
     field_of,
@@ -79,6 +81,8 @@ def _on_field(source: str):
     """Turn an InputError into a PageError naming the form field of its message."""
     try:
         yield
+    except TooLarge as exc:
+        raise PageError(str(exc), "source", status=413) from None
     except InputError as exc:
         raise PageError(str(exc), field_of(str(exc), source)) from None
 
@@ -179,8 +183,8 @@ def create_app(
         where = ".".join(str(p) for p in err.get("loc", ()) if p != "body") or "request"
         return _error(422, f"{where}: {err.get('msg', 'invalid')}", "source")
 
-    @app.exception_handler(HTTPException)
-    async def http_error(_request, exc: HTTPException):
+    @app.exception_handler(StarletteHTTPException)  # also the router's own 404/405
+    async def http_error(_request, exc: StarletteHTTPException):
         return _error(exc.status_code, str(exc.detail))
 
     @app.exception_handler(Exception)

@@ -31,6 +31,7 @@ __all__ = [
     "Opened",
     "Source",
     "StrictModel",
+    "TooLarge",
     "bearing_type_of",
     "build_document",
     "clearance_fields",
@@ -54,6 +55,10 @@ FRICTION_CHOICES = ("components", "skf", "palmgren")
 PAGE_CASE = "page"
 
 
+class TooLarge(InputError):
+    """An input file above :data:`MAX_TOML_BYTES` (the server answers 413)."""
+
+
 class StrictModel(BaseModel):
     """Request models: unknown fields are errors (a typo in a client is not silently ignored)."""
 
@@ -65,7 +70,7 @@ class Source(StrictModel):
 
     kind: Literal["example", "designation", "upload"]
     name: str = Field(min_length=1, max_length=256)
-    text: str | None = Field(None, max_length=MAX_TOML_BYTES)
+    text: str | None = None  # its size is checked with the file's name in the message (TooLarge)
 
 
 class OpenRequest(StrictModel):
@@ -96,8 +101,9 @@ def examples() -> list[str]:
 
 
 def _parse_toml(text: str, source: str) -> dict:
-    if len(text.encode("utf-8")) > MAX_TOML_BYTES:
-        raise InputError(f"{source}: file too large ({len(text.encode())} bytes); at most {MAX_TOML_BYTES}")
+    size = len(text.encode("utf-8"))
+    if size > MAX_TOML_BYTES:
+        raise TooLarge(f"{source}: file too large ({size} bytes); at most {MAX_TOML_BYTES} bytes")
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError:
@@ -112,7 +118,7 @@ def _source_document(source: Source) -> tuple[dict, str]:
             raise InputError(f"example ({source.name!r}) is not one of {', '.join(examples()) or 'none'}")
         path = EXAMPLES_DIR / source.name
         if path.stat().st_size > MAX_TOML_BYTES:
-            raise InputError(f"{source.name}: file too large; at most {MAX_TOML_BYTES} bytes")
+            raise TooLarge(f"{source.name}: file too large; at most {MAX_TOML_BYTES} bytes")
         return _parse_toml(path.read_text(encoding="utf-8"), source.name), source.name
     if source.kind == "designation":
         name = " ".join(source.name.split())
