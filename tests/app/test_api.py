@@ -130,7 +130,7 @@ def test_clearance_override_changes_the_bearing(client):
     ("fields", "field", "start"),
     [
         ({"loads": {"F_x": "6 kg"}}, "load.F_x", "dgbb_6209.toml: load_cases[0].F_x ('6 kg')"),
-        ({"loads": {"M_x": "5 N*m"}}, "load.M_x", "dgbb_6209.toml: load case 'radial_8.9kN': M_x"),
+        ({"loads": {"M_x": "5 N*m"}}, "load.M_x", "dgbb_6209.toml: load case 'radial_8.9kN (edited)': M_x"),
         ({"speed": "fast"}, "speed", "dgbb_6209.toml: load_cases[0].speed ('fast')"),
         ({"temperature": "70 kN"}, "temperature", "dgbb_6209.toml: load_cases[0].temperature ('70 kN')"),
         (

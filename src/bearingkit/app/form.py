@@ -176,6 +176,9 @@ def build_document(request: AnalyzeRequest) -> tuple[dict, str]:
         value = getattr(request, key).strip()
         if value:
             case[key] = value
+    edited = any(case.get(k) != base.get(k) for k in (*LOAD_FIELDS, "eccentricity", "speed", "temperature"))
+    if edited and base:  # the file's name would now describe another load (e.g. "radial_8.9kN" at 6 kN)
+        case["name"] = f"{base.get('name', PAGE_CASE)} (edited)"
     document["load_cases"] = [case]
     if request.geometry:
         header = document.get("bearing") if isinstance(document.get("bearing"), dict) else {}

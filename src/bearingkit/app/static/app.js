@@ -259,12 +259,12 @@ function renderSummary(c) {
 }
 
 function renderPolar(c) {
-  const size = 300, cx = size / 2, cy = size / 2 + 10, R = 112;
+  const size = 300, cx = size / 2, cy = size / 2 + 24, R = 108;
   const panels = c.rows.map((row) => {
     const q = row.loads_N, psi = row.azimuth_rad;
     const qmax = Math.max(0, ...q);
     const scale = qmax > 0 ? qmax : 1;
-    const s = svg("svg", { width: size, height: size + 20, viewBox: `0 0 ${size} ${size + 20}`, role: "img" });
+    const s = svg("svg", { width: size, height: size + 34, viewBox: `0 0 ${size} ${size + 34}`, role: "img" });
     s.append(svg("title", {}, `${row.name}: element loads at their azimuth`));
     for (const f of [1 / 3, 2 / 3, 1]) {
       s.append(svg("circle", { cx, cy, r: R * f, class: "grid" }));
@@ -291,9 +291,9 @@ function renderPolar(c) {
       s.append(wedge);
     });
     const loaded = q.filter((v) => v > 0).length;
-    s.append(svg("text", { x: cx, y: 13, "text-anchor": "middle", class: "title" },
-      `${row.name} (${row.kind}): ${loaded}/${q.length} loaded, Q_max ${fmt(qmax / 1e3, 4)} kN`));
-    s.append(svg("text", { x: 4, y: size + 16, "font-size": 9, fill: "#5d6b7a" }, "ψ from +x (right) towards +y (up)"));
+    s.append(svg("text", { x: 4, y: 13, class: "title" }, `${row.name} (${row.kind})`));
+    s.append(svg("text", { x: 4, y: 27, "font-size": 11 }, `${loaded}/${q.length} loaded, Q_max ${fmt(qmax / 1e3, 4)} kN`));
+    s.append(svg("text", { x: 4, y: size + 30, "font-size": 9, fill: "#5d6b7a" }, "ψ from +x (right) towards +y (up)"));
     return s;
   });
   $("polar").replaceChildren(...panels);
