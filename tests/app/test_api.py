@@ -355,3 +355,31 @@ def test_exposed_host_warns(monkeypatch, capsys):
     assert seen["host"] == "0.0.0.0"
     warning = f"warning: serving on 0.0.0.0: anyone who can reach this machine on port {port}"
     assert capsys.readouterr().err.startswith(warning)
+
+
+def test_cli_serve_on_a_busy_port_is_one_line_and_exit_2():
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app as cli_app
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        port = s.getsockname()[1]
+        result = CliRunner().invoke(cli_app, ["serve", "--port", str(port)])
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"error: --port ({port}) cannot be used on 127.0.0.1")
+    assert result.stderr.count("\n") == 1
+
+
+def test_downloads_live_in_one_temporary_folder_removed_at_shutdown(tmp_path, monkeypatch):
+    import tempfile
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # where the server's own folder goes
+    with TestClient(create_app(allowed_hosts=("testserver",))) as c:
+        r = analyze(c, loads={"F_x": "3 kN"}).json()
+        assert c.get(r["downloads"]["html"]).status_code == 200
+        (folder,) = tmp_path.iterdir()
+        assert folder.name.startswith("bearingkit-serve-")
+        assert sorted(p.name for p in folder.iterdir()) == [f"{r['id']}.html"]
+    assert list(tmp_path.iterdir()) == []

@@ -67,6 +67,7 @@ def serve(host: str = DEFAULT_HOST, port: int = DEFAULT_PORT, open_browser: bool
     import uvicorn
 
     from bearingkit.app.api import LOOPBACK_HOSTS, create_app
+    from bearingkit.app.store import Store
 
     _check_port(host, port)
     loopback = is_loopback(host)
@@ -77,7 +78,8 @@ def serve(host: str = DEFAULT_HOST, port: int = DEFAULT_PORT, open_browser: bool
         )
     shown = f"[{host}]" if ":" in host else host
     url = f"http://{'127.0.0.1' if host in ('0.0.0.0', '::') else shown}:{port}/"
-    app = create_app(allowed_hosts=LOOPBACK_HOSTS if loopback else ("*",), warm=True)
+    store = Store()
+    app = create_app(store, allowed_hosts=LOOPBACK_HOSTS if loopback else ("*",), warm=True)
     config = uvicorn.Config(app, host=host, port=port, log_level="warning", server_header=False)
     server = uvicorn.Server(config)
     echo(f"bearingkit serve: {url}  (Ctrl+C to stop)")
@@ -90,4 +92,7 @@ def serve(host: str = DEFAULT_HOST, port: int = DEFAULT_PORT, open_browser: bool
                 webbrowser.open(url)
 
         threading.Thread(target=opener, daemon=True).start()
-    server.run()
+    try:
+        server.run()
+    finally:  # also when the server stops without its shutdown (a second Ctrl+C)
+        store.close()

@@ -58,15 +58,31 @@ class Kept:
 
 
 class Store:
-    """Recent analyses (LRU, thread-safe) and the server's temporary folder."""
+    """Recent analyses (LRU, thread-safe) and the server's temporary folder.
+
+    Parameters
+    ----------
+    root : Path, optional
+        Folder for the downloads; default a new temporary folder, made when the first download is
+        written and removed by :meth:`close`.
+    max_kept : int
+    """
 
     def __init__(self, root: Path | None = None, max_kept: int = MAX_KEPT):
         self._own = root is None
-        self.root = Path(tempfile.mkdtemp(prefix="bearingkit-serve-")) if root is None else Path(root)
-        self.root.mkdir(parents=True, exist_ok=True)
+        self._root = None if root is None else Path(root)
         self.max_kept = max_kept
         self._kept: OrderedDict[str, Kept] = OrderedDict()
         self._lock = threading.Lock()
+
+    @property
+    def root(self) -> Path:
+        """The folder downloads are written to (a new temporary folder, made on first use)."""
+        with self._lock:
+            if self._root is None:
+                self._root = Path(tempfile.mkdtemp(prefix="bearingkit-serve-"))
+            self._root.mkdir(parents=True, exist_ok=True)
+            return self._root
 
     def put(self, key: str, kept: Kept) -> None:
         with self._lock:
@@ -75,7 +91,8 @@ class Store:
             while len(self._kept) > self.max_kept:
                 old, _ = self._kept.popitem(last=False)
                 for ext in DOWNLOADS:
-                    (self.root / f"{old}.{ext}").unlink(missing_ok=True)
+                    if self._root is not None:
+                        (self._root / f"{old}.{ext}").unlink(missing_ok=True)
 
     def get(self, key: str) -> Kept | None:
         with self._lock:
@@ -126,8 +143,9 @@ class Store:
         """Forget every analysis and remove the temporary folder (when the store made it)."""
         with self._lock:
             self._kept.clear()
-        if self._own:
-            shutil.rmtree(self.root, ignore_errors=True)
+            if self._own and self._root is not None:
+                shutil.rmtree(self._root, ignore_errors=True)
+                self._root = None
 
 
 def toml_text(kept: Kept) -> str:
