@@ -383,3 +383,17 @@ def test_downloads_live_in_one_temporary_folder_removed_at_shutdown(tmp_path, mo
         assert folder.name.startswith("bearingkit-serve-")
         assert sorted(p.name for p in folder.iterdir()) == [f"{r['id']}.html"]
     assert list(tmp_path.iterdir()) == []
+
+
+def test_examples_are_the_bearing_files_and_each_one_analyses(client):
+    names = client.get("/api/meta").json()["examples"]
+    bearing_files = sorted(
+        p.name for p in EXAMPLES.glob("*.toml") if "bearing" in tomllib.loads(p.read_text("utf-8"))
+    )
+    assert names == bearing_files and "dgbb_6209.toml" in names
+    for name in names:
+        if name.startswith("ball_column"):  # the coupled flexible ring takes seconds: one is enough
+            continue
+        r = client.post("/api/analyze", json={"source": {"kind": "example", "name": name}})
+        assert r.status_code == 200, (name, r.text)
+        assert r.json()["analysis"]["cases"][0]["converged"], name

@@ -12,8 +12,6 @@ from __future__ import annotations
 import json
 import shutil
 import socket
-import subprocess
-import sys
 import threading
 import time
 from pathlib import Path
@@ -98,17 +96,14 @@ def browser(tmp_path_factory):
 
 
 def cli_json(*args) -> dict:
-    """``bearingkit … --json`` in a subprocess: the command line's own numbers."""
-    proc = subprocess.run(
-        [sys.executable, "-m", "bearingkit", *args, "--json"],
-        capture_output=True,
-        text=True,
-        timeout=WAIT,
-        cwd=ROOT,
-        check=False,
-    )
-    assert proc.returncode == 0, proc.stderr
-    return json.loads(proc.stdout)
+    """``bearingkit … --json``: the command line's own numbers (its typer app, in this process)."""
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    result = CliRunner().invoke(app, [*args, "--json"])
+    assert result.exit_code == 0, result.stderr
+    return json.loads(result.stdout)
 
 
 def wait_for_analysis(driver, after: int) -> None:

@@ -93,11 +93,19 @@ class AnalyzeRequest(StrictModel):
     friction_model: Literal["components", "skf", "palmgren"] = "components"
 
 
+def _is_bearing_file(path: Path) -> bool:
+    """A bearing input file (a ``[bearing]`` table), not a shaft or study file of the same folder."""
+    try:
+        return path.stat().st_size <= MAX_TOML_BYTES and "bearing" in tomllib.loads(path.read_text("utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return False
+
+
 def examples() -> list[str]:
     """File names of the example bearings (``dgbb_6209.toml`` …), sorted."""
     if not EXAMPLES_DIR.is_dir():
         return []
-    return sorted(p.name for p in EXAMPLES_DIR.glob("*.toml") if p.is_file())
+    return sorted(p.name for p in EXAMPLES_DIR.glob("*.toml") if p.is_file() and _is_bearing_file(p))
 
 
 def _parse_toml(text: str, source: str) -> dict:
