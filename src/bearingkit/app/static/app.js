@@ -60,6 +60,19 @@ function niceTicks(lo, hi, n = 5) {
   return out;
 }
 
+// Ticks of a log axis (log10 values lo … hi): decades, and 2 and 5 times them when few decades show.
+function logTicks(lo, hi) {
+  const out = [];
+  const mantissas = hi - lo > 4 ? [1] : hi - lo > 1.5 ? [1, 3] : [1, 2, 5];
+  for (let d = Math.floor(lo); d <= Math.ceil(hi); d++) {
+    for (const m of mantissas) {
+      const v = d + Math.log10(m);
+      if (v >= lo - 1e-9 && v <= hi + 1e-9) out.push(v);
+    }
+  }
+  return out;
+}
+
 async function api(path, body) {
   const init = body === undefined ? {} : {
     method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body),
@@ -301,7 +314,7 @@ function renderPolar(c) {
 
 // A small x–y chart: series [{x: [...], y: [...], label}], with axes, ticks and optional log y.
 function chart({ width = 460, height = 230, series, xlabel, ylabel, title, logy = false, bad = [] }) {
-  const m = { l: 58, r: 12, t: 22, b: 38 };
+  const m = { l: 58, r: 24, t: 22, b: 38 };
   const s = svg("svg", { width, height, viewBox: `0 0 ${width} ${height}`, role: "img" });
   const xs = series.flatMap((se) => se.x), ys0 = series.flatMap((se) => se.y).filter((v) => v !== null && Number.isFinite(v) && (!logy || v > 0));
   if (!xs.length || !ys0.length) {
@@ -317,11 +330,10 @@ function chart({ width = 460, height = 230, series, xlabel, ylabel, title, logy 
   if (!logy && y0 > 0 && y0 < 0.5 * y1) y0 = 0;
   const px = (x) => m.l + ((x - x0) / (x1 - x0)) * (width - m.l - m.r);
   const py = (y) => height - m.b - ((y - y0) / (y1 - y0)) * (height - m.t - m.b);
-  const yt = logy ? niceTicks(Math.floor(y0), Math.ceil(y1), Math.min(6, Math.ceil(y1) - Math.floor(y0) || 1)).filter((v) => Number.isInteger(v) && v >= y0 - 1e-9 && v <= y1 + 1e-9)
-                  : niceTicks(y0, y1, 5);
+  const yt = logy ? logTicks(y0, y1) : niceTicks(y0, y1, 5);
   for (const v of yt) {
     s.append(svg("line", { x1: m.l, x2: width - m.r, y1: py(v), y2: py(v), class: "grid" }));
-    s.append(svg("text", { x: m.l - 4, y: py(v) + 4, "text-anchor": "end" }, logy ? `1e${v}` : fmt(v, 4)));
+    s.append(svg("text", { x: m.l - 4, y: py(v) + 4, "text-anchor": "end" }, logy ? fmt(10 ** v, 3) : fmt(v, 4)));
   }
   for (const v of niceTicks(x0, x1, 6)) {
     s.append(svg("line", { x1: px(v), x2: px(v), y1: height - m.b, y2: height - m.b + 4, class: "axis" }));
@@ -372,7 +384,7 @@ function bars(items, unit, title) {
   const top = Math.max(...items.map(([, v]) => Math.abs(v)), 1e-30);
   items.forEach(([name, v], i) => {
     const y = 22 + i * rowH;
-    const w = ((width - left - 70) * Math.abs(v)) / top;
+    const w = ((width - left - 95) * Math.abs(v)) / top;
     s.append(svg("text", { x: left - 6, y: y + 12, "text-anchor": "end" }, name.replaceAll("_", " ")));
     s.append(svg("rect", { x: left, y: y + 2, width: Math.max(w, v ? 1 : 0), height: rowH - 5, fill: "#2e86c1" }));
     s.append(svg("text", { x: left + w + 4, y: y + 12 }, `${fmt(v, 4)} ${unit}`));
