@@ -397,3 +397,9 @@ def test_examples_are_the_bearing_files_and_each_one_analyses(client):
         r = client.post("/api/analyze", json={"source": {"kind": "example", "name": name}})
         assert r.status_code == 200, (name, r.text)
         assert r.json()["analysis"]["cases"][0]["converged"], name
+
+
+def test_form_values_are_short_text(client):
+    data = error_of(analyze(client, loads={"F_x": "1" * 65 + " N"}), 422)
+    assert data["error"].startswith("loads.F_x:")
+    assert error_of(analyze(client, speed="1" * 65), 422)["error"].startswith("speed:")

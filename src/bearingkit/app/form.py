@@ -15,7 +15,7 @@ import copy
 import re
 import tomllib
 from pathlib import Path
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -73,6 +73,10 @@ class Source(StrictModel):
     text: str | None = None  # its size is checked with the file's name in the message (TooLarge)
 
 
+#: One value of the form (a number with its unit, a preset name): short text.
+FormText = Annotated[str, Field(max_length=64)]
+
+
 class OpenRequest(StrictModel):
     """Open a bearing."""
 
@@ -84,12 +88,14 @@ class AnalyzeRequest(StrictModel):
 
     source: Source
     case: str | None = Field(None, max_length=256, description="The file's load case the form started from.")
-    loads: dict[Literal["F_x", "F_y", "F_z", "M_x", "M_y", "eccentricity"], str] = Field(default_factory=dict)
-    speed: str = Field("", max_length=64)
-    temperature: str = Field("", max_length=64)
-    geometry: dict[str, str] = Field(default_factory=dict, max_length=8)
-    lubricant: str = Field("", max_length=64)
-    contamination: str = Field("", max_length=64)
+    loads: dict[Literal["F_x", "F_y", "F_z", "M_x", "M_y", "eccentricity"], FormText] = Field(
+        default_factory=dict
+    )
+    speed: FormText = ""
+    temperature: FormText = ""
+    geometry: dict[Annotated[str, Field(max_length=64)], FormText] = Field(default_factory=dict, max_length=8)
+    lubricant: FormText = ""
+    contamination: FormText = ""
     friction_model: Literal["components", "skf", "palmgren"] = "components"
 
 
