@@ -565,6 +565,21 @@ def shaft(
         _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)
 
 
+@app.command()
+@one_line_errors
+def serve(
+    port: int = typer.Option(8765, "--port", help="Port to listen on."),
+    open_browser: bool = typer.Option(False, "--open", help="Open the page in the default browser."),
+    host: str = typer.Option(
+        "127.0.0.1", "--host", help="Address to bind; anything but loopback exposes the app (no login)."
+    ),
+):
+    """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    from bearingkit.app import serve as run_server
+
+    run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
+
+
 def main() -> None:
     """Entry point: one-line errors for bad input, exit code 2."""
     try:
