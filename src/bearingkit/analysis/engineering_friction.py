@@ -39,6 +39,7 @@ from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
 from bearingkit.physics.friction import palmgren as friction_palmgren
 from bearingkit.physics.friction import skf as friction_skf
+from bearingkit.physics.friction import skf_terms
 from bearingkit.physics.life import iso76
 
 #: Registry of engineering friction models.
@@ -49,7 +50,7 @@ ENGINEERING_MODELS = {
 #: Component names (keys without the ``_Nm`` suffix) of each model; they add up to ``total``.
 MODEL_COMPONENTS = {"skf": ("rolling", "sliding", "seal", "drag"), "palmgren": ("viscous", "load")}
 #: Bearing types each model covers.
-BEARING_TYPES = {"skf": tuple(friction_skf.G_MODELS), "palmgren": friction_palmgren.palmgren_types()}
+BEARING_TYPES = {"skf": tuple(skf_terms.G_MODELS), "palmgren": friction_palmgren.palmgren_types()}
 #: Element diameter over ring section width, D_w / (D − d), so that D − d ≈ D_w / ELEMENT_TO_SECTION;
 #: typical of standard ball and roller bearings (6208: D_w = 12.7 mm, D − d = 40 mm → 0.32; NU 208:
 #: 11/40 → 0.28). [M] estimate, used only when the boundary dimensions are not given.
@@ -109,7 +110,7 @@ class EngineeringFrictionResult:
 
 def _tag_notes(model: str, bearing_type: str, series: str | None) -> tuple[str, ...]:
     if model == "skf":
-        c = friction_skf.series_constants(bearing_type, series)
+        c = skf_terms.series_constants(bearing_type, series)
         notes = []
         if c["tag"] == "M" or c["kz_tag"] == "M":
             notes.append(f"SKF constants of {bearing_type} series {c['series']} are [M] (not verified)")

@@ -38,6 +38,7 @@ from bearingkit.errors import InputError
 from bearingkit.lubricants import Lubricant, as_lubricant
 from bearingkit.physics.deviations import gaussian_deviations
 from bearingkit.physics.friction import trb as tf
+from bearingkit.physics.friction import trb_rheology as rh
 from bearingkit.physics.lubrication import ehl
 from bearingkit.physics.lubrication.traction import MU_BOUNDARY, flange_friction_force
 from bearingkit.rows.tapered import TaperedRow
@@ -101,10 +102,10 @@ class TRBOperatingPoint:
     roughness_rib: float = ROUGHNESS_RIB
     mu_coulomb: float = MU_BOUNDARY
     rolling_model: str = "aihara1987"
-    roelands_exponent: float | None = tf.ROELANDS_EXPONENT_LIU2022
+    roelands_exponent: float | None = rh.ROELANDS_EXPONENT_LIU2022
     flange_arm: str = "geometric"
     sliding_model: str = "limiting_shear"
-    limiting_shear_coeff: float = tf.SLIDING_LIMITING_SHEAR_COEFF
+    limiting_shear_coeff: float = rh.SLIDING_LIMITING_SHEAR_COEFF
 
     def __post_init__(self):
         for name in (
@@ -147,7 +148,7 @@ class TRBOperatingPoint:
         """Roelands index Z used in the tractive integral [-]."""
         if self.roelands_exponent is not None:
             return float(self.roelands_exponent)
-        return float(tf.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
+        return float(rh.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
 
 
 #: Share of M_ir carried by cone sliding traction above which the result warns [-] (bearingkit's

@@ -92,6 +92,17 @@ DEFAULT_END_RADIUS_RATIO = 0.9
 STEEL_DENSITY = 7830.0
 
 
+#: The solver kernel's constructor, registered by :mod:`bearingkit.rows.tapered_kernel` (which the
+#: package ``bearingkit.rows`` imports): the kernel needs this module's row and geometry, so this module
+#: cannot import the kernel without an import circle.
+_KERNEL_FACTORY: list = [None]
+
+
+def register_kernel(factory) -> None:
+    """Set the constructor ``factory(row) -> kernel`` of :meth:`TaperedRow.kernel`."""
+    _KERNEL_FACTORY[0] = factory
+
+
 @dataclass(frozen=True)
 class TaperedRow:
     """A row of Z tapered rollers between a cup (fixed) and a cone with a large rib (loaded).
@@ -301,9 +312,7 @@ class TaperedRow:
     def kernel(self):
         """Precompute the arrays the solver needs (done once per model): a
         :class:`~bearingkit.rows.tapered_kernel.TaperedKernel`."""
-        from bearingkit.rows.tapered_kernel import TaperedKernel
-
-        return TaperedKernel(self)
+        return _KERNEL_FACTORY[0](self)
 
 
 def _scalar(field, value):

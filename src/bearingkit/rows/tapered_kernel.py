@@ -28,6 +28,7 @@ from bearingkit.rows.tapered import (
     LINE_EXPONENT,
     TaperedRow,
     TapGeometry,
+    register_kernel,
 )
 
 #: Inner Newton iteration of the roller equilibrium: iteration cap, relative tolerance on each roller's
@@ -490,3 +491,6 @@ def _solve2(h, b):
         x0 = (a22[..., None] * b[..., 0] - a12[..., None] * b[..., 1]) / det[..., None]
         x1 = (-a21[..., None] * b[..., 0] + a11[..., None] * b[..., 1]) / det[..., None]
     return np.stack([x0, x1], axis=-1)
+
+
+register_kernel(TaperedKernel)

@@ -7,6 +7,7 @@ import math
 import pkgutil
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from pathlib import Path
 
 from bearingkit.errors import InputError
 
@@ -100,9 +101,7 @@ def _load_all() -> None:
     """Import every case module: the literature cases of this package, then the declared ones."""
     from importlib.metadata import entry_points
 
-    import bearingkit.validation as pkg
-
-    for mod in pkgutil.iter_modules(pkg.__path__):
+    for mod in pkgutil.iter_modules([str(Path(__file__).parent)]):
         if mod.name != "registry":
             importlib.import_module(f"bearingkit.validation.{mod.name}")
     for ep in entry_points(group=ENTRY_POINT_GROUP):

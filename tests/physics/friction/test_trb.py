@@ -8,6 +8,7 @@ from scipy import integrate, special
 
 from bearingkit.errors import InputError
 from bearingkit.physics.friction import trb as tf
+from bearingkit.physics.friction import trb_rheology as rh
 from bearingkit.physics.lubrication import ehl
 
 ETA = 0.04  # Pa·s
@@ -18,29 +19,29 @@ L = 13.66e-3  # m
 
 
 def test_roelands_ratio_is_one_at_zero_pressure_and_slope_alpha():
-    assert tf.roelands_viscosity_ratio(0.0, ETA) == pytest.approx(1.0)
-    z = tf.roelands_exponent(ALPHA, ETA)
+    assert rh.roelands_viscosity_ratio(0.0, ETA) == pytest.approx(1.0)
+    z = rh.roelands_exponent(ALPHA, ETA)
     dp = 1e3
-    slope = np.log(tf.roelands_viscosity_ratio(dp, ETA, z)) / dp
+    slope = np.log(rh.roelands_viscosity_ratio(dp, ETA, z)) / dp
     assert slope == pytest.approx(ALPHA, rel=1e-4)  # d ln η/dp at p = 0 equals Barus α
 
 
 def test_roelands_rejects_viscosity_below_eta_inf():
     with pytest.raises(InputError, match="viscosity"):
-        tf.roelands_viscosity_ratio(1e8, 5e-5)
+        rh.roelands_viscosity_ratio(1e8, 5e-5)
 
 
 def test_tractive_integral_limits():
-    assert tf.tractive_integral(0.0, 7e-5, ETA) == pytest.approx(7e-5, rel=1e-12)  # I = b
-    assert tf.tractive_integral(1e9, 0.0, ETA) == 0.0
+    assert rh.tractive_integral(0.0, 7e-5, ETA) == pytest.approx(7e-5, rel=1e-12)  # I = b
+    assert rh.tractive_integral(1e9, 0.0, ETA) == 0.0
 
 
 def test_tractive_integral_closed_form_for_linear_exponent():
     # Z = 1: η/η0 = exp(c cos θ); ∫0^{π/2} e^{c cosθ} cosθ dθ = (π/2)[I1(c) + L1(c)] + 1.
     p_max, b = 6e8, 5e-5
-    c = (np.log(ETA) + tf.ROELANDS_LN_ETA_INF) * p_max / tf.ROELANDS_PRESSURE
+    c = (np.log(ETA) + rh.ROELANDS_LN_ETA_INF) * p_max / rh.ROELANDS_PRESSURE
     exact = b * (0.5 * np.pi * (special.iv(1, c) + special.modstruve(1, c)) + 1.0)
-    assert tf.tractive_integral(p_max, b, ETA, 1.0) == pytest.approx(exact, rel=1e-10)
+    assert rh.tractive_integral(p_max, b, ETA, 1.0) == pytest.approx(exact, rel=1e-10)
 
 
 @pytest.mark.parametrize("p_max", [3e8, 1.3e9, 2.5e9])
@@ -48,14 +49,14 @@ def test_tractive_integral_against_adaptive_quadrature(p_max):
     b = 6e-5
 
     def f(x):
-        return tf.roelands_viscosity_ratio(p_max * np.sqrt(max(1.0 - (x / b) ** 2, 0.0)), ETA)
+        return rh.roelands_viscosity_ratio(p_max * np.sqrt(max(1.0 - (x / b) ** 2, 0.0)), ETA)
 
     ref = integrate.quad(f, 0.0, b, epsabs=0, epsrel=1e-12, limit=200)[0]
-    assert tf.tractive_integral(p_max, b, ETA) == pytest.approx(ref, rel=1e-8)
+    assert rh.tractive_integral(p_max, b, ETA) == pytest.approx(ref, rel=1e-8)
 
 
 def test_tractive_integral_broadcasts():
-    out = tf.tractive_integral(np.array([[1e8, 1e9]]), np.array([[1e-5], [2e-5]]), ETA)
+    out = rh.tractive_integral(np.array([[1e8, 1e9]]), np.array([[1e-5], [2e-5]]), ETA)
     assert out.shape == (2, 2)
     assert out[1, 0] == pytest.approx(2 * out[0, 0])
 
@@ -87,7 +88,7 @@ def test_rolling_friction_magnitude_is_hydrodynamic():
 
 
 def _sliding(
-    vs=2.5e-4, load=1776.0, u=1.39, z=tf.ROELANDS_EXPONENT_LIU2022, model="limiting_shear", lam=None
+    vs=2.5e-4, load=1776.0, u=1.39, z=rh.ROELANDS_EXPONENT_LIU2022, model="limiting_shear", lam=None
 ):
     kw = {} if lam is None else {"limiting_shear_coeff": lam}
     return tf.sliding_friction_force(vs, load, ETA, u, ALPHA, E_RED, R_X, L, z, model=model, **kw)
@@ -114,7 +115,7 @@ def test_sliding_traction_equals_newtonian_shear_with_implied_film():
     from bearingkit.physics.contact.line import line_contact
 
     c = line_contact(1776.0, L, R_X, E_RED)
-    i = tf.tractive_integral(c.max_pressure, c.half_width, ETA)
+    i = rh.tractive_integral(c.max_pressure, c.half_width, ETA)
     h = tf.sliding_film_thickness(ETA, 1.39, ALPHA, E_RED, R_X, 1776.0, L)
     assert _sliding(model="newtonian") == pytest.approx(2.5e-4 * ETA * L * i / h, rel=1e-12)
 
@@ -136,11 +137,11 @@ def test_limited_shear_integral_against_adaptive_quadrature(p_max, rate):
         p = p_max * np.sqrt(max(1.0 - (x / b) ** 2, 0.0))
         if p == 0.0:
             return 0.0
-        tau_n = ETA * tf.roelands_viscosity_ratio(p, ETA) * rate
+        tau_n = ETA * rh.roelands_viscosity_ratio(p, ETA) * rate
         return lam * p * -np.expm1(-tau_n / (lam * p))
 
     ref = 2.0 * integrate.quad(tau, 0.0, b, epsabs=0, epsrel=1e-12, limit=400)[0]
-    assert tf.limited_shear_integral(p_max, b, ETA, rate, limiting_shear_coeff=lam) == pytest.approx(
+    assert rh.limited_shear_integral(p_max, b, ETA, rate, limiting_shear_coeff=lam) == pytest.approx(
         ref, rel=1e-7
     )
 
@@ -163,7 +164,7 @@ def test_printed_newtonian_traction_is_not_physical_but_the_limited_one_is():
 
     vs = 104.72 * 0.02383 * 5e-4
     assert _sliding(vs, model="newtonian") / 1776.0 > MU_BOUNDARY  # above dry/boundary friction
-    assert _sliding(vs) / 1776.0 < tf.SLIDING_LIMITING_SHEAR_COEFF
+    assert _sliding(vs) / 1776.0 < rh.SLIDING_LIMITING_SHEAR_COEFF
 
 
 def test_mpa_reading_is_isoviscous():

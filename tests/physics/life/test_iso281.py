@@ -6,7 +6,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.physics.life import iso76, iso281, iso281_life
+from bearingkit.physics.life import iso76, iso281, iso281_life, iso281_load
 
 MM = 1e-3
 INCH = 25.4e-3
@@ -162,36 +162,43 @@ def test_p_deep_groove_table():
     c0, f0 = 7800.0, 13.9
     # f0 Fa / C0r = 1.03 -> e = 0.28, Y = 1.55
     fa = 1.03 * c0 / f0
-    assert iso281.equivalent_dynamic_load(fa / 0.2, fa, "deep_groove_ball", static_rating=c0, f0=f0) == (
+    assert iso281_load.equivalent_dynamic_load(fa / 0.2, fa, "deep_groove_ball", static_rating=c0, f0=f0) == (
         pytest.approx(fa / 0.2)
     )
-    assert iso281.equivalent_dynamic_load(
+    assert iso281_load.equivalent_dynamic_load(
         fa, fa, "deep_groove_ball", static_rating=c0, f0=f0
     ) == pytest.approx(0.56 * fa + 1.55 * fa)
-    assert iso281.equivalent_dynamic_load(1000.0, 0.0, "deep_groove_ball", static_rating=c0, f0=f0) == 1000.0
+    assert (
+        iso281_load.equivalent_dynamic_load(1000.0, 0.0, "deep_groove_ball", static_rating=c0, f0=f0)
+        == 1000.0
+    )
     with pytest.raises(InputError, match="relative_axial_load"):
-        iso281.equivalent_dynamic_load(100.0, 10 * c0 / f0, "deep_groove_ball", static_rating=c0, f0=f0)
+        iso281_load.equivalent_dynamic_load(100.0, 10 * c0 / f0, "deep_groove_ball", static_rating=c0, f0=f0)
 
 
 def test_p_angular_roller_thrust():
     a = np.radians(30)
-    assert iso281.equivalent_dynamic_load(1000.0, 2000.0, "angular_contact_ball", a) == pytest.approx(
+    assert iso281_load.equivalent_dynamic_load(1000.0, 2000.0, "angular_contact_ball", a) == pytest.approx(
         0.39 * 1000 + 0.76 * 2000
     )
-    assert iso281.equivalent_dynamic_load(1000.0, 500.0, "angular_contact_ball", a) == pytest.approx(1000.0)
+    assert iso281_load.equivalent_dynamic_load(1000.0, 500.0, "angular_contact_ball", a) == pytest.approx(
+        1000.0
+    )
     a = np.radians(15)
     e = 1.5 * np.tan(a)
-    assert iso281.equivalent_dynamic_load(1000.0, 0.5 * e * 1000, "radial_roller", a) == pytest.approx(1000.0)
-    assert iso281.equivalent_dynamic_load(1000.0, 2 * e * 1000, "radial_roller", a) == pytest.approx(
+    assert iso281_load.equivalent_dynamic_load(1000.0, 0.5 * e * 1000, "radial_roller", a) == pytest.approx(
+        1000.0
+    )
+    assert iso281_load.equivalent_dynamic_load(1000.0, 2 * e * 1000, "radial_roller", a) == pytest.approx(
         0.4 * 1000 + 0.4 / np.tan(a) * 2 * e * 1000
     )
-    assert iso281.equivalent_dynamic_load(0.0, 3000.0, "thrust_ball", np.pi / 2) == 3000.0
+    assert iso281_load.equivalent_dynamic_load(0.0, 3000.0, "thrust_ball", np.pi / 2) == 3000.0
     with pytest.raises(InputError, match="load_radial"):
-        iso281.equivalent_dynamic_load(10.0, 3000.0, "thrust_ball", np.pi / 2)
+        iso281_load.equivalent_dynamic_load(10.0, 3000.0, "thrust_ball", np.pi / 2)
     with pytest.raises(InputError, match="load_axial"):
-        iso281.equivalent_dynamic_load(1000.0, 10.0, "radial_roller", 0.0)
+        iso281_load.equivalent_dynamic_load(1000.0, 10.0, "radial_roller", 0.0)
     with pytest.raises(InputError, match="load_axial"):
-        iso281.equivalent_dynamic_load(1000.0, -1.0, "angular_contact_ball", 0.5)
+        iso281_load.equivalent_dynamic_load(1000.0, -1.0, "angular_contact_ball", 0.5)
 
 
 # --- life ------------------------------------------------------------------------------------------------

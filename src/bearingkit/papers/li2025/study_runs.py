@@ -5,7 +5,7 @@ SI units (m, N). ``examples/studies/seed002_clearance_map.toml``.
 
 from __future__ import annotations
 
-from bearingkit.studies.runner import StudyResult
+from bearingkit.studies.cases import StudyResult
 
 
 def seed002_clearance_map(result: StudyResult):

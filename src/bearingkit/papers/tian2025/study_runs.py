@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.studies.runner import StudyResult
+from bearingkit.studies.cases import StudyResult
 
 #: Seed 000 §6.2 / Fig. 20: eccentricity D > axial roller clearance A > groove curvature C > ball clearance B.
 SEED000_PUBLISHED_RANKING = ("D", "A", "C", "B")

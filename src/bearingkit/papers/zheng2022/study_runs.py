@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.papers.examples import run_example
-from bearingkit.studies.runner import StudyResult
+from bearingkit.studies.cases import StudyResult
 
 
 def seed004_optimize(case: str = "axial", *, pop_size=None, generations=None, **run) -> StudyResult:

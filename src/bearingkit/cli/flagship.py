@@ -4,11 +4,10 @@ SI inside; every section returns a rich renderable for the terminal and a JSON-r
 keys). Sections share one :class:`FlagshipContext`: the seed-000 composite turntable bearing
 (Tian et al. 2025, doi:10.3390/machines13070588) loaded once from ``examples/seed000_composite.toml``
 and its flagship load case (F_a = F_r = 3 kN, M = 600 N·m, 5 r/min) solved once; friction and
-ratings are computed from that one solve and cached on the context.
+ratings come from ONE :class:`~bearingkit.pipeline.Analysis` held by the context.
 
-Adding a section is one function decorated with :func:`flagship_section`. The HTML report is written
-last, by ``bearingkit.report.write_flagship_report(ctx, path)`` when that module provides it; the
-context then holds every section's dict in ``ctx.data`` (title → dict).
+Adding a section is one function decorated with :func:`flagship_section`. The HTML report of that
+analysis is written last; the context then holds every section's dict in ``ctx.data`` (title → dict).
 """
 
 from __future__ import annotations
@@ -24,8 +23,8 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-#: Repository examples (src/bearingkit/flagship.py → ../../examples).
-EXAMPLES_DIR = Path(__file__).resolve().parents[2] / "examples"
+#: Repository examples (src/bearingkit/cli/flagship.py → ../../../examples).
+EXAMPLES_DIR = Path(__file__).resolve().parents[3] / "examples"
 #: The flagship input file and load case (seed 000, sections 6.1.4–6.1.5: F_a = F_r = 3 kN, M = 600 N·m).
 FLAGSHIP_FILE = EXAMPLES_DIR / "seed000_composite.toml"
 FLAGSHIP_CASE = "flagship"
@@ -35,13 +34,16 @@ FLAGSHIP_HERTZ_LOAD = 1000.0
 FLAGSHIP_LUBRICANT = "seed000_grease_assumed"
 #: Reliability of the flagship ratings [-] (L10: ISO 281 a1 = 1).
 FLAGSHIP_RELIABILITY = 0.9
+#: Temperature of the flagship friction [°C]: that of the seed-000 Table 3 calibration (room-temperature
+#: rig, :mod:`bearingkit.papers.tian2025.validation`), not the 40 °C the example file assumes for its cases.
+FLAGSHIP_TEMPERATURE = 25.0
 #: Where run-flagship writes the HTML report (relative to the working directory).
 FLAGSHIP_REPORT = Path("out") / "report.html"
 
 
 @dataclass
 class FlagshipContext:
-    """What flagship sections share: the seed-000 input, its solved flagship case, friction, ratings.
+    """What flagship sections share: ONE :class:`~bearingkit.pipeline.Analysis` of the flagship case.
 
     Attributes
     ----------
@@ -53,58 +55,43 @@ class FlagshipContext:
 
     file: Path = FLAGSHIP_FILE
     case: str = FLAGSHIP_CASE
-    _bearing: object = None
-    _result: object = None
-    _friction: object = None
-    _rating: object = None
+    _analysis: object = None
     data: dict = field(default_factory=dict)
+
+    @property
+    def analysis(self):
+        """The flagship Analysis: the seed-000 friction data of the validation (Table 3 calibration).
+
+        :mod:`bearingkit.papers.tian2025.validation` supplies the cage mass and the viscosity factor
+        solved once on Table 3 run 1; lubricant :data:`FLAGSHIP_LUBRICANT` at
+        :data:`FLAGSHIP_TEMPERATURE`, the temperature of that calibration; L10 (reliability 0.9).
+        """
+        if self._analysis is None:
+            from bearingkit.papers.tian2025 import validation as seed000
+            from bearingkit.pipeline import analyze
+
+            self._analysis = analyze(
+                self.file,
+                cases=[self.case],
+                lubricant=FLAGSHIP_LUBRICANT,
+                temperature=FLAGSHIP_TEMPERATURE,
+                reliability=FLAGSHIP_RELIABILITY,
+                friction_options={
+                    "cage_mass": seed000.CAGE_MASS,
+                    "viscosity_factor": seed000.VISCOSITY_FACTOR,
+                },
+            )
+        return self._analysis
 
     @property
     def bearing(self):
         """The flagship :class:`~bearingkit.io.loader.BearingInput`, only the flagship case."""
-        if self._bearing is None:
-            from bearingkit.io.loader import load_file
-
-            self._bearing = load_file(self.file).select([self.case])
-        return self._bearing
+        return self.analysis.input
 
     @property
     def result(self):
         """The solved flagship case (QuasiStaticResult, one case)."""
-        if self._result is None:
-            self._result = self.bearing.solve()
-        return self._result
-
-    @property
-    def operating_point(self):
-        """Seed-000 friction operating point: exactly the validation's (Table 3 calibration), 5 r/min.
-
-        :func:`bearingkit.papers.tian2025.validation.operating_point`: cage mass, the viscosity
-        factor calibrated once on Table 3 run 1, roughness and traction defaults; lubricant
-        :data:`FLAGSHIP_LUBRICANT` at the module's 25 °C.
-        """
-        from bearingkit.papers.tian2025 import validation as seed000_friction
-
-        return seed000_friction.operating_point(seed000_friction.RPM, lubricant=FLAGSHIP_LUBRICANT)
-
-    @property
-    def friction(self):
-        """FrictionResult of the flagship case at :attr:`operating_point`."""
-        if self._friction is None:
-            from bearingkit.analysis.friction import friction_torque
-
-            self._friction = friction_torque(self.result, self.operating_point)
-        return self._friction
-
-    @property
-    def rating(self):
-        """RatingResult of the flagship case (inner ring rotating at the case speed, L10)."""
-        if self._rating is None:
-            from bearingkit.analysis.rating import rate
-
-            speed = self.bearing.cases[0].speed
-            self._rating = rate(self.result, speed=speed, rotating="inner", reliability=FLAGSHIP_RELIABILITY)
-        return self._rating
+        return self.analysis.statics
 
 
 @dataclass(frozen=True)
@@ -176,22 +163,20 @@ def _hertz_section(ctx: FlagshipContext):
 
 @flagship_section("Load distribution of the seed-000 composite bearing (flagship case)")
 def _load_distribution_section(ctx: FlagshipContext):
-    from bearingkit.cli import case_table
-    from bearingkit.io.export import case_dict
+    from bearingkit.cli.tables import case_table, warnings_text
 
-    data = case_dict(ctx.bearing, ctx.result, 0)
-    return case_table(data), data
+    data = ctx.analysis.statics_dict()["cases"][0]
+    return Group(case_table(data), warnings_text(data["warnings"])), data
 
 
 @flagship_section("Friction torque of the flagship case (seed-000 component model)")
 def _friction_section(ctx: FlagshipContext):
-    from bearingkit.cli import friction_table
-    from bearingkit.io.export import friction_case_dict
-    from bearingkit.papers.tian2025 import validation as seed000_friction
+    from bearingkit.cli.tables import friction_table
+    from bearingkit.papers.tian2025 import validation as seed000
 
-    data = friction_case_dict(ctx.case, ctx.operating_point, ctx.friction, 0)
+    data = ctx.analysis.friction_dict("components")["cases"][0]
     data["calibration"] = (
-        f"viscosity_factor = {seed000_friction.VISCOSITY_FACTOR} solved once on Tian et al. (2025) Table 3 "
+        f"viscosity_factor = {seed000.VISCOSITY_FACTOR} solved once on Tian et al. (2025) Table 3 "
         "run 1 (bearingkit.papers.tian2025.validation); cage mass and lubricant assumed there"
     )
     return Group(friction_table(data), Text(data["calibration"], style="dim")), data
@@ -199,9 +184,9 @@ def _friction_section(ctx: FlagshipContext):
 
 @flagship_section("Load ratings and life of the flagship case (ISO 76, ISO 281, ISO/TS 16281)")
 def _rating_section(ctx: FlagshipContext):
-    from bearingkit.cli import rating_table
+    from bearingkit.cli.tables import rating_table
 
-    data = {"case": ctx.case, **ctx.rating.to_dict(0)}
+    data = ctx.analysis.rating_dict()["cases"][0]
     notes = [Text(f"  warning: {w}", style="yellow") for w in data["warnings"]]
     return Group(rating_table(data), *notes), data
 
@@ -209,10 +194,9 @@ def _rating_section(ctx: FlagshipContext):
 def run_sections(console, as_json: bool = False, report_path: Path | None = FLAGSHIP_REPORT) -> dict:
     """Run every section in order, print tables (or JSON on stdout), then write the HTML report.
 
-    The report is written by ``bearingkit.report.write_flagship_report(ctx, path)`` only when that
-    module provides it; its path is then announced on stderr (JSON mode) or on the console.
+    The report is the flagship Analysis's own (:meth:`bearingkit.pipeline.Analysis.report`); its path
+    is announced on stderr (JSON mode) or on the console.
     """
-    from bearingkit import report
     from bearingkit.io.export import to_json
 
     ctx = FlagshipContext()
@@ -224,9 +208,14 @@ def run_sections(console, as_json: bool = False, report_path: Path | None = FLAG
             console.print(renderable)
     if as_json:
         sys.stdout.write(to_json(ctx.data) + "\n")
-    if report_path is not None and hasattr(report, "write_flagship_report"):
-        written = report.write_flagship_report(ctx, Path(report_path))
-        message = f"report written to {written or report_path}"
+    if report_path is not None:
+        a = ctx.analysis
+        written = a.report(
+            Path(report_path),
+            title=f"bearingkit flagship — {a.input.model.name}",
+            notes=[f"Flagship case of {a.input.source}: seed 000 (Tian et al. 2025), sections 6.1.4-6.1.5."],
+        )
+        message = f"report written to {written}"
         if as_json:
             sys.stderr.write(message + "\n")
         else:
