@@ -356,12 +356,23 @@ def study(
     scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
     workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
     resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
-    out: Path = typer.Option(None, "--out", help="Output folder (default: out/<study name>)."),
+    out: Path = typer.Option(None, "--out", help="Output folder (default: study-<study name>)."),
+    allow_plugin: list[str] = typer.Option(
+        [], "--allow-plugin", help="Evaluator plugin module:attr the study may use (files cannot import)."
+    ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
     from bearingkit.studies.__main__ import run_cli
 
-    run_cli(file, scheduler=scheduler, workers=workers, resume=resume, out=out, echo=console.print)
+    run_cli(
+        file,
+        scheduler=scheduler,
+        workers=workers,
+        resume=resume,
+        out=out,
+        echo=console.print,
+        allow_plugins=allow_plugin,
+    )
 
 
 @app.command()

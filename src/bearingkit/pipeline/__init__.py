@@ -6,7 +6,7 @@ the parts of the returned :class:`Analysis`; none of them orchestrates by itself
 
 from bearingkit.pipeline.analysis import RENDERERS, Analysis, analyze
 from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
-from bearingkit.pipeline.inputs import load_cases_from, load_input
+from bearingkit.pipeline.inputs import ModelInput, load_cases_from, load_input
 from bearingkit.pipeline.operating import DEFAULT_TEMPERATURE, Operating
 
 __all__ = [
@@ -15,6 +15,7 @@ __all__ = [
     "RENDERERS",
     "Analysis",
     "FrictionOutcome",
+    "ModelInput",
     "Operating",
     "analyze",
     "load_cases_from",

@@ -28,7 +28,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
-from bearingkit.pipeline.inputs import load_input
+from bearingkit.pipeline.inputs import ModelInput, load_input
 from bearingkit.pipeline.operating import Operating
 
 __all__ = ["FREE_TILT_LIMIT", "RENDERERS", "Analysis", "analyze"]
@@ -348,8 +348,9 @@ def analyze(
 
     Parameters
     ----------
-    source : str, Path, dict or BearingInput
-        Input file (docs/input-format.md), parsed file or loaded input.
+    source : str, Path, dict, BearingInput or ModelInput
+        Input file (docs/input-format.md), a designation, a parsed file, a loaded input, or a model and
+        its loads built in code (:class:`~bearingkit.pipeline.inputs.ModelInput`).
     load : Mapping or list, optional
         Load case(s) replacing the file's, values with units: ``{"F_x": "5 kN", "F_z": "1 kN"}``.
     cases : list of str, optional
@@ -378,7 +379,7 @@ def analyze(
     Analysis
         Nothing is computed until a part is asked for.
     """
-    bearing = load_input(source, load=load, cases=cases)
+    bearing = source if isinstance(source, ModelInput) else load_input(source, load=load, cases=cases)
     operating = Operating.of(
         bearing,
         speed=speed,
