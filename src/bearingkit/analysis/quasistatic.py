@@ -28,7 +28,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from bearingkit import checks
-from bearingkit.analysis import cone
+from bearingkit.analysis import backend, cone
 from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.newton import Problem, merge, newton, starting_point
 from bearingkit.analysis.solution import QuasiStaticResult
@@ -53,6 +53,9 @@ class SolverOptions:
     divergence_limit : float
         A case whose scaled displacement exceeds this fraction of the smallest element diameter is
         declared diverged (the load cannot be carried).
+    backend : str or None
+        ``"auto"``, ``"compiled"`` or ``"numpy"`` (:mod:`bearingkit.analysis.backend`); None reads
+        ``$BEARINGKIT_BACKEND`` (default ``"auto"``: the compiled core where it applies).
     """
 
     rtol: float = 1e-10
@@ -60,6 +63,7 @@ class SolverOptions:
     max_step: float | None = None
     continuation_steps: int = 4
     divergence_limit: float = 0.5
+    backend: str | None = None
 
     def __post_init__(self):
         checks.positive("rtol", self.rtol)
@@ -68,6 +72,8 @@ class SolverOptions:
             checks.positive("max_step", self.max_step, "m")
         checks.integer("continuation_steps", self.continuation_steps, low=0)
         checks.positive("divergence_limit", self.divergence_limit)
+        if self.backend is not None:
+            checks.one_of("backend", self.backend, backend.BACKENDS)
 
 
 def load_vector(F_x=0.0, F_y=0.0, F_z=0.0, M_x=0.0, M_y=0.0) -> np.ndarray:
@@ -187,27 +193,20 @@ def solve(
     cone.check_directions(problem.kernels, problem.scale, problem.idx, load)
 
     iterations = np.zeros(n_cases, int)
-    start = q0 if displacement is not None else starting_point(problem, load, q0)
-    q, converged, st, diverged, refused = _attempt(problem, start, load, iterations)
-    if options.continuation_steps and not (converged | refused).all():
-        # Load continuation from the unloaded start for the failed cases (a load outside the contact
-        # cone stays refused: no ramp makes it carriable).
-        retry = ~converged & ~refused
-        qc = np.where(retry[:, None], q0, q)
-        for frac in np.linspace(1.0 / options.continuation_steps, 1.0, options.continuation_steps):
-            ramp = np.where(retry[:, None], load * frac, load)
-            ramp[:, ~free] = load[:, ~free]
-            qc, conv_c, st_c, div_c, _ = newton(problem, qc, ramp, retry, iterations)
-        q = np.where(retry[:, None], qc, q)
-        st = merge(st, st_c, retry)
-        converged = np.where(retry, conv_c, converged)
-        diverged = np.where(retry, div_c, diverged)
-
+    pack = _compiled_pack(model, options, offsets)
+    if pack is not None:
+        q, converged, st, diverged, broken = _solve_compiled(
+            pack, problem, q0, load, free, options, displacement is not None, iterations
+        )
+    else:
+        q, converged, st, diverged = _solve_numpy(problem, q0, load, free, options, displacement, iterations)
+        broken = None
     # A case whose iterate or residual went non-finite failed numerically: report it, never return NaN.
-    broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]))
-    if broken.any():
-        q = np.where(broken[:, None], q0, q)
-        converged = converged & ~broken
+    if broken is None:
+        broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]))
+        if broken.any():
+            q = np.where(broken[:, None], q0, q)
+            converged = converged & ~broken
     reasons = [None] * n_cases
     for c in np.flatnonzero(~converged):
         reasons[c] = (
@@ -236,6 +235,96 @@ def solve(
         bad = int(np.flatnonzero(~converged)[0])
         raise ConvergenceError(f"case {bad} did not converge: {reasons[bad]}", result)
     return result
+
+
+def _solve_numpy(problem: Problem, q0, load, free, options: SolverOptions, displacement, iterations):
+    """The numpy reference: start, chunked attempt, load continuation of the failed cases."""
+    start = q0 if displacement is not None else starting_point(problem, load, q0)
+    q, converged, st, diverged, refused = _attempt(problem, start, load, iterations)
+    if options.continuation_steps and not (converged | refused).all():
+        # Load continuation from the unloaded start for the failed cases (a load outside the contact
+        # cone stays refused: no ramp makes it carriable).
+        retry = ~converged & ~refused
+        qc = np.where(retry[:, None], q0, q)
+        for frac in np.linspace(1.0 / options.continuation_steps, 1.0, options.continuation_steps):
+            ramp = np.where(retry[:, None], load * frac, load)
+            ramp[:, ~free] = load[:, ~free]
+            qc, conv_c, st_c, div_c, _ = newton(problem, qc, ramp, retry, iterations)
+        q = np.where(retry[:, None], qc, q)
+        st = merge(st, st_c, retry)
+        converged = np.where(retry, conv_c, converged)
+        diverged = np.where(retry, div_c, diverged)
+    return q, converged, st, diverged
+
+
+def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
+    """The model's compiled form when the compiled core is to run, else None (numpy reference)."""
+    mode = backend.requested(options.backend)
+    if mode == "numpy":
+        return None
+    module = backend.compiled_module()
+    if module is None:  # numba unusable: warned once, numpy reference
+        return None
+    pack = backend.compiled_pack(model) if offsets is None else None
+    if pack is None and mode == "compiled":
+        kinds = sorted({r.kind for r in model.rows} - set(module.SUPPORTED_KINDS))
+        why = f"row kinds {kinds} have no compiled kernel" if kinds else "raceway offsets are imposed"
+        raise InputError(f"SolverOptions.backend ('compiled') cannot solve this bearing: {why}; use 'auto'")
+    return pack
+
+
+def _solve_compiled(pack, problem: Problem, q0, load, free, options, given, iterations):
+    """The compiled core over every case (one thread per core); the numpy reference's outputs."""
+    from bearingkit.analysis.compiled_newton import solve_packed
+
+    n = load.shape[0]
+    _check_case_axis(pack, n)
+    threads = min(solver_threads(), n)
+    cone_matrix = _cone_matrix(problem)
+    args = (pack, q0, load, free, problem.scale, problem.max_step, problem.limit, options, cone_matrix, given)
+    if threads > 1:
+        import numba
+
+        numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+        with threadpool_limits(limits=1, user_api="blas"):
+            out = solve_packed(*args, parallel=True)
+    else:
+        out = solve_packed(*args, parallel=False)
+    iterations += out["iterations"]
+    _record_inner(problem.kernels, out["inner"])
+    state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
+    return out["q"], out["converged"], state, out["diverged"], out["broken"]
+
+
+def _check_case_axis(pack, n_cases: int) -> None:
+    """Per-case geometry must have one entry per load case (the compiled core does not broadcast)."""
+    lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
+    if lead and lead != {n_cases}:
+        raise InputError(
+            f"the bearing's per-case geometry has {sorted(lead)} cases but the load has {n_cases}; "
+            "give one load case per geometry case"
+        )
+
+
+def _cone_matrix(problem: Problem):
+    """Scaled contact directions on the free DOFs (n, M) for the cone check, or None (per-case geometry)."""
+    g = cone.shared_directions(problem.kernels)
+    if g is None or len(problem.idx) == 0:
+        return None
+    return np.ascontiguousarray(((g * problem.scale)[:, problem.idx]).T)
+
+
+def _record_inner(kernels, inner: np.ndarray) -> None:
+    """Roller sub-problem effort of a compiled solve into each tapered kernel's statistics."""
+    stats = getattr(next((k for k in kernels if hasattr(k, "inner_stats")), None), "inner_stats", None)
+    if stats is None or inner.size == 0:
+        return
+    for k in kernels:
+        if hasattr(k, "inner_stats"):
+            with k.inner_stats._lock:
+                k.inner_stats.calls += int(inner[:, 0].sum())
+                k.inner_stats.iterations_max = max(k.inner_stats.iterations_max, int(inner[:, 1].max()))
+                k.inner_stats.unconverged += int(inner[:, 2].sum())
 
 
 def _offsets_for(model: BearingModel, raceway_offsets: dict | None):
