@@ -17,9 +17,8 @@ import numpy as np
 
 def run(quick: bool) -> list[dict]:
     """Per-case time statistics; quick: 40 cases per variant."""
-    from benchmarks.tapered_light_cases import cases
-
     from bearingkit.analysis.quasistatic import solve
+    from benchmarks.tapered_light_cases import cases
 
     per_variant = 40 if quick else 250
     batches = cases(per_variant, seed=1024)
@@ -35,17 +34,18 @@ def run(quick: bool) -> list[dict]:
     times = np.array(times)
     n = len(times)
     load = f"load {os.getloadavg()[0]:.2f}" if hasattr(os, "getloadavg") else ""
+    name = "tapered light loads: "
+
+    def entry(what, value, unit, target=None, note=""):
+        return {"name": name + what, "value": value, "unit": unit, "target": target, "note": note}
+
     return [
-        {"name": f"tapered light loads: slowest of {n} cases", "value": times.max(), "unit": "s", "target": 1.0,
-         "note": load},
-        {"name": f"tapered light loads: median of {n} cases", "value": 1e3 * np.median(times), "unit": "ms"},
-        {"name": "tapered light loads: cases over 1 s", "value": int((times > 1.0).sum()), "unit": "cases",
-         "target": "<= 0"},
-        {"name": "tapered light loads: cases over 2 s", "value": int((times > 2.0).sum()), "unit": "cases",
-         "target": "<= 0"},
-        {"name": "tapered light loads: wrong outcome (converged vs carriable)", "value": wrong, "unit": "cases",
-         "target": "<= 0"},
-    ]  # fmt: skip
+        entry(f"slowest of {n} cases", times.max(), "s", 1.0, load),
+        entry(f"median of {n} cases", 1e3 * np.median(times), "ms"),
+        entry("cases over 1 s", int((times > 1.0).sum()), "cases", "<= 0"),
+        entry("cases over 2 s", int((times > 2.0).sum()), "cases", "<= 0"),
+        entry("wrong outcome (converged vs carriable)", wrong, "cases", "<= 0"),
+    ]
 
 
 if __name__ == "__main__":

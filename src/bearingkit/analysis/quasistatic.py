@@ -190,13 +190,13 @@ def solve(
     n_cases = q0.shape[0]
     offsets = _offsets_for(model, raceway_offsets)
     problem = Problem(model.kernels, load, free, options, offsets)
-    cone.check_directions(problem.kernels, problem.scale, problem.idx, load)
+    _check_directions(model, problem, load)
 
     iterations = np.zeros(n_cases, int)
     pack = _compiled_pack(model, options, offsets)
     if pack is not None:
         q, converged, st, diverged, broken = _solve_compiled(
-            pack, problem, q0, load, free, options, displacement is not None, iterations
+            model, pack, problem, q0, load, free, options, displacement is not None, iterations
         )
     else:
         q, converged, st, diverged = _solve_numpy(problem, q0, load, free, options, displacement, iterations)
@@ -230,6 +230,7 @@ def solve(
         free=free,
         references=tuple(model.references),
         offsets=offsets,
+        evaluations=st.get("evaluations"),
     )
     if raise_on_failure and not converged.all():
         bad = int(np.flatnonzero(~converged)[0])
@@ -273,14 +274,14 @@ def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
     return pack
 
 
-def _solve_compiled(pack, problem: Problem, q0, load, free, options, given, iterations):
+def _solve_compiled(model, pack, problem: Problem, q0, load, free, options, given, iterations):
     """The compiled core over every case (one thread per core); the numpy reference's outputs."""
     from bearingkit.analysis.compiled_newton import solve_packed
 
     n = load.shape[0]
     _check_case_axis(pack, n)
     threads = min(solver_threads(), n)
-    cone_matrix = _cone_matrix(problem)
+    cone_matrix = _model_cache(model, ("cone", tuple(free)), lambda: _cone_matrix(problem))
     args = (pack, q0, load, free, problem.scale, problem.max_step, problem.limit, options, cone_matrix, given)
     if threads > 1:
         import numba
@@ -304,6 +305,24 @@ def _check_case_axis(pack, n_cases: int) -> None:
             f"the bearing's per-case geometry has {sorted(lead)} cases but the load has {n_cases}; "
             "give one load case per geometry case"
         )
+
+
+def _model_cache(model: BearingModel, key, compute):
+    """A per-model constant of the solver (the model and its kernels are immutable geometry)."""
+    cache = model.__dict__.setdefault("_solver_cache", {})
+    if key not in cache:
+        cache[key] = compute()
+    return cache[key]
+
+
+def _check_directions(model: BearingModel, problem: Problem, load: np.ndarray) -> None:
+    """:func:`cone.check_directions` with the DOFs the rows reach computed once per model."""
+    reach = _model_cache(
+        model, "reach", lambda: np.abs(cone.directions(problem.kernels) * problem.scale).max(axis=0)
+    )
+    idle = reach <= 1e-12 * reach.max()
+    if np.any(idle[problem.idx] & np.any(load[:, problem.idx] != 0.0, axis=0)):
+        cone.check_directions(problem.kernels, problem.scale, problem.idx, load)  # raises, naming the DOF
 
 
 def _cone_matrix(problem: Problem):
