@@ -25,7 +25,6 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
-from threadpoolctl import threadpool_limits
 
 from bearingkit import checks
 from bearingkit.analysis import backend, cone
@@ -82,9 +81,15 @@ def load_vector(F_x=0.0, F_y=0.0, F_z=0.0, M_x=0.0, M_y=0.0) -> np.ndarray:
     return np.stack(parts, axis=-1)
 
 
-#: Cases per chunk of a large batch: ~10 MB per slice array for a few thousand slices per case, so
-#: the element-wise passes stay in cache; chunks run on a thread pool (numpy releases the GIL).
-CHUNK_CASES = 512
+#: Cases per chunk of a large batch (numpy reference): ~5 MB per slice array for a few thousand
+#: slices per case, so the element-wise passes stay in cache; chunks run on a thread pool (numpy
+#: releases the GIL). 256, not 512: issue 19 measured chunks of 512 at 1.8x the cost per case of 256
+#: (their temporaries are trimmed by glibc and faulted back in every call).
+CHUNK_CASES = 256
+#: Batches above this many cases run with BLAS limited to one thread (numpy reference): the solver's
+#: matrix products are small, and OpenBLAS threads on them cost more than they give (issue 19:
+#: 6.7x slower per case at 256 cases with its threads).
+BLAS_SERIAL_ABOVE = 8
 
 #: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
 #: runs one solver per core (Dask workers, process pools): nested pools would oversubscribe them.
@@ -105,12 +110,27 @@ def solver_threads() -> int:
     return n
 
 
+_CONTROLLER: list = []
+
+
+def _blas_serial():
+    """Context limiting BLAS to one thread (a cached controller: ~0.1 ms, threadpool_limits ~2 ms)."""
+    if not _CONTROLLER:
+        from threadpoolctl import ThreadpoolController
+
+        _CONTROLLER.append(ThreadpoolController())
+    return _CONTROLLER[0].limit(limits=1, user_api="blas")
+
+
 def _attempt(problem: Problem, q, load, iterations):
     """One Newton attempt over every case: chunked and threaded for large batches."""
     n = len(q)
     everyone = np.ones(n, bool)
-    if n <= CHUNK_CASES:
+    if n <= BLAS_SERIAL_ABOVE:
         return newton(problem, q, load, everyone, iterations)
+    if n <= CHUNK_CASES:
+        with _blas_serial():
+            return newton(problem, q, load, everyone, iterations)
     threads = solver_threads()
     chunks = [np.arange(i, min(i + CHUNK_CASES, n)) for i in range(0, n, CHUNK_CASES)]
 
@@ -121,7 +141,7 @@ def _attempt(problem: Problem, q, load, iterations):
 
     # Our threads already fill the cores: BLAS threads on top would oversubscribe them (measured:
     # 1.7x more cases/s on 2 cores with BLAS limited to one thread inside the pool).
-    with threadpool_limits(limits=1, user_api="blas"):
+    with _blas_serial():
         if threads == 1:
             parts = [run(c) for c in chunks]
         else:
@@ -286,9 +306,10 @@ def _solve_compiled(model, pack, problem: Problem, q0, load, free, options, give
     if threads > 1:
         import numba
 
+        # No BLAS limit here: the compiled core calls LAPACK on 5×5 systems only, which OpenBLAS
+        # runs on the calling thread (and a limit costs ~0.1–2 ms per call).
         numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
-        with threadpool_limits(limits=1, user_api="blas"):
-            out = solve_packed(*args, parallel=True)
+        out = solve_packed(*args, parallel=True)
     else:
         out = solve_packed(*args, parallel=False)
     iterations += out["iterations"]

@@ -28,6 +28,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    case_column,
     radial_row,
     relative_displacement,
     validate_common,
@@ -187,14 +188,13 @@ class BallKernel(KernelBase):
 
         self.row = row
 
-        def col(v):  # (C,)|() -> (C|1, 1), broadcast over the elements
-            return np.asarray(v, dtype=float).reshape(-1, 1)
+        col = case_column  # (C,)|() -> (C|1, 1), broadcast over the elements; constant fields shared
 
         d, dm = col(row.element_diameter), col(row.pitch_diameter)
         alpha0 = col(row.contact_angle)
         fi, fo = col(row.conformity_inner), col(row.conformity_outer)
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
-        self.psi = azimuths(row.n_elements, row.azimuth_phase)  # (C|1, Z)
+        self.psi = azimuths(row.n_elements, case_column(row.azimuth_phase)[:, 0])  # (C|1, Z)
         self.a0 = (fi + fo - 1.0) * d  # groove-centre distance at first touch
         gap = col(row.clearance) / 2.0
         unit0 = np.stack([np.cos(alpha0), np.sin(alpha0)], axis=-1)  # (C|1, 1, 2) from outer to inner centre
