@@ -30,6 +30,10 @@ SI_UNITS: dict[str, str] = {
     "mass": "kg",
     "thermal_conductivity": "W/(m*K)",
     "time": "s",
+    "acceleration": "m/s^2",
+    "line_load": "N/m",
+    "stiffness": "N/m",
+    "rotational_stiffness": "N*m/rad",
     "dimensionless": "",
 }
 

@@ -9,6 +9,7 @@ floor of ~2e-10 N per roller, reached from different warm starts).
 
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -20,7 +21,12 @@ from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.io.loader import load_file
 from bearingkit.physics.deviations import seed001_series
 
-EXAMPLES = sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
+#: Every example file of one bearing (shaft-system files hold several and are solved by systems/).
+EXAMPLES = [
+    p
+    for p in sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
+    if "bearing" in tomllib.loads(p.read_text(encoding="utf-8"))
+]
 COMPILED = SolverOptions(backend="compiled")
 NUMPY = SolverOptions(backend="numpy")
 
