@@ -367,6 +367,17 @@ def _record_inner(kernels, inner: np.ndarray) -> None:
                 k.inner_stats.unconverged += int(inner[:, 2].sum())
 
 
+def _newton(problem, q, load, active, iterations):
+    """The Newton attempt with its four outputs of before the solver split (for
+    :mod:`bearingkit.systems.solver`, which drives it on its own condensed problem)."""
+    q, converged, st, diverged, _ = newton(problem, q, load, active, iterations)
+    return q, converged, st, diverged
+
+
+#: Per-case merge of two solver states (for :mod:`bearingkit.systems.solver`).
+_merge = merge
+
+
 def _offsets_for(model: BearingModel, raceway_offsets: dict | None):
     """Raceway offsets as a list aligned with the model's rows (None when every ring is rigid)."""
     if not raceway_offsets:
