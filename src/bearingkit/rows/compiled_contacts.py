@@ -103,6 +103,17 @@ def pack_points(kernels, rows) -> PointPack:
 
 
 @njit(cache=True, error_model="numpy")
+def _add_symmetric(jac, ju):
+    """jac += the symmetric matrix whose upper triangle is ju (the contact Jacobians are symmetric:
+    sums of g gᵀ-type products, so only 15 of 25 entries are accumulated)."""
+    for i in range(5):
+        jac[i, i] += ju[i, i]
+        for j in range(i + 1, 5):
+            jac[i, j] += ju[i, j]
+            jac[j, i] += ju[i, j]
+
+
+@njit(cache=True, error_model="numpy")
 def ball_response(c, q, bp, force, jac, rowf):
     """Add the ball rows' force (5,), Jacobian (5, 5) and per-row force (rows, 5) of case c; return energy.
 
@@ -111,6 +122,7 @@ def ball_response(c, q, bp, force, jac, rowf):
     """
     cb = c if bp.B.shape[0] > 1 else 0
     energy = 0.0
+    ju = np.zeros((5, 5))  # upper triangle of the (symmetric) Jacobian, mirrored at the end
     for e in range(bp.B.shape[1]):
         u0 = 0.0
         u1 = 0.0
@@ -144,9 +156,10 @@ def ball_response(c, q, bp, force, jac, rowf):
             rowf[r, i] += fi
             t0 = b0i * k00 + b1i * k01
             t1 = b0i * k01 + b1i * k11
-            for j in range(5):
-                jac[i, j] += t0 * bp.B[cb, e, 0, j] + t1 * bp.B[cb, e, 1, j]
+            for j in range(i, 5):
+                ju[i, j] += t0 * bp.B[cb, e, 0, j] + t1 * bp.B[cb, e, 1, j]
         energy += kn * d * d * root / 2.5
+    _add_symmetric(jac, ju)
     return energy
 
 
@@ -202,6 +215,7 @@ def roller_response(c, q, rp, force, jac, rowf):
     cc = c if rp.Ga.shape[0] > 1 else 0
     energy = 0.0
     s_max = rp.x.shape[2]
+    ju = np.zeros((5, 5))
     dbuf = np.empty(s_max)
     ybuf = np.empty(s_max)
     for r in range(rp.Ga.shape[1]):
@@ -245,11 +259,12 @@ def roller_response(c, q, rp, force, jac, rowf):
             fi = -(f0 * gai + f1 * gbi)
             force[i] += fi
             rowf[row, i] += fi
-            for j in range(5):
+            for j in range(i, 5):
                 gaj = rp.Ga[cc, r, j]
                 gbj = rp.Gb[cc, r, j]
-                jac[i, j] -= k0 * gai * gaj + k1 * (gai * gbj + gbi * gaj) + k2 * gbi * gbj
+                ju[i, j] -= k0 * gai * gaj + k1 * (gai * gbj + gbi * gaj) + k2 * gbi * gbj
         energy += e / (1.0 + LINE_EXPONENT)
+    _add_symmetric(jac, ju)
     return energy
 
 
@@ -257,6 +272,7 @@ def roller_response(c, q, rp, force, jac, rowf):
 def point_response(q, pp, force, jac, rowf):
     """Add the affine Hertz point contacts (threaded rows: δ = G·q + δ0, Q = k δ^1.5); return energy."""
     energy = 0.0
+    ju = np.zeros((5, 5))
     for m in range(pp.G.shape[0]):
         d = pp.d0[m]
         for i in range(5):
@@ -271,7 +287,8 @@ def point_response(q, pp, force, jac, rowf):
             gi = pp.G[m, i]
             force[i] -= load * gi
             rowf[row, i] -= load * gi
-            for j in range(5):
-                jac[i, j] -= stiff * gi * pp.G[m, j]
+            for j in range(i, 5):
+                ju[i, j] -= stiff * gi * pp.G[m, j]
         energy += load * d / (1.0 + POINT_EXPONENT)
+    _add_symmetric(jac, ju)
     return energy
