@@ -88,35 +88,50 @@ def workspace(pack: TaperedPack):
 
 
 @njit(cache=True, error_model="numpy")
-def _line(d_raw, dv, c, taylor):
-    """Slice law (load, stiffness, energy): Kunert, or seed 001 eq. (4) with its continuation."""
+def _consts(dv, c):
+    """Per-roller constants of the eq. (4) law: continuation a, b, energy shift, ds^(n+1), ds^n."""
+    n = N_LINE
+    d_t = TAYLOR_REGULAR_APPROACH
+    ds = max(-n * dv, 0.0)
+    if dv <= 0.0:
+        return 0.0, 0.0, 0.0, ds ** (n + 1), ds**n
+    q_t = c * d_t ** (n - 1.0) * (d_t + n * dv)
+    k_t = c * (n * d_t ** (n - 1.0) + n * (n - 1.0) * dv * d_t ** (n - 2.0))
+    e_t = c * (d_t ** (n + 1) / (n + 1) + dv * d_t**n)
+    a = (2.0 * q_t - k_t * d_t) / d_t
+    b = (k_t * d_t - q_t) / (d_t * d_t)
+    return a, b, (a * d_t * d_t / 2.0 + b * d_t**3 / 3.0) - e_t, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _line(d_raw, dv, c, taylor, lc):
+    """Slice law (load, stiffness, energy): Kunert, or seed 001 eq. (4) with its continuation.
+
+    ``lc`` = :func:`_consts` of the roller (constant per roller and case): one power per call.
+    """
     d = max(d_raw, 0.0)
     if taylor == 0.0:
         t = d ** (1.0 / 9.0)
         return c * d * t, (10.0 / 9.0) * c * t, c * d * d * t / (1.0 + N_LINE)
     n = N_LINE
-    d_t = TAYLOR_REGULAR_APPROACH
-    if dv > 0.0 and d < d_t:
-        q_t = c * d_t ** (n - 1.0) * (d_t + n * dv)
-        k_t = c * (n * d_t ** (n - 1.0) + n * (n - 1.0) * dv * d_t ** (n - 2.0))
-        a = (2.0 * q_t - k_t * d_t) / d_t
-        b = (k_t * d_t - q_t) / (d_t * d_t)
+    if dv > 0.0 and d < TAYLOR_REGULAR_APPROACH:
+        a, b = lc[0], lc[1]
         k = a + 2.0 * b * d if d_raw > 0.0 else 0.0
         return a * d + b * d * d, k, a * d * d / 2.0 + b * d**3 / 3.0
-    q = c * d ** (n - 1.0) * (d + n * dv)
-    if not (d > 0.0 and q > 0.0):
+    if not d > 0.0:
         return 0.0, 0.0, 0.0
-    df = max(d, TAYLOR_DELTA_FLOOR)
-    k = c * (n * df ** (n - 1.0) + n * (n - 1.0) * dv * df ** (n - 2.0))
-    ds = max(-n * dv, 0.0)
-    e = c * ((d ** (n + 1) - ds ** (n + 1)) / (n + 1) + dv * (d**n - ds**n))
+    t = d ** (n - 1.0)  # d^(1/9); d^(10/9) = d t, d^(19/9) = d² t, d^(−8/9) = t / d
+    q = c * t * (d + n * dv)
+    if not q > 0.0:
+        return 0.0, 0.0, 0.0
+    if d >= TAYLOR_DELTA_FLOOR:
+        k = c * (n * t + n * (n - 1.0) * dv * (t / d))
+    else:
+        df = TAYLOR_DELTA_FLOOR
+        k = c * (n * df ** (n - 1.0) + n * (n - 1.0) * dv * df ** (n - 2.0))
+    e = c * ((d * d * t - lc[3]) / (n + 1) + dv * (d * t - lc[4]))
     if dv > 0.0:  # eq. (4)'s energy shifted to the continuation's integral up to δ_T
-        e_t = c * (d_t ** (n + 1) / (n + 1) + dv * d_t**n)
-        q_t = c * d_t ** (n - 1.0) * (d_t + n * dv)
-        k_t = c * (n * d_t ** (n - 1.0) + n * (n - 1.0) * dv * d_t ** (n - 2.0))
-        a = (2.0 * q_t - k_t * d_t) / d_t
-        b = (k_t * d_t - q_t) / (d_t * d_t)
-        e = e + ((a * d_t * d_t / 2.0 + b * d_t**3 / 3.0) - e_t)
+        e = e + lc[2]
     return q, k, e
 
 
@@ -128,7 +143,7 @@ def _rib(d_raw, kf):
 
 
 @njit(cache=True, error_model="numpy")
-def _eval(tp, t, ai, af, d0e, dv, x0, x1):
+def _eval(tp, t, ai, af, d0e, dv, lc, x0, x1):
     """Φ, ∂Φ/∂X, load scale and summed stiffnesses of roller t at X = (x0, x1)."""
     ns = tp.ns[t]
     cs, tay = tp.cs[t], tp.taylor[t]
@@ -141,11 +156,11 @@ def _eval(tp, t, ai, af, d0e, dv, x0, x1):
     ei = 0.0
     ee = 0.0
     for k in range(ns):
-        q, kk, e = _line(ai[k] + xi, dv, cs, tay)
+        q, kk, e = _line(ai[k] + xi, dv, cs, tay, lc)
         si += q
         ki += kk
         ei += e
-        q, kk, e = _line(d0e[k] + xe, dv, cs, tay)
+        q, kk, e = _line(d0e[k] + xe, dv, cs, tay, lc)
         se += q
         ke += kk
         ee += e
@@ -213,9 +228,9 @@ def _ring(tp, t, cc, q, ai, d0e):
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_roller(tp, t, ai, af, d0e, dv, x0, x1):
+def _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1):
     """Bounded damped Newton for roller t from (x0, x1); returns X, its evaluation, iterations, done."""
-    ev = _eval(tp, t, ai, af, d0e, dv, x0, x1)
+    ev = _eval(tp, t, ai, af, d0e, dv, lc, x0, x1)
     ns = tp.ns[t]
     ring = 0.0
     re = 0.0
@@ -251,7 +266,7 @@ def _solve_roller(tp, t, ai, af, d0e, dv, x0, x1):
         for _ls in range(ROLLER_MAX_HALVINGS):
             tx0 = x0 + step_t * s0
             tx1 = x1 + step_t * s1
-            ev_t = _eval(tp, t, ai, af, d0e, dv, tx0, tx1)
+            ev_t = _eval(tp, t, ai, af, d0e, dv, lc, tx0, tx1)
             g_t = np.sqrt(ev_t[1] * ev_t[1] + ev_t[2] * ev_t[2])
             if (ev_t[0] <= phi + 1e-4 * step_t * slope + 1e-14 * abs(phi)) or (g_t <= 0.5 * gnorm):
                 x0, x1, ev = tx0, tx1, ev_t
@@ -287,6 +302,7 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
         dq[i] = q[i] - ws_q[i]
     for t in range(n_t):
         dv = tp.dev[cc, t]
+        lc = _consts(dv, tp.cs[t]) if tp.taylor[t] != 0.0 else (0.0, 0.0, 0.0, 0.0, 0.0)
         af = _ring(tp, t, cc, q, ai, d0e)
         x0, x1 = _guess(tp, t, ai, af, d0e)
         if warm:
@@ -295,11 +311,11 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
             for d in range(5):
                 w0 -= ws_sens[t, d, 0] * dq[d]
                 w1 -= ws_sens[t, d, 1] * dq[d]
-            phi_g = _eval(tp, t, ai, af, d0e, dv, x0, x1)[0]
-            phi_w = _eval(tp, t, ai, af, d0e, dv, w0, w1)[0]
+            phi_g = _eval(tp, t, ai, af, d0e, dv, lc, x0, x1)[0]
+            phi_w = _eval(tp, t, ai, af, d0e, dv, lc, w0, w1)[0]
             if np.isfinite(phi_w) and np.isfinite(w0) and np.isfinite(w1) and phi_w <= phi_g:
                 x0, x1 = w0, w1
-        x0, x1, _, used, done = _solve_roller(tp, t, ai, af, d0e, dv, x0, x1)
+        x0, x1, _, used, done = _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1)
         used_max = max(used_max, used)
         if not done:
             unconverged += 1
@@ -315,8 +331,8 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
         ke_sum = 0.0
         row = tp.row[t]
         for k in range(tp.ns[t]):
-            qi, ki, ei = _line(ai[k] + xi, dv, cs, tay)
-            _, ke, ee = _line(d0e[k] + xe, dv, cs, tay)
+            qi, ki, ei = _line(ai[k] + xi, dv, cs, tay, lc)
+            _, ke, ee = _line(d0e[k] + xe, dv, cs, tay, lc)
             energy += ei + ee
             ki_sum += ki
             ke_sum += ke
