@@ -220,19 +220,22 @@ def roller_response(c, q, rp, force, jac, rowf):
     Same model as :meth:`bearingkit.rows.cylindrical.CylindricalKernel.response`: slice approach
     δ_k = a + b x_k + δ0_k with a = Ga·q, b = Gb·q, slice load c_s δ^(10/9) (δ^(1/9) by
     :func:`ninth_root`), reduced per roller to Σq, Σqx (force) and Σq′, Σq′x, Σq′x² (stiffness).
-    A roller no slice of which can touch (``reach`` bound) is skipped; the roots are taken of the
-    touching slices only (the others add exact zeros to the sums in the reference).
+    Three passes: the touching slices of every roller are gathered (a roller no slice of which can
+    touch, by its ``reach`` bound, is skipped unvisited), their roots taken in one long loop the
+    compiler vectorises, then each roller's sums are formed in slice order (the slices left out add
+    exact zeros to the reference's sums).
     """
     cc = c if rp.Ga.shape[0] > 1 else 0
-    energy = 0.0
+    n_r = rp.Ga.shape[1]
     s_max = rp.x.shape[2]
-    ju = np.zeros((5, 5))
-    dbuf = np.empty(s_max)
-    ybuf = np.empty(s_max)
-    xbuf = np.empty(s_max)
-    u = np.empty(5)
-    w = np.empty(5)
-    for r in range(rp.Ga.shape[1]):
+    dbuf = np.empty(n_r * s_max)
+    ybuf = np.empty(n_r * s_max)
+    xbuf = np.empty(n_r * s_max)
+    rid = np.empty(n_r, np.int64)
+    seg = np.empty(n_r + 1, np.int64)
+    n = 0
+    m = 0
+    for r in range(n_r):
         a = 0.0
         b = 0.0
         for i in range(5):
@@ -241,17 +244,25 @@ def roller_response(c, q, rp, force, jac, rowf):
         top = a + rp.reach[cc, r, 0] + abs(b) * rp.reach[cc, r, 1]
         if top < -SKIP_MARGIN * (abs(a) + abs(rp.reach[cc, r, 0]) + abs(b) * rp.reach[cc, r, 1]):
             continue
-        n = 0
+        n0 = n
         for k in range(rp.ns[r]):
             x = rp.x[cc, r, k]
             d = b * x + a + rp.d0[cc, r, k]
-            if d > 0.0:
-                dbuf[n] = d
-                xbuf[n] = x
-                n += 1
-        if n == 0:
-            continue
-        ninth_root(dbuf, ybuf, n)
+            dbuf[n] = d
+            xbuf[n] = x
+            n += 1 if d > 0.0 else 0  # branch-free gather of the touching slices
+        if n > n0:
+            rid[m] = r
+            seg[m] = n0
+            m += 1
+    seg[m] = n
+    ninth_root(dbuf, ybuf, n)
+    energy = 0.0
+    ju = np.zeros((5, 5))
+    u = np.empty(5)
+    w = np.empty(5)
+    for j in range(m):
+        r = rid[j]
         cs = rp.cs[cc, r]
         f0 = 0.0
         f1 = 0.0
@@ -259,7 +270,7 @@ def roller_response(c, q, rp, force, jac, rowf):
         k1 = 0.0
         k2 = 0.0
         e = 0.0
-        for k in range(n):
+        for k in range(seg[j], seg[j + 1]):
             x = xbuf[k]
             d = dbuf[k]
             t = ybuf[k]
@@ -284,8 +295,8 @@ def roller_response(c, q, rp, force, jac, rowf):
         for i in range(5):
             gai = rp.Ga[cc, r, i]
             gbi = rp.Gb[cc, r, i]
-            for j in range(i, 5):
-                ju[i, j] -= gai * u[j] + gbi * w[j]
+            for jj in range(i, 5):
+                ju[i, jj] -= gai * u[jj] + gbi * w[jj]
         energy += e / (1.0 + LINE_EXPONENT)
     _add_symmetric(jac, ju)
     return energy
