@@ -509,7 +509,7 @@ def _solve_batch(
     r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row, r_reach,
     p_G, p_d0, p_k, p_row,
     t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
-    t_taylor, t_row,
+    t_taylor, t_row, t_lc,
     start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
 ):  # fmt: skip
     for i in prange(load.shape[0]):
@@ -519,7 +519,7 @@ def _solve_batch(
         points = PointPack(p_G, p_d0, p_k, p_row)
         tapered = TaperedPack(
             t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor,
-            t_ffloor, t_cap, t_taylor, t_row
+            t_ffloor, t_cap, t_taylor, t_row, t_lc
         )  # fmt: skip
         mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows)
         _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
