@@ -96,6 +96,9 @@ CHUNK_CASES = 256
 #: 6.7x slower per case at 256 cases with its threads).
 BLAS_SERIAL_ABOVE = 8
 
+#: Cases per chunk the compiled core's threads take at a time (dynamic scheduling of ``prange``).
+PARALLEL_CHUNK = 32
+
 #: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
 #: runs one solver per core (Dask workers, process pools): nested pools would oversubscribe them.
 THREADS_ENV = "BEARINGKIT_THREADS"
@@ -338,7 +341,13 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
         # No BLAS limit here: the compiled core calls LAPACK on 5×5 systems only, which OpenBLAS
         # runs on the calling thread (and a limit costs ~0.1–2 ms per call).
         numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
-        out = solve_packed(*args, parallel=True, cache=plan.compiled)
+        # Cases handed out in small chunks as threads free up, not in one equal share per thread: on
+        # a shared machine one thread is often descheduled, and cases differ in cost (continuation).
+        previous = numba.set_parallel_chunksize(PARALLEL_CHUNK)
+        try:
+            out = solve_packed(*args, parallel=True, cache=plan.compiled)
+        finally:
+            numba.set_parallel_chunksize(previous)
     else:
         out = solve_packed(*args, parallel=False, cache=plan.compiled)
     iterations += out["iterations"]
