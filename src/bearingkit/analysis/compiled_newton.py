@@ -587,10 +587,12 @@ def solve_packed(
     out_j = np.empty((n, 5, 5))
     out_i = np.empty((n, 7))
     inner = np.zeros((n, 3))
-    head = (np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64),
-            np.asarray(free, np.bool_))  # fmt: skip
-    tail = (np.asarray(scale, np.float64), cache["idx"], cache["p"], cache["fracs"], cache["cone"])
-    tail += (bool(given),)
+    if "scale" not in cache:
+        cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
+        cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
+    q0, load = np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64)
+    head = (q0, load, cache["free"])
+    tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
     tail += (out_q, out_f, out_j, out_i, inner)
     if parallel:
         _solve_batch(*head, *cache["flat"], *tail)
@@ -602,16 +604,18 @@ def solve_packed(
             cache["serial"] = _serial_entry(args)
         else:
             entry(*args)
+    flags = (out_i[:, :4] > 0.5).T
+    counts = out_i[:, 4:6].astype(int).T
     return {
         "q": out_q,
         "force": out_f,
         "jac": out_j,
-        "converged": out_i[:, 0] > 0.5,
-        "diverged": out_i[:, 1] > 0.5,
-        "refused": out_i[:, 2] > 0.5,
-        "broken": out_i[:, 3] > 0.5,
-        "iterations": out_i[:, 4].astype(int),
-        "evaluations": out_i[:, 5].astype(int),
+        "converged": flags[0],
+        "diverged": flags[1],
+        "refused": flags[2],
+        "broken": flags[3],
+        "iterations": counts[0],
+        "evaluations": counts[1],
         "norm": out_i[:, 6],
         "inner": inner,
     }

@@ -332,7 +332,10 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
     from bearingkit.analysis.compiled_newton import solve_packed
 
     n = load.shape[0]
-    _check_case_axis(pack, n)
+    if "lead" not in plan.compiled:
+        axes = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]}
+        plan.compiled["lead"] = axes - {1}
+    _check_case_axis(plan.compiled["lead"], n)
     threads = min(solver_threads(), n) if n > 1 else 1
     args = (pack, q0, load, free, plan.scale, plan.max_step, plan.limit, options, plan.cone_matrix, given)
     if threads > 1:
@@ -357,9 +360,9 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
     return out["q"], out["converged"], state, out["diverged"], out["broken"]
 
 
-def _check_case_axis(pack, n_cases: int) -> None:
-    """Per-case geometry must have one entry per load case (the compiled core does not broadcast)."""
-    lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
+def _check_case_axis(lead: set, n_cases: int) -> None:
+    """Per-case geometry (``lead``: the pack's case-axis lengths other than 1) must have one entry per
+    load case (the compiled core does not broadcast)."""
     if lead and lead != {n_cases}:
         raise InputError(
             f"the bearing's per-case geometry has {sorted(lead)} cases but the load has {n_cases}; "
