@@ -14,6 +14,7 @@ for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
     [[load_cases]]       name, speed, temperature, gears = {NAME = torque}, forces = [...],
                          line_loads = [...]
     [lubricant]          name (friction of bearings whose file has none)
+    [lubrication]        contamination, roughness_element, roughness_raceway (bearings whose file has none)
     [solver]             rtol, max_iterations
 
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
@@ -32,6 +33,7 @@ from pydantic import Field, ValidationError
 from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import _one_line, load_file
+from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
 from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
 from bearingkit.systems.solver import ShaftSystem, SystemOptions
@@ -171,6 +173,7 @@ class ShaftFile(schema._Strict):
     shaft: ShaftSpec
     load_cases: list[ShaftCaseSpec]
     lubricant: schema.LubricantSpec | None = None
+    lubrication: LubricationSpec | None = None
     solver: ShaftSolverSpec | None = None
 
 
@@ -188,13 +191,18 @@ _MODELS = {
     "load_cases.forces": ForceSpec,
     "load_cases.line_loads": LineLoadSpec,
     "lubricant": schema.LubricantSpec,
+    "lubrication": LubricationSpec,
     "solver": ShaftSolverSpec,
 }
 
 
 @dataclass(frozen=True)
 class ShaftInput:
-    """A loaded shaft file (SI): the system, its load cases, solver options and notes."""
+    """A loaded shaft file (SI): the system, its load cases, solver options and notes.
+
+    ``lubricant`` and ``lubrication`` (the ``[lubrication]`` section: contamination, roughness) apply to
+    the bearings whose own file gives none.
+    """
 
     source: str
     system: ShaftSystem
@@ -202,6 +210,7 @@ class ShaftInput:
     options: SystemOptions
     lubricant: object | None = None
     warnings: tuple = field(default_factory=tuple)
+    lubrication: LubricationSpec | None = None
 
     def solve(self):
         """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
@@ -399,38 +408,103 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
                 f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
             )
         lubricant = LUBRICANTS[spec.lubricant.name]
-    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes))
+    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
 
 
-def shaft_dict(inp: ShaftInput, result) -> dict:
+def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
     """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
 
-    Per case: :meth:`ShaftResult.to_dict`, each bearing's ratings and the system life
-    (:func:`bearingkit.systems.life.rate_system`), and each bearing's friction torque where a lubricant
-    and a speed are known (:func:`bearingkit.systems.life.friction_system`); plus the file's notes.
+    :meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`: the inputs; per case the shaft
+    lines, every bearing's reactions, seat state, summary and full pipeline Analysis (pressures, lives,
+    friction), the system life and every warning; the notes. ``options`` go to the ShaftAnalysis
+    (``friction_model``, ``contamination``, ``reliability``).
     """
-    from bearingkit.systems.life import friction_system, rate_system
+    from bearingkit.systems.shaft_analysis import ShaftAnalysis
 
-    rating = rate_system(result)
-    torque, notes = friction_system(result, lubricant=inp.lubricant)
-    cases = []
-    for c in range(result.n_cases):
-        d = result.to_dict(c)
-        d["rating"] = rating.to_dict(c)
-        d["friction_Nm"] = {name: (None if np.isnan(t[c]) else float(t[c])) for name, t in torque.items()}
-        d["warnings"] = list(rating.warnings[c])
-        cases.append(d)
+    return ShaftAnalysis(inp, result, **options).to_dict()
+
+
+def _named(keys, values) -> dict:
+    return {k: float(v) for k, v in zip(keys, values, strict=True)}
+
+
+def inputs_dict(inp: ShaftInput) -> dict:
+    """The shaft file as read (SI, units in keys): sections, material, bearings, gears, masses, cases."""
+    system, loads = inp.system, inp.loads
+    shaft = system.shaft
+    mat = shaft.material
+    n = loads.n_cases
+
+    def per_case(c):
+        forces = [
+            {"name": f.name, "position_m": f.position, **_named(_FORCE_KEYS, f.load[c])}
+            for f in loads.forces
+            if np.any(f.load[c] != 0.0)
+        ]
+        lines = [
+            {"name": q.name, "start_m": q.start, "end_m": q.end, **_named(("q_x_N_per_m", "q_y_N_per_m", "q_z_N_per_m"), q.load[c])}
+            for q in loads.line_loads
+            if np.any(q.load[c] != 0.0)
+        ]
+        torques = {g: float(np.broadcast_to(t, (n,))[c]) for g, t in loads.gear_torques.items()}
+        return {
+            "name": loads.names[c],
+            "speed_rad_s": None if loads.speed is None else float(loads.speed[c]),
+            "temperature_C": None if loads.temperature is None else float(loads.temperature[c]),
+            "gear_torques_Nm": torques,
+            "forces": forces,
+            "line_loads": lines,
+        }
+
     return {
-        "file": inp.source,
-        "shaft": inp.system.name,
+        "material": {
+            "name": mat.name,
+            "youngs_modulus_Pa": mat.youngs_modulus,
+            "poisson_ratio": mat.poisson_ratio,
+            "density_kg_per_m3": mat.density,
+        },
+        "shear_deformation": shaft.shear_deformation,
+        "gravity_m_per_s2": None if loads.gravity is None else [float(g) for g in loads.gravity],
+        "sections": [
+            {
+                "start_m": s.start,
+                "end_m": s.end,
+                "outer_diameter_m": s.outer_diameter,
+                "inner_diameter_m": s.inner_diameter,
+            }
+            for s in shaft.sections
+        ],
         "bearings": [
             {
                 "name": b.name,
                 "bearing": getattr(b.bearing, "name", "linear bearing"),
+                "file": getattr(b.source, "source", None),
                 "position_m": b.position,
+                "orientation": b.orientation,
+                "axial": b.axial,
+                "axial_offset_m": b.axial_offset,
+                "housing_stiffness_SI": None
+                if b.housing_stiffness is None
+                else [None if not np.isfinite(k) else float(k) for k in b.housing_stiffness],
             }
-            for b in inp.system.bearings
+            for b in system.bearings
         ],
-        "notes": [*inp.warnings, *notes],
-        "cases": cases,
+        "gears": [
+            {
+                "name": g.name,
+                "position_m": g.position,
+                "pitch_diameter_m": g.pitch_diameter,
+                "pressure_angle_rad": g.pressure_angle,
+                "helix_angle_rad": g.helix_angle,
+                "mesh_angle_rad": g.mesh_angle,
+                "mass_kg": g.mass,
+            }
+            for g in system.gears
+        ],
+        "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
+        "lubricant": None if inp.lubricant is None else inp.lubricant.name,
+        "load_cases": [per_case(c) for c in range(n)],
     }
+
+
+_FORCE_KEYS = ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm")
