@@ -7,7 +7,8 @@ the bearing subsections, drawn by the single-bearing renderers of :mod:`bearingk
 never recomputes mechanics. Self-contained like the bearing report: inline figures and style, no
 script.
 
->>> ShaftAnalysis(load_shaft_file("examples/shaft_countershaft.toml")).report("out/shaft.html")  # doctest: +SKIP
+>>> analysis = ShaftAnalysis(load_shaft_file("examples/shaft_countershaft.toml"))  # doctest: +SKIP
+>>> analysis.report("out/shaft.html")                                             # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -92,7 +93,13 @@ def _inputs_html(data: dict, analysis) -> str:
         _table(
             ["#", "start [mm]", "end [mm]", "d_o [mm]", "d_i [mm]"],
             [
-                [str(i), _mm(s["start_m"]), _mm(s["end_m"]), _mm(s["outer_diameter_m"]), _mm(s["inner_diameter_m"])]
+                [
+                    str(i),
+                    _mm(s["start_m"]),
+                    _mm(s["end_m"]),
+                    _mm(s["outer_diameter_m"]),
+                    _mm(s["inner_diameter_m"]),
+                ]
                 for i, s in enumerate(inp["sections"])
             ],
         )
@@ -110,12 +117,23 @@ def _inputs_html(data: dict, analysis) -> str:
                 _e(b["orientation"]),
                 _e(b["axial"]),
                 fmt(b["axial_offset_m"], 4, 1e6),
-                "rigid" if housing is None else _e(", ".join("rigid" if k is None else f"{k:.3g}" for k in housing)),
+                "rigid"
+                if housing is None
+                else _e(", ".join("rigid" if k is None else f"{k:.3g}" for k in housing)),
             ]
         )
     parts.append(
         _table(
-            ["name", "bearing", "file", "z [mm]", "orientation", "axial", "axial offset [µm]", "housing [SI]"],
+            [
+                "name",
+                "bearing",
+                "file",
+                "z [mm]",
+                "orientation",
+                "axial",
+                "axial offset [µm]",
+                "housing [SI]",
+            ],
             rows,
             left=3,
         )
@@ -153,12 +171,12 @@ def _inputs_html(data: dict, analysis) -> str:
         torques = "; ".join(f"{g} {fmt(t, 5)} N·m" for g, t in c["gear_torques_Nm"].items())
         forces = "; ".join(
             f"{f['name']} at {_mm(f['position_m'])} mm: "
-            + ", ".join(f"{k.rsplit('_', 1)[0]} {fmt(v, 5)}" for k, v in f.items() if k[:2] in ("F_", "M_") and v)
+            + ", ".join(
+                f"{k.rsplit('_', 1)[0]} {fmt(v, 5)}" for k, v in f.items() if k[:2] in ("F_", "M_") and v
+            )
             for f in c["forces"]
         )
-        lines = "; ".join(
-            f"{q['name']} {_mm(q['start_m'])}–{_mm(q['end_m'])} mm" for q in c["line_loads"]
-        )
+        lines = "; ".join(f"{q['name']} {_mm(q['start_m'])}–{_mm(q['end_m'])} mm" for q in c["line_loads"])
         rows.append(
             [
                 _e(c["name"]),
@@ -221,7 +239,9 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
             + [_cell(sm["seat_displacement"][k], f, d) for k, _, f, d in SEAT_COLUMNS]
             + [fmt(sm["misalignment_rad"], 4, 1e3)]
         )
-    heads = ["bearing", "z [mm]"] + [h for _, h, _, _ in REACTION_COLUMNS] + [h for _, h, _, _ in SEAT_COLUMNS]
+    heads = (
+        ["bearing", "z [mm]"] + [h for _, h, _, _ in REACTION_COLUMNS] + [h for _, h, _, _ in SEAT_COLUMNS]
+    )
     parts.append(_table([*heads, "misalignment [mrad]"], rows, left=1, cls="reactions"))
     parts.append(
         "<p>Reaction: force and moment of the bearing on the shaft. Seat: displacement and tilt of the "
@@ -236,7 +256,9 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
         for b in c["bearings"]
     ]
     parts.append(
-        _table(["bearing"] + [h for _, h, _, _ in RESULT_COLUMNS] + ["warnings"], rows, left=1, cls="bearings")
+        _table(
+            ["bearing"] + [h for _, h, _, _ in RESULT_COLUMNS] + ["warnings"], rows, left=1, cls="bearings"
+        )
     )
     sysd = c["rating"]["system"]
     parts.append(f"<h4>{number}.3. System life</h4>")
@@ -346,7 +368,15 @@ def _summary_html(data: dict) -> str:
 
 
 def build_shaft_report(analysis, *, title=None, notes=()) -> str:
-    """The self-contained HTML report (text) of a :class:`~bearingkit.systems.shaft_analysis.ShaftAnalysis`."""
+    """The self-contained HTML report (text) of a shaft analysis.
+
+    Parameters
+    ----------
+    analysis : bearingkit.systems.shaft_analysis.ShaftAnalysis
+    title : str, optional
+    notes : sequence of str
+        Extra run notes shown before the analysis's own.
+    """
     from bearingkit import __version__
 
     data = analysis.to_dict()

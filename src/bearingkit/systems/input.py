@@ -442,7 +442,12 @@ def inputs_dict(inp: ShaftInput) -> dict:
             if np.any(f.load[c] != 0.0)
         ]
         lines = [
-            {"name": q.name, "start_m": q.start, "end_m": q.end, **_named(("q_x_N_per_m", "q_y_N_per_m", "q_z_N_per_m"), q.load[c])}
+            {
+                "name": q.name,
+                "start_m": q.start,
+                "end_m": q.end,
+                **_named(("q_x_N_per_m", "q_y_N_per_m", "q_z_N_per_m"), q.load[c]),
+            }
             for q in loads.line_loads
             if np.any(q.load[c] != 0.0)
         ]

@@ -87,7 +87,8 @@ class SeatInput(ModelInput):
 
         names = self.case_names or tuple(f"case {i}" for i in range(len(self.load)))
         return tuple(
-            LoadCase(n, self.load[i], at(self.speeds, i), at(self.temperatures, i)) for i, n in enumerate(names)
+            LoadCase(n, self.load[i], at(self.speeds, i), at(self.temperatures, i))
+            for i, n in enumerate(names)
         )
 
     @property
@@ -129,7 +130,9 @@ class SeatInput(ModelInput):
         convergence, iterations, residual and reason are the shaft solve's."""
         from bearingkit.analysis.quasistatic import solve
 
-        res = solve(self.model, self.load, free=self.free, displacement=self.displacement, options=self.options)
+        res = solve(
+            self.model, self.load, free=self.free, displacement=self.displacement, options=self.options
+        )
         if self.system_state is None:
             return res
         converged, iterations, residual, reason = self.system_state
@@ -164,7 +167,9 @@ class ShaftAnalysis:
         Reliability of L_nm (0.9 … 0.9995).
     """
 
-    def __init__(self, shaft_input, result=None, *, friction_model="components", contamination=None, reliability=0.9):
+    def __init__(
+        self, shaft_input, result=None, *, friction_model="components", contamination=None, reliability=0.9
+    ):
         self.input = shaft_input
         self._result = result
         self.friction_model = friction_model
@@ -234,7 +239,7 @@ class ShaftAnalysis:
 
     @functools.cached_property
     def warnings(self) -> list[list[str]]:
-        """Per case: the system's non-convergence, every bearing's warnings (``NAME: …``), the system life's."""
+        """Per case: the system's non-convergence, every bearing's warnings (``NAME: …``), the system's."""
         res, out = self.result, []
         for c in range(self.n_cases):
             notes = []
@@ -337,7 +342,9 @@ class ShaftAnalysis:
             d["bearings"] = [self.bearing_dict(b.name, c) for b in self.system.bearings]
             d["rating"] = rating.to_dict(c)
             d["friction_Nm"] = {
-                b["name"]: b["summary"]["friction_torque_Nm"] for b in d["bearings"] if b["name"] in self.bearings
+                b["name"]: b["summary"]["friction_torque_Nm"]
+                for b in d["bearings"]
+                if b["name"] in self.bearings
             }
             losses = [b["summary"]["power_loss_W"] for b in d["bearings"] if b["name"] in self.bearings]
             d["power_loss_W"] = None if any(v is None for v in losses) else float(sum(losses))
@@ -351,7 +358,11 @@ class ShaftAnalysis:
             "friction_model": self.friction_model,
             "inputs": inputs_dict(self.input),
             "bearings": [
-                {"name": b.name, "bearing": getattr(b.bearing, "name", "linear bearing"), "position_m": b.position}
+                {
+                    "name": b.name,
+                    "bearing": getattr(b.bearing, "name", "linear bearing"),
+                    "position_m": b.position,
+                }
                 for b in self.system.bearings
             ],
             "notes": self.notes,
