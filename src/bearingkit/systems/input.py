@@ -408,7 +408,29 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
                 f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
             )
         lubricant = LUBRICANTS[spec.lubricant.name]
+    _check_contamination(spec.lubrication)
     return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
+
+
+def _check_contamination(lubrication) -> None:
+    """``[lubrication] contamination``: a number 0 … 1 or an ISO 281 level name (one line otherwise)."""
+    from bearingkit.physics.life.iso281_contamination import contamination_levels
+
+    value = None if lubrication is None else lubrication.contamination
+    if value is None:
+        return
+    if isinstance(value, str) and value.strip() not in contamination_levels():
+        from bearingkit.units import parse
+
+        try:
+            value = parse(value, "dimensionless", "lubrication.contamination")
+        except InputError:
+            raise InputError(
+                f"lubrication.contamination ({value!r}) must be a number 0 … 1 or one of "
+                f"{', '.join(contamination_levels())}"
+            ) from None
+    if not isinstance(value, str) and not 0.0 <= float(value) <= 1.0:
+        raise InputError(f"lubrication.contamination ({value!r}) must lie in 0 … 1 (ISO 281 e_C)")
 
 
 def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
@@ -422,94 +444,3 @@ def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
     from bearingkit.systems.shaft_analysis import ShaftAnalysis
 
     return ShaftAnalysis(inp, result, **options).to_dict()
-
-
-def _named(keys, values) -> dict:
-    return {k: float(v) for k, v in zip(keys, values, strict=True)}
-
-
-def inputs_dict(inp: ShaftInput) -> dict:
-    """The shaft file as read (SI, units in keys): sections, material, bearings, gears, masses, cases."""
-    system, loads = inp.system, inp.loads
-    shaft = system.shaft
-    mat = shaft.material
-    n = loads.n_cases
-
-    def per_case(c):
-        forces = [
-            {"name": f.name, "position_m": f.position, **_named(_FORCE_KEYS, f.load[c])}
-            for f in loads.forces
-            if np.any(f.load[c] != 0.0)
-        ]
-        lines = [
-            {
-                "name": q.name,
-                "start_m": q.start,
-                "end_m": q.end,
-                **_named(("q_x_N_per_m", "q_y_N_per_m", "q_z_N_per_m"), q.load[c]),
-            }
-            for q in loads.line_loads
-            if np.any(q.load[c] != 0.0)
-        ]
-        torques = {g: float(np.broadcast_to(t, (n,))[c]) for g, t in loads.gear_torques.items()}
-        return {
-            "name": loads.names[c],
-            "speed_rad_s": None if loads.speed is None else float(loads.speed[c]),
-            "temperature_C": None if loads.temperature is None else float(loads.temperature[c]),
-            "gear_torques_Nm": torques,
-            "forces": forces,
-            "line_loads": lines,
-        }
-
-    return {
-        "material": {
-            "name": mat.name,
-            "youngs_modulus_Pa": mat.youngs_modulus,
-            "poisson_ratio": mat.poisson_ratio,
-            "density_kg_per_m3": mat.density,
-        },
-        "shear_deformation": shaft.shear_deformation,
-        "gravity_m_per_s2": None if loads.gravity is None else [float(g) for g in loads.gravity],
-        "sections": [
-            {
-                "start_m": s.start,
-                "end_m": s.end,
-                "outer_diameter_m": s.outer_diameter,
-                "inner_diameter_m": s.inner_diameter,
-            }
-            for s in shaft.sections
-        ],
-        "bearings": [
-            {
-                "name": b.name,
-                "bearing": getattr(b.bearing, "name", "linear bearing"),
-                "file": getattr(b.source, "source", None),
-                "position_m": b.position,
-                "orientation": b.orientation,
-                "axial": b.axial,
-                "axial_offset_m": b.axial_offset,
-                "housing_stiffness_SI": None
-                if b.housing_stiffness is None
-                else [None if not np.isfinite(k) else float(k) for k in b.housing_stiffness],
-            }
-            for b in system.bearings
-        ],
-        "gears": [
-            {
-                "name": g.name,
-                "position_m": g.position,
-                "pitch_diameter_m": g.pitch_diameter,
-                "pressure_angle_rad": g.pressure_angle,
-                "helix_angle_rad": g.helix_angle,
-                "mesh_angle_rad": g.mesh_angle,
-                "mass_kg": g.mass,
-            }
-            for g in system.gears
-        ],
-        "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
-        "lubricant": None if inp.lubricant is None else inp.lubricant.name,
-        "load_cases": [per_case(c) for c in range(n)],
-    }
-
-
-_FORCE_KEYS = ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm")

@@ -34,7 +34,7 @@ from bearingkit.pipeline import ModelInput, analyze
 from bearingkit.pipeline.inputs import _ModelHeader, _ModelSolver, _ModelSpec
 from bearingkit.systems.life import combine_ratings
 
-__all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis"]
+__all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis", "inputs_dict"]
 
 #: Renderers of a ShaftAnalysis by format, registered by the report layer on import
 #: (:mod:`bearingkit.report.shaft_html`); :meth:`ShaftAnalysis.report` loads it by name.
@@ -219,13 +219,21 @@ class ShaftAnalysis:
         """Name → :class:`~bearingkit.pipeline.Analysis` of every bearing with rows (not linear ones)."""
         out = {}
         for seat in self.system.bearings:
-            if isinstance(seat.bearing, BearingModel):
+            if not isinstance(seat.bearing, BearingModel):
+                continue
+            seat_input = self._seat_input(seat)
+            try:
                 out[seat.name] = analyze(
-                    self._seat_input(seat),
+                    seat_input,
                     friction_model=self.friction_model,
                     contamination=self.contamination,
                     reliability=self.reliability,
                 )
+            except InputError as exc:  # one line naming the shaft file and the bearing
+                text = str(exc)
+                raise InputError(
+                    text if text.startswith(seat_input.source) else f"{seat_input.source}: {text}"
+                ) from None
         return out
 
     @functools.cached_property
@@ -350,8 +358,6 @@ class ShaftAnalysis:
             d["power_loss_W"] = None if any(v is None for v in losses) else float(sum(losses))
             d["warnings"] = list(self.warnings[c])
             cases.append(d)
-        from bearingkit.systems.input import inputs_dict
-
         return {
             "file": self.input.source,
             "shaft": self.system.name,
@@ -378,3 +384,94 @@ class ShaftAnalysis:
 
 _LOAD_KEYS = ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm")
 _DOF_KEYS = ("u_x_m", "u_y_m", "u_z_m", "theta_x_rad", "theta_y_rad")
+
+
+def _named(keys, values) -> dict:
+    return {k: float(v) for k, v in zip(keys, values, strict=True)}
+
+
+def inputs_dict(inp) -> dict:
+    """The shaft file as read (SI, units in keys): sections, material, bearings, gears, masses, cases."""
+    system, loads = inp.system, inp.loads
+    shaft = system.shaft
+    mat = shaft.material
+    n = loads.n_cases
+
+    def per_case(c):
+        forces = [
+            {"name": f.name, "position_m": f.position, **_named(_FORCE_KEYS, f.load[c])}
+            for f in loads.forces
+            if np.any(f.load[c] != 0.0)
+        ]
+        lines = [
+            {
+                "name": q.name,
+                "start_m": q.start,
+                "end_m": q.end,
+                **_named(("q_x_N_per_m", "q_y_N_per_m", "q_z_N_per_m"), q.load[c]),
+            }
+            for q in loads.line_loads
+            if np.any(q.load[c] != 0.0)
+        ]
+        torques = {g: float(np.broadcast_to(t, (n,))[c]) for g, t in loads.gear_torques.items()}
+        return {
+            "name": loads.names[c],
+            "speed_rad_s": None if loads.speed is None else float(loads.speed[c]),
+            "temperature_C": None if loads.temperature is None else float(loads.temperature[c]),
+            "gear_torques_Nm": torques,
+            "forces": forces,
+            "line_loads": lines,
+        }
+
+    return {
+        "material": {
+            "name": mat.name,
+            "youngs_modulus_Pa": mat.youngs_modulus,
+            "poisson_ratio": mat.poisson_ratio,
+            "density_kg_per_m3": mat.density,
+        },
+        "shear_deformation": shaft.shear_deformation,
+        "gravity_m_per_s2": None if loads.gravity is None else [float(g) for g in loads.gravity],
+        "sections": [
+            {
+                "start_m": s.start,
+                "end_m": s.end,
+                "outer_diameter_m": s.outer_diameter,
+                "inner_diameter_m": s.inner_diameter,
+            }
+            for s in shaft.sections
+        ],
+        "bearings": [
+            {
+                "name": b.name,
+                "bearing": getattr(b.bearing, "name", "linear bearing"),
+                "file": getattr(b.source, "source", None),
+                "position_m": b.position,
+                "orientation": b.orientation,
+                "axial": b.axial,
+                "axial_offset_m": b.axial_offset,
+                "housing_stiffness_SI": None
+                if b.housing_stiffness is None
+                else [None if not np.isfinite(k) else float(k) for k in b.housing_stiffness],
+            }
+            for b in system.bearings
+        ],
+        "gears": [
+            {
+                "name": g.name,
+                "position_m": g.position,
+                "pitch_diameter_m": g.pitch_diameter,
+                "pressure_angle_rad": g.pressure_angle,
+                "helix_angle_rad": g.helix_angle,
+                "mesh_angle_rad": g.mesh_angle,
+                "mass_kg": g.mass,
+            }
+            for g in system.gears
+        ],
+        "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
+        "lubricant": None if inp.lubricant is None else inp.lubricant.name,
+        "load_cases": [per_case(c) for c in range(n)],
+    }
+
+
+_FORCE_KEYS = ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm")
