@@ -197,9 +197,9 @@ def report_file(path_to_toml, out_path, *, speed=None, temperature=None) -> Path
         The written report. Bad input raises :class:`~bearingkit.errors.InputError` (one line) before
         anything is written.
     """
-    from bearingkit.io.loader import load_file
+    from bearingkit.io.loader import MAX_REPORT_CASES, load_file
 
-    bearing = load_file(path_to_toml)
+    bearing = load_file(path_to_toml).check_cases(MAX_REPORT_CASES, "a report")
     if speed is not None or temperature is not None:
         cases = [
             dataclasses.replace(
