@@ -55,7 +55,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import tomllib
 from pathlib import Path
 from typing import Literal
 
@@ -160,13 +159,10 @@ class StudyDefinition(_Strict):
 
 def load_study(path) -> StudyDefinition:
     """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder)."""
+    from bearingkit.io.reading import load_toml
+
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc})".replace("\n", " ")) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
     return from_dict(data, source=str(path), base_dir=path.parent)
 
 
@@ -182,6 +178,39 @@ def _si(value, factor, where: str):
             raise InputError(f"{where} ({value!r}) must be an integer")
         return int(x)
     return units.parse(value, dim, where)
+
+
+#: Sections that are tables, and those that are arrays of tables ([[factors]] …), of a study file.
+_TABLES = ("fixed", "optimizer", "monte_carlo", "targets")
+_TABLE_ARRAYS = ("factors", "variables", "objectives", "constraints")
+
+
+def _check_shape(data: dict, source: str) -> None:
+    """Tables where tables belong, arrays of tables where those do, names as strings and numbers as
+    numbers, before the values are read (a mutated file must give one line, not a TypeError)."""
+    from bearingkit.errors import quote
+
+    def table_array(items, where: str) -> None:
+        if not isinstance(items, list) or not all(isinstance(x, dict) for x in items):
+            raise InputError(f"{source}: {where} ({quote(items)}) must be an array of tables ([[{where}]])")
+        for i, item in enumerate(items):
+            for key in ("name", "output"):
+                if key in item and not isinstance(item[key], str):
+                    raise InputError(f"{source}: {where}[{i}].{key} ({quote(item[key])}) must be a string")
+            if "levels" in item and not isinstance(item["levels"], list):
+                raise InputError(f"{source}: {where}[{i}].levels ({quote(item['levels'])}) must be an array")
+
+    for key in _TABLES:
+        if key in data and not isinstance(data[key], dict):
+            raise InputError(f"{source}: {key} ({quote(data[key])}) must be a table ([{key}])")
+    for key in _TABLE_ARRAYS:
+        if key in data:
+            table_array(data[key], key)
+    if "factors" in data.get("monte_carlo", {}):
+        table_array(data["monte_carlo"]["factors"], "monte_carlo.factors")
+    for name, target in data.get("targets", {}).items():
+        if not isinstance(target, dict):
+            raise InputError(f"{source}: targets.{name} ({quote(target)}) must be a table of values")
 
 
 def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinition:
@@ -203,6 +232,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     }
     if unknown:
         raise InputError(f"{source}: unknown section(s) {sorted(unknown)}")
+    _check_shape(data, source)
     head = dict(data["study"])
     ev_name = head.get("evaluator")
     if not isinstance(ev_name, str):
@@ -261,7 +291,11 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         if not isinstance(t, dict):
             raise InputError(f"{source}: targets.{tname} must be a table of values")
         targets[tname] = {
-            k: (_si(v, ev.factors[k], f"{source}: targets.{tname}.{k}") if k in ev.factors else float(v))
+            k: (
+                _si(v, ev.factors[k], f"{source}: targets.{tname}.{k}")
+                if k in ev.factors
+                else units.parse(v, "dimensionless", f"{source}: targets.{tname}.{k}")
+            )
             for k, v in t.items()
         }
     bearing = head.get("bearing")
