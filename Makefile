@@ -3,6 +3,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
+ROSS   := $(VENV)/.installed-ross
 
 .PHONY: run test test-slow bench lint validate clean
 
@@ -12,13 +13,20 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install -q -e '.[dev]'
 	touch $(STAMP)
 
+# The tests also need the optional rotordynamics extra (ross-rotordynamics, ~2 min to install).
+$(ROSS): $(STAMP)
+	@echo "installing the [ross] extra: the ROSS export test (tests/systems/test_ross_export.py) must run in CI"
+	$(BIN)/python -m pip install -q -e '.[dev,ross]'
+	touch $(ROSS)
+
 run: $(STAMP)
 	$(BIN)/bearingkit run-flagship
 
-test: $(STAMP)
+test: $(ROSS)
 	$(BIN)/ruff check .
 	bash scripts/ensure_chromium.sh
 	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -m ross tests/systems
 	$(BIN)/bearingkit validate
 
 test-slow: $(STAMP)

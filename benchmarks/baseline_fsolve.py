@@ -20,10 +20,10 @@ q = (u_x, u_z, θ_y), u_y = θ_x = 0):
   s = (u_r, σ (A₀ − c) + u_a), A = |s|, δ = ⟨A − A₀⟩, Q = K_n δ^1.5 along −s/A (zero if the
   one-sided thrust groove would be loaded from the wrong side, σ s_a < 0, as in rows/ball.py);
 
-with c = clearance/2, A₀ = (2f − 1) D_w, K_n from :func:`bearingkit.physics.hertz.point_stiffness`
-(both contacts in series), c_s = c_l w / l from :func:`bearingkit.physics.hertz.line_stiffness`
+with c = clearance/2, A₀ = (2f − 1) D_w, K_n from :func:`bearingkit.physics.contact.hertz.point_stiffness`
+(both contacts in series), c_s = c_l w / l from :func:`bearingkit.physics.contact.line.line_stiffness`
 (paired as the geometry's ``pairing`` says: two contacts in series or the one-contact law on the
-total approach) and C(x) from :mod:`bearingkit.physics.profiles` — so both codes
+total approach) and C(x) from :mod:`bearingkit.physics.contact.profiles` — so both codes
 solve the identical problem. Constants are computed once per bearing (as any script would), and the
 loops use :mod:`math` scalars, so this is a fair, not a deliberately slow, baseline.
 """
@@ -38,7 +38,7 @@ from scipy.optimize import fsolve
 
 from bearingkit.bearings.common import e_reduced_of
 from bearingkit.bearings.turntable import AXIAL_ROW_OFFSET, CompositeTurntableGeometry, _profile
-from bearingkit.physics import hertz
+from bearingkit.physics.contact import hertz, line
 
 #: Exponent of the line law q = c_s δ^(10/9) (Kunert 1961).
 LINE_EXP = 10.0 / 9.0
@@ -138,10 +138,10 @@ class BaselineTurntable:
 
     @staticmethod
     def _roller_row(n, diameter, length, pitch_diameter, sigma, clearance, g, e_red) -> _RollerRow:
-        x, width = hertz.slice_grid(length, g.n_slices)
+        x, width = line.slice_grid(length, g.n_slices)
         profile = _profile(g.crowning, length, diameter)
         drop = [2.0 * float(profile.crown_drop(xk)) for xk in x]
-        k_contact = float(hertz.line_stiffness(length, e_red, law="kunert"))
+        k_contact = float(line.line_stiffness(length, e_red, law="kunert"))
         # Both raceway contacts in series ("series"), or the one-contact law on the total approach as
         # Tian et al. 2025 write eqs. 3–5 ("total_approach", the seed-000 builder's default).
         if getattr(g, "pairing", "series") == "series":

@@ -64,7 +64,7 @@ def _sweep_definition(n: int, chunk: int = CHUNK):
 
 def _warm_inputs(definition):
     from bearingkit.studies import evaluators
-    from bearingkit.studies.runner import build_cases
+    from bearingkit.studies.cases import build_cases
 
     warm = build_cases(definition).iloc[:WARMUP_CASES]
     ev = evaluators.get(definition.evaluator)

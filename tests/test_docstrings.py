@@ -9,8 +9,11 @@ import pytest
 
 import bearingkit.physics as physics
 
+#: Every module under physics/, its sub-packages included (walk_packages recurses).
 MODULES = [
-    importlib.import_module(f"bearingkit.physics.{m.name}") for m in pkgutil.iter_modules(physics.__path__)
+    importlib.import_module(m.name)
+    for m in pkgutil.walk_packages(physics.__path__, prefix="bearingkit.physics.")
+    if not m.ispkg
 ]
 YEAR = re.compile(r"(1[89]\d\d|20[0-3]\d)")
 
@@ -19,7 +22,7 @@ def _public_functions():
     for mod in MODULES:
         for name, fn in inspect.getmembers(mod, inspect.isfunction):
             if fn.__module__ == mod.__name__ and not name.startswith("_"):
-                yield pytest.param(fn, id=f"{mod.__name__.rsplit('.', 1)[1]}.{name}")
+                yield pytest.param(fn, id=f"{mod.__name__.removeprefix('bearingkit.physics.')}.{name}")
 
 
 @pytest.mark.parametrize("fn", list(_public_functions()))

@@ -21,6 +21,12 @@ def _fmt(value) -> str:
     return f"array(shape={arr.shape}, min={np.nanmin(bad):.6g}, max={np.nanmax(bad):.6g})"
 
 
+def scalar_or_array(x):
+    """``x`` as float: 0-d arrays come back as numpy scalars, everything else as arrays."""
+    x = np.asarray(x, dtype=float)
+    return x[()] if x.ndim == 0 else x
+
+
 def finite(field: str, value, unit: str = ""):
     """Require finite values; return ``value`` unchanged."""
     arr = np.asarray(value, dtype=float)

@@ -5,7 +5,7 @@ Hardness is a Vickers number HV (kgf/mm², as bearing standards quote it) and is
 
 This module stores material constants and forms the two combinations every contact law needs,
 Kunert/Palmgren's compliance η = (1−ν₁²)/E₁ + (1−ν₂²)/E₂ and Hamrock's reduced modulus E′ = 2/η.
-Everything else of Hertz theory lives in :mod:`bearingkit.physics.hertz`.
+Everything else of Hertz theory lives in :mod:`bearingkit.physics.contact.hertz`.
 
 Presets (:data:`MATERIALS`, looked up with :func:`get_material`)
 -----------------------------------------------------------------

@@ -46,6 +46,10 @@ SI_UNITS: dict[str, str] = {
     "mass": "kg",
     "thermal_conductivity": "W/(m*K)",
     "time": "s",
+    "acceleration": "m/s^2",
+    "line_load": "N/m",
+    "stiffness": "N/m",
+    "rotational_stiffness": "N*m/rad",
     "dimensionless": "",
 }
 
@@ -67,6 +71,10 @@ UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
     "mass": ("kg", "g"),
     "thermal_conductivity": ("W/(m*K)",),
     "time": ("s", "ms", "min", "h"),
+    "acceleration": ("m/s^2", "mm/s^2"),
+    "line_load": ("N/m", "N/mm", "kN/m"),
+    "stiffness": ("N/m", "N/mm", "N/um", "kN/mm"),
+    "rotational_stiffness": ("N*m/rad", "kN*m/rad", "N*m/mrad"),
     "dimensionless": (),
 }
 

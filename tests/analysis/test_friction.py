@@ -90,7 +90,7 @@ def test_model_variants_run():
 
 
 def test_seed000_validation_cases():
-    import bearingkit.validation.seed000_friction as s
+    import bearingkit.papers.tian2025.validation as s
     from bearingkit.validation.registry import all_cases, run_cases
 
     cases = all_cases(["seed000/table3/", "seed000/conclusion/"])

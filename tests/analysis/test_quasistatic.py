@@ -331,8 +331,8 @@ def test_per_case_clearance_batch_equals_single_solves():
 
 
 def test_slice_pressures_are_hertz_line_contacts(composite):
-    """The per-slice pressures of the state equal hertz.line_contact of each slice load, both raceways."""
-    from bearingkit.physics import hertz
+    """The per-slice pressures of the state equal line.line_contact of each slice load, both raceways."""
+    from bearingkit.physics.contact import line
 
     res = solve(composite, eccentric_axial_load(np.array([2000.0, 6000.0]), 0.3, radial_load=3000.0))
     for kernel, state in zip(composite.kernels, res.rows, strict=True):
@@ -344,6 +344,6 @@ def test_slice_pressures_are_hertz_line_contacts(composite):
         radial = row.orientation == "radial"
         for side, sign in (("inner", -1.0), ("outer", 1.0)):
             rx = d / 2 * (1 + sign * d / dm) if radial else d / 2
-            ref = hertz.line_contact(state.slice_load, width, rx, kernel.e_reduced).max_pressure
+            ref = line.line_contact(state.slice_load, width, rx, kernel.e_reduced).max_pressure
             np.testing.assert_allclose(state.extras[f"slice_pressure_{side}"], ref, rtol=1e-12, atol=1e-3)
         assert state.max_pressure.max() > 1e8

@@ -239,7 +239,7 @@ def test_validation_cases():
 
 
 def test_sliding_dominated_inner_torque_is_flagged():
-    from bearingkit.validation.seed001_friction import _friction
+    from bearingkit.papers.liu2022.validation_friction import _friction
 
     for model, flagged in (("limiting_shear", True), ("newtonian", True), ("newtonian_mpa", False)):
         r = _friction(1e-4, model)

@@ -82,6 +82,7 @@ def test_report_refuses_many_cases_before_writing(tmp_path):
     with pytest.raises(InputError) as err:
         report_file(source, out)
     assert str(err.value) == (
-        f"{source}: load_cases (21 cases) must be at most 20 for a report; split the file"
+        f"{source}: load_cases (21 cases) must be at most 20 for a report; select some with --case or "
+        "split the file"
     )
     assert not out.exists()

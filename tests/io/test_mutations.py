@@ -9,11 +9,11 @@ Two fuzzers:
   deleted keys and sections, wrong types, extreme magnitudes (1e-12 … 1e12), NaN/inf strings, unit
   swaps, unicode, deep nesting, huge arrays, typos, truncation of the text — writes the mutant as
   TOML and runs it through ``analyze``, ``rating``, ``friction`` and ``report`` in-process (typer's
-  CliRunner). Every run must end with exit code 0, 1 or 2 and no traceback; no output may hold NaN or
-  Infinity; a failure is exactly one stderr line ``error: FILE: …`` naming the file and a field (or
-  a file-level problem); a failed report leaves nothing behind. The study files go through the
-  study loader's validation the same way. :data:`N_MUTANTS` run in the normal suite, 10,000 in the
-  ``slow`` test.
+  CliRunner), the shaft files through ``shaft``. Every run must end with exit code 0, 1 or 2 and no
+  traceback; no output may hold NaN or Infinity; a failure is exactly one stderr line
+  ``error: FILE: …`` naming the file and a field (or a file-level problem); a failed report leaves
+  nothing behind. The study files go through the study loader's validation the same way.
+  :data:`N_MUTANTS` run in the normal suite, 10,000 in the ``slow`` test.
 """
 
 from __future__ import annotations
@@ -45,6 +45,10 @@ TEXT = {p.stem: p.read_text(encoding="utf-8") for p in sorted(EXAMPLES.glob("*.t
 DATA = {k: tomllib.loads(v) for k, v in TEXT.items()}
 DATA = {k: v for k, v in DATA.items() if v.get("bearing", {}).get("type") in BUILDERS}
 STUDY_TEXT = {p.stem: p.read_text(encoding="utf-8") for p in sorted((EXAMPLES / "studies").glob("*.toml"))}
+#: Shaft files (systems of several bearings, the ``shaft`` command); they name bearing files nearby.
+SHAFT_DATA = {
+    p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted(EXAMPLES.glob("shaft_*.toml"))
+}
 SOURCE = "mutant.toml"
 UNITS = ["N", "kN", "mm", "m", "um", "N*m", "rpm", "deg", "degC", "GPa", "kg", "s", "kg/m^3", "", "furlong"]
 #: Mutants per run of the normal suite (each through one command; the slow test runs 10,000).
@@ -280,6 +284,9 @@ class Mutator:
             data["load_cases"] = data["load_cases"][:max_cases]
         return self._mutate(name, data, study=False)
 
+    def shaft(self, name: str) -> Mutant:
+        return self._mutate(name, copy.deepcopy(SHAFT_DATA[name]), study=False)
+
     def study(self, name: str) -> Mutant:
         return self._mutate(name, tomllib.loads(STUDY_TEXT[name]), study=True)
 
@@ -375,6 +382,8 @@ COMMANDS = {
     "friction": ["--lubricant", "ISO_VG100", "--speed", "100rpm", "--json"],
     "friction table": ["--lubricant", "ISO_VG100", "--speed", "100rpm"],
     "report": [],
+    "shaft": [],
+    "shaft --json": ["--json"],
 }
 _NON_FINITE_TEXT = re.compile(r"(?<![A-Za-z0-9_])[-+]?(?:nan|inf|infinity)(?![A-Za-z0-9_])", re.IGNORECASE)
 _DATA_URI = re.compile(r"data:[a-z/+]+;base64,[A-Za-z0-9+/=]+")
@@ -387,6 +396,7 @@ def _reject_constant(name):
 
 def check_command(mutant: Mutant, command: str, tmp: Path, index: int) -> list[str]:
     """Run ``command`` on the mutant; the list of broken promises (empty: all kept)."""
+    _copy_examples(tmp)  # shaft files name bearing files next to them
     path = tmp / f"mutant_{index}.toml"
     path.write_text(mutant.text, encoding="utf-8", errors="surrogatepass")
     out_dir = tmp / f"report_{index}"
@@ -446,6 +456,7 @@ _FILE_LEVEL = (
     "material",
     "bearing",
     "solver",
+    "shaft",
     "row '",
     "--",
 )
@@ -456,15 +467,20 @@ def _names_a_field(message: str) -> bool:
     return bool(_FIELD.match(message)) or any(w in message for w in _FILE_LEVEL)
 
 
+def _copy_examples(tmp: Path) -> None:
+    """The example files in ``tmp`` (once), for the relative paths of shaft and study files."""
+    for p in EXAMPLES.glob("*.toml"):
+        if not (tmp / p.name).exists():
+            (tmp / p.name).write_text(p.read_text(encoding="utf-8"), encoding="utf-8")
+
+
 def check_study(mutant: Mutant, tmp: Path, index: int) -> list[str]:
     """Validate a mutated study file (the study loader, no run): a definition or one line."""
     from bearingkit.studies.definition import load_study
 
     folder = tmp / "studies"
     folder.mkdir(exist_ok=True)
-    for p in EXAMPLES.glob("*.toml"):  # relative bearing paths ("../x.toml") resolve as in examples/
-        if not (tmp / p.name).exists():
-            (tmp / p.name).write_text(p.read_text(encoding="utf-8"), encoding="utf-8")
+    _copy_examples(tmp)  # relative bearing paths ("../x.toml") resolve as in examples/
     path = folder / f"study_{index}.toml"
     path.write_text(mutant.text, encoding="utf-8", errors="surrogatepass")
     try:
@@ -482,12 +498,14 @@ def check_study(mutant: Mutant, tmp: Path, index: int) -> list[str]:
     return []
 
 
-def run_fuzz(n: int, seed: int, tmp: Path, report_share=0.03, study_share=0.1, huge=100_000):
+def run_fuzz(
+    n: int, seed: int, tmp: Path, report_share=0.03, study_share=0.1, shaft_share=0.04, huge=100_000
+):
     """``n`` mutants of every example (round robin), each through one command; the findings."""
     mutator = Mutator(seed, huge)
     rng = random.Random(seed + 1)
-    names, studies = sorted(DATA), sorted(STUDY_TEXT)
-    commands = [c for c in COMMANDS if c != "report"]
+    names, studies, shafts = sorted(DATA), sorted(STUDY_TEXT), sorted(SHAFT_DATA)
+    commands = [c for c in COMMANDS if c != "report" and not c.startswith("shaft")]
     findings = []
     for i in range(n):
         draw = rng.random()
@@ -495,7 +513,11 @@ def run_fuzz(n: int, seed: int, tmp: Path, report_share=0.03, study_share=0.1, h
             mutant = mutator.study(studies[i % len(studies)])
             problems = check_study(mutant, tmp, i)
             command = "study"
-        elif draw < study_share + report_share:
+        elif draw < study_share + shaft_share:
+            mutant = mutator.shaft(shafts[i % len(shafts)])
+            command = rng.choice(["shaft", "shaft --json"])
+            problems = check_command(mutant, command, tmp, i)
+        elif draw < study_share + shaft_share + report_share:
             mutant = mutator.bearing(names[i % len(names)], max_cases=1)
             command = "report"
             problems = check_command(mutant, command, tmp, i)
@@ -509,11 +531,11 @@ def run_fuzz(n: int, seed: int, tmp: Path, report_share=0.03, study_share=0.1, h
 
 
 def test_mutants_of_every_example_through_the_commands(tmp_path):
-    findings = run_fuzz(N_MUTANTS, seed=2024, tmp=tmp_path, huge=20_000)
+    findings = run_fuzz(N_MUTANTS, seed=2024, tmp=tmp_path, shaft_share=0.02, huge=20_000)
     assert findings == []
 
 
 @pytest.mark.slow
 def test_ten_thousand_mutants_through_the_commands(tmp_path):
-    findings = run_fuzz(10_000, seed=7, tmp=tmp_path)
+    findings = run_fuzz(10_000, seed=7, tmp=tmp_path, shaft_share=0.01)
     assert findings == []

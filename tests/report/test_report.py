@@ -9,7 +9,6 @@ import os
 import re
 from html.parser import HTMLParser
 from pathlib import Path
-from types import SimpleNamespace
 
 import matplotlib.image as mpimg
 import numpy as np
@@ -17,18 +16,13 @@ import pytest
 
 from bearingkit.analysis.quasistatic import SolverOptions
 from bearingkit.analysis.rating import rate
+from bearingkit.cli.flagship import FlagshipContext
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file, loads
+from bearingkit.pipeline import analyze
 from bearingkit.references import REFERENCES
-from bearingkit.report import (
-    build_report,
-    report_file,
-    run_friction,
-    run_rating,
-    write_flagship_report,
-    write_report,
-)
-from bearingkit.report.html import fmt, warning_kind
+from bearingkit.report import build_report, report_file, write_report
+from bearingkit.report.html_format import fmt, warning_kind
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SEED000 = EXAMPLES / "seed000_composite.toml"
@@ -86,21 +80,19 @@ def distinct_colours(img: np.ndarray) -> int:
 
 @pytest.fixture(scope="module")
 def flagship(tmp_path_factory):
-    """Seed-000 flagship case through write_flagship_report (as `make run` does)."""
-    bearing = load_file(SEED000).select(["flagship"])
-    ctx = SimpleNamespace(bearing=bearing, result=bearing.solve())
-    path = write_flagship_report(ctx, tmp_path_factory.mktemp("flag") / "out" / "report.html")
+    """Seed-000 flagship case through the flagship's Analysis (as `make run` does)."""
+    ctx = FlagshipContext()
+    path = ctx.analysis.report(tmp_path_factory.mktemp("flag") / "out" / "report.html")
     return ctx, path, path.read_text(encoding="utf-8")
 
 
 @pytest.fixture(scope="module")
 def dgbb():
-    bearing = load_file(DGBB)
-    result = bearing.solve()
-    friction, f_notes = run_friction(bearing, result, lubricant="ISO_VG68", temperature=40.0)
-    rating, r_notes = run_rating(bearing, result, speed=100.0)
-    html = build_report(bearing, result, friction=friction, rating=rating, notes=f_notes + r_notes)
-    return bearing, result, friction, rating, html
+    a = analyze(DGBB, lubricant="ISO_VG68", temperature=40.0, speed=100.0)
+    html = build_report(
+        a.input, a.statics, friction=a.friction.native, rating=a.rating, notes=a.notes, warnings=a.warnings
+    )
+    return a.input, a.statics, a.friction.native, a.rating, html
 
 
 # ------------------------------------------------------------------------------------------------
@@ -195,11 +187,11 @@ def test_every_case_and_row_of_a_multi_case_file(dgbb):
     # no roller rows: polar + friction + rating per case, no slice map
     assert len(page.images) == 3 * len(bearing.cases)
     assert "Slice pressure map" not in html
-    # friction total per case in the summary, in N·mm
+    # friction total per case in the summary, in N·m (the unit of the CLI and the JSON)
     summary = next(t for t in page.tables if t["cls"] == "summary")
-    col = summary["rows"][0].index("friction [N·mm]")
+    col = summary["rows"][0].index("friction [N·m]")
     for c, r in enumerate(summary["rows"][1:]):
-        assert r[col] == fmt(friction.total[c], 5, 1e3)
+        assert r[col] == fmt(friction.total[c], 5)
 
 
 def test_displacement_is_shown_in_display_units(dgbb):
@@ -211,14 +203,14 @@ def test_displacement_is_shown_in_display_units(dgbb):
         assert t["rows"][1][0] == fmt(result.displacement[c, 0], 5, 1e6)
 
 
-def test_friction_skipped_without_lubricant_is_explained():
-    bearing = load_file(DGBB).select(["radial_4kN"])
-    result = bearing.solve()
-    friction, notes = run_friction(bearing, result)
-    assert friction is None and "no [lubricant]" in notes[0]
-    html = build_report(bearing, result, notes=notes)
-    assert "Friction not computed" in html and "Not computed in this run: friction torque, ratings" in html
-    assert len(Page(html).images) == 1  # the polar plot only
+def test_friction_skipped_without_lubricant_is_explained(tmp_path):
+    a = analyze(DGBB, cases=["radial_4kN"])
+    assert a.friction is None
+    assert any("friction (components) not computed" in n and "lubricant: none given" in n for n in a.notes)
+    html = a.report(tmp_path / "r.html").read_text(encoding="utf-8")
+    assert "friction (components) not computed" in html
+    assert "Not computed in this run: friction torque" in html
+    assert len(Page(html).images) == 2  # the polar plot and the ratings
 
 
 # ------------------------------------------------------------------------------------------------
@@ -340,7 +332,7 @@ def test_report_file_end_to_end(tmp_path):
     loads = next(t for t in page.tables if t["rows"][0][0] == "case" and "speed [r/min]" in t["rows"][0])
     col = loads["rows"][0].index("speed [r/min]")
     assert {r[col] for r in loads["rows"][1:]} == {fmt(150.0 * 30 / np.pi, 5)}
-    assert "Friction not computed" in html  # the 6209 file has no lubricant
+    assert "friction (components) not computed" in html  # the 6209 file has no lubricant
     assert "Ratings and static safety" in html
 
 
@@ -353,32 +345,29 @@ def test_report_file_bad_input_writes_nothing(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-def test_flagship_report_uses_the_context_results(tmp_path):
-    """Friction and rating carried by the CLI's context are shown as they are (not recomputed)."""
-    from bearingkit.analysis.friction import OperatingPoint, friction_torque
-
-    bearing = load_file(DGBB).select(["radial_4kN"])
-    result = bearing.solve()
-    op = OperatingPoint(speed_inner=10.0, lubricant="ISO_VG46", temperature=55.0, cage_mass=0.25)
-    ctx = SimpleNamespace(
-        bearing=bearing,
-        result=result,
-        operating_point=op,
-        friction=friction_torque(result, op),
-        rating=rate(result, reliability=0.99),
+def test_report_shows_the_analysis_it_is_given(tmp_path):
+    """The report shows the Analysis's own friction, rating and operating point (not recomputed)."""
+    a = analyze(
+        DGBB,
+        cases=["radial_4kN"],
+        speed=10.0,
+        lubricant="ISO_VG46",
+        temperature=55.0,
+        reliability=0.99,
+        friction_options={"cage_mass": 0.25},
     )
-    path = write_flagship_report(ctx, tmp_path / "out" / "report.html")
+    path = a.report(tmp_path / "out" / "report.html", title="bearingkit flagship — test")
     html = path.read_text(encoding="utf-8")
     assert "bearingkit flagship" in html
-    assert "L1r [rev]" in html  # the context's 99 % reliability rating
-    assert "temperature 55 °C; lubricant ISO_VG46" in html and "cage mass 0.25 kg" in html
-    assert fmt(ctx.friction.total[0], 5, 1e3) in html
+    assert "L1r [rev]" in html  # the analysis's 99 % reliability rating
+    assert "temperature 55 °C; lubricant ISO_VG46" in html and "cage_mass 0.25" in html
+    assert fmt(a.friction.total[0], 5) in html
 
 
 def test_flagship_fallback_uses_seed000_friction_data(flagship):
-    from bearingkit.validation import seed000_friction
+    from bearingkit.papers.tian2025 import validation as seed000_friction
 
     _, path, html = flagship
-    assert f"viscosity factor {seed000_friction.VISCOSITY_FACTOR:g}" in html
-    assert f"cage mass {seed000_friction.CAGE_MASS:g} kg" in html
+    assert f"viscosity_factor {seed000_friction.VISCOSITY_FACTOR:g}" in html
+    assert f"cage_mass {seed000_friction.CAGE_MASS:g}" in html
     assert path.parent.name == "out"  # parent folder created

@@ -10,14 +10,12 @@ import re
 import shutil
 import subprocess
 from pathlib import Path
-from types import SimpleNamespace
 
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
-from bearingkit.io.loader import load_file
-from bearingkit.report import write_flagship_report
+from bearingkit.cli.flagship import FlagshipContext
 
 CHROMIUM = "/usr/bin/chromium"
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -54,10 +52,7 @@ def run_chromium(args, tmp: Path) -> subprocess.CompletedProcess:
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("browser")
-    bearing = load_file(EXAMPLES / "seed000_composite.toml").select(["flagship"])
-    path = write_flagship_report(
-        SimpleNamespace(bearing=bearing, result=bearing.solve()), tmp / "report.html"
-    )
+    path = FlagshipContext().analysis.report(tmp / "report.html")
     return tmp, path
 
 

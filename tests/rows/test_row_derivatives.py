@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from bearingkit.physics.profiles import make_profile
+from bearingkit.physics.contact.profiles import make_profile
 from bearingkit.rows.ball import BallRow
 from bearingkit.rows.cylindrical import CylindricalRow
 

@@ -9,7 +9,7 @@ from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
 from bearingkit.errors import InputError
-from bearingkit.physics.profiles import make_profile
+from bearingkit.physics.contact.profiles import make_profile
 
 ALPHA_E = 0.2473
 

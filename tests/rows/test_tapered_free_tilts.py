@@ -8,7 +8,7 @@ import pytest
 from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
-from bearingkit.physics.profiles import make_profile
+from bearingkit.physics.contact.profiles import make_profile
 from bearingkit.rows import tapered, tapered_kernel
 
 #: Combined loads on a pair: (F_x, F_y, F_z [N], M_x, M_y [N·m]); the first is issue #4's stall.

@@ -6,8 +6,8 @@ import pytest
 from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.bearings.ptrb import ptrb_model, ptrb_prototype
 from bearingkit.errors import InputError
-from bearingkit.physics import hertz
-from bearingkit.physics.ptrb_rating import thread_contact_curvature
+from bearingkit.physics.contact import hertz
+from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 from bearingkit.rows.threaded import (
     ThreadedRow,
     axial_tooth_distribution,

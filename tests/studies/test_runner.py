@@ -105,7 +105,7 @@ def test_seed000_l9_example_file_has_table3_runs():
 
 
 def test_example_operating_point_equals_the_validation_module():
-    from bearingkit.validation import seed000_friction as v
+    from bearingkit.papers.tian2025 import validation as v
 
     d = sd.load_study(EXAMPLES / "seed000_l9.toml")
     assert d.fixed["viscosity_factor"] == v.VISCOSITY_FACTOR

@@ -4,14 +4,14 @@ bearingkit bearing so that users can compare them with the physics torque of
 
 SI units at the boundary: m, N, rad/s, m²/s, °C (temperature, as the lubricant API); moments in N·m,
 with the unit in every result key (``total_Nm`` …). The models themselves live in
-:mod:`bearingkit.physics.friction_skf` and :mod:`bearingkit.physics.friction_palmgren` (each converts
+:mod:`bearingkit.physics.friction.skf` and :mod:`bearingkit.physics.friction.palmgren` (each converts
 to its catalogue units inside).
 
 Registries
 ----------
 :data:`ENGINEERING_MODELS`
-    ``"skf"`` → :func:`~bearingkit.physics.friction_skf.skf_friction_moment`,
-    ``"palmgren"`` → :func:`~bearingkit.physics.friction_palmgren.palmgren_friction_moment`.
+    ``"skf"`` → :func:`~bearingkit.physics.friction.skf.skf_friction_moment`,
+    ``"palmgren"`` → :func:`~bearingkit.physics.friction.palmgren.palmgren_friction_moment`.
 :data:`BEARING_TYPES`
     Bearing type names each model knows (``deep_groove_ball``, ``angular_contact_ball``,
     ``four_point_contact_ball``, ``cylindrical_roller``, ``tapered_roller``, ``thrust_ball``,
@@ -25,7 +25,7 @@ built by :mod:`bearingkit.bearings.standard` (duck-typed: ``rows[0].kind``, ``co
 catalogue models need the boundary dimensions d and D, which the builders do not store: pass them
 (``bore_diameter``, ``outside_diameter``); otherwise they are **estimated** as
 d, D = d_m ∓ D_w / (2·:data:`ELEMENT_TO_SECTION`) (documented assumption, flagged in the result's
-``notes``). C0 for the ball-bearing laws comes from ISO 76 (:mod:`bearingkit.physics.iso76`).
+``notes``). C0 for the ball-bearing laws comes from ISO 76 (:mod:`bearingkit.physics.life.iso76`).
 """
 
 from __future__ import annotations
@@ -37,7 +37,10 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
-from bearingkit.physics import friction_palmgren, friction_skf, iso76
+from bearingkit.physics.friction import palmgren as friction_palmgren
+from bearingkit.physics.friction import skf as friction_skf
+from bearingkit.physics.friction import skf_terms
+from bearingkit.physics.life import iso76
 
 #: Registry of engineering friction models.
 ENGINEERING_MODELS = {
@@ -47,7 +50,7 @@ ENGINEERING_MODELS = {
 #: Component names (keys without the ``_Nm`` suffix) of each model; they add up to ``total``.
 MODEL_COMPONENTS = {"skf": ("rolling", "sliding", "seal", "drag"), "palmgren": ("viscous", "load")}
 #: Bearing types each model covers.
-BEARING_TYPES = {"skf": tuple(friction_skf.G_MODELS), "palmgren": friction_palmgren.palmgren_types()}
+BEARING_TYPES = {"skf": tuple(skf_terms.G_MODELS), "palmgren": friction_palmgren.palmgren_types()}
 #: Element diameter over ring section width, D_w / (D − d), so that D − d ≈ D_w / ELEMENT_TO_SECTION;
 #: typical of standard ball and roller bearings (6208: D_w = 12.7 mm, D − d = 40 mm → 0.32; NU 208:
 #: 11/40 → 0.28). [M] estimate, used only when the boundary dimensions are not given.
@@ -107,7 +110,7 @@ class EngineeringFrictionResult:
 
 def _tag_notes(model: str, bearing_type: str, series: str | None) -> tuple[str, ...]:
     if model == "skf":
-        c = friction_skf.series_constants(bearing_type, series)
+        c = skf_terms.series_constants(bearing_type, series)
         notes = []
         if c["tag"] == "M" or c["kz_tag"] == "M":
             notes.append(f"SKF constants of {bearing_type} series {c['series']} are [M] (not verified)")
@@ -126,8 +129,8 @@ def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> Engi
         One of ``BEARING_TYPES[model]``.
     **kwargs
         The model's keyword arguments (SI), see
-        :func:`~bearingkit.physics.friction_skf.skf_friction_moment` and
-        :func:`~bearingkit.physics.friction_palmgren.palmgren_friction_moment`.
+        :func:`~bearingkit.physics.friction.skf.skf_friction_moment` and
+        :func:`~bearingkit.physics.friction.palmgren.palmgren_friction_moment`.
 
     Returns
     -------

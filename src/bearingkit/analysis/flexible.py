@@ -42,7 +42,7 @@ trial (one when the full step is accepted) plus the Jacobian; conditions 1–3 t
 a 15-load sweep ≈ 1 s (2 shared cores). The table is for the free ring (no housing); a housing
 (:attr:`~bearingkit.rings.FlexibleOuterRing.housing_stiffness`) stiffens the ovalisation and lowers
 the gain: condition 1 at scale 0.5 takes 7 Newton iterations free, 3–5 with steel walls of 5–80 mm
-and 3 with a rigid housing (measured, ``studies.seed002.housing_study``).
+and 3 with a rigid housing (measured, ``papers.li2025.studies.housing_study``).
 """
 
 from __future__ import annotations

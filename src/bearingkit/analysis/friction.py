@@ -25,9 +25,10 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.analysis.kinematics import RACEWAY_CONTROLS, element_kinematics, thrust_roller_kinematics
 from bearingkit.lubricants import Lubricant, as_lubricant
-from bearingkit.physics import ehl, hertz
-from bearingkit.physics import friction_components as fc
-from bearingkit.physics.traction import MU_BOUNDARY, MU_EHL_SKF_CYLINDRICAL, traction_mixed
+from bearingkit.physics.contact import hertz, line
+from bearingkit.physics.friction import components as fc
+from bearingkit.physics.lubrication import ehl
+from bearingkit.physics.lubrication.traction import MU_BOUNDARY, MU_EHL_SKF_CYLINDRICAL, traction_mixed
 
 #: Composite-free RMS roughness of a rolling element [m]: superfinished balls/rollers R_q ≈ 0.05 µm
 #: (Harris & Kotzalas 2007, ch. 4 (lubricant films), typical values 0.025–0.1 µm).
@@ -79,8 +80,8 @@ class OperatingPoint:
         Multiplier of the base-oil viscosity (effective grease viscosity / base-oil viscosity); 1 =
         base oil. The single calibration knob of the seed-000 reproduction.
     viscous_line_model, viscous_point_model : str
-        Keys of :data:`~bearingkit.physics.friction_components.VISCOUS_LINE_MODELS` /
-        :data:`~bearingkit.physics.friction_components.VISCOUS_POINT_MODELS`.
+        Keys of :data:`~bearingkit.physics.friction.components.VISCOUS_LINE_MODELS` /
+        :data:`~bearingkit.physics.friction.components.VISCOUS_POINT_MODELS`.
     raceway_control : str
         Spin-axis hypothesis of the balls (:data:`~bearingkit.analysis.kinematics.RACEWAY_CONTROLS`).
     """
@@ -264,7 +265,7 @@ def _roller_row(row, kernel, state, op, ctx):
         u_act, u_n, u_slice_n, slide_n = speeds[side]
         film = ehl.film_line_pan_hamrock(ctx["eta"], u_act, ctx["alpha_p"], e_red, rx, qs, length)
         lam = ehl.film_parameter(film.minimum, op.roughness_element, op.roughness_raceway)
-        b = hertz.line_contact(q_s, width, rx[..., None], e_red).half_width
+        b = line.line_contact(q_s, width, rx[..., None], e_red).half_width
         f_h = fc.hysteresis_force_line(q_s, b, rx[..., None], op.hysteresis_roller)
         u_roll = u_n[..., None] if u_slice_n is None else u_slice_n
         out["hysteresis_roller"] += (f_h * u_roll).sum(axis=-1)

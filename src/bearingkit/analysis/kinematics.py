@@ -238,7 +238,7 @@ def row_kinematics(row, speed_inner, speed_outer, raceway_control="tangent"):
     if row.kind == "cylindrical":
         if row.direction == 0:
             return element_kinematics(dm, d, 0.0, w_i, w_o, raceway_control)
-        from bearingkit.physics.hertz import slice_grid
+        from bearingkit.physics.contact.line import slice_grid
 
         x, _ = slice_grid(np.asarray(row.effective_length, dtype=float), row.n_slices)
         y = dm / 2 + np.asarray(x, dtype=float).reshape(-1, row.n_slices)  # (C|1, n_s)

@@ -1,7 +1,7 @@
-"""PTRB friction torque assembly (Zheng et al. 2022 §3.3) and the vectorised §6 objectives.
+"""PTRB friction torque assembly (Zheng et al. 2022 §3.3).
 
 SI units: N, m, rad/s, N·m. ``ptrb_friction`` sums the per-contact torques of
-:mod:`bearingkit.physics.ptrb_friction` over the loaded ITP and OTP contacts and adds the carrier term:
+:mod:`bearingkit.physics.friction.ptrb` over the loaded ITP and OTP contacts and adds the carrier term:
 
 * axial load F_a: every roller carries F_a/Z on one flank of each of its n teeth,
   Q_i = f_a,i F_a/(Z n sin α); M_PTRBa = Z Σ_i (M_I,i + M_O,i) + M_h (eq. 14);
@@ -9,37 +9,30 @@ SI units: N, m, rad/s, N·m. ``ptrb_friction`` sums the per-contact torques of
   :func:`bearingkit.rows.threaded.radial_roller_distribution`) on both flanks of its n teeth,
   Q_j = f_r,j F_r/(2n cos α); M_PTRBr = 2n Σ_j (M_I,j + M_O,j) + M_h (eq. 15).
 
-``ptrb_objectives`` is the same model as a pure function of design-variable arrays (the population
-axis of an optimiser), with the ratings of :mod:`bearingkit.physics.ptrb_rating`.
+The prototype of the paper, its design rules, the calibration of the contact traction and the §6
+objectives are in :mod:`bearingkit.papers.zheng2022.design`.
 
-References: ``zheng2022``, ``zheng2021``, plus those of :mod:`bearingkit.physics.ptrb_friction`.
+References: ``zheng2022``, ``zheng2021``, plus those of :mod:`bearingkit.physics.friction.ptrb`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
-from bearingkit.physics import ptrb_friction as pf
-from bearingkit.physics import ptrb_rating as pr
+from bearingkit.physics.friction import ptrb as pf
 from bearingkit.rows.threaded import PTRBGeometry, axial_tooth_distribution, radial_roller_distribution
 
 __all__ = [
-    "CALIBRATION_POINT",
     "CASES",
-    "PROTOTYPE_PITCH_DIAMETER",
-    "PROTOTYPE_THREAD_LENGTH",
     "TOOTH_DISTRIBUTIONS",
     "PTRBFrictionParameters",
     "PTRBFrictionResult",
-    "calibrate_contact_traction",
-    "design_geometry",
     "ptrb_friction",
-    "ptrb_objectives",
 ]
 
 REFERENCE_KEYS = (*pf.REFERENCE_KEYS, "iso76", "iso281")
@@ -49,20 +42,13 @@ CASES = ("axial", "radial")
 #: Tooth shares under axial load: equal (f_a,i = 1, the default; the paper's f_amax ≈ 1.07 changes M by
 #: < 0.5 %) or from the thread-connection model :func:`~bearingkit.rows.threaded.axial_tooth_distribution`.
 TOOTH_DISTRIBUTIONS = ("uniform", "model")
-#: The ONE published number the contact traction is calibrated against: Zheng et al. (2022) Table 7,
-#: axial simulation, 20 kN, 600 rpm → 0.476 N·m.
-CALIBRATION_POINT = {"case": "axial", "load_N": 20.0e3, "speed_rpm": 600.0, "torque_Nm": 0.476}
-#: D_pw of the prototype, held in the §5 sweeps and §6 optimisation ("the dimension was unchanged") [m].
-PROTOTYPE_PITCH_DIAMETER = 42.5e-3
-#: n·P of the prototype, held when n changes (§5 (2): n = 8–16 ↔ P = 1.6–0.8 mm) [m].
-PROTOTYPE_THREAD_LENGTH = 12.0e-3
 #: Temperature of the paper's friction tests (§7.2.2) [°C].
 TEST_TEMPERATURE_C = 40.0
 
 
 @dataclass(frozen=True)
 class PTRBFrictionParameters:
-    """Friction parameters the paper does not give (defaults: see :mod:`bearingkit.physics.ptrb_friction`).
+    """Friction parameters the paper does not give (defaults: see :mod:`bearingkit.physics.friction.ptrb`).
 
     Parameters
     ----------
@@ -75,18 +61,18 @@ class PTRBFrictionParameters:
     journal_ratio : float [1]
         Journal diameter / d_R.
     viscous_model : str
-        EHL rolling-resistance model, one of :data:`~bearingkit.physics.ptrb_friction.VISCOUS_MODELS`
+        EHL rolling-resistance model, one of :data:`~bearingkit.physics.friction.ptrb.VISCOUS_MODELS`
         (``harris``, the default; ``houpert`` or ``fujiwara``).
     convention : str
         ``paper`` (default: eq. (13)–(15) summed as printed) or ``power`` (power balance)
-        (:data:`~bearingkit.physics.ptrb_friction.CONVENTIONS`).
+        (:data:`~bearingkit.physics.friction.ptrb.CONVENTIONS`).
     viscous_projection : str or None
         ``axis`` or ``contact`` (paper convention), ``eq13`` or ``power`` (power convention); None: the
         convention's default (``axis``, ``eq13``)
-        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_PROJECTIONS`).
+        (:data:`~bearingkit.physics.friction.ptrb.VISCOUS_PROJECTIONS`).
     viscous_radius_y : str
         R_y of Harris's F_v: ``ball`` (default, D_w/2), ``flank`` or ``rolling``
-        (:data:`~bearingkit.physics.ptrb_friction.VISCOUS_RADII_Y`).
+        (:data:`~bearingkit.physics.friction.ptrb.VISCOUS_RADII_Y`).
 
     Notes
     -----
@@ -105,7 +91,7 @@ class PTRBFrictionParameters:
 
     @classmethod
     def power_balance(cls, **changes) -> PTRBFrictionParameters:
-        """The power-balance reading (the former default), :data:`~bearingkit.physics.ptrb_friction.
+        """The power-balance reading (the former default), :data:`~bearingkit.physics.friction.ptrb.
         POWER_BALANCE_OPTIONS` with its calibrated traction; ``changes`` override fields."""
         return cls(**{**pf.POWER_BALANCE_OPTIONS, **changes})
 
@@ -279,7 +265,7 @@ def ptrb_friction(
         M_{PTRBr} = 2n\\sum_{j=1}^{Z_e}(M_{I,j} + M_{O,j}) + M_h
 
     Zheng et al. (2022) eq. (14)-(15); per-contact torques from
-    :func:`bearingkit.physics.ptrb_friction.contact_torques`.
+    :func:`bearingkit.physics.friction.ptrb.contact_torques`.
     """
     if not isinstance(geometry, PTRBGeometry):
         raise InputError(f"geometry ({type(geometry).__name__}) must be a PTRBGeometry")
@@ -324,172 +310,3 @@ def ptrb_friction(
     return PTRBFrictionResult(
         case, f.reshape(shape), w.reshape(shape), comps, np.full(shape, float(m_h)), float(g.bore_diameter)
     )
-
-
-def calibrate_contact_traction(
-    geometry: PTRBGeometry | None = None,
-    convention: str | None = None,
-    parameters: PTRBFrictionParameters | None = None,
-) -> float:
-    """Recompute :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_CALIBRATED` [1].
-
-    The torque is affine in μ_c (spin and differential sliding ∝ μ_c, the rest independent of it), so
-    two evaluations at :data:`CALIBRATION_POINT` give the μ_c that reproduces 0.476 N·m exactly.
-    ``parameters`` (its ``traction`` ignored) sets the other model choices (default: the default
-    reading; ``PTRBFrictionParameters.power_balance()`` recomputes
-    :data:`~bearingkit.physics.ptrb_friction.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
-    given, overrides its convention (with that convention's default viscous projection).
-    """
-    from bearingkit.bearings.ptrb import ptrb_prototype
-
-    g = geometry or ptrb_prototype()
-    base = parameters or PTRBFrictionParameters()
-    if convention is not None:
-        base = replace(base, convention=convention, viscous_projection=None)
-    p = CALIBRATION_POINT
-    args = (g, p["load_N"], p["speed_rpm"] * RPM, p["case"])
-    m0 = float(ptrb_friction(*args, parameters=replace(base, traction=0.0)).torque)
-    m1 = float(ptrb_friction(*args, parameters=replace(base, traction=1.0)).torque)
-    return (p["torque_Nm"] - m0) / (m1 - m0)
-
-
-def design_geometry(
-    contact_angle=None, n_teeth=None, roller_contact_radius=None, roller_pitch_diameter=None, **kw
-):
-    """The prototype with §5/§6 design variables changed under the paper's rules [SI].
-
-    D_pw is held (d_I = D_pw − d_R, d_O = D_pw + d_R) and n·P is held at 12 mm (P = 12 mm / n).
-    Other :class:`PTRBGeometry` fields may be given by keyword (e.g. ``n_elements``).
-    """
-    from bearingkit.bearings.ptrb import ptrb_prototype
-
-    changes = dict(kw)
-    if contact_angle is not None:
-        changes["contact_angle"] = float(contact_angle)
-    if roller_contact_radius is not None:
-        changes["roller_contact_radius"] = float(roller_contact_radius)
-    if roller_pitch_diameter is not None:
-        d_r = float(roller_pitch_diameter)
-        changes.update(
-            roller_pitch_diameter=d_r,
-            inner_pitch_diameter=PROTOTYPE_PITCH_DIAMETER - d_r,
-            outer_pitch_diameter=PROTOTYPE_PITCH_DIAMETER + d_r,
-        )
-    if n_teeth is not None:
-        n = checks.integer("n_teeth", n_teeth)
-        changes.update(n_teeth=n, thread_pitch=PROTOTYPE_THREAD_LENGTH / n)
-    return ptrb_prototype(**changes)
-
-
-def ptrb_objectives(
-    alpha,
-    n,
-    R_rr,
-    d_R,
-    case: str = "axial",
-    load=20.0e3,
-    speed=4000.0 * RPM,
-    n_elements: int = 11,
-    lubricant="L-AN",
-    temperature_C: float = TEST_TEMPERATURE_C,
-    parameters: PTRBFrictionParameters | None = None,
-) -> dict:
-    """Objectives of the §6 optimisation for a population of designs (pure, vectorised).
-
-    Parameters
-    ----------
-    alpha : array_like
-        Contact angle α [rad], in (0, π/2), shape (P,).
-    n : array_like
-        Teeth per roller [1] (rounded to integers), shape (P,).
-    R_rr : array_like
-        Roller flank radius [m].
-    d_R : array_like
-        Roller pitch diameter [m].
-    case : {"axial", "radial"}
-    load : float
-        Load of the friction objective [N] (§6: 20 kN).
-    speed : float
-        ω [rad/s] (§6: 4000 rpm).
-    n_elements : int
-        Z (§6: the maximum, 11).
-
-    Returns
-    -------
-    dict of ndarray (P,)
-        ``C0`` [N] (C0a or C0r), ``C`` [N] (Ca or Cr), ``M`` [N·m], ``mu`` [1], all four ratings
-        ``C0a, Ca, C0r, Cr``, and ``feasible`` (bool: d_R ≤ 2 R_rr cos α, §5 (3)-(4), and the roller
-        fits between the pitch circles).
-
-    Notes
-    -----
-    Same rules as :func:`design_geometry` (D_pw = 42.5 mm, n·P = 12 mm, flat ring flanks, E = 212 GPa,
-    ν = 0.29); ratings as :func:`bearingkit.bearings.ptrb.ptrb_ratings` (calibrated f_amax, f_rmax),
-    friction as :func:`ptrb_friction` (uniform tooth shares). Infeasible designs are evaluated anyway
-    (flagged, not NaN) as long as the inputs are physical.
-    """
-    from bearingkit.bearings.ptrb import ptrb_prototype
-
-    checks.one_of("case", case, CASES)
-    params = parameters or PTRBFrictionParameters()
-    base = ptrb_prototype()
-    alpha, n_f, r_rr, d_r = np.broadcast_arrays(
-        *(np.atleast_1d(np.asarray(x, float)) for x in (alpha, n, R_rr, d_R))
-    )
-    checks.in_range("alpha", alpha, 0.0, np.pi / 2, "rad", closed=False)
-    checks.positive("R_rr", r_rr, "m")
-    checks.in_range("d_R", d_r, 0.0, PROTOTYPE_PITCH_DIAMETER, "m", closed=False)
-    n_t = np.rint(checks.positive("n", n_f))
-    z = checks.integer("n_elements", n_elements, low=3)
-    e_red = base.e_reduced
-    d_i, d_o = PROTOTYPE_PITCH_DIAMETER - d_r, PROTOTYPE_PITCH_DIAMETER + d_r
-    inf = np.full_like(d_r, np.inf)
-    q0 = np.minimum(
-        *(
-            pr.static_contact_load(*pr.thread_contact_curvature(d_r, dx, r_rr, inf, alpha, side)[:2], e_red)
-            for side, dx in (("inner", d_i), ("outer", d_o))
-        )
-    )
-    f_amax, f_rmax = pr.calibrated_distribution_coefficients(z)
-    gamma = d_r / PROTOTYPE_PITCH_DIAMETER
-    dw = d_r / np.cos(alpha)
-    fca = pr.fc_axial(gamma, alpha, r_rr, inf, d_r)
-    fcr = pr.fc_radial(gamma, alpha, r_rr, inf, d_r)
-    out = {
-        "C0a": pr.static_rating_axial(q0, z, n_t, alpha, f_amax),
-        "C0r": pr.static_rating_radial(q0, n_t, alpha, f_rmax),
-        "Ca": pr.basic_dynamic_axial(pr.dynamic_rating_thread(fca, dw, z, alpha, axial=True), n_t, f_amax),
-        "Cr": pr.basic_dynamic_radial(pr.dynamic_rating_thread(fcr, dw, z, alpha, axial=False), n_t),
-    }
-    eta, alpha_p = _lubricant_props(lubricant, temperature_C)
-    geom = {
-        "d_R": d_r,
-        "d_I": d_i,
-        "d_O": d_o,
-        "R_rr": r_rr,
-        "r_I": inf,
-        "r_O": inf,
-        "alpha": alpha,
-        "E": e_red,
-    }
-    geom = {k: np.asarray(v)[:, None] if np.ndim(v) else v for k, v in geom.items()}
-    f = float(checks.positive("load", load, "N"))
-    if case == "axial":
-        q = (f / (z * n_t * np.sin(alpha)))[:, None]
-        weights = (z * n_t)[:, None]
-    else:
-        share = radial_roller_distribution(z)[0].reshape(1, -1)
-        q = f * share / (2.0 * n_t * np.cos(alpha))[:, None]
-        weights = np.broadcast_to((2.0 * n_t)[:, None], q.shape)
-    comps = _sum_contacts(geom, q, q, weights, float(speed), params, eta, alpha_p)
-    m_h = pf.carrier_torque(
-        z, d_r, d_i, d_o, PROTOTYPE_THREAD_LENGTH, params.carrier_friction, params.journal_ratio
-    )
-    torque = sum(sum(d.values()) for d in comps.values()) + m_h
-    out["M"] = torque
-    out["mu"] = pf.friction_coefficient(torque, f, base.bore_diameter)
-    out["C0"] = out["C0a"] if case == "axial" else out["C0r"]
-    out["C"] = out["Ca"] if case == "axial" else out["Cr"]
-    fits = np.pi * PROTOTYPE_PITCH_DIAMETER / z >= d_r
-    out["feasible"] = (d_r <= 2.0 * r_rr * np.cos(alpha) * (1 + 1e-12)) & fits
-    return out

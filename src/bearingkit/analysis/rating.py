@@ -13,7 +13,7 @@ SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s,
 - computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
   slice loads (rollers), with the rotating ring chosen by ``rotating``;
 - computes the static safety s0 = (p_limit / p_max)^n from the largest contact pressure
-  (:func:`bearingkit.physics.iso76.static_safety_from_pressure`);
+  (:func:`bearingkit.physics.life.iso76.static_safety_from_pressure`);
 - flags truncated contact ellipses (ball rows), edge loading (roller rows), stress above the ISO 76 limit,
   unloaded rows and non-converged cases as warnings;
 
@@ -28,17 +28,20 @@ Harris & Kotzalas 2007 vol. 2 ch. 8; Zaretsky (2013) NASA/TP-2013-215305.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.rating_rows import (
-    _REFERENCES,
+from bearingkit.analysis.rating_options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
+    EDGE_STRESS_MODES,
+    RatingOptions,
+)
+from bearingkit.analysis.rating_rows import (
+    _REFERENCES,
     ISO281_CONFORMITY_LIMITS,
-    ROW_RATERS,
     WEIBULL_SLOPES,
     RowContext,
     RowRating,
@@ -46,11 +49,10 @@ from bearingkit.analysis.rating_rows import (
     rate_ball_row,
     rate_cylindrical_row,
     rate_tapered_row,
-    rate_threaded_row,
-    register_row_rater,
 )
+from bearingkit.analysis.rating_threaded import rate_threaded_row
 from bearingkit.errors import InputError
-from bearingkit.physics import iso281
+from bearingkit.physics.life import iso281
 
 __all__ = [
     "DEFAULT_EDGE_PRESSURE_RATIO",
@@ -72,89 +74,27 @@ __all__ = [
     "system_life",
 ]
 
-#: When the ISO/TS 16281 edge-stress factor f_k multiplies the slice loads: ``"auto"`` for rollers
-#: without a crowning profile (profile None), ``"always"``, ``"never"``.
-EDGE_STRESS_MODES = ("auto", "always", "never")
 #: Seconds per hour (L10h output).
 HOUR = 3600.0
 #: Newton iterations and relative tolerance of the mixed-slope system-life root.
 _SYSTEM_ITERATIONS, _SYSTEM_TOL = 100, 1e-13
 
 
-@dataclass(frozen=True)
-class RatingOptions:
-    """Settings of :func:`rate` (validated on construction).
+#: Row raters by ``row.kind``: ``rater(row, state: RowState, ctx: RowContext) -> RowRating``.
+ROW_RATERS: dict[str, Callable] = {
+    "ball": rate_ball_row,
+    "cylindrical": rate_cylindrical_row,
+    "tapered": rate_tapered_row,
+    "threaded": rate_threaded_row,
+}
 
-    Parameters
-    ----------
-    rotating : {"inner", "outer"}
-        Ring rotating relative to the load (ISO/TS 16281 equivalent-load means).
-    reliability : float
-        Reliability of the L_nr / L_nmr lives [-], 0.90 … 0.9995 (ISO 281 Table 12).
-    speed : float or ndarray (C,) or None [rad/s]
-        Relative speed of the rotating ring; lives in hours and κ need it.
-    lubricant : Lubricant or str or None
-        Lubricant for κ (:func:`bearingkit.lubricants.as_lubricant`).
-    temperature_C : float or ndarray (C,) or None [°C]
-        Operating temperature for the lubricant viscosity.
-    contamination_factor : float or ndarray (C,) or None [-]
-        e_C of ISO 281 9.3.3, 0 … 1.
-    shoulder_height : float or Mapping[str, float]
-        Groove shoulder height / D_w [-] (per row name if a mapping), see :data:`DEFAULT_SHOULDER_HEIGHT`.
-    edge_pressure_ratio : float
-        See :data:`DEFAULT_EDGE_PRESSURE_RATIO`.
-    edge_stress_factor : str
-        One of :data:`EDGE_STRESS_MODES`.
-    load_ratings : Mapping[str, float]
-        Basic dynamic load rating C [N] per row name, replacing the ISO 281 computation (catalogue values,
-        or rows whose ISO 281 factors are not shipped, e.g. thrust cylindrical rollers).
-    """
 
-    rotating: str = "inner"
-    reliability: float = 0.9
-    speed: object = None
-    lubricant: object = None
-    temperature_C: object = None
-    contamination_factor: object = None
-    shoulder_height: object = DEFAULT_SHOULDER_HEIGHT
-    edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO
-    edge_stress_factor: str = "auto"
-    load_ratings: Mapping = field(default_factory=dict)
-
-    def __post_init__(self):
-        checks.one_of("rotating", self.rotating, ("inner", "outer"))
-        checks.in_range("reliability", self.reliability, 0.9, 0.9995)
-        if self.speed is not None:
-            checks.positive("speed", self.speed, "rad/s")
-        heights = self.shoulder_height
-        for value in heights.values() if isinstance(heights, Mapping) else (heights,):
-            checks.positive("shoulder_height", value)
-        checks.in_range("edge_pressure_ratio", self.edge_pressure_ratio, 0.0, 1.0)
-        checks.positive("edge_pressure_ratio", self.edge_pressure_ratio)
-        checks.one_of("edge_stress_factor", self.edge_stress_factor, EDGE_STRESS_MODES)
-        for name, c in self.load_ratings.items():
-            checks.positive(f"load_ratings[{name!r}]", c, "N")
-        lube = (self.lubricant, self.temperature_C, self.contamination_factor)
-        given = [v is not None for v in lube]
-        if any(given) and not all(given):
-            missing = [
-                n
-                for n, g in zip(("lubricant", "temperature_C", "contamination_factor"), given, strict=True)
-                if not g
-            ]
-            raise InputError(
-                f"{', '.join(missing)} (None) must be given with the other life-modification inputs "
-                "(lubricant, temperature_C, contamination_factor) for a_ISO"
-            )
-        if all(given):
-            if self.speed is None:
-                raise InputError("speed (None) must be given for a_ISO: the viscosity ratio κ needs it")
-            checks.in_range("contamination_factor", self.contamination_factor, 0.0, 1.0)
-
-    @property
-    def modified(self) -> bool:
-        """True when a_ISO is requested (lubricant, temperature and contamination given)."""
-        return self.lubricant is not None
+def register_row_rater(kind: str, rater: Callable) -> Callable:
+    """Register the rater of a row kind (new row kinds add themselves here); returns ``rater``."""
+    if not isinstance(kind, str) or not kind:
+        raise InputError(f"kind ({kind!r}) must be a non-empty row kind name")
+    ROW_RATERS[kind] = rater
+    return rater
 
 
 def system_life(lives, slopes) -> np.ndarray:

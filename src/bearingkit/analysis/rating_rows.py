@@ -1,13 +1,13 @@
-"""Per-row ratings of a solved bearing: one rater per row kind (ball, cylindrical, tapered, threaded).
+"""Per-row ratings of a solved bearing: one rater per row kind (ball, cylindrical, tapered).
 
 SI units throughout: loads in N, pressures in Pa, lengths in m, lives in revolutions.
 
 A rater ``rater(row, state, ctx) -> RowRating`` rates one row of a
 :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` as a single-row bearing of its own geometry:
-ISO 76 C0, ISO 281 C (or the PTRB ratings of Zheng et al. 2022 for threaded rows), the ISO/TS 16281 basic
-reference rating life from the solved element or slice loads, the static safety from the largest contact
-pressure and the row's warnings. :data:`ROW_RATERS` maps ``row.kind`` to its rater;
-:func:`register_row_rater` adds or replaces one. :func:`bearingkit.analysis.rating.rate` combines the rows.
+ISO 76 C0, ISO 281 C, the ISO/TS 16281 basic reference rating life from the solved element or slice loads,
+the static safety from the largest contact pressure and the row's warnings.
+:data:`bearingkit.analysis.rating.ROW_RATERS` maps ``row.kind`` to its rater (threaded rows:
+:mod:`bearingkit.analysis.rating_threaded`); :func:`bearingkit.analysis.rating.rate` combines the rows.
 Values that cannot be computed are masked (``numpy.ma``), never NaN.
 
 References: ISO 76:2006, ISO 281:2007, ISO/TS 16281:2008, ISO/TR 1281-1; Lundberg & Palmgren (1947, 1952);
@@ -16,34 +16,24 @@ Zheng et al. (2022) doi:10.3390/machines10111051 (PTRB ratings).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from bearingkit import references
+from bearingkit.analysis.rating_options import DEFAULT_SHOULDER_HEIGHT, RatingOptions
 from bearingkit.errors import InputError
-from bearingkit.physics import iso76, iso281, iso281_life, iso16281
-
-if TYPE_CHECKING:
-    from bearingkit.analysis.rating import RatingOptions
+from bearingkit.physics.life import iso76, iso281, iso281_life, iso16281
 
 __all__ = [
-    "DEFAULT_EDGE_PRESSURE_RATIO",
-    "DEFAULT_SHOULDER_HEIGHT",
     "ISO281_CONFORMITY_LIMITS",
-    "ROW_RATERS",
     "WEIBULL_SLOPES",
     "RowContext",
     "RowRating",
     "rate_ball_row",
     "rate_cylindrical_row",
     "rate_tapered_row",
-    "rate_threaded_row",
-    "register_row_rater",
-    "threaded_groove_radii",
-    "threaded_ratings",
 ]
 
 references.add(
@@ -55,16 +45,6 @@ references.add(
     "zaretsky2013",
     "Zaretsky E.V. (2013) Rolling bearing life prediction, theory, and application. NASA/TP-2013-215305.",
 )
-
-#: Shoulder (land) height of a ball groove above the groove bottom, as a fraction of the ball diameter
-#: [-]. Not stored on the rows; an assumed, deliberately shallow value (deep groove rings are made with
-#: groove depths of roughly 0.2–0.3 D_w), so the truncation warning errs on the safe side. Valid
-#: 0 < h/D_w < f (the groove radius over D_w).
-DEFAULT_SHOULDER_HEIGHT = 0.20
-#: Edge-loading criterion for roller rows [-]: a roller end slice whose Hertz pressure reaches this
-#: fraction of the row's largest slice pressure means the contact runs to the roller end, where the real
-#: pressure has an edge peak the slice model does not resolve. Engineering choice; valid (0, 1].
-DEFAULT_EDGE_PRESSURE_RATIO = 0.8
 
 _REFERENCES = (
     "iso76",
@@ -396,7 +376,7 @@ def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
 
     Radial rows → ``cylindrical_roller`` (α = 0; ISO 281 f_c from the ISO/TR 1281-1 closed form, ISO 76
     eq. (3)); thrust rows → ``thrust_cylindrical_roller`` (α = 90°; ISO 76 eq. (8); ISO 281 f_c from the
-    ISO/TR 1281-1 thrust closed form, :func:`~bearingkit.physics.iso281.fc_thrust_roller`). L10r from the
+    ISO/TR 1281-1 thrust closed form, :func:`~bearingkit.physics.life.iso281.fc_thrust_roller`). L10r from the
     slice loads (ISO/TS 16281 eq. (58)-(65)), with the edge-stress factor f_k of eq. (60) per
     ``edge_stress_factor``. Edge loading: an end slice whose pressure reaches ``edge_pressure_ratio`` of the
     row's largest slice pressure (not assessed for n_s = 1).
@@ -490,157 +470,3 @@ def rate_tapered_row(row, state, ctx: RowContext) -> RowRating:
         bearing_type="thrust_tapered_roller" if thrust else "tapered_roller",
         inner_slice_load=state.extras["slice_load_inner"],
     )
-
-
-def threaded_ratings(geometry):
-    """C_r and C0r [N] of a PTRB, Zheng et al. (2022) eq. (5)-(12), (physics.ptrb_rating).
-
-    The same numbers as :func:`bearingkit.bearings.ptrb.ptrb_ratings` with the calibrated distribution
-    coefficients (``analysis`` may not import ``bearings``): C_r = (2n)^0.7 C_Dr does not depend on the load
-    distribution; C0r = 2n Q_0 cos α / f_rmax with the calibrated f_rmax.
-
-    Parameters
-    ----------
-    geometry : PTRBGeometry
-
-    Returns
-    -------
-    tuple of float
-        (C_r, C0r) [N].
-    """
-    from bearingkit.physics import ptrb_rating as pr
-    from bearingkit.rows.threaded import contact_pairs
-
-    g = geometry
-    pairs = contact_pairs(g)
-    q0 = min(
-        float(pr.static_contact_load(p.curvature_sum, p.curvature_difference, g.e_reduced))
-        for p in pairs.values()
-    )
-    _, f_rmax = pr.calibrated_distribution_coefficients(g.n_elements)
-    c0r = float(pr.static_rating_radial(q0, g.n_teeth, g.contact_angle, f_rmax))
-    args = (
-        g.gamma,
-        g.contact_angle,
-        g.roller_contact_radius,
-        g.contact_radius_inner,
-        g.roller_pitch_diameter,
-    )
-    cdr = pr.dynamic_rating_thread(
-        pr.fc_radial(*args), g.element_diameter, g.n_elements, g.contact_angle, False
-    )
-    return float(pr.basic_dynamic_radial(cdr, g.n_teeth)), c0r
-
-
-def threaded_groove_radii(geometry):
-    """Groove radii (r_i, r_e) [m] of a ball with the PTRB flanks' ISO/TS 16281 conformity ratio.
-
-    The TS ring-rating ratio holds [(r_i/r_e)(2r_e − D_w)/(2r_i − D_w)]^0.41 = (ρ_e/ρ_i)^0.41 with
-    ρ = 2/D_w − 1/r the meridional curvature sum of ball and groove. For a thread flank pair it is
-    ρ_X = 1/R_rr − 1/r_X (roller flank arc against ring flank, r_X = inf: flat). The radii with
-    D_w/r_X' = 2 − ρ_X / max(ρ_i, ρ_e) reproduce the ratio exactly and stay finite (flat flanks: r' = D_w).
-
-    Parameters
-    ----------
-    geometry : PTRBGeometry
-
-    Returns
-    -------
-    tuple of float
-        (r_i', r_e') [m].
-    """
-    g = geometry
-    rho_i = 1.0 / g.roller_contact_radius - 1.0 / g.contact_radius_inner
-    rho_e = 1.0 / g.roller_contact_radius - 1.0 / g.contact_radius_outer
-    top = max(rho_i, rho_e)
-    dw = g.element_diameter
-    return dw / (2.0 - rho_i / top), dw / (2.0 - rho_e / top)
-
-
-def rate_threaded_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.threaded.ThreadedRow` (planetary thread roller bearing, PTRB).
-
-    C = C_r and C0 = C0r of Zheng et al. (2022) (:func:`threaded_ratings`); the flank angle α <= 45° makes
-    the PTRB a radial bearing in the ISO sense. L10r (ISO/TS 16281 eq. (19)-(29)) per equivalent ball:
-    every (tooth, flank) is a row k of Z equivalent balls of diameter D_w = d_R/cos α (``RowState.
-    slice_load``, the same load at ITP and OTP), with the raceway ratings Q_ci, Q_ce from C_r for i = 2n
-    rows (the i^0.7 law of C_r) and the flanks' conformity ratio (:func:`threaded_groove_radii`); the rows'
-    raceway terms add,
-
-    .. math:: L_{10r} = \\Bigl[\\sum_k \\Bigl(\\frac{Q_{ci}}{Q_{ei,k}}\\Bigr)^{-10/3}
-              + \\Bigl(\\frac{Q_{ce}}{Q_{ee,k}}\\Bigr)^{-10/3}\\Bigr]^{-0.9},
-
-    which gives back ISO 281's (2n)^0.7 law when all rows carry the same loads. Flanks without load (the
-    unloaded side of every tooth under axial load) drop out. Truncation: the flank-direction half-axis of
-    a loaded contact (a when the meridional curvature sum ρ_A is the smaller, else b) exceeds the flank
-    half-height h/sin α (dedendum h; a symmetric tooth is assumed).
-    """
-    from bearingkit.physics.ptrb_rating import thread_contact_curvature
-
-    notes: list[str] = []
-    g = row.geometry
-    z, n, alpha, dw, dm = g.n_elements, g.n_teeth, g.contact_angle, g.element_diameter, g.pitch_diameter
-    c = _given_rating(ctx, row, notes)
-    ratings = _attempt("C, C0 (PTRB, Zheng et al. 2022)", lambda: threaded_ratings(g), notes)
-    c0 = None if ratings is None else ratings[1]
-    if c is None and ratings is not None:
-        c = ratings[0]
-    r_i, r_e = threaded_groove_radii(g)
-
-    def life_fn(c_arr, loaded):
-        qci, qce = iso16281.ball_raceway_ratings(c_arr, dw, dm, alpha, r_i, r_e, z, n_rows=2 * n)
-        loads = np.moveaxis(state.slice_load, -1, -2)  # (C, 2n rows, Z balls)
-        row_on = (loads.max(axis=-1) > 0) & loaded[:, None]
-        safe = np.where(row_on[..., None], loads, 1.0)
-        life_k = iso16281.ball_reference_life(safe, qci[:, None], qce[:, None], rotating=ctx.options.rotating)
-        s = np.where(row_on, (life_k / iso16281.MILLION) ** (1.0 / iso16281.BALL_LIFE_EXP), 0.0).sum(-1)
-        return iso16281.MILLION * np.where(loaded, s, 1.0) ** iso16281.BALL_LIFE_EXP
-
-    half_height = g.dedendum / np.sin(alpha)
-    truncated = np.zeros(state.slice_load.shape[0], bool)
-    for side, d_x, r_x in (
-        ("inner", g.d_inner, g.contact_radius_inner),
-        ("outer", g.d_outer, g.contact_radius_outer),
-    ):
-        _, _, rho_a, rho_b = thread_contact_curvature(
-            g.roller_pitch_diameter, d_x, g.roller_contact_radius, r_x, alpha, side
-        )
-        width = state.extras[f"{'semi_major' if rho_a <= rho_b else 'semi_minor'}_{side}"]
-        truncated |= np.any((state.extras["tooth_load"] > 0) & (width > half_height), axis=(-3, -2, -1))
-    text = (
-        f"contact ellipse truncated by the thread flank (flank half-height h/sin α = {half_height * 1e3:.3g} "
-        "mm assumed): Hertz pressure and life are optimistic"
-    )
-    return _assemble(
-        row,
-        state,
-        ctx,
-        bearing_type="planetary_thread_roller",
-        element="ball",
-        c=c,
-        c0=c0,
-        life_fn=life_fn,
-        flags={"truncated_ellipse": ctx.converged & truncated},
-        notes=notes,
-        aiso_kind="radial_ball",
-        pitch_diameter=dm,
-        truncation_text=text,
-        extra_references=("zheng2022", "zheng2021", "zheng2020"),
-    )
-
-
-#: Row raters by ``row.kind``: ``rater(row, state: RowState, ctx: RowContext) -> RowRating``.
-ROW_RATERS: dict[str, Callable] = {
-    "ball": rate_ball_row,
-    "cylindrical": rate_cylindrical_row,
-    "tapered": rate_tapered_row,
-    "threaded": rate_threaded_row,
-}
-
-
-def register_row_rater(kind: str, rater: Callable) -> Callable:
-    """Register the rater of a row kind (new row kinds add themselves here); returns ``rater``."""
-    if not isinstance(kind, str) or not kind:
-        raise InputError(f"kind ({kind!r}) must be a non-empty row kind name")
-    ROW_RATERS[kind] = rater
-    return rater

@@ -5,7 +5,7 @@ Result keys carry their unit (``torque_inner_Nm`` …).
 
 Method (Liu et al. 2022, eqs. 7–13): the quasi-static solve of a :class:`~bearingkit.rows.tapered.
 TaperedRow` gives per roller the cone, cup and rib loads (per slice for sliced rows). With outer-raceway
-control (cage slip S_c, :func:`~bearingkit.physics.trb_friction.outer_control_kinematics`) every
+control (cage slip S_c, :func:`~bearingkit.physics.friction.trb.outer_control_kinematics`) every
 roller carries EHL rolling resistance F_ro on both raceways, sliding traction F_rs on the cone
 (v_si = ω_i R_i S_c; none on the cup) and rib sliding F_fs = Q_f μ₀ e^(−1.8Λ^1.2); the torques are
 M_er = Σ F_ro,e R_e and M_ir = Σ (F_ro,i + F_rs,i) R_i + F_fs·arm. Everything is batched over the case
@@ -36,10 +36,11 @@ from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.analysis.trb import SEED001_FREE
 from bearingkit.errors import InputError
 from bearingkit.lubricants import Lubricant, as_lubricant
-from bearingkit.physics import ehl
-from bearingkit.physics import trb_friction as tf
 from bearingkit.physics.deviations import gaussian_deviations
-from bearingkit.physics.traction import MU_BOUNDARY, flange_friction_force
+from bearingkit.physics.friction import trb as tf
+from bearingkit.physics.friction import trb_rheology as rh
+from bearingkit.physics.lubrication import ehl
+from bearingkit.physics.lubrication.traction import MU_BOUNDARY, flange_friction_force
 from bearingkit.rows.tapered import TaperedRow
 
 #: Default lubricant (seed 001 gives none): ISO VG 46 mineral oil, a usual grade for small TRBs at
@@ -80,14 +81,14 @@ class TRBOperatingPoint:
     mu_coulomb : float [-]
         Coulomb coefficient μ₀ of eq. (9); default SKF μ_bl = 0.12.
     rolling_model : str
-        Reading of eq. (7)'s constant, :data:`bearingkit.physics.trb_friction.ROLLING_COEFFICIENTS`.
+        Reading of eq. (7)'s constant, :data:`bearingkit.physics.friction.trb.ROLLING_COEFFICIENTS`.
     roelands_exponent : float or None [-]
-        Z of eq. (10); None derives it from the lubricant's α (:func:`~bearingkit.physics.trb_friction.
+        Z of eq. (10); None derives it from the lubricant's α (:func:`~bearingkit.physics.friction.trb.
         roelands_exponent`). Default: the seed's 0.601.
     flange_arm : str
         :data:`FLANGE_ARMS`.
     sliding_model : str
-        Reading of eq. (8), :data:`bearingkit.physics.trb_friction.SLIDING_MODELS`: ``"limiting_shear"``
+        Reading of eq. (8), :data:`bearingkit.physics.friction.trb.SLIDING_MODELS`: ``"limiting_shear"``
         (default; Newtonian shear capped by τ_L = Λ_L p) or ``"newtonian"`` (eq. 8 as printed).
     limiting_shear_coeff : float [-]
         Λ_L = τ_L/p of the ``"limiting_shear"`` reading (default 0.075, Bair & Winer 1979).
@@ -101,10 +102,10 @@ class TRBOperatingPoint:
     roughness_rib: float = ROUGHNESS_RIB
     mu_coulomb: float = MU_BOUNDARY
     rolling_model: str = "aihara1987"
-    roelands_exponent: float | None = tf.ROELANDS_EXPONENT_LIU2022
+    roelands_exponent: float | None = rh.ROELANDS_EXPONENT_LIU2022
     flange_arm: str = "geometric"
     sliding_model: str = "limiting_shear"
-    limiting_shear_coeff: float = tf.SLIDING_LIMITING_SHEAR_COEFF
+    limiting_shear_coeff: float = rh.SLIDING_LIMITING_SHEAR_COEFF
 
     def __post_init__(self):
         for name in (
@@ -147,7 +148,7 @@ class TRBOperatingPoint:
         """Roelands index Z used in the tractive integral [-]."""
         if self.roelands_exponent is not None:
             return float(self.roelands_exponent)
-        return float(tf.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
+        return float(rh.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
 
 
 #: Share of M_ir carried by cone sliding traction above which the result warns [-] (bearingkit's

@@ -21,7 +21,7 @@ Values the paper does not give, and the values chosen (all overridable):
   centres of the first- and third-row bearings"); beam strip width π R_c/2 (assumed);
 - housing: the outer ring sits without radial play in a steel housing wall of 20 mm
   (:data:`DEFAULT_HOUSING_WALL`, E = 208 GPa), a bilateral Winkler foundation of stiffness
-  k_h = E_h t_h b/R_h² on the ring's ovalisation (:mod:`bearingkit.physics.thin_ring`). The paper
+  k_h = E_h t_h b/R_h² on the ring's ovalisation (:mod:`bearingkit.physics.structure.thin_ring`). The paper
   says only that the arc back sits in the housing; a free ring (k_h = 0, ``housing_stiffness = 0``)
   would let the unloaded side move ~40 µm outward through the housing wall.
 
@@ -38,7 +38,7 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.analysis.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.physics import thin_ring
+from bearingkit.physics.structure import thin_ring
 from bearingkit.rings.flexible import BEAM_MODES, FlexibleOuterRing
 from bearingkit.rings.section import RingSection
 from bearingkit.rows.ball import BallRow
@@ -137,7 +137,7 @@ class RingOptions:
         Winkler stiffness k_h of the housing on the ring's ovalisation, given directly (0 = free
         ring, np.inf = rigid housing). Exclusive with ``housing_wall_thickness``.
     housing_wall_thickness : float or None [m]
-        Housing wall thickness t_h: k_h = E_h t_h b/R_h² (:func:`bearingkit.physics.thin_ring.
+        Housing wall thickness t_h: k_h = E_h t_h b/R_h² (:func:`bearingkit.physics.structure.thin_ring.
         housing_wall_stiffness`, R_h = outer radius + t_h/2, b = ring width). When neither is given:
         :data:`DEFAULT_HOUSING_WALL`.
     housing_youngs_modulus : float [Pa]
@@ -188,7 +188,7 @@ def wall_housing_stiffness(
     """k_h [N/m²] of a housing wall of thickness t_h around the ring (default :data:`DEFAULT_HOUSING_WALL`).
 
     k_h = E_h t_h b/R_h² with R_h = D/2 + t_h/2 and b the ring width
-    (:func:`bearingkit.physics.thin_ring.housing_wall_stiffness`, Roark & Young 2012 Table 13.1).
+    (:func:`bearingkit.physics.structure.thin_ring.housing_wall_stiffness`, Roark & Young 2012 Table 13.1).
     """
     g = geometry or BallColumnGeometry()
     t = DEFAULT_HOUSING_WALL if wall_thickness is None else float(wall_thickness)

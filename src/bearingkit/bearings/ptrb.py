@@ -16,8 +16,8 @@ import numpy as np
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.physics import ptrb_rating as pr
-from bearingkit.physics import ptrb_strength as ps
+from bearingkit.physics.life import ptrb_rating as pr
+from bearingkit.physics.structure import ptrb_strength as ps
 from bearingkit.rows.threaded import PTRBGeometry, ThreadedRow, axial_tooth_distribution, contact_pairs
 
 __all__ = [
@@ -130,12 +130,12 @@ def ptrb_ratings(
     ----------
     geometry : PTRBGeometry
     distribution : {"calibrated", "model"}
-        f_amax, f_rmax from :func:`bearingkit.physics.ptrb_rating.calibrated_distribution_coefficients`
+        f_amax, f_rmax from :func:`bearingkit.physics.life.ptrb_rating.calibrated_distribution_coefficients`
         or from the physical models (axial: :func:`~bearingkit.rows.threaded.axial_tooth_distribution`
         evaluated self-consistently at C0a; radial: Stribeck sum with roller 0 under the load, or at
         ``azimuth_phase``).
     tooth_model : str
-        Key of :data:`bearingkit.physics.ptrb_strength.CONTACTS_PER_TOOTH`.
+        Key of :data:`bearingkit.physics.structure.ptrb_strength.CONTACTS_PER_TOOTH`.
     azimuth_phase : float or None
         Roller phase for the radial model [rad] (None: 0, the worst case).
     """

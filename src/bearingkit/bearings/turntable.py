@@ -11,7 +11,7 @@ Geometry the paper does not give, and the values chosen (stated in docs and the 
   they do not enter the axial/tilt equilibrium of thrust rows, only the small radial coupling of the
   ball grooves;
 - slice count: ``DEFAULT_SLICES``;
-- crowning dimensions: those of :mod:`bearingkit.physics.profiles` defaults;
+- crowning dimensions: those of :mod:`bearingkit.physics.contact.profiles` defaults;
 - material: GCr15 on GCr15;
 - roller slice law: Kunert, applied as the paper writes it (``pairing="total_approach"``: the one-contact
   law on the raceway-to-raceway approach, eqs. 3–5). ``pairing="series"`` puts the two raceway
@@ -94,7 +94,7 @@ class CompositeTurntableGeometry:
 
 
 def _profile(letter_or_name: str, length, diameter):
-    from bearingkit.physics.profiles import SEED000_CROWNING, make_profile
+    from bearingkit.physics.contact.profiles import SEED000_CROWNING, make_profile
 
     name = SEED000_CROWNING.get(letter_or_name, letter_or_name)
     return make_profile(name, effective_length=length, element_diameter=diameter)

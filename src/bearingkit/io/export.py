@@ -2,7 +2,7 @@
 
 Faces (CLI, reports) call these; nothing here recomputes the mechanics: the load distribution comes
 from :meth:`bearingkit.analysis.quasistatic.QuasiStaticResult.to_dict`, the Hertz summary from
-:func:`bearingkit.physics.hertz.point_contact`. Output must never hold NaN or infinity:
+:func:`bearingkit.physics.contact.hertz.point_contact`. Output must never hold NaN or infinity:
 :func:`to_json` refuses them (``allow_nan=False``) and :func:`non_finite_paths` lists offenders.
 """
 
@@ -156,9 +156,9 @@ def hertz_ball_summary(
         ``{"load_N", "inner": {...}, "outer": {...}}`` with ``semi_major_m``, ``semi_minor_m``,
         ``deflection_m``, ``max_pressure_Pa``, ``ellipticity``, ``curvature_sum_1_m``,
         ``curvature_difference`` per contact (Harris & Kotzalas 2007 ch. 2 and 6 via
-        :mod:`bearingkit.physics.hertz`).
+        :mod:`bearingkit.physics.contact.hertz`).
     """
-    from bearingkit.physics.hertz import ball_raceway_curvature, point_contact
+    from bearingkit.physics.contact.hertz import ball_raceway_curvature, point_contact
 
     out = {"load_N": float(load)}
     for raceway, conformity in (("inner", conformity_inner), ("outer", conformity_outer)):

@@ -36,7 +36,7 @@ from bearingkit.io.fields import (
 # Geometry models, one per bearing type. Field names are the builders' keyword names (nomenclature).
 # ---------------------------------------------------------------------------------------------
 class ProfileSpec(Strict):
-    """Crowning profile: a registry name of :mod:`bearingkit.physics.profiles` and its parameters."""
+    """Crowning profile: a registry name of :mod:`bearingkit.physics.contact.profiles` and its parameters."""
 
     name: str
     crown_radius: PositiveLength | None = None

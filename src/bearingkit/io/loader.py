@@ -62,7 +62,7 @@ LOAD_ALIASES: dict[str, str] = {
 # Builder registry: bearing type → function(geometry dict (SI), material, name) → BearingModel.
 # ---------------------------------------------------------------------------------------------
 def _profile(geometry: dict, diameter: float | None = None):
-    from bearingkit.physics.profiles import make_profile
+    from bearingkit.physics.contact.profiles import make_profile
 
     spec = geometry.get("profile")
     if spec is None:
@@ -92,7 +92,7 @@ def _standard(builder_name: str, renames: dict | None = None):
 def _turntable(builder_name: str):
     def build(geometry: dict, material, name: str) -> BearingModel:
         from bearingkit.bearings import turntable
-        from bearingkit.physics.profiles import PROFILES, SEED000_CROWNING
+        from bearingkit.physics.contact.profiles import PROFILES, SEED000_CROWNING
 
         crowning = geometry.get("crowning")
         if crowning is not None and crowning not in SEED000_CROWNING and crowning not in PROFILES:
@@ -301,7 +301,7 @@ class BearingInput:
         if len(self.cases) > limit:
             raise InputError(
                 f"{self.source}: load_cases ({len(self.cases)} cases) must be at most {limit} for "
-                f"{purpose}; split the file"
+                f"{purpose}; select some with --case or split the file"
             )
         return self
 
@@ -357,6 +357,10 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         spec = schema.BearingFile.model_validate(data)
     except ValidationError as exc:
         raise one_line(source, exc, (), section_models(None)) from None
+    if spec.bearing.designation is not None:
+        spec = _from_designation(source, spec)
+    elif "geometry" not in data:
+        raise InputError(f"{source}: geometry: missing required field (or give bearing.designation)")
     gmodel = schema.GEOMETRY_MODELS[spec.bearing.type]
     try:
         geometry = gmodel.model_validate(_profile_as_table(spec.geometry))
@@ -391,6 +395,57 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         free=free,
         options=SolverOptions(**opts),
     )
+
+
+#: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)
+#: except the dimensionless conformities.
+_CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inner", "roller_angle")
+
+
+def _catalogue_value(key: str, value):
+    """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
+    if isinstance(value, (dict, str, int)) and not isinstance(value, bool):
+        return value
+    if key.startswith("conformity"):
+        return float(value)
+    return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
+
+
+def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFile:
+    """Type, geometry (estimate, overridden by the file's [geometry]), name and source from a designation."""
+    from bearingkit.catalogue import resolve
+
+    header = spec.bearing
+    try:
+        found = resolve(header.designation, C=header.C)
+    except InputError as exc:
+        field = "bearing." if str(exc).startswith("designation") else ""
+        raise InputError(f"{source}: {field}{exc}") from None
+    if found.bearing_type is None:
+        raise InputError(
+            f"{source}: bearing.designation ({header.designation!r}): "
+            f"{found.designation.family.replace('_', ' ')} "
+            "bearings have no row kind in the engine yet; the estimated geometry is available from "
+            "bearingkit.catalogue.resolve"
+        )
+    if header.type and header.type != found.bearing_type:
+        raise InputError(
+            f"{source}: bearing.type ({header.type!r}) does not match designation {header.designation!r} "
+            f"({found.bearing_type!r}); omit type"
+        )
+    geometry = {k: _catalogue_value(k, v) for k, v in found.geometry.items() if v is not None}
+    geometry.update(spec.geometry)
+    overridden = sorted(set(spec.geometry) & set(found.geometry))
+    given = f"; given in the file, not estimated: {', '.join(overridden)}" if overridden else ""
+    note = found.source + given
+    bearing = header.model_copy(
+        update={
+            "type": found.bearing_type,
+            "name": header.name or header.designation,
+            "source": header.source or note,
+        }
+    )
+    return spec.model_copy(update={"bearing": bearing, "geometry": geometry})
 
 
 def parse_load_options(items: Sequence[str], name: str = "command line") -> LoadCase:

@@ -37,9 +37,11 @@ def section_models(geometry_model: type[BaseModel] | None) -> dict[str, type[Bas
 
 
 def dotted(loc) -> str:
-    """``("load_cases", 0, "F_x")`` → ``"load_cases[0].F_x"``."""
+    """``("load_cases", 0, "F_x")`` → ``"load_cases[0].F_x"``; other keys quoted (``'\\u202e5 kN'``)."""
     out = ""
     for part in loc:
+        if not isinstance(part, int):  # a key of the file: quoted unless a plain name (no control chars)
+            part = part if str(part).isidentifier() else quote(str(part))
         out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
     return out
 

@@ -20,6 +20,7 @@ from bearingkit.io.fields import (
     Length,
     Moment,
     PositiveDensity,
+    PositiveForce,
     PositivePressure,
     Strict,
     Temperature,
@@ -35,7 +36,18 @@ MAX_LOAD_CASES = 1_000
 class BearingHeader(Strict):
     """``[bearing]``: which builder, a designation and where the geometry comes from."""
 
-    type: str = Field(description="Builder name, one of GEOMETRY_MODELS (see docs/input-format.md).")
+    type: str = Field(
+        "",
+        description="Builder name, one of GEOMETRY_MODELS (docs/input-format.md); optional with designation.",
+    )
+    designation: str | None = Field(
+        None,
+        description="Standard bearing such as '6205-2RS C3' (docs/catalogue.md): type and geometry are "
+        "estimated from the catalogue; [geometry] fields given override the estimate.",
+    )
+    C: PositiveForce | None = Field(
+        None, description="Catalogue C the estimated element size is scaled to (with designation)."
+    )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
         "", description="Where the geometry comes from (paper, table, catalogue, assumption)."
@@ -44,12 +56,20 @@ class BearingHeader(Strict):
     @field_validator("type")
     @classmethod
     def _known_type(cls, value: str) -> str:
-        if value not in GEOMETRY_MODELS:
+        if value and value not in GEOMETRY_MODELS:
             raise InputError(
                 f"type ({quote(value)}) must be one of {', '.join(GEOMETRY_MODELS)}"
                 f"{did_you_mean(value, GEOMETRY_MODELS)}"
             )
         return value
+
+    @model_validator(mode="after")
+    def _type_or_designation(self):
+        if not self.type and self.designation is None:
+            raise InputError("type: missing required field (or give designation = '6205-2RS C3')")
+        if self.C is not None and self.designation is None:
+            raise InputError("C: calibrates an estimated geometry; give it together with designation")
+        return self
 
 
 class MaterialSpec(Strict):
@@ -127,7 +147,10 @@ class BearingFile(Strict):
     """A whole input file (geometry validated separately, by :data:`GEOMETRY_MODELS`)."""
 
     bearing: BearingHeader
-    geometry: dict[str, Any] = Field(description="Keyword arguments of the builder (see GEOMETRY_MODELS).")
+    geometry: dict[str, Any] = Field(
+        default_factory=dict,
+        description="Keyword arguments of the builder (see GEOMETRY_MODELS); optional with designation.",
+    )
     material: MaterialSpec | None = Field(None, description="Default: GCr15 (the builders' default).")
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(

@@ -24,7 +24,7 @@ import math
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from matplotlib.ticker import MaxNLocator
+from matplotlib.ticker import LogLocator, MaxNLocator, NullFormatter
 
 #: Resolution of the inline PNGs [dots per inch]; with the figure widths below (≤ 11 in) the images
 #: stay ≤ 1100 px wide, the width of the report's text column.
@@ -298,6 +298,10 @@ def rating_figure(rating, case: int) -> Figure:
         ax.set_yticks(y, names, fontsize=8)
         ax.invert_yaxis()
         ax.set_xlabel(xlabel, fontsize=8)
+        # decade labels only: matplotlib labels the minor ticks of a short log span ("3×10⁴ 4×10⁴ …"),
+        # which run into each other on a narrow panel
+        ax.xaxis.set_major_locator(LogLocator(base=10.0, numticks=6))
+        ax.xaxis.set_minor_formatter(NullFormatter())
         ax.tick_params(axis="x", labelsize=7)
         ax.set_title(title, fontsize=9)
     return fig

@@ -2,12 +2,12 @@
 
 SI units (m, N, Pa, rad). Two compliances, superposed (Li et al. 2025, Machines 13:785):
 
-1. thin-ring in-plane bending (eqs. 7–10, :mod:`bearingkit.physics.thin_ring`): the outward
+1. thin-ring in-plane bending (eqs. 7–10, :mod:`bearingkit.physics.structure.thin_ring`): the outward
    radial components of all element loads of all carried rows bend one ring of centroidal radius R;
    the deflection at each element (modes n ≥ 2 only, the housing takes the net force; optionally
    held by the housing wall, ``housing_stiffness``) opens its gap
    (``RacewayOffset.radial``);
-2. axial beam between the housing supports A and B (eqs. 4–6, :mod:`bearingkit.physics.ring_beam`):
+2. axial beam between the housing supports A and B (eqs. 4–6, :mod:`bearingkit.physics.structure.ring_beam`):
    the radial force of each row deflects the ring as a simply supported beam; at each row the beam
    deflection u and slope u′ move that row's outer raceway as a rigid body
    (``RacewayOffset.shift``): the raceway point at axial z moves by u(z_k) + u′(z_k)(z − z_k),
@@ -27,7 +27,7 @@ section at the loaded azimuth, it does not tilt the whole raceway about a diamet
 the raceway at ψ = 0 axially by r·θ_B — hundreds of µm for the seed-002 section).
 
 ``housing_stiffness`` k_h [N/m²] holds the ring in its housing bore as a bilateral Winkler
-foundation (:mod:`bearingkit.physics.thin_ring`): the ovalisation modes n ≥ 2 then have the
+foundation (:mod:`bearingkit.physics.structure.thin_ring`): the ovalisation modes n ≥ 2 then have the
 stiffness π [EI (n²−1)² + k_h R⁴]/R³ instead of π EI (n²−1)²/R³. 0 (the dataclass default) is the
 free ring, np.inf a rigid housing (no ovalisation: the beam model alone). The housing is not scaled
 by ``compliance_scale`` (it is not part of the ring).
@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.physics import ring_beam, thin_ring
+from bearingkit.physics.structure import ring_beam, thin_ring
 from bearingkit.rings.section import RingSection
 from bearingkit.rows.base import RacewayOffset
 
@@ -78,7 +78,7 @@ class FlexibleOuterRing:
         Apply the beam slope as a rigid raceway tilt (seed 002's θ_B; off by default).
     housing_stiffness : float [N/m²]
         Winkler stiffness k_h of the housing that holds the ring's ovalisation (≥ 0; 0 = free ring,
-        np.inf = rigid housing). See :func:`bearingkit.physics.thin_ring.housing_wall_stiffness`.
+        np.inf = rigid housing). See :func:`bearingkit.physics.structure.thin_ring.housing_wall_stiffness`.
     """
 
     section: RingSection

@@ -69,7 +69,7 @@ class BallRow:
     e_reduced : float [Pa]
         Reduced modulus E′ of the ball/raceway pair (steel–steel by default, from the materials).
     hertz_method : str
-        ``"exact"`` or ``"hamrock_brewe"`` (see :mod:`bearingkit.physics.hertz`).
+        ``"exact"`` or ``"hamrock_brewe"`` (see :mod:`bearingkit.physics.contact.hertz`).
     one_sided : bool or None
         The grooves have a shoulder on the loaded side only (angular contact and thrust rows): a
         contact whose operating angle changes sign would run over the relieved shoulder, so it does
@@ -113,7 +113,7 @@ class BallRow:
                 )
         if self.e_reduced is not None:
             checks.positive("e_reduced", self.e_reduced, "Pa")
-        from bearingkit.physics.hertz import POINT_METHODS
+        from bearingkit.physics.contact.hertz import POINT_METHODS
 
         checks.one_of("hertz_method", self.hertz_method, POINT_METHODS)
         spare = (np.asarray(self.conformity_inner) + np.asarray(self.conformity_outer) - 1.0) * np.asarray(
@@ -155,7 +155,7 @@ class BallKernel(KernelBase):
     _case_arrays = ("B", "Bf", "BB", "s0", "a0", "k_n", "side")
 
     def __init__(self, row: BallRow):
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
 
         self.row = row
 
@@ -251,7 +251,7 @@ class BallKernel(KernelBase):
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-ball results at displacements q (C, 5): loads, operating contact angles, pressures."""
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz
 
         row = self.row
         _, s, a = self._geometry(q, offset)

@@ -10,7 +10,7 @@ its approach is the ring approach at the slice, minus the gap, minus twice the c
                                                                   σ = ±1 the row's direction)
 
 with c = clearance/2, and slice load q_jk = c_s ⟨δ_jk⟩^(10/9), c_s = c_l·w/l (Kunert/Palmgren or
-ISO/TS 16281 line law, :mod:`bearingkit.physics.hertz`). The slice approach is affine in q, so the
+ISO/TS 16281 line law, :mod:`bearingkit.physics.contact.hertz`). The slice approach is affine in q, so the
 whole row is two matrix products per Newton iteration: δ = q Gᵀ + δ₀, f = −q_s G, J = −Gᵀ diag(q_s′) G.
 
 The roller is rigid and held between two rigid raceways, as in the seed papers; roller tilting
@@ -74,7 +74,7 @@ class CylindricalRow:
     n_slices : int
         Slices per roller (≥ 1).
     profile : Profile or None
-        Crowning profile (:mod:`bearingkit.physics.profiles`); None = straight roller.
+        Crowning profile (:mod:`bearingkit.physics.contact.profiles`); None = straight roller.
     line_law : str
         ``"kunert"`` or ``"iso16281"``.
     pairing : str
@@ -111,7 +111,7 @@ class CylindricalRow:
         checks.integer("n_slices", self.n_slices, low=1)
         if self.e_reduced is not None:
             checks.positive("e_reduced", self.e_reduced, "Pa")
-        from bearingkit.physics.hertz import LINE_LAWS
+        from bearingkit.physics.contact.line import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
         checks.one_of("pairing", self.pairing, PAIRINGS)
@@ -156,13 +156,13 @@ class CylindricalKernel(KernelBase):
     _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "delta0_flat", "c_s", "x", "X2", "X3")
 
     def __init__(self, row: CylindricalRow):
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz, line
         from bearingkit.rows.ball import _steel_e_reduced
 
         self.row = row
         z_el, n_s = row.n_elements, row.n_slices
         length = np.asarray(row.effective_length, dtype=float)
-        x, width = hertz.slice_grid(length, n_s)  # (C|…, n_s)
+        x, width = line.slice_grid(length, n_s)  # (C|…, n_s)
         x = np.asarray(x, dtype=float).reshape(-1, n_s)  # (C|1, n_s)
         self.x = x
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
@@ -197,7 +197,7 @@ class CylindricalKernel(KernelBase):
         # each case's clearance.
         self.delta0_flat = np.tile(self.delta0, (1, z_el))
         # Both contacts of a slice in series; stiffness scales with the slice width (c_s = c_l w/l).
-        k_contact = hertz.line_stiffness(length, self.e_reduced, law=row.line_law)
+        k_contact = line.line_stiffness(length, self.e_reduced, law=row.line_law)
         if row.pairing == "series":
             k_pair = hertz.series_stiffness(k_contact, k_contact, exponent=LINE_EXPONENT)
         else:
@@ -306,7 +306,7 @@ class CylindricalKernel(KernelBase):
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller and per-slice results at displacements q (C, 5)."""
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import line
 
         row = self.row
         n_s = self.shape[1]
@@ -326,7 +326,7 @@ class CylindricalKernel(KernelBase):
         # slice of every case of a study, and the loads are valid by construction).
         root = np.sqrt(q_slice)
         for side, rx in radius_x.items():
-            pressure = root * hertz.line_pressure_factor(width, rx, self.e_reduced)
+            pressure = root * line.line_pressure_factor(width, rx, self.e_reduced)
             extras[f"slice_pressure_{side}"] = pressure
             p_max = np.maximum(p_max, pressure)
         extras["slice_position"] = np.broadcast_to(self.x[:, None, :], q_slice.shape)

@@ -32,7 +32,7 @@ Per roller (X = roller translation in its meridian plane, 2 DOF as seed 001 eq. 
 w(p) = (u_r − p_s σθ_t … ) is the cone's displacement at p (rows of B, :mod:`bearingkit.rows.base`),
 C(x) the crown drop, c the clearance (counted twice) and Δ_j = ½ ΔD_j cos ε the approach added by a
 roller diameter deviation ΔD_j (a larger roller moves each generatrix by ½ΔD cos ε along the contact
-normal). Slices carry q = c_s δ^(10/9) (c_s = K_a w/l, K_a from :func:`bearingkit.physics.hertz.
+normal). Slices carry q = c_s δ^(10/9) (c_s = K_a w/l, K_a from :func:`bearingkit.physics.contact.hertz.
 line_stiffness`), the rib Q_f = K_f δ_f^1.5 (sphere-on-plane Hertz). With ``deviation_model =
 "taylor"`` the slice law is seed 001 eq. (4): q = c_s[δ^(10/9) + (10/9) δ^(1/9) Δ] (δ without Δ),
 clipped at 0.
@@ -92,6 +92,17 @@ DEFAULT_END_RADIUS_RATIO = 0.9
 STEEL_DENSITY = 7830.0
 
 
+#: The solver kernel's constructor, registered by :mod:`bearingkit.rows.tapered_kernel` (which the
+#: package ``bearingkit.rows`` imports): the kernel needs this module's row and geometry, so this module
+#: cannot import the kernel without an import circle.
+_KERNEL_FACTORY: list = [None]
+
+
+def register_kernel(factory) -> None:
+    """Set the constructor ``factory(row) -> kernel`` of :meth:`TaperedRow.kernel`."""
+    _KERNEL_FACTORY[0] = factory
+
+
 @dataclass(frozen=True)
 class TaperedRow:
     """A row of Z tapered rollers between a cup (fixed) and a cone with a large rib (loaded).
@@ -125,7 +136,7 @@ class TaperedRow:
     profile : Profile or None
         Crown drop of the roller (e.g. ``make_profile("iso16281_tapered", …)``).
     line_law : str
-        ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.hertz.LINE_LAWS`).
+        ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.contact.line.LINE_LAWS`).
     e_reduced : float or None [Pa]
         E′ (steel–steel from the materials by default).
     flange_contact_height : float or None [m]
@@ -216,7 +227,7 @@ class TaperedRow:
         checks.finite("clearance", self.clearance, "m")
         checks.one_of("deviation_model", self.deviation_model, DEVIATION_MODELS)
         checks.integer("n_slices", self.n_slices, low=1)
-        from bearingkit.physics.hertz import LINE_LAWS
+        from bearingkit.physics.contact.line import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
         if self.e_reduced is not None:
@@ -301,9 +312,7 @@ class TaperedRow:
     def kernel(self):
         """Precompute the arrays the solver needs (done once per model): a
         :class:`~bearingkit.rows.tapered_kernel.TaperedKernel`."""
-        from bearingkit.rows.tapered_kernel import TaperedKernel
-
-        return TaperedKernel(self)
+        return _KERNEL_FACTORY[0](self)
 
 
 def _scalar(field, value):

@@ -28,6 +28,7 @@ from bearingkit.rows.tapered import (
     LINE_EXPONENT,
     TaperedRow,
     TapGeometry,
+    register_kernel,
 )
 
 #: Inner Newton iteration of the roller equilibrium: iteration cap, relative tolerance on each roller's
@@ -93,7 +94,7 @@ class TaperedKernel(KernelBase):
     _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
 
     def __init__(self, row: TaperedRow):
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import hertz, line
         from bearingkit.rows.ball import _steel_e_reduced
 
         self.row = row
@@ -102,7 +103,7 @@ class TaperedKernel(KernelBase):
         z_el, n_s = row.n_elements, row.n_slices
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
         sigma = float(row.direction)
-        x, width = hertz.slice_grid(geo.length, n_s)
+        x, width = line.slice_grid(geo.length, n_s)
         x = np.asarray(x, dtype=float).reshape(n_s)
         self.x = x
         psi = azimuths(z_el, row.azimuth_phase)[0]  # (Z,)
@@ -120,7 +121,7 @@ class TaperedKernel(KernelBase):
         self.g_i = ring_dirs(p_i, geo.n_i)  # (Z, n_s, 5)
         self.g_f = ring_dirs(geo.p_f, geo.n_f)  # (Z, 5)
         # Stiffness constants.
-        k_line = float(hertz.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
+        k_line = float(line.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
         self.k_line = k_line
         self.c_s = k_line * float(width) / geo.length
         end_r = (
@@ -439,7 +440,7 @@ class TaperedKernel(KernelBase):
 
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller results: ``load`` is the cup (outer raceway) contact force Q_e (seed 001 Fig. 4)."""
-        from bearingkit.physics import hertz
+        from bearingkit.physics.contact import line
 
         row, geo = self.row, self.geo
         st = self.roller_state(q, offset)
@@ -447,7 +448,7 @@ class TaperedKernel(KernelBase):
         extras = dict(st)
         p_max = np.zeros_like(st["load_outer"])
         for side, rx in (("inner", geo.radius_x_inner), ("outer", geo.radius_x_outer)):
-            contact = hertz.line_contact(st[f"slice_load_{side}"], width, rx, self.e_reduced)
+            contact = line.line_contact(st[f"slice_load_{side}"], width, rx, self.e_reduced)
             extras[f"slice_pressure_{side}"] = contact.max_pressure
             extras[f"half_width_{side}"] = contact.half_width
             p_max = np.maximum(p_max, contact.max_pressure.max(-1))
@@ -490,3 +491,6 @@ def _solve2(h, b):
         x0 = (a22[..., None] * b[..., 0] - a12[..., None] * b[..., 1]) / det[..., None]
         x1 = (-a21[..., None] * b[..., 0] + a11[..., None] * b[..., 1]) / det[..., None]
     return np.stack([x0, x1], axis=-1)
+
+
+register_kernel(TaperedKernel)

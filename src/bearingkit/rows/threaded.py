@@ -33,8 +33,8 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
-from bearingkit.physics import hertz
-from bearingkit.physics.ptrb_rating import thread_contact_curvature
+from bearingkit.physics.contact import hertz
+from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
 from bearingkit.rows.base import (
     KernelBase,
     RacewayOffset,
@@ -95,7 +95,8 @@ class PTRBGeometry:
         d_0, D_0, H_0 of the envelope (the rollers' thread length n·P must fit in H_0).
     contact_radius_inner, contact_radius_outer : float [m]
         r_I, r_O, flank arc radii of the ring threads (concave, > R_rr); ``inf`` = flat flank. Table 1
-        leaves them blank; flat flanks reproduce the paper's C_r exactly (see validation seed004).
+        leaves them blank; flat flanks reproduce the paper's C_r exactly (validation cases of
+        bearingkit.papers.zheng2022).
     inner_pitch_diameter, outer_pitch_diameter : float [m] or None
         d_I, d_O; None = D_pw ∓ d_R.
     youngs_modulus : float [Pa], poisson_ratio : float
@@ -249,8 +250,8 @@ def contact_pairs(geometry: PTRBGeometry, load=0.0) -> dict[str, ContactPair]:
 
     Notes
     -----
-    Curvatures from :func:`bearingkit.physics.ptrb_rating.thread_contact_curvature`; Hertz solution and
-    stiffness K from :mod:`bearingkit.physics.hertz` (exact elliptic integrals).
+    Curvatures from :func:`bearingkit.physics.life.ptrb_rating.thread_contact_curvature`; Hertz solution and
+    stiffness K from :mod:`bearingkit.physics.contact.hertz` (exact elliptic integrals).
     """
     g = geometry
     out = {}

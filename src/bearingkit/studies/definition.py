@@ -7,11 +7,11 @@ dimensionless factors and counts may be bare numbers.
 File layout (all sections but ``[study]`` optional)::
 
     [study]
-    name = "seed000_table3"
+    name = "clearance_l9"
     design = "orthogonal"       # sweep | factorial | orthogonal | monte_carlo | optimize
-    evaluator = "seed000_statics"
+    evaluator = "my_evaluator"
     array = "L9"                # orthogonal designs
-    bearing = "../seed000_composite.toml"   # geometry defaults from a bearing file (relative path)
+    bearing = "../my_bearing.toml"          # geometry defaults from a bearing file (relative path)
     response = "ball_axial_share"           # output analysed (main effects, range analysis)
     samples = 1000              # monte_carlo
     sampler = "random"          # monte_carlo: random | lhs | sobol

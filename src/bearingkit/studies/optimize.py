@@ -168,7 +168,7 @@ def run_optimization(d, executor, store, resume: bool, progress):
     import pandas as pd
     from pymoo.optimize import minimize
 
-    from bearingkit.studies.runner import StudyResult, _fingerprint, base_values
+    from bearingkit.studies.cases import StudyResult, _fingerprint, base_values
     from bearingkit.studies.store import advance, progress_bar
 
     t0 = time.perf_counter()

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.physics.friction_palmgren import palmgren_friction_moment
-from bearingkit.physics.friction_skf import skf_friction_moment
+from bearingkit.physics.friction.palmgren import palmgren_friction_moment
+from bearingkit.physics.friction.skf import skf_friction_moment
 from bearingkit.validation.registry import Case, register
 
 _RPM = 2.0 * np.pi / 60.0

@@ -2,7 +2,7 @@
 
 Harris & Kotzalas (2007), Rolling Bearing Analysis 5th ed., Table 6.1 lists the dimensionless
 contact coefficients a*, b*, delta* against the curvature difference F(rho). bearingkit's exact
-elliptic-integral solution (``bearingkit.physics.hertz.contact_coefficients``) must reproduce every
+elliptic-integral solution (``bearingkit.physics.contact.hertz.contact_coefficients``) must reproduce every
 row to 0.2 %: the table is printed with 4–5 significant digits, so 0.2 % covers its rounding and
 the interpolation error of the book's own numerics with margin, while a wrong formula (e.g. a
 missing factor in delta*) misses by whole percents.
@@ -10,7 +10,7 @@ missing factor in delta*) misses by whole percents.
 
 from __future__ import annotations
 
-from bearingkit.physics.hertz import contact_coefficients
+from bearingkit.physics.contact.hertz import contact_coefficients
 from bearingkit.validation.registry import Case, register
 
 SOURCE_TABLE_6_1 = "Harris & Kotzalas (2007) Rolling Bearing Analysis 5th ed., Table 6.1"

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.physics import iso281
+from bearingkit.physics.life import iso281
 from bearingkit.validation.registry import Case, register
 
 INCH = 25.4e-3

@@ -7,6 +7,7 @@ import math
 import pkgutil
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from pathlib import Path
 
 from bearingkit.errors import InputError
 
@@ -91,12 +92,20 @@ def register(case: Case) -> Case:
     return case
 
 
-def _load_all() -> None:
-    import bearingkit.validation as pkg
+#: Entry-point group of packages that register validation cases on import (the paper reproductions of
+#: :mod:`bearingkit.papers` declare theirs): ``name = "package.module"``.
+ENTRY_POINT_GROUP = "bearingkit.validation"
 
-    for mod in pkgutil.iter_modules(pkg.__path__):
+
+def _load_all() -> None:
+    """Import every case module: the literature cases of this package, then the declared ones."""
+    from importlib.metadata import entry_points
+
+    for mod in pkgutil.iter_modules([str(Path(__file__).parent)]):
         if mod.name != "registry":
             importlib.import_module(f"bearingkit.validation.{mod.name}")
+    for ep in entry_points(group=ENTRY_POINT_GROUP):
+        ep.load()
 
 
 def all_cases(prefixes: Iterable[str] = ()) -> list[Case]:

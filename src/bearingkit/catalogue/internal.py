@@ -1,0 +1,297 @@
+"""Internal-geometry estimate of standard bearings from their boundary dimensions. SI units.
+
+Catalogues print d, D, B (T) and the load ratings, not the internal geometry the mechanics needs.
+Each family has one rule set (:data:`RULES`) turning the boundary dimensions into element count Z,
+element diameter D_w (D_we), effective length L_we, pitch diameter d_m, conformities or crowning and
+contact angle; :func:`estimate` applies it and returns an :class:`Estimate` (SI) with a note saying how.
+
+The rules are the bearing-design rules of the textbooks, with their constants in one table:
+
+- pitch diameter d_m = (d + D)/2 (Harris & Kotzalas 2006, *Essential Concepts*, ch. 2 [M]); for
+  cylindrical roller bearings with a published roller inscribed diameter F_w, d_m = F_w + D_we;
+- element diameter D_w = k_w (D − d) (deep groove series: k_w ≈ 0.3, the rule quoted in the brief;
+  other families: the per-family constant of :data:`RULES`);
+- ball count of Conrad-assembled deep groove bearings from the assembly (fill) angle of Harris
+  (2006, ch. 2 [M]): φ = 2(Z − 1) D_w/d_m ≤ φ_max; φ_max = 186° is the value that the 6205 with its
+  9 balls of 7.938 mm on d_m = 39.04 mm reaches (2·8·7.938/39.04 rad = 186.4°) [M];
+- other rows: the cage pitch, Z = floor(π d_m / (s D_w)) with a pitch ratio s > 1 (cage bars between
+  the elements), s per family in :data:`RULES`;
+- conformities f_i = 0.52, f_o = 0.53 (radial, angular contact), 0.54 (thrust) (Harris 2006 ch. 2:
+  0.515–0.52 inner, 0.52–0.53 outer [M]);
+- tapered rows: cup angle from the catalogue's e, α_o = atan(e/1.5) (ISO 281 cl. 7.2: e = 1.5 tan α);
+  roller half angle ε = 1.5° [M] (seed 001's 32008 has 1.50°), cone angle α_i = α_o − 2ε;
+- angular contact: the nominal angle of the designation suffix (B 40°, AC 25°, A 30°, C 15°);
+  four-point 35° [M]; double-row 32/33 as printed by the source (NSK e = 0.68 → 25°).
+
+The family constants k_w, s and the length ratios are not given by the design texts for every
+family; where they are chosen here they are chosen once, in :data:`RULES`, and docs/catalogue.md lists
+the computed ISO 281 C and ISO 76 C0 against the catalogue for every tabulated size (the tests check
+them within 10 %).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from bearingkit.catalogue.tables import Entry
+from bearingkit.errors import InputError
+from bearingkit.physics.life.iso281_load import E_TAN_FACTOR
+
+DEG = math.pi / 180.0
+
+#: Harris's Conrad assembly angle limit φ_max [rad] (see module docstring) [M].
+CONRAD_FILL_ANGLE = 186.0 * DEG
+#: Nominal contact angles of the angular contact suffixes [rad] (NSK E1102 B50 note 2; SKF AC = 25°).
+CONTACT_ANGLES = {"B": 40.0 * DEG, "AC": 25.0 * DEG, "A": 30.0 * DEG, "C": 15.0 * DEG}
+#: Four-point contact (QJ) nominal contact angle [rad] [M].
+FOUR_POINT_ANGLE = 35.0 * DEG
+#: Tapered roller half angle ε [rad] [M] (seed 001 Table 1, 32008: ε = 0.0262 rad).
+TAPER_HALF_ANGLE = 1.5 * DEG
+#: Groove conformities r/D_w (Harris 2006 ch. 2 [M]).
+CONFORMITY_INNER = 0.52
+CONFORMITY_OUTER = 0.53
+CONFORMITY_THRUST = 0.54
+
+
+@dataclass(frozen=True)
+class Rule:
+    """Design-rule constants of one family (all dimensionless).
+
+    Attributes
+    ----------
+    k_w : float
+        Element diameter D_w = k_w (D − d) (thrust: k_w · T, the height).
+    pitch : float
+        Cage pitch ratio s: Z = floor(π d_m / (s D_w)); 0 = Conrad fill-angle rule.
+    length : float
+        Effective roller length L_we = length · (width measure of the family); 0 for balls.
+    rows : int
+        Rows of elements.
+    k_b : float
+        Width cap of radial rows: D_w ≤ k_b · B / rows (narrow series such as 160 and 618).
+    """
+
+    k_w: float
+    pitch: float = 0.0
+    length: float = 0.0
+    rows: int = 1
+    k_b: float = 0.65
+
+
+#: The one place where the rule constants live (module docstring: where they come from).
+RULES: dict[str, Rule] = {
+    "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
+    "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    "double_row_angular_contact_ball": Rule(k_w=0.25, pitch=1.35, rows=2),
+    "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    "self_aligning_ball": Rule(k_w=0.22, pitch=1.30, rows=2),
+    "cylindrical_roller": Rule(k_w=0.27, pitch=1.15, length=0.60),
+    "tapered_roller": Rule(k_w=0.23, pitch=1.14, length=0.72),
+    "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
+    "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
+}
+#: Series whose proportions differ from their family's (light, narrow sections).
+SERIES_RULES: dict[tuple[str, str], Rule] = {
+    ("cylindrical_roller", "10"): Rule(k_w=0.20, pitch=1.15, length=0.38),
+}
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Estimated internal geometry of one catalogue bearing (SI).
+
+    Attributes
+    ----------
+    entry : Entry
+        The catalogue row (boundary dimensions, published ratings).
+    n_elements : int
+        Elements per row Z.
+    element_diameter : float [m]
+        D_w (balls) or mean D_we (rollers).
+    pitch_diameter : float [m]
+        d_m.
+    contact_angle : float [rad]
+        Nominal contact angle α (tapered: cup angle α_o).
+    effective_length : float or None [m]
+        L_we of rollers.
+    rows : int
+    extra : dict
+        Family-specific values (SI): conformities, cone angle, roller small/large diameters, row spacing.
+    notes : tuple of str
+        How the geometry was obtained (every face shows them).
+    """
+
+    entry: Entry
+    n_elements: int
+    element_diameter: float
+    pitch_diameter: float
+    contact_angle: float
+    effective_length: float | None = None
+    rows: int = 1
+    extra: dict = field(default_factory=dict)
+    notes: tuple = ()
+
+
+def _pitch_count(d_m: float, d_w: float, pitch: float) -> int:
+    return math.floor(math.pi * d_m / (pitch * d_w))
+
+
+def _conrad_count(d_m: float, d_w: float) -> int:
+    """Largest Z with Harris's assembly angle 2(Z − 1) D_w/d_m ≤ φ_max."""
+    return math.floor(CONRAD_FILL_ANGLE * d_m / (2.0 * d_w)) + 1
+
+
+def fill_angle(n_elements: int, element_diameter: float, pitch_diameter: float) -> float:
+    """Harris's Conrad assembly angle φ = 2(Z − 1) D_w/d_m [rad] (Harris & Kotzalas 2006, ch. 2) [M]."""
+    return 2.0 * (n_elements - 1) * element_diameter / pitch_diameter
+
+
+def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
+    """Internal geometry of ``entry`` by the rules of :data:`RULES` (module docstring).
+
+    Parameters
+    ----------
+    entry : Entry
+        A catalogue row.
+    contact_angle : float, optional [rad]
+        Overrides the family's nominal angle (angular contact: from the suffix).
+    """
+    fam = entry.family
+    rule = SERIES_RULES.get((fam, entry.series), RULES[fam])
+    d, big_d, width = entry.bore, entry.outer_diameter, entry.width
+    d_m = 0.5 * (d + big_d)
+    notes = [
+        f"internal geometry ESTIMATED from the boundary dimensions of {entry.designation} ({entry.source})"
+    ]
+    extra: dict = {}
+    length = None
+    if fam == "thrust_ball":
+        d_w = min(rule.k_w * width, rule.k_b * (big_d - d))
+        z = _pitch_count(d_m, d_w, rule.pitch)
+        alpha = 0.5 * math.pi
+        extra["conformity"] = CONFORMITY_THRUST
+        notes.append(
+            f"D_w = min({rule.k_w} T, {rule.k_b} (D - d)), Z from cage pitch {rule.pitch} D_w, "
+            "d_m = (d + D)/2"
+        )
+    elif fam == "thrust_cylindrical_roller":
+        d_w = rule.k_w * width
+        length = rule.length * 0.5 * (big_d - d)
+        z = _pitch_count(d_m, d_w, rule.pitch)
+        alpha = 0.5 * math.pi
+        notes.append(
+            f"D_we = {rule.k_w} T, L_we = {rule.length} (D - d)/2, Z from cage pitch {rule.pitch} D_we, "
+            "d_m = (d + D)/2"
+        )
+    else:
+        d_w = min(rule.k_w * (big_d - d), rule.k_b * width / rule.rows)
+        if rule.k_w * (big_d - d) > d_w:
+            notes.append(f"D_w capped at {rule.k_b} B/{rule.rows} by the width")
+        if fam == "deep_groove_ball":
+            z = _conrad_count(d_m, d_w)
+            alpha = 0.0
+            notes.append(
+                f"D_w = {rule.k_w} (D - d), d_m = (d + D)/2, Z = largest with Conrad fill angle "
+                f"2(Z-1) D_w/d_m <= {math.degrees(CONRAD_FILL_ANGLE):.0f} deg (Harris)"
+            )
+        else:
+            if fam == "cylindrical_roller":
+                f_w = entry.number("F_w_mm", 1e-3)
+                if f_w is not None:
+                    d_m = f_w + d_w
+                    notes.append("d_m = F_w + D_we with the published roller inscribed diameter F_w")
+                length = rule.length * width
+            elif fam == "tapered_roller":
+                length = rule.length * width
+            z = _pitch_count(d_m, d_w, rule.pitch)
+            alpha = _nominal_angle(entry, contact_angle)
+            what = "D_we" if length is not None else "D_w"
+            notes.append(
+                f"{what} = {rule.k_w} (D - d), Z from cage pitch {rule.pitch} {what}, "
+                + ("d_m = (d + D)/2" if "F_w" not in notes[-1] else "")
+                + (
+                    f", L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}"
+                    if length
+                    else ""
+                )
+            )
+    if fam in (
+        "deep_groove_ball",
+        "angular_contact_ball",
+        "double_row_angular_contact_ball",
+        "four_point_contact_ball",
+    ):
+        extra.update(conformity_inner=CONFORMITY_INNER, conformity_outer=CONFORMITY_OUTER)
+    if fam == "tapered_roller":
+        half = TAPER_HALF_ANGLE
+        extra.update(
+            contact_angle_inner=alpha - 2.0 * half,
+            roller_angle=half,
+            small_diameter=d_w - length * math.tan(half),
+            large_diameter=d_w + length * math.tan(half),
+        )
+        notes.append(
+            f"cup angle atan(e/1.5) from the published e = {entry.extra['e']}, roller half angle "
+            f"{math.degrees(half):.1f} deg, cone angle = cup angle - 2 x half angle"
+        )
+    if fam == "double_row_angular_contact_ball":
+        extra["row_spacing"] = 0.5 * width
+        notes.append("modelled as an angular contact pair DB with the rows B/2 apart")
+    if z < 3:
+        raise InputError(
+            f"{entry.designation}: estimated element count ({z}) below 3; the rules do not apply"
+        )
+    return Estimate(
+        entry=entry,
+        n_elements=z,
+        element_diameter=d_w,
+        pitch_diameter=d_m,
+        contact_angle=alpha,
+        effective_length=length,
+        rows=rule.rows,
+        extra=extra,
+        notes=tuple(n for n in notes if n),
+    )
+
+
+def _nominal_angle(entry: Entry, override: float | None) -> float:
+    if override is not None:
+        return override
+    fam = entry.family
+    if fam == "angular_contact_ball":
+        return float(entry.extra["contact_angle_deg"]) * DEG
+    if fam == "double_row_angular_contact_ball":
+        return float(entry.extra["contact_angle_deg"]) * DEG
+    if fam == "four_point_contact_ball":
+        return FOUR_POINT_ANGLE
+    if fam == "tapered_roller":
+        return math.atan(float(entry.extra["e"]) / E_TAN_FACTOR)
+    if fam == "self_aligning_ball":
+        return 12.0 * DEG  # [M] typical of series 12/22 (NSK e ≈ 0.2-0.4 ⇒ α ≈ 8-15°)
+    return 0.0
+
+
+def with_element_diameter(est: Estimate, element_diameter: float, note: str) -> Estimate:
+    """A copy with another D_w (roller end diameters follow), the count kept."""
+    extra = dict(est.extra)
+    if "small_diameter" in extra:
+        shift = element_diameter - est.element_diameter
+        extra["small_diameter"] += shift
+        extra["large_diameter"] += shift
+    return replace(est, element_diameter=element_diameter, extra=extra, notes=(*est.notes, note))
+
+
+def envelope_margins(est: Estimate) -> np.ndarray:
+    """(inner, outer) radial gaps [m] between the elements and bore/outside diameter (> 0 = fits)."""
+    e = est.entry
+    if est.entry.family in ("thrust_ball",):
+        half = 0.5 * est.element_diameter
+    elif est.entry.family == "thrust_cylindrical_roller":
+        half = 0.5 * est.effective_length
+    else:
+        half = 0.5 * est.extra.get("large_diameter", est.element_diameter)
+    r = 0.5 * est.pitch_diameter
+    return np.array([r - half - 0.5 * e.bore, 0.5 * e.outer_diameter - (r + half)])

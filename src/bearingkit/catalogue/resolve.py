@@ -1,0 +1,198 @@
+"""A designation → bearing type, geometry (SI, the input format's ``[geometry]`` fields) and notes.
+
+:func:`resolve` is what the input loader and the command line call for ``designation = "6205-2RS C3"``:
+it parses the designation (:mod:`.designation`), estimates the internal geometry (:mod:`.internal`),
+optionally scales the element size so the ISO 281 C matches a catalogue C the user gives, adds the
+ISO 5753-1 clearance of the designation's class (CN when none is given) and returns everything with
+notes saying that and how the geometry is estimated.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from bearingkit.catalogue import clearances as clearance_mod
+from bearingkit.catalogue import designation as designation_mod
+from bearingkit.catalogue import tables
+from bearingkit.catalogue.internal import Estimate, envelope_margins, estimate, with_element_diameter
+from bearingkit.catalogue.iso_ratings import ratings
+from bearingkit.errors import InputError
+
+#: Relative band in which a user's catalogue C may move the element diameter (beyond it the rules no
+#: longer describe the bearing; the request is refused with the achievable range).
+CALIBRATION_BAND = 0.25
+
+
+@dataclass(frozen=True)
+class Resolved:
+    """A designation resolved to the input format.
+
+    Attributes
+    ----------
+    designation : designation.Designation
+    estimate : Estimate
+    bearing_type : str or None
+        ``[bearing] type`` of the input format; None where the row kind is not in the engine yet.
+    geometry : dict
+        ``[geometry]`` fields in SI (m, rad; counts and conformities as numbers).
+    C, C0 : float or None [N]
+        ISO 281 / ISO 76 ratings of the estimated geometry.
+    notes : tuple of str
+    """
+
+    designation: object
+    estimate: Estimate
+    bearing_type: str | None
+    geometry: dict
+    C: float | None
+    C0: float | None
+    notes: tuple
+
+    @property
+    def source(self) -> str:
+        """One line for ``[bearing] source``: estimated, how, from where."""
+        return "; ".join(self.notes)
+
+
+def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) -> Resolved:
+    """Resolve ``text`` (e.g. ``"6205-2RS C3"``).
+
+    Parameters
+    ----------
+    text : str
+        The designation.
+    C : float, optional [N]
+        A catalogue dynamic load rating to calibrate to: D_w (D_we) is scaled within
+        ±:data:`CALIBRATION_BAND` so the ISO 281 C of the estimate equals it (count and pitch kept).
+    clearance_position : float
+        Where in the ISO 5753-1 class range the radial clearance is taken (0 min, 0.5 mean, 1 max).
+    """
+    des = designation_mod.parse(text)
+    entry = tables.entries(des.family)[des.base]
+    est = estimate(entry)
+    if C is not None:
+        est = _calibrate(est, C)
+    c, c0 = ratings(est)
+    notes = list(est.notes)
+    bearing_type = tables.FAMILIES[des.family][1]
+    geometry = _geometry(est, des, notes, clearance_position)
+    if des.suffixes:
+        notes.append(f"suffixes {' '.join(des.suffixes)} noted (no effect on the mechanics)")
+    if entry.C is not None:
+        notes.append(
+            f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
+        )
+    return Resolved(des, est, bearing_type, geometry, c, c0, tuple(notes))
+
+
+def _calibrate(est: Estimate, target: float) -> Estimate:
+    if not target > 0 or not math.isfinite(target):
+        raise InputError(f"C ({target!r} N) must be a positive force")
+    c_est, _ = ratings(est)
+    if c_est is None:
+        raise InputError(f"{est.entry.designation}: no ISO 281 rating for this family; C cannot calibrate it")
+    lo, hi = (1.0 - CALIBRATION_BAND) * est.element_diameter, (1.0 + CALIBRATION_BAND) * est.element_diameter
+
+    def c_of(dw: float) -> float:
+        return ratings(with_element_diameter(est, dw, ""))[0]
+
+    c_lo, c_hi = c_of(lo), c_of(hi)
+    if not c_lo <= target <= c_hi:
+        raise InputError(
+            f"C ({target / 1e3:g} kN) lies outside what {est.entry.designation} can reach by its element "
+            f"size (±{CALIBRATION_BAND:.0%} of D_w: {c_lo / 1e3:.3g}–{c_hi / 1e3:.3g} kN); check the value "
+            "or give the "
+            "geometry explicitly"
+        )
+    for _ in range(60):  # bisection: C grows monotonically with D_w at fixed Z and d_m
+        mid = 0.5 * (lo + hi)
+        if c_of(mid) < target:
+            lo = mid
+        else:
+            hi = mid
+    dw = 0.5 * (lo + hi)
+    note = (
+        f"D_w scaled from {est.element_diameter * 1e3:.3f} mm to {dw * 1e3:.3f} mm so that ISO 281 C = "
+        f"{target / 1e3:g} kN (user catalogue C)"
+    )
+    out = with_element_diameter(est, dw, note)
+    if (envelope_margins(out) <= 0).any():
+        raise InputError(
+            f"C ({target / 1e3:g} kN): the calibrated elements of {est.entry.designation} no longer fit"
+        )
+    return out
+
+
+def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
+    e = est.entry
+    g = {
+        "bore": e.bore,
+        "outer_diameter": e.outer_diameter,
+        "n_elements": est.n_elements,
+        "pitch_diameter": est.pitch_diameter,
+    }
+    fam = des.family
+    group = clearance_mod.CLEARANCE_GROUP.get(fam)
+    cls = des.clearance_class or "CN"
+    if des.clearance_class is not None and group is None:
+        raise InputError(
+            f"designation ({des.text!r}): clearance class {des.clearance_class} has no ISO 5753-1 radial "
+            "group for this type; give clearance explicitly in [geometry]"
+        )
+    clearance = None
+    if group is not None:
+        clearance = clearance_mod.clearance(group, e.bore, cls, position)
+        lo, hi = clearance_mod.clearance_range(group, e.bore, cls)
+        notes.append(
+            f"radial clearance {cls} (ISO 5753-1, {lo * 1e6:g}–{hi * 1e6:g} um): "
+            f"{clearance * 1e6:.3g} um at {position:.0%} of the class range"
+        )
+    if fam == "deep_groove_ball":
+        g.update(element_diameter=est.element_diameter, clearance_radial=clearance)
+        g.update({k: est.extra[k] for k in ("conformity_inner", "conformity_outer")})
+    elif fam == "angular_contact_ball":
+        g.update(element_diameter=est.element_diameter, contact_angle=est.contact_angle, clearance=0.0)
+        g.update({k: est.extra[k] for k in ("conformity_inner", "conformity_outer")})
+    elif fam == "double_row_angular_contact_ball":
+        g.update(
+            element_diameter=est.element_diameter,
+            contact_angle=est.contact_angle,
+            arrangement="DB",
+            row_spacing=est.extra["row_spacing"],
+            clearance_axial=0.0,
+            conformity_inner=est.extra["conformity_inner"],
+            conformity_outer=est.extra["conformity_outer"],
+        )
+    elif fam == "thrust_ball":
+        g.update(element_diameter=est.element_diameter, conformity=est.extra["conformity"])
+    elif fam == "cylindrical_roller":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            clearance_radial=clearance,
+            profile={"name": "iso16281"},
+        )
+        notes.append("crowning: ISO/TS 16281 logarithmic profile (profile 'iso16281')")
+    elif fam == "thrust_cylindrical_roller":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            profile={"name": "iso16281"},
+        )
+        notes.append("crowning: ISO/TS 16281 logarithmic profile (profile 'iso16281')")
+    elif fam == "tapered_roller":
+        g.update(
+            small_diameter=est.extra["small_diameter"],
+            large_diameter=est.extra["large_diameter"],
+            effective_length=est.effective_length,
+            contact_angle_outer=est.contact_angle,
+            contact_angle_inner=est.extra["contact_angle_inner"],
+            roller_angle=est.extra["roller_angle"],
+            clearance=0.0,
+        )
+    else:  # four-point, self-aligning: plain data until their row kinds exist
+        g.update(element_diameter=est.element_diameter, contact_angle=est.contact_angle, rows=est.rows)
+        g.update({k: v for k, v in est.extra.items()})
+        notes.append("no row kind for this type in the engine yet: the geometry is data only")
+    return g

@@ -1,0 +1,536 @@
+"""The ``bearingkit`` commands. Faces only: parse, call :func:`bearingkit.pipeline.analyze`, print.
+
+SI inside; units only in the input file and in option values (``--load Fa=5kN``, ``--speed 3000rpm``).
+Every command that reads a bearing builds ONE :class:`~bearingkit.pipeline.Analysis` and prints the
+parts it is about, with every warning the analysis carries. Bad input: one line ``error: …`` on
+stderr, exit 2; a case that does not converge: its tables, then ``error: …``, exit 1.
+Adding a command is one decorated function (``@app.command()``).
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import sys
+from pathlib import Path
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
+from bearingkit.cli.tables import case_table, friction_table, rating_table, warnings_text
+from bearingkit.errors import InputError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
+# Piped output (CI logs, files) gets a wide console so table ids are not cut.
+console = Console() if sys.stdout.isatty() else Console(width=200)
+err_console = Console(stderr=True)
+
+
+def _fail(message: str, code: int = 2):
+    """One line on stderr (no rich wrapping or markup), then exit with ``code``."""
+    sys.stderr.write("error: " + " ".join(str(message).split()) + "\n")
+    raise typer.Exit(code)
+
+
+def one_line_errors(fn):
+    """Decorator for commands: an InputError becomes ``error: …`` on stderr and exit code 2."""
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        try:
+            return fn(*args, **kwargs)
+        except InputError as exc:
+            message, file = str(exc), kwargs.get("file")
+            if file is not None and not message.startswith(f"{file}:"):  # every error names the file
+                message = f"{file}: {message}"
+            _fail(message)
+
+    return wrapper
+
+
+@app.command()
+def validate(
+    prefixes: list[str] = typer.Argument(None, help="Only cases whose id starts with one of these."),
+    as_json: bool = typer.Option(False, "--json", help="Print a JSON list instead of a table."),
+):
+    """Recompute every published number bearingkit reproduces; exit 1 on an unexplained failure."""
+    from bearingkit.validation.registry import all_cases, failures, run_cases
+
+    cases = all_cases(prefixes or ())
+    if not cases:
+        err_console.print(f"error: no validation case matches {prefixes}")
+        raise typer.Exit(2)
+    results = run_cases(cases)
+    if as_json:
+        sys.stdout.write(json.dumps([r.to_dict() for r in results], indent=1) + "\n")
+    else:
+        table = Table(title=f"bearingkit validate: {len(results)} cases")
+        for col in ("id", "unit", "published", "computed", "rel. error", "tol.", "status"):
+            table.add_column(col, justify="left" if col == "id" else "right")
+        for r in results:
+            status = (
+                "[green]pass[/]"
+                if r.passed
+                else ("[yellow]known[/]" if r.case.known_deviation else f"[red]FAIL[/] {r.error or ''}")
+            )
+            table.add_row(
+                r.case.id,
+                r.case.unit,
+                f"{r.case.published:.6g}",
+                f"{r.computed:.6g}",
+                f"{r.rel_error:+.3%}",
+                f"{r.case.tolerance:.1%}",
+                status,
+            )
+        console.print(table)
+        n_known = sum(1 for r in results if not r.passed and r.case.known_deviation)
+        console.print(
+            f"{sum(r.passed for r in results)} passed, {len(failures(results))} failed, "
+            f"{n_known} known deviations"
+        )
+    if failures(results):
+        raise typer.Exit(1)
+
+
+#: Arguments and options shared by the commands that read a bearing file.
+_FILE_ARGUMENT = typer.Argument(
+    ...,
+    help="Input file (TOML with units, docs/input-format.md) or a standard bearing designation such as "
+    "6205-2RS C3 (docs/catalogue.md).",
+)
+_LOAD_OPTION = typer.Option(
+    None,
+    "--load",
+    "-l",
+    help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
+)
+_CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
+_JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
+_SPEED_OPTION = typer.Option(
+    None,
+    "--speed",
+    help="Speed of the rotating ring, e.g. 3000rpm; its sign is the direction of rotation "
+    "(default: the cases').",
+)
+_TEMPERATURE_OPTION = typer.Option(
+    None, "--temperature", help="Operating temperature, e.g. 60degC (default: the cases', else 25 °C)."
+)
+_ROTATING_OPTION = typer.Option(
+    "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
+)
+_LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
+_CONTAMINATION_OPTION = typer.Option(
+    None, "--contamination", help="ISO 281 e_C (0 … 1); with lubricant, speed and temperature gives a_ISO."
+)
+
+
+#: Options parsed here (so a bad value names its option): option → (dimension, flag).
+_OPTION_UNITS = {
+    "speed": ("angular_velocity", "--speed"),
+    "temperature": ("temperature", "--temperature"),
+    "contamination": ("dimensionless", "--contamination"),
+    "reliability": ("dimensionless", "--reliability"),
+}
+
+
+def _analysis(file: Path, load, case, **operating):
+    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some)."""
+    from bearingkit.io.loader import parse_load_options
+    from bearingkit.pipeline import analyze, load_input
+    from bearingkit.units import parse
+
+    for key, (dimension, flag) in _OPTION_UNITS.items():
+        if isinstance(operating.get(key), str):
+            operating[key] = parse(operating[key], dimension, flag)
+    if operating.get("rotating", "inner") not in ("inner", "outer"):
+        raise InputError(f"--rotating ({operating['rotating']!r}) must be one of inner, outer")
+
+    bearing = load_input(file)
+    if load:
+        if case:
+            raise InputError("--case selects file load cases; it cannot be combined with --load")
+        bearing = bearing.with_cases([parse_load_options(load)])
+    else:
+        bearing = bearing.select(case)
+    try:
+        return analyze(bearing, **{k: v for k, v in operating.items() if v is not None})
+    except InputError as exc:
+        if str(exc).startswith(f"{file}:"):
+            raise
+        raise InputError(f"{file}: {exc}") from None
+
+
+def _print_json(file, data: dict) -> None:
+    """Strict JSON on stdout; a non-finite value is a one-line error with exit code 1."""
+    from bearingkit.io.export import to_json
+
+    try:
+        text = to_json(data)
+    except ValueError as exc:
+        _fail(f"{file}: {exc}", 1)
+    sys.stdout.write(text + "\n")
+
+
+def _header(analysis, file) -> None:
+    """The bearing's name and, for a designation, that (and how) its geometry is estimated."""
+    bearing = analysis.input
+    console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
+    if bearing.spec.bearing.designation is not None:
+        console.print(f"  note: {bearing.spec.bearing.source}", markup=False, highlight=False)
+
+
+def _fail_unconverged(file, analysis) -> None:
+    res = analysis.statics
+    if not res.converged.all():
+        i = int(next(i for i, ok in enumerate(res.converged) if not ok))
+        _fail(f"{file}: load case {analysis.case_names[i]!r} did not converge: {res.reason[i]}", 1)
+    flex = analysis.flexible
+    if flex is not None and not flex.converged.all():
+        i = int(next(i for i, ok in enumerate(flex.converged) if not ok))
+        _fail(f"{file}: load case {analysis.case_names[i]!r}: the flexible-ring coupling did not converge", 1)
+
+
+@app.command()
+@one_line_errors
+def analyze(
+    file: Path = _FILE_ARGUMENT,
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = _SPEED_OPTION,
+    as_json: bool = _JSON_OPTION,
+):
+    """Quasi-static load distribution of every load case with its warnings; exit 1 if one diverges."""
+    a = _analysis(file, load, case, speed=speed)
+    data = a.statics_dict()
+    if as_json:
+        _print_json(file, data)
+    else:
+        _header(a, file)
+        for c in data["cases"]:
+            console.print(case_table(c))
+            if "flexible" in c:
+                how = c["flexible"]["coupling"]
+                console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
+                console.print(case_table(c["flexible"]))
+            console.print(warnings_text(c["warnings"]))
+        console.print(warnings_text([], data["notes"]))
+    _fail_unconverged(file, a)
+
+
+@app.command()
+def schema():
+    """Print the JSON Schema of the input file."""
+    from bearingkit.io.schema import json_schema
+
+    sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
+
+
+def _load_ratings(items: list[str] | None) -> dict:
+    """``--load-rating ROW=C`` (C with a force unit) → {row name: C [N]}."""
+    from bearingkit.units import parse
+
+    out = {}
+    for item in items or ():
+        row, sep, value = item.partition("=")
+        if not sep or not row.strip() or not value.strip():
+            raise InputError(
+                f"--load-rating ({item!r}) must look like ROW=VALUE with a unit, e.g. roller_upper=50kN"
+            )
+        out[row.strip()] = parse(value.strip(), "force", f"--load-rating {row.strip()}")
+    return out
+
+
+@app.command()
+@one_line_errors
+def rating(
+    file: Path = _FILE_ARGUMENT,
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = _SPEED_OPTION,
+    reliability: str = typer.Option("0.9", "--reliability", help="Reliability of L_nr, 0.9 … 0.9995."),
+    rotating: str = _ROTATING_OPTION,
+    lubricant: str = _LUBRICANT_OPTION,
+    temperature: str = _TEMPERATURE_OPTION,
+    contamination: str = _CONTAMINATION_OPTION,
+    load_rating: list[str] = typer.Option(
+        None, "--load-rating", help="ROW=C replacing the ISO 281 rating of a row, e.g. roller_upper=50kN."
+    ),
+    as_json: bool = _JSON_OPTION,
+):
+    """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing."""
+    a = _analysis(
+        file,
+        load,
+        case,
+        speed=speed,
+        temperature=temperature,
+        rotating=rotating,
+        lubricant=lubricant,
+        contamination=contamination,
+        reliability=reliability,
+        load_ratings=_load_ratings(load_rating),
+    )
+    if contamination is not None and a.operating.lubricant is None:
+        raise InputError(
+            f'{file}: lubricant: none given; add [lubricant] name = "ISO_VG100" (a preset of '
+            "bearingkit.lubricants.LUBRICANTS) to the file or use --lubricant"
+        )
+    if contamination is not None and not a.operating.temperature_given.all():
+        raise InputError(f"{file}: --contamination needs a temperature: give --temperature 60degC")
+    data = a.rating_dict()
+    if as_json:
+        _print_json(file, data)
+    else:
+        _header(a, file)
+        for c in data["cases"]:
+            console.print(rating_table(c))
+            console.print(warnings_text(c["warnings"]))
+        console.print(warnings_text([], data["notes"]))
+    _fail_unconverged(file, a)
+
+
+#: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).
+FRICTION_MODELS = ("components", "skf", "palmgren")
+
+
+@app.command()
+@one_line_errors
+def friction(
+    file: Path = _FILE_ARGUMENT,
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = _SPEED_OPTION,
+    rotating: str = typer.Option(
+        "inner", "--rotating", help="Rotating ring: inner|outer (the other is at rest)."
+    ),
+    temperature: str = _TEMPERATURE_OPTION,
+    lubricant: str = _LUBRICANT_OPTION,
+    model: str = typer.Option(
+        "components",
+        "--model",
+        help="components (physics, per contact) | skf | palmgren (standard bearings).",
+    ),
+    as_json: bool = _JSON_OPTION,
+):
+    """Friction torque and power loss of every load case, broken down by component and by row."""
+    from bearingkit.pipeline import FRICTION_MODELS as MODELS
+
+    if model not in MODELS:
+        raise InputError(f"--model ({model!r}) must be one of {', '.join(MODELS)}")
+    a = _analysis(
+        file, load, case, speed=speed, temperature=temperature, rotating=rotating, lubricant=lubricant
+    )
+    a.friction_model = model
+    if not (a.operating.speed != 0).any() and speed is None:
+        raise InputError(
+            f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
+            "[[load_cases]]"
+        )
+    if model == "components":
+        _fail_unconverged(file, a)
+    data = a.friction_dict(model)
+    if as_json:
+        _print_json(file, data)
+    else:
+        _header(a, file)
+        for c in data["cases"]:
+            console.print(friction_table(c))
+            console.print(warnings_text(c["warnings"]))
+        console.print(warnings_text([], data["notes"]))
+
+
+@app.command("run-flagship")
+@one_line_errors
+def run_flagship(
+    as_json: bool = typer.Option(False, "--json", help="Print JSON instead of tables."),
+    report: Path = typer.Option(FLAGSHIP_REPORT, "--report", help="HTML report written at the end."),
+    no_report: bool = typer.Option(False, "--no-report", help="Do not write the HTML report."),
+):
+    """The flagship demonstration on seed 000 (what `make run` calls)."""
+    run_sections(console, as_json=as_json, report_path=None if no_report else report)
+
+
+@app.command()
+@one_line_errors
+def study(
+    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/."),
+    scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
+    workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
+    resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
+    out: Path = typer.Option(None, "--out", help="Output folder (default: out/<study name>)."),
+):
+    """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
+    from bearingkit.studies.__main__ import run_cli
+
+    run_cli(file, scheduler=scheduler, workers=workers, resume=resume, out=out, echo=console.print)
+
+
+@app.command()
+@one_line_errors
+def report(
+    file: Path = _FILE_ARGUMENT,
+    output: Path = typer.Option(Path("out/report.html"), "-o", "--output", help="HTML file to write."),
+    load: list[str] = _LOAD_OPTION,
+    case: list[str] = _CASE_OPTION,
+    speed: str = _SPEED_OPTION,
+    temperature: str = _TEMPERATURE_OPTION,
+    lubricant: str = _LUBRICANT_OPTION,
+    contamination: str = _CONTAMINATION_OPTION,
+):
+    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings."""
+    a = _analysis(
+        file,
+        load,
+        case,
+        speed=speed,
+        temperature=temperature,
+        lubricant=lubricant,
+        contamination=contamination,
+    )
+    path = a.report(output)
+    console.print(f"wrote {path}")
+
+
+@app.command()
+@one_line_errors
+def catalogue(
+    pattern: str = typer.Argument("*", help="Designation pattern, e.g. '62*', 'NU22*', '7206*'."),
+    as_json: bool = _JSON_OPTION,
+):
+    """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
+    from bearingkit.catalogue import estimate, find, ratings
+    from bearingkit.cli.tables import _num
+
+    rows = find(pattern)
+    if not rows:
+        raise InputError(f"catalogue pattern ({pattern!r}) matches no designation; try '62*' or '*'")
+    out = []
+    for e in rows:
+        try:
+            c, c0 = ratings(estimate(e))
+        except InputError:
+            c = c0 = None
+        out.append(
+            {
+                "designation": e.designation,
+                "family": e.family,
+                "d_m": e.bore,
+                "D_m": e.outer_diameter,
+                "B_m": e.width,
+                "C_catalogue_N": e.C,
+                "C0_catalogue_N": e.C0,
+                "C_estimate_N": c,
+                "C0_estimate_N": c0,
+                "source": e.source,
+            }
+        )
+    if as_json:
+        sys.stdout.write(json.dumps(out, indent=1) + "\n")
+        return
+    table = Table(title=f"bearingkit catalogue {pattern}: {len(out)} designations (C, C0 in kN)")
+    for col in ("designation", "d mm", "D mm", "B mm", "C cat.", "C est.", "C0 cat.", "C0 est.", "source"):
+        table.add_column(col, justify="left" if col in ("designation", "source") else "right", no_wrap=True)
+    for r in out:
+        table.add_row(
+            r["designation"],
+            f"{r['d_m'] * 1e3:g}",
+            f"{r['D_m'] * 1e3:g}",
+            f"{r['B_m'] * 1e3:g}",
+            _num(r["C_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C_estimate_N"], 1e-3, ".3g"),
+            _num(r["C0_catalogue_N"], 1e-3, ".3g"),
+            _num(r["C0_estimate_N"], 1e-3, ".3g"),
+            r["source"],
+        )
+    console.print(table)
+    console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
+
+
+@app.command()
+@one_line_errors
+def shaft(
+    file: Path = typer.Argument(..., help="Shaft file (TOML with units), see docs/systems.md."),
+    as_json: bool = _JSON_OPTION,
+    plot: Path = typer.Option(None, "--plot", help="Write deflection and moment lines (PNG) per case here."),
+    stiffness: Path = typer.Option(
+        None, "--stiffness", help="Write every bearing's 5x5 stiffness per case to this .csv or .json."
+    ),
+):
+    """A shaft on several bearings: reactions, seat tilts, shaft lines, lives; exit 1 if a case fails."""
+    import math
+
+    from rich.markup import escape
+
+    from bearingkit.cli.tables import _num
+    from bearingkit.systems.input import load_shaft_file, shaft_dict
+    from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
+
+    inp = load_shaft_file(file)
+    result = inp.solve()
+    data = shaft_dict(inp, result)
+    if stiffness is not None:
+        write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
+    if plot is not None:
+        from bearingkit.report.shaft_plots import write_shaft_figure
+
+        for c, name in enumerate(result.loads.names):
+            write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
+    if as_json:
+        _print_json(file, data)
+    else:
+        console.print(f"{inp.system.name}  ({file})", markup=False, highlight=False)
+        for c in data["cases"]:
+            s, life = c["shaft"], c["rating"]["system"]
+            status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
+            caption = (
+                f"shaft: max deflection {s['max_radial_deflection_m'] * 1e6:.4g} µm at "
+                f"{s['max_radial_deflection_at_m'] * 1e3:.4g} mm, max bending moment "
+                f"{s['max_bending_moment_Nm']:.4g} N·m at {s['max_bending_moment_at_m'] * 1e3:.4g} mm; "
+                f"system L10h = {_num(life['L10h_h'], fmt='.4g')} h"
+            )
+            table = Table(title=escape(f"case {c['case']!r}: {status}"), caption=escape(caption))
+            for col in (
+                "bearing",
+                "z mm",
+                "F_r N",
+                "F_a N",
+                "tilt mrad",
+                "seat u µm",
+                "L10h h",
+                "s0",
+                "M_fr N·m",
+            ):
+                table.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
+            for b in c["bearings"]:
+                u = b["seat_displacement"]
+                r = c["rating"]["bearings"].get(b["name"], {})
+                table.add_row(
+                    b["name"],
+                    f"{b['position_m'] * 1e3:.4g}",
+                    f"{b['radial_load_N']:.1f}",
+                    f"{round(b['axial_load_N'], 1) + 0.0:.1f}",
+                    f"{b['misalignment_rad'] * 1e3:.3g}",
+                    f"{math.hypot(u['u_x_m'], u['u_y_m']) * 1e6:.3g}",
+                    _num(r.get("L10h_h"), fmt=".4g"),
+                    _num(r.get("static_safety"), fmt=".3g"),
+                    _num(c["friction_Nm"].get(b["name"]), fmt=".3g"),
+                )
+            console.print(table)
+            for w in c["warnings"]:
+                console.print(f"  warning: {w}", markup=False, highlight=False)
+        for note in data["notes"]:
+            console.print(f"  note: {note}", markup=False, highlight=False)
+    if not result.converged.all():
+        bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
+        _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)
+
+
+def main() -> None:
+    """Entry point: one-line errors for bad input, exit code 2."""
+    try:
+        app()
+    except InputError as exc:
+        sys.stderr.write("error: " + " ".join(str(exc).split()) + "\n")
+        sys.exit(2)

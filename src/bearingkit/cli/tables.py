@@ -1,0 +1,149 @@
+"""Rich tables of the command line: load distribution, ratings, friction, warnings (faces only).
+
+SI values come in (the JSON-ready dicts of :class:`bearingkit.pipeline.Analysis`); the tables show
+µm, mrad, MPa, kN and r/min, rounded to meaningful digits (no round-off noise such as "-0.0").
+"""
+
+from __future__ import annotations
+
+import math
+
+from rich.console import Group
+from rich.markup import escape
+from rich.table import Table
+from rich.text import Text
+
+#: Displacements [m] and angles [rad] below this are the solver's round-off, shown as 0 (the solve
+#: converges to ~1e-10 of the load scale; 1e-12 m is a thousandth of a nanometre).
+DISPLACEMENT_NOISE = 1.0e-12
+
+
+def _shown(x: float, scale: float, noise: float) -> str:
+    """``x * scale`` with 4 significant digits; values below ``noise`` (and -0) print as 0."""
+    return f"{(x if abs(x) > noise else 0.0) * scale + 0.0:.4g}"
+
+
+def _f1(x: float) -> str:
+    """One decimal, without "-0.0"."""
+    return f"{(x if abs(x) >= 0.05 else 0.0) + 0.0:.1f}"
+
+
+def _g(x: float) -> str:
+    """Compact number without '-0' and without round-off noise below 1e-9 of a newton."""
+    return f"{(x if abs(x) > 1e-9 else 0.0) + 0.0:.6g}"
+
+
+def case_table(c: dict) -> Table:
+    """A rich table of one case dict (from :func:`bearingkit.io.export.case_dict`)."""
+    d = c["displacement"]
+    status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
+    u = ", ".join(_shown(d[k], 1e6, DISPLACEMENT_NOISE) for k in ("u_x_m", "u_y_m", "u_z_m"))
+    th = ", ".join(_shown(d[k], 1e3, DISPLACEMENT_NOISE) for k in ("theta_x_rad", "theta_y_rad"))
+    caption = f"u = ({u}) µm, θ = ({th}) mrad; {status}, {c['iterations']} iterations"
+    ld = c["load"]
+    title = (
+        f"case {c['case']!r}: F = ({_g(ld['F_x_N'])}, {_g(ld['F_y_N'])}, {_g(ld['F_z_N'])}) N, "
+        f"M = ({_g(ld['M_x_Nm'])}, {_g(ld['M_y_Nm'])}) N·m"
+    )
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in ("row", "loaded", "Q_max N", "p_max MPa", "F_axial N", "F_radial N"):
+        table.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
+    for r in c["rows"]:
+        table.add_row(
+            r["name"],
+            f"{r['loaded_count']}/{len(r['loads_N'])}",
+            _f1(r["max_load_N"]),
+            _f1(r["max_pressure_Pa"] / 1e6),
+            _f1(r["axial_load_N"]),
+            _f1(r["radial_load_N"]),
+        )
+    return table
+
+
+def _num(x, scale: float = 1.0, fmt: str = ".4g") -> str:
+    """A JSON value for a table: ``—`` for None (masked, not available)."""
+    return "—" if x is None else format(x * scale, fmt)
+
+
+def _compact(x, scale: float = 1.0) -> str:
+    """Three significant digits, short exponent (``7.45e4``); ``—`` for None."""
+    if x is None:
+        return "—"
+    text = f"{x * scale:.3g}"
+    mantissa, e, exponent = text.partition("e")
+    return f"{mantissa}e{int(exponent)}" if e else text
+
+
+def _lnm(value) -> str:
+    """L_nmr in 10⁶ rev, or why it is missing (a_ISO needs e_C, a lubricant, a temperature and a speed)."""
+    if value is None:
+        return "— (a_ISO needs --contamination, a lubricant, a temperature and a speed)"
+    return f"{_num(value, 1e-6)} 10⁶ rev"
+
+
+def rating_table(c: dict) -> Table:
+    """A rich table of one case dict of :func:`bearingkit.io.export.rating_dict`."""
+    speed = "speed not given" if c["speed_rad_s"] is None else f"{c['speed_rad_s'] * 30 / math.pi:.4g} r/min"
+    title = f"case {c['case']!r}: {c['rotating']} ring rotating, {speed}, reliability {c['reliability']:g}"
+    s = c["system"]
+    caption = (
+        f"bearing: L10r = {_num(s['L10r_rev'], 1e-6)} 10⁶ rev, L10h = {_num(s['L10h_h'])} h, "
+        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}, "
+        f"s0 = {_num(s['static_safety'], fmt='.3g')}"
+    )
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in ("row", "C kN", "C0 kN", "L10r 10⁶rev", "L10h h", "s0", "flags"):
+        justify = "left" if col in ("row", "flags") else "right"
+        table.add_column(
+            col,
+            justify=justify,
+            no_wrap=col != "flags",
+            overflow="fold",
+            min_width=9 if col == "flags" else None,
+        )
+    for r in c["rows"]:
+        table.add_row(
+            r["name"],
+            _num(r["C_N"], 1e-3),
+            _num(r["C0_N"], 1e-3),
+            _compact(r["L10r_rev"], 1e-6),
+            _compact(r["L10r_h"]),
+            _num(r["static_safety"], fmt=".3g"),
+            escape(", ".join(k for k, v in r["flags"].items() if v)),
+        )
+    return table
+
+
+def warnings_text(warnings, notes=()) -> Group:
+    """Warnings (yellow) and notes (dim) of one case, one line each, for the console."""
+    lines = [Text(f"  warning: {w}", style="yellow") for w in warnings]
+    lines += [Text(f"  note: {n}", style="dim") for n in notes]
+    return Group(*lines)
+
+
+def friction_table(c: dict):
+    """Rich tables (components, rows) of one case dict of :func:`bearingkit.io.export.friction_case_dict`."""
+    f = c["friction"]
+    total = f["total_Nm"]
+    if "speed_rad_s" in c:  # engineering model: relative speed only, no per-row breakdown
+        rpm, lube, model = c["speed_rad_s"] * 30 / math.pi, "", f" ({f['model']} model)"
+    else:
+        rpm = (c["speed_inner_rad_s"] - c["speed_outer_rad_s"]) * 30 / math.pi
+        lube, model = f", {c['lubricant']}", ""
+    title = (
+        f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
+        f"{c['temperature_C']:g} °C"
+    )
+    parts = Table(title=escape(title))
+    for col in ("component", "N·m", "share"):
+        parts.add_column(col, justify="left" if col == "component" else "right", no_wrap=True)
+    for name, value in f["components_Nm"].items():
+        parts.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
+    if "rows_Nm" not in f:
+        return Group(parts, *(Text(f"  note: {n}", style="dim") for n in f["notes"]))
+    rows = Table(title="by row")
+    for col in ("row", "N·m", "share"):
+        rows.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
+    for name, value in f["rows_Nm"].items():
+        rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
+    return Group(parts, rows)

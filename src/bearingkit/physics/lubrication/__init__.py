@@ -1,0 +1,1 @@
+"""Lubrication: EHL film thickness and rolling resistance, traction. SI units throughout."""

@@ -1,0 +1,1 @@
+"""Structures: thin-ring bending, ring beam between supports, thread tooth strength. SI units throughout."""

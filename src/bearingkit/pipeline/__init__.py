@@ -1,0 +1,23 @@
+"""One analysis pipeline: input → statics (+ flexible ring) → friction → lubrication → rating → ``Analysis``.
+
+SI units inside. The faces (CLI, HTML report, flagship, studies, web app) call :func:`analyze` and read
+the parts of the returned :class:`Analysis`; none of them orchestrates by itself.
+"""
+
+from bearingkit.pipeline.analysis import RENDERERS, Analysis, analyze
+from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
+from bearingkit.pipeline.inputs import load_cases_from, load_input
+from bearingkit.pipeline.operating import DEFAULT_TEMPERATURE, Operating
+
+__all__ = [
+    "DEFAULT_TEMPERATURE",
+    "FRICTION_MODELS",
+    "RENDERERS",
+    "Analysis",
+    "FrictionOutcome",
+    "Operating",
+    "analyze",
+    "load_cases_from",
+    "load_input",
+    "register_friction_model",
+]

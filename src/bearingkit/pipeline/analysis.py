@@ -1,0 +1,397 @@
+"""The one orchestration: bearing input → statics (+ flexible ring) → friction → rating → :class:`Analysis`.
+
+SI units inside (m, N, Pa, rad, rad/s, N·m, W; temperatures in °C). Every face — the CLI commands, the
+HTML report, ``make run``'s flagship, the study evaluators and the web app — builds an
+:class:`Analysis` and reads its parts; none of them orchestrates by itself. Each part is computed only
+when asked for, and only once:
+
+- :attr:`Analysis.statics` — the batched quasi-static solve of every load case (rigid rings);
+- :attr:`Analysis.flexible` — the coupled flexible-ring solve, where the input configures one;
+- :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
+  :data:`~bearingkit.pipeline.friction.FRICTION_MODELS`;
+- :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
+- :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
+  pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
+  bearing …); every face shows them.
+
+>>> import bearingkit as bk
+>>> a = bk.analyze("examples/dgbb_6209.toml", load={"F_x": "5 kN"}, speed="3000 rpm")  # doctest: +SKIP
+>>> a.rating.life                                                                     # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+
+import numpy as np
+
+from bearingkit.errors import InputError
+from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
+from bearingkit.pipeline.inputs import load_input
+from bearingkit.pipeline.operating import Operating
+
+__all__ = ["FREE_TILT_LIMIT", "RENDERERS", "Analysis", "analyze"]
+
+#: Tilt [rad] above which a single-row bearing with free tilt DOFs and no applied moment is flagged:
+#: it tilts only because the model lets it (a real one sits on a shaft); 1 µrad is far below any
+#: misalignment that matters and far above the solver's round-off (~1e-16 rad).
+FREE_TILT_LIMIT = 1.0e-6
+#: Renderers of an Analysis by format (``"html"``), registered by the report layer
+#: (:mod:`bearingkit.report` adds itself on import; :meth:`Analysis.report` loads it by name).
+RENDERERS: dict[str, Callable] = {}
+#: Where the renderer of each format lives (imported on first use, the way plugins are).
+_RENDERER_MODULES = {"html": "bearingkit.report"}
+
+
+def _coplanar(model) -> bool:
+    """True when every row of ``model`` sits in one axial plane (a single-row bearing)."""
+    positions = {round(float(np.max(getattr(r, "axial_position", 0.0))), 12) for r in model.rows}
+    return len(positions) == 1
+
+
+class Analysis:
+    """A bearing under its load cases and operating conditions; parts computed lazily, once.
+
+    Parameters
+    ----------
+    bearing : BearingInput
+        The input (:func:`bearingkit.pipeline.load_input`).
+    operating : Operating
+        Per-case operating conditions.
+    friction_model : str
+        Default model of :attr:`friction` (a key of :data:`FRICTION_MODELS`).
+    load_ratings : dict, optional
+        Row name → C [N] replacing ISO 281 ratings (catalogue values).
+    friction_options : dict, optional
+        Further fields of :class:`bearingkit.analysis.friction.OperatingPoint` for the component model
+        (``viscosity_factor``, ``cage_mass``, roughness, traction …).
+    """
+
+    def __init__(
+        self,
+        bearing,
+        operating: Operating,
+        *,
+        friction_model: str = "components",
+        load_ratings=None,
+        friction_options=None,
+    ):
+        if friction_model not in FRICTION_MODELS:
+            raise InputError(
+                f"friction model ({friction_model!r}) must be one of {', '.join(FRICTION_MODELS)}"
+            )
+        self.input = bearing
+        self.operating = operating
+        self.friction_model = friction_model
+        self.load_ratings = dict(load_ratings or {})
+        self.friction_options = dict(friction_options or {})
+        self._friction: dict[str, FrictionOutcome] = {}
+        self._friction_errors: dict[str, str] = {}
+
+    # ------------------------------------------------------------------------------- parts
+    @property
+    def n_cases(self) -> int:
+        return len(self.input.cases)
+
+    @property
+    def case_names(self) -> list[str]:
+        return [c.name for c in self.input.cases]
+
+    @functools.cached_property
+    def statics(self):
+        """QuasiStaticResult of every load case (one batched solve)."""
+        return self.input.solve()
+
+    @functools.cached_property
+    def flexible(self):
+        """FlexibleResult of the coupled flexible-ring solve, or None when the input has no flexible ring."""
+        if self.input.bearing_type != "ball_column":
+            return None
+        from bearingkit.bearings.ball_column import solve_flexible_input
+
+        return solve_flexible_input(self.input)
+
+    def friction_by(self, model: str | None = None) -> FrictionOutcome:
+        """Friction by ``model`` (default :attr:`friction_model`); InputError when it does not apply."""
+        model = model or self.friction_model
+        if model not in FRICTION_MODELS:
+            raise InputError(f"friction model ({model!r}) must be one of {', '.join(FRICTION_MODELS)}")
+        if model in self._friction_errors:
+            raise InputError(self._friction_errors[model])
+        if model not in self._friction:
+            try:
+                self._friction[model] = FRICTION_MODELS[model](self)
+            except InputError as exc:
+                self._friction_errors[model] = str(exc)
+                raise
+        return self._friction[model]
+
+    @property
+    def friction(self) -> FrictionOutcome | None:
+        """Friction by the default model, or None when it cannot be computed (:attr:`notes` say why)."""
+        try:
+            return self.friction_by()
+        except InputError:
+            return None
+
+    @functools.cached_property
+    def _rating(self):
+        from bearingkit.analysis.rating import rate
+
+        op = self.operating
+        speed = op.abs_speed if np.all(op.abs_speed > 0) else None
+        life = {}
+        if op.contamination is not None and op.lubricant is not None and speed is not None:
+            life = {
+                "lubricant": op.lubricant,
+                "temperature_C": op.temperature,
+                "contamination_factor": op.contamination,
+            }
+        try:
+            return rate(
+                self.statics,
+                speed=speed,
+                rotating=op.rotating,
+                reliability=op.reliability,
+                load_ratings=self.load_ratings,
+                **life,
+            ), None
+        except InputError as exc:
+            return None, f"ratings not computed: {exc}"
+
+    @property
+    def rating(self):
+        """RatingResult, or None when the bearing cannot be rated (:attr:`notes` say why)."""
+        return self._rating[0]
+
+    # ------------------------------------------------------------------------------- messages
+    @property
+    def notes(self) -> list[str]:
+        """What was assumed or skipped, for every face (not per case)."""
+        op, out = self.operating, []
+        if self._rating[1]:
+            out.append(self._rating[1])
+        elif not np.all(op.abs_speed > 0):
+            out.append("ratings: no speed for every case, so no lives in hours and no κ / a_ISO")
+        elif op.contamination is None:
+            out.append("ratings: no contamination factor e_C given, so no a_ISO and no L_nm")
+        elif op.lubricant is None:
+            out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
+        for model, why in self._friction_errors.items():
+            out.append(f"friction ({model}) not computed: {why}")
+        for outcome in self._friction.values():
+            out.extend(f"friction ({outcome.model}): {n}" for n in outcome.notes)
+        return out
+
+    def _free_tilt(self, case: int) -> str | None:
+        res, free = self.statics, self.input.free
+        if not (free[3] or free[4]) or not _coplanar(res.model) or not res.converged[case]:
+            return None
+        tilt = float(np.hypot(*res.displacement[case, 3:5]))
+        moment = float(np.hypot(*res.load[case, 3:5]))
+        if tilt > FREE_TILT_LIMIT and moment == 0.0:
+            return (
+                f"free tilt of a single-row bearing: it tilts {tilt * 1e3:.3g} mrad under no applied moment "
+                "because theta_x, theta_y are free; a bearing on a shaft does not: fix them in [solver] "
+                "free (as commercial tools do for a single bearing) or model the shaft"
+            )
+        return None
+
+    @functools.cached_property
+    def warnings(self) -> list[list[str]]:
+        """Per case: every doubtful finding of the parts computed for it (statics and ratings always)."""
+        res = self.statics
+        out = []
+        rating = self.rating
+        flex = self.flexible
+        for c in range(self.n_cases):
+            notes = []
+            if not res.converged[c]:
+                notes.append(
+                    f"did not converge: {res.reason[c] or 'no reason given'}; loads shown are not an "
+                    "equilibrium"
+                )
+            tilt = self._free_tilt(c)
+            if tilt:
+                notes.append(tilt)
+            if flex is not None and not flex.converged[c]:
+                notes.append("the flexible-ring coupling did not converge")
+            if rating is not None:
+                notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
+            out.append(notes)
+        return out
+
+    @property
+    def references(self) -> list[str]:
+        """Citation keys of every part computed so far."""
+        keys = list(self.statics.references)
+        if self.rating is not None:
+            keys += list(self.rating.references)
+        for outcome in self._friction.values():
+            keys += list(outcome.references)
+        return list(dict.fromkeys(keys))
+
+    # ------------------------------------------------------------------------------- output
+    def _header(self) -> dict:
+        b = self.input
+        return {
+            "file": b.source,
+            "bearing_type": b.bearing_type,
+            "bearing_name": b.model.name,
+            "source": b.spec.bearing.source,
+        }
+
+    def statics_dict(self) -> dict:
+        """The load distribution of every case (``bearingkit analyze --json``), with its warnings."""
+        from bearingkit.io.export import case_dict
+
+        b, res = self.input, self.statics
+        cases = []
+        for i in range(self.n_cases):
+            d = case_dict(b, res, i)
+            if self.flexible is not None:
+                d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
+            d["warnings"] = self.warnings[i]
+            cases.append(d)
+        free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), b.free, strict=True) if f]
+        return {**self._header(), "free_dofs": free, "cases": cases, "notes": self.notes}
+
+    def rating_dict(self) -> dict:
+        """Ratings and lives of every case (``bearingkit rating --json``); InputError when not rateable."""
+        if self.rating is None:
+            raise InputError(f"{self.input.source}: {self._rating[1]}")
+        cases = []
+        for i, c in enumerate(self.input.cases):
+            d = {"case": c.name, **self.rating.to_dict(i)}
+            d["warnings"] = list(dict.fromkeys([*self.warnings[i], *d.get("warnings", [])]))
+            cases.append(d)
+        return {**self._header(), "cases": cases, "notes": self.notes}
+
+    def friction_dict(self, model: str | None = None) -> dict:
+        """Friction of every case by ``model`` (``bearingkit friction --json``)."""
+        outcome = self.friction_by(model)
+        cases = []
+        for i, d in enumerate(outcome.case_dicts):
+            d = dict(d)
+            d["friction"] = {**d["friction"], "power_loss_W": float(outcome.power_loss[i])}
+            d["warnings"] = self.warnings[i]
+            cases.append(d)
+        return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
+
+    def to_dict(self) -> dict:
+        """Everything computed for every case, JSON-ready (SI values, units in keys)."""
+        out = self.statics_dict()
+        for i, d in enumerate(out["cases"]):
+            d["operating"] = self.operating.to_dict(i)
+            if self.rating is not None:
+                d["rating"] = self.rating.to_dict(i)
+            friction = self.friction
+            if friction is not None:
+                d["friction"] = {
+                    **friction.case_dicts[i]["friction"],
+                    "power_loss_W": float(friction.power_loss[i]),
+                }
+        out["notes"] = self.notes
+        out["references"] = self.references
+        return out
+
+    def to_pandas(self):
+        """One line per case: operating point, displacement, per-row max load and pressure, lives, torque."""
+        import pandas as pd
+
+        res = self.statics
+        cols: dict[str, object] = {"case": self.case_names}
+        cols["speed_rad_s"] = self.operating.speed
+        cols["temperature_C"] = self.operating.temperature
+        for k, name in enumerate(("u_x_m", "u_y_m", "u_z_m", "theta_x_rad", "theta_y_rad")):
+            cols[name] = res.displacement[:, k]
+        cols["converged"] = np.asarray(res.converged, bool)
+        for row in res.rows:
+            cols[f"{row.name}_max_load_N"] = row.max_load
+            cols[f"{row.name}_max_pressure_Pa"] = row.max_pressure.max(axis=-1)
+            cols[f"{row.name}_loaded_count"] = row.loaded_count
+        if self.rating is not None:
+            cols["L10r_rev"] = np.ma.filled(self.rating.life.astype(float), np.nan)
+            cols["static_safety"] = np.ma.filled(self.rating.static_safety.astype(float), np.nan)
+        if self.friction is not None:
+            cols["friction_torque_Nm"] = self.friction.total
+            cols["power_loss_W"] = self.friction.power_loss
+        cols["warnings"] = [len(w) for w in self.warnings]
+        return pd.DataFrame(cols)
+
+    def report(self, path, **options):
+        """Write the HTML report of this analysis to ``path`` (atomic); returns the path."""
+        import importlib
+
+        if "html" not in RENDERERS:
+            importlib.import_module(_RENDERER_MODULES["html"])  # the report layer registers itself
+        return RENDERERS["html"](self, path, **options)
+
+
+def analyze(
+    source,
+    *,
+    load=None,
+    cases=None,
+    speed=None,
+    temperature=None,
+    rotating: str = "inner",
+    lubricant=None,
+    contamination=None,
+    reliability=0.9,
+    friction_model: str = "components",
+    load_ratings=None,
+    friction_options=None,
+) -> Analysis:
+    """Analyse a bearing: the entry point of the library, the CLI, the report, studies and the app.
+
+    Parameters
+    ----------
+    source : str, Path, dict or BearingInput
+        Input file (docs/input-format.md), parsed file or loaded input.
+    load : Mapping or list, optional
+        Load case(s) replacing the file's, values with units: ``{"F_x": "5 kN", "F_z": "1 kN"}``.
+    cases : list of str, optional
+        Only these load cases of the file.
+    speed : float [rad/s] or str, optional
+        Speed of the rotating ring for every case, e.g. ``"3000 rpm"`` (sign rule:
+        :mod:`bearingkit.pipeline.operating`); default each case's speed, else 0.
+    temperature : float [°C] or str, optional
+        E.g. ``"60 degC"``; default each case's, else 25 °C.
+    rotating : {"inner", "outer"}
+    lubricant : str, optional
+        Preset name; default the file's ``[lubricant]``.
+    contamination : float or str, optional
+        ISO 281 e_C (0 … 1): with a lubricant, a temperature and a speed, gives a_ISO and L_nm.
+    reliability : float or str
+        Reliability of L_nr, 0.9 … 0.9995.
+    friction_model : str
+        ``"components"``, ``"skf"`` or ``"palmgren"`` (:data:`FRICTION_MODELS`).
+    load_ratings : dict, optional
+        Row name → C [N] replacing the ISO 281 rating.
+    friction_options : dict, optional
+        Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields of the component model.
+
+    Returns
+    -------
+    Analysis
+        Nothing is computed until a part is asked for.
+    """
+    bearing = load_input(source, load=load, cases=cases)
+    operating = Operating.of(
+        bearing,
+        speed=speed,
+        temperature=temperature,
+        rotating=rotating,
+        lubricant=lubricant,
+        contamination=contamination,
+        reliability=reliability,
+    )
+    return Analysis(
+        bearing,
+        operating,
+        friction_model=friction_model,
+        load_ratings=load_ratings,
+        friction_options=friction_options,
+    )

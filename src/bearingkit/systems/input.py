@@ -1,0 +1,428 @@
+"""The ``[shaft]`` input file: a shaft, its bearings (bearing files), gears and load cases, in TOML.
+
+Units at the edge (``"45 mm"``, ``"200 N*m"``, ``"1500 rpm"``, ``"2e8 N/m"``), SI after validation, as
+for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
+
+    [shaft]              name, material, gravity ("-y" …), shear_deformation, max_element_length
+    [[shaft.sections]]   start (default: previous end), end or length, outer_diameter, inner_diameter
+    [[shaft.bearings]]   name, file (a bearing input file, relative to this file), designation
+                         (a standard bearing, e.g. "6209") or stiffness,
+                         position, orientation ("+z"|"-z"), axial ("locating"|"floating"),
+                         axial_offset, housing = {radial, axial, tilt}
+    [[shaft.gears]]      name, position, pitch_diameter, pressure_angle, helix_angle, mesh_angle, mass
+    [[shaft.masses]]     name, position, mass
+    [[load_cases]]       name, speed, temperature, gears = {NAME = torque}, forces = [...],
+                         line_loads = [...]
+    [lubricant]          name (friction of bearings whose file has none)
+    [solver]             rtol, max_iterations
+
+Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, ValidationError
+
+from bearingkit.errors import InputError
+from bearingkit.io import schema
+from bearingkit.io.loader import load_file
+from bearingkit.io.messages import one_line
+from bearingkit.io.reading import load_toml
+from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
+from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
+from bearingkit.systems.solver import ShaftSystem, SystemOptions
+from bearingkit.systems.supports import BearingSeat, LinearBearing
+
+Stiffness = schema.quantity("stiffness", "non_negative")
+RotationalStiffness = schema.quantity("rotational_stiffness", "non_negative")
+LineLoadValue = schema.quantity("line_load")
+Mass = schema.quantity("mass", "non_negative")
+PositiveMass = schema.quantity("mass", "positive")
+
+
+class SectionSpec(schema.Strict):
+    """``[[shaft.sections]]``: one step of the shaft."""
+
+    start: schema.Length | None = Field(
+        None, description="Default: where the previous section ends (0 first)."
+    )
+    end: schema.Length | None = None
+    length: schema.PositiveLength | None = Field(None, description="Instead of end.")
+    outer_diameter: schema.PositiveLength
+    inner_diameter: schema.NonNegativeLength = 0.0
+
+
+class HousingSpec(schema.Strict):
+    """``housing``: stiffness of the housing per outer-ring DOF; a value left out is rigid."""
+
+    radial: Stiffness | None = None
+    axial: Stiffness | None = None
+    tilt: RotationalStiffness | None = None
+
+
+class LinearStiffnessSpec(schema.Strict):
+    """``stiffness``: a bearing given as constant stiffness (a hand model) instead of a file."""
+
+    radial: Stiffness
+    axial: Stiffness = 0.0
+    tilt: RotationalStiffness = 0.0
+
+
+class BearingSpec(schema.Strict):
+    """``[[shaft.bearings]]``: a bearing and where it sits."""
+
+    name: str
+    file: str | None = Field(None, description="Bearing input file (TOML), relative to the shaft file.")
+    designation: str | None = Field(None, description="A standard bearing (docs/catalogue.md), e.g. '6209'.")
+    stiffness: LinearStiffnessSpec | None = None
+    position: schema.Length
+    orientation: Literal["+z", "-z"] = "+z"
+    axial: Literal["locating", "floating"] = "locating"
+    axial_offset: schema.Length = 0.0
+    housing: HousingSpec | None = None
+
+
+class GearSpec(schema.Strict):
+    """``[[shaft.gears]]``: a gear (or a pulley with pressure_angle 0 deg)."""
+
+    name: str
+    position: schema.Length
+    pitch_diameter: schema.PositiveLength
+    pressure_angle: schema.Angle = float(np.deg2rad(20.0))
+    helix_angle: schema.Angle = 0.0
+    mesh_angle: schema.Angle = 0.0
+    mass: Mass = 0.0
+
+
+class MassSpec(schema.Strict):
+    """``[[shaft.masses]]``: a lumped mass (coupling, disc) that gravity loads."""
+
+    name: str = "mass"
+    position: schema.Length
+    mass: PositiveMass
+
+
+class ShaftSpec(schema.Strict):
+    """``[shaft]``."""
+
+    name: str = "shaft"
+    material: schema.MaterialSpec | None = None
+    gravity: Literal["+x", "-x", "+y", "-y", "+z", "-z"] | None = Field(
+        None, description="Direction of gravity in shaft axes (standard gravity); none: weightless."
+    )
+    shear_deformation: bool = True
+    max_element_length: schema.PositiveLength | None = None
+    sections: list[SectionSpec]
+    bearings: list[BearingSpec]
+    gears: list[GearSpec] = Field(default_factory=list)
+    masses: list[MassSpec] = Field(default_factory=list)
+
+
+class ForceSpec(schema.Strict):
+    """``forces = [{...}]`` of a load case: force and moment at a position."""
+
+    name: str = "force"
+    position: schema.Length
+    F_x: schema.Force = 0.0
+    F_y: schema.Force = 0.0
+    F_z: schema.Force = 0.0
+    M_x: schema.Moment = 0.0
+    M_y: schema.Moment = 0.0
+
+
+class LineLoadSpec(schema.Strict):
+    """``line_loads = [{...}]`` of a load case: uniform load per length between start and end."""
+
+    name: str = "line load"
+    start: schema.Length
+    end: schema.Length
+    q_x: LineLoadValue = 0.0
+    q_y: LineLoadValue = 0.0
+    q_z: LineLoadValue = 0.0
+
+
+class ShaftCaseSpec(schema.Strict):
+    """``[[load_cases]]`` of a shaft file."""
+
+    name: str
+    speed: schema.AngularVelocity | None = None
+    temperature: schema.Temperature | None = None
+    gears: dict[str, schema.Moment] = Field(
+        default_factory=dict, description="Torque each gear mesh applies to the shaft about +z."
+    )
+    forces: list[ForceSpec] = Field(default_factory=list)
+    line_loads: list[LineLoadSpec] = Field(default_factory=list)
+
+
+class ShaftSolverSpec(schema.Strict):
+    """``[solver]`` of a shaft file."""
+
+    rtol: schema.Dimensionless | None = None
+    max_iterations: schema.IterationCount | None = None
+
+
+class ShaftFile(schema.Strict):
+    """A shaft input file."""
+
+    shaft: ShaftSpec
+    load_cases: list[ShaftCaseSpec]
+    lubricant: schema.LubricantSpec | None = None
+    solver: ShaftSolverSpec | None = None
+
+
+_MODELS = {
+    "": ShaftFile,
+    "shaft": ShaftSpec,
+    "shaft.sections": SectionSpec,
+    "shaft.bearings": BearingSpec,
+    "shaft.bearings.housing": HousingSpec,
+    "shaft.bearings.stiffness": LinearStiffnessSpec,
+    "shaft.gears": GearSpec,
+    "shaft.masses": MassSpec,
+    "shaft.material": schema.MaterialSpec,
+    "load_cases": ShaftCaseSpec,
+    "load_cases.forces": ForceSpec,
+    "load_cases.line_loads": LineLoadSpec,
+    "lubricant": schema.LubricantSpec,
+    "solver": ShaftSolverSpec,
+}
+
+
+@dataclass(frozen=True)
+class ShaftInput:
+    """A loaded shaft file (SI): the system, its load cases, solver options and notes."""
+
+    source: str
+    system: ShaftSystem
+    loads: ShaftLoads
+    options: SystemOptions
+    lubricant: object | None = None
+    warnings: tuple = field(default_factory=tuple)
+
+    def solve(self):
+        """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
+        from bearingkit.systems.solver import solve
+
+        return solve(self.system, self.loads, self.options)
+
+
+def load_shaft_file(path) -> ShaftInput:
+    """Read and validate a shaft file; InputError (one line naming the file and field) if malformed."""
+    path = Path(path)
+    data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
+    return shaft_from_dict(data, str(path), base=path.parent)
+
+
+def shaft_from_dict(data: dict, source: str = "<dict>", base=None) -> ShaftInput:
+    """Validate a parsed shaft file; bearing files are read relative to ``base`` (default cwd)."""
+    base = Path(base) if base is not None else Path.cwd()
+    try:
+        spec = ShaftFile.model_validate(data)
+    except ValidationError as exc:
+        raise one_line(source, exc, (), _MODELS) from None
+    try:
+        return _build(spec, source, base)
+    except InputError as exc:
+        text = str(exc)
+        raise InputError(text if text.startswith(f"{source}:") else f"{source}: {text}") from None
+
+
+def _material(spec: schema.MaterialSpec | None):
+    from bearingkit.materials import MATERIALS, Material
+
+    if spec is None or spec.name == SHAFT_STEEL.name:
+        return SHAFT_STEEL
+    if spec.name is not None:
+        if spec.name not in MATERIALS:
+            names = ", ".join([SHAFT_STEEL.name, *MATERIALS])
+            raise InputError(f"shaft.material.name ({spec.name!r}) must be one of {names}")
+        return MATERIALS[spec.name]
+    return Material("shaft material", spec.youngs_modulus, spec.poisson_ratio, spec.density, source="input")
+
+
+def _sections(specs: list[SectionSpec]) -> tuple:
+    out, previous_end = [], 0.0
+    for i, s in enumerate(specs):
+        start = previous_end if s.start is None else s.start
+        if (s.end is None) == (s.length is None):
+            raise InputError(f"shaft.sections[{i}]: give exactly one of end and length")
+        end = start + s.length if s.end is None else s.end
+        if not end > start:
+            raise InputError(
+                f"shaft.sections[{i}].end ({end * 1e3:.6g} mm) must lie after its start "
+                f"({start * 1e3:.6g} mm)"
+            )
+        try:
+            out.append(Section(start, end, s.outer_diameter, s.inner_diameter))
+        except InputError as exc:
+            raise InputError(f"shaft.sections[{i}].{exc}") from None
+        previous_end = end
+    return tuple(out)
+
+
+def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
+    where = f"shaft.bearings[{i}] ({b.name})"
+    if sum(v is not None for v in (b.file, b.designation, b.stiffness)) != 1:
+        raise InputError(
+            f"{where}: give exactly one of file (a bearing input file), designation (e.g. '6209') "
+            "and stiffness"
+        )
+    if b.designation is not None:
+        from bearingkit.io.loader import from_dict
+
+        try:
+            source = from_dict({"bearing": {"designation": b.designation}}, source=b.designation)
+        except InputError as exc:
+            raise InputError(f"{where}.designation: {exc}") from None
+        bearing = source.model
+    elif b.file is not None:
+        path = Path(b.file)
+        path = path if path.is_absolute() else base / path
+        try:
+            source = load_file(path)
+        except InputError as exc:
+            raise InputError(f"{where}.file: {exc}") from None
+        bearing = source.model
+    else:
+        k = b.stiffness
+        source = None
+        bearing = LinearBearing(np.diag([k.radial, k.radial, k.axial, k.tilt, k.tilt]), name=b.name)
+    housing = None
+    if b.housing is not None:
+        h = b.housing
+        vals = [h.radial, h.radial, h.axial, h.tilt, h.tilt]
+        housing = np.array([np.inf if v is None else v for v in vals])
+    return BearingSeat(
+        name=b.name,
+        bearing=bearing,
+        position=b.position,
+        orientation=b.orientation,
+        axial=b.axial,
+        axial_offset=b.axial_offset,
+        housing_stiffness=housing,
+        source=source,
+    )
+
+
+def _loads(cases: list[ShaftCaseSpec], gravity) -> ShaftLoads:
+    n = len(cases)
+    if n == 0:
+        raise InputError("load_cases (none): give at least one [[load_cases]]")
+    forces, lines, torques = [], [], {}
+    for c, case in enumerate(cases):
+        for f in case.forces:
+            load = np.zeros((n, 5))
+            load[c] = [f.F_x, f.F_y, f.F_z, f.M_x, f.M_y]
+            forces.append(PointLoad(f.position, load, f.name))
+        for q in case.line_loads:
+            load = np.zeros((n, 3))
+            load[c] = [q.q_x, q.q_y, q.q_z]
+            if not q.end > q.start:
+                raise InputError(f"load_cases[{c}].line_loads ({q.name}): end must lie after start")
+            lines.append(LineLoad(q.start, q.end, load, q.name))
+        for gear, torque in case.gears.items():
+            torques.setdefault(gear, np.zeros(n))[c] = torque
+    per_case = {}
+    for attr in ("speed", "temperature"):
+        values = [getattr(c, attr) for c in cases]
+        given = [v is not None for v in values]
+        if any(given) and not all(given):
+            missing = cases[given.index(False)].name
+            raise InputError(
+                f"load_cases: case {missing!r} has no {attr} while others do; give it in every case"
+            )
+        per_case[attr] = np.array(values, dtype=float) if all(given) else None
+    return ShaftLoads(
+        names=tuple(c.name for c in cases),
+        forces=tuple(forces),
+        line_loads=tuple(lines),
+        gear_torques=torques,
+        gravity=None if gravity is None else STANDARD_GRAVITY * np.asarray(AXES[gravity]),
+        speed=per_case["speed"],
+        temperature=per_case["temperature"],
+    )
+
+
+def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
+    s = spec.shaft
+    shaft = Shaft(_sections(s.sections), _material(s.material), s.shear_deformation, s.name)
+    seats = tuple(_seat(i, b, base) for i, b in enumerate(s.bearings))
+    gears = tuple(
+        Gear(g.name, g.position, g.pitch_diameter, g.pressure_angle, g.helix_angle, g.mesh_angle, g.mass)
+        for g in s.gears
+    )
+    masses = tuple(PointMass(m.position, m.mass, m.name) for m in s.masses)
+    loads = _loads(spec.load_cases, s.gravity)
+    try:
+        system = ShaftSystem(shaft, seats, gears, masses, s.max_element_length, s.name)
+        system.check_loads(loads)
+    except InputError as exc:  # the system names its own fields: place them in the file
+        text = str(exc)
+        if text.startswith(("bearings", "gears", "masses")):
+            text = "shaft." + text
+        elif text.startswith(("forces", "line_loads")):
+            text = "load_cases: " + text
+        raise InputError(text) from None
+    notes = []
+    for c, name in enumerate(loads.names):
+        torques = [np.broadcast_to(t, (loads.n_cases,))[c] for t in loads.gear_torques.values()]
+        total, size = float(np.sum(torques)) if torques else 0.0, max((abs(t) for t in torques), default=0.0)
+        if abs(total) > 1e-6 * max(size, 1e-300):
+            notes.append(
+                f"load case {name!r}: the gear torques do not balance (sum {total:.6g} N·m); the shaft's "
+                "torsion is not modelled, so the remainder is taken as passing to a coupling"
+            )
+    opts = {}
+    if spec.solver is not None:
+        opts = {
+            k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
+        }
+    lubricant = None
+    if spec.lubricant is not None:
+        from bearingkit.lubricants import LUBRICANTS
+
+        if spec.lubricant.name not in LUBRICANTS:
+            raise InputError(
+                f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
+            )
+        lubricant = LUBRICANTS[spec.lubricant.name]
+    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes))
+
+
+def shaft_dict(inp: ShaftInput, result) -> dict:
+    """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
+
+    Per case: :meth:`ShaftResult.to_dict`, each bearing's ratings and the system life
+    (:func:`bearingkit.systems.life.rate_system`), and each bearing's friction torque where a lubricant
+    and a speed are known (:func:`bearingkit.systems.life.friction_system`); plus the file's notes.
+    """
+    from bearingkit.systems.life import friction_system, rate_system
+
+    rating = rate_system(result)
+    torque, notes = friction_system(result, lubricant=inp.lubricant)
+    cases = []
+    for c in range(result.n_cases):
+        d = result.to_dict(c)
+        d["rating"] = rating.to_dict(c)
+        d["friction_Nm"] = {name: (None if np.isnan(t[c]) else float(t[c])) for name, t in torque.items()}
+        d["warnings"] = list(rating.warnings[c])
+        cases.append(d)
+    return {
+        "file": inp.source,
+        "shaft": inp.system.name,
+        "bearings": [
+            {
+                "name": b.name,
+                "bearing": getattr(b.bearing, "name", "linear bearing"),
+                "position_m": b.position,
+            }
+            for b in inp.system.bearings
+        ],
+        "notes": [*inp.warnings, *notes],
+        "cases": cases,
+    }

@@ -1,0 +1,186 @@
+"""Export to ROSS (ross-rotordynamics): bearing elements from stiffness tables, and whole rotors.
+
+SI units (ROSS takes SI floats). Optional dependency: ``pip install 'bearingkit[ross]'``.
+
+A ROSS ``BearingElement`` takes kxx, kxy, kyx, kyy (and kzz) as constants or as arrays over
+``frequency`` [rad/s], which ROSS interpolates (a spline over ≥ 4 speeds, linear/quadratic over 2–3)
+when it evaluates the bearing at a rotor speed. :func:`ross_bearing` passes a
+:class:`~bearingkit.systems.stiffness.StiffnessTable`'s radial block and axial term that way: one
+point → constants, several points at distinct speeds → a speed-indexed element. The element has no
+tilt stiffness and no force–tilt coupling (ROSS's bearing element acts on x, y, z only): those terms
+stay in the JSON/CSV table. Damping is not computed by bearingkit: the element gets ``damping``
+(default 0) in cxx = cyy.
+
+:func:`ross_rotor` builds the whole rotor from a solved shaft: one ROSS ``ShaftElement`` per
+bearingkit element (same lengths, diameters, material, Timoshenko shear on or off), a
+``BearingElement`` at each seat node with that bearing's stiffness at the chosen load cases, and a
+``DiskElement`` for each gear with a mass, taken as a solid disc of its pitch diameter
+(I_p = m d²/8, I_d = I_p/2 — an assumption: bearingkit does not know the gear's real inertia), and one
+without inertia for each point mass.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import sys
+import warnings
+
+import numpy as np
+
+from bearingkit.errors import InputError
+from bearingkit.systems.stiffness import StiffnessTable, shaft_stiffness_table
+
+#: What to install when ROSS is missing.
+INSTALL_HINT = "pip install 'bearingkit[ross]'"
+
+
+def import_ross():
+    """The ``ross`` module (ross-rotordynamics), imported quietly; InputError when not installed.
+
+    ROSS imports ccp, which prints a REFPROP notice (from Python and from its C++ fluid library, on
+    both streams) when that proprietary library is absent; it is irrelevant here and would corrupt
+    ``--json`` output, so the import runs with file descriptors 1 and 2 sent to the null device.
+    """
+    try:
+        with _quiet():
+            import ross
+    except ImportError as exc:
+        raise InputError(f"ross-rotordynamics is not installed ({exc}); {INSTALL_HINT}") from None
+    return ross
+
+
+@contextlib.contextmanager
+def _quiet():
+    """Discard what Python and native code write to stdout and stderr inside the block."""
+    saved = []
+    sys.stdout.flush()
+    sys.stderr.flush()
+    with open(os.devnull, "w") as null, warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            for fd in (1, 2):
+                saved.append((fd, os.dup(fd)))
+                os.dup2(null.fileno(), fd)
+            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+                yield
+        finally:
+            for fd, copy in saved:
+                os.dup2(copy, fd)
+                os.close(copy)
+
+
+def ross_bearing(table: StiffnessTable, node: int, *, damping: float = 0.0, tag: str | None = None):
+    """A ROSS ``BearingElement`` at ``node`` from the radial block and axial term of ``table``.
+
+    Parameters
+    ----------
+    table : StiffnessTable
+        One point (constant coefficients) or points at distinct speeds (a speed-indexed element,
+        interpolated by ROSS; points are sorted by speed). Use ``table.select`` to pick one load level.
+    node : int
+        ROSS node index.
+    damping : float [N·s/m]
+        cxx = cyy (bearingkit computes no damping).
+    tag : str, optional
+        Element tag (default the bearing name).
+
+    Returns
+    -------
+    ross.BearingElement
+    """
+    rs = import_ross()
+    if not np.all(table.converged):
+        bad = table.labels[int(np.flatnonzero(~table.converged)[0])]
+        raise InputError(f"stiffness table point {bad!r} did not converge; no ROSS element from it")
+    order = np.argsort(table.speeds, kind="stable")
+    k = table.stiffness[order]
+    speeds = table.speeds[order]
+    coeff = {
+        "kxx": k[:, 0, 0],
+        "kxy": k[:, 0, 1],
+        "kyx": k[:, 1, 0],
+        "kyy": k[:, 1, 1],
+        "kzz": k[:, 2, 2],
+    }
+    tag = tag or table.bearing
+    if len(table) == 1:
+        return rs.BearingElement(n=node, cxx=damping, tag=tag, **{n: float(v[0]) for n, v in coeff.items()})
+    if len(np.unique(speeds)) != len(speeds):
+        raise InputError(
+            f"stiffness table of {table.bearing!r} has {len(speeds)} points but repeated speeds; ROSS "
+            "interpolates over speed only: select one point per speed (StiffnessTable.select)"
+        )
+    return rs.BearingElement(
+        n=node,
+        cxx=np.full(len(speeds), damping),
+        frequency=speeds,
+        tag=tag,
+        **{n: np.asarray(v, dtype=float) for n, v in coeff.items()},
+    )
+
+
+def ross_material(material):
+    """ROSS material of a :class:`bearingkit.materials.Material` (E, ν, ρ)."""
+    rs = import_ross()
+    return rs.Material(
+        name=material.name.replace(" ", "_"),
+        rho=material.density,
+        E=material.youngs_modulus,
+        Poisson=material.poisson_ratio,
+    )
+
+
+def ross_rotor(result, cases=None, *, damping: float = 0.0):
+    """A ROSS ``Rotor`` of a solved shaft with its bearings' stiffness at the load cases ``cases``.
+
+    Parameters
+    ----------
+    result : ShaftResult
+    cases : sequence of int, optional
+        Load cases whose stiffness the bearing elements carry: one case → constant coefficients;
+        several (at distinct speeds) → speed-indexed elements. Default: every case.
+    damping : float [N·s/m]
+        Bearing damping cxx = cyy.
+
+    Returns
+    -------
+    ross.Rotor
+    """
+    rs = import_ross()
+    system = result.system
+    mesh = result.assembly.mesh
+    cases = np.arange(result.n_cases) if cases is None else np.asarray(cases, dtype=int)
+    mat = ross_material(system.shaft.material)
+    shaft_elements = [
+        rs.ShaftElement(
+            L=float(length),
+            idl=float(di),
+            odl=float(do),
+            material=mat,
+            n=i,
+            shear_effects=system.shaft.shear_deformation,
+            rotary_inertia=True,
+            gyroscopic=True,
+        )
+        for i, (length, di, do) in enumerate(
+            zip(mesh.length, mesh.inner_diameter, mesh.outer_diameter, strict=True)
+        )
+    ]
+    bearings = [
+        ross_bearing(
+            shaft_stiffness_table(result, b.name).select(cases), int(node), damping=damping, tag=b.name
+        )
+        for b, node in zip(system.bearings, result.assembly.seat_nodes, strict=True)
+    ]
+    disks = []
+    for g in system.gears:
+        if g.mass > 0:
+            ip = g.mass * g.pitch_diameter**2 / 8.0
+            disks.append(rs.DiskElement(n=mesh.node(g.position), m=g.mass, Id=ip / 2.0, Ip=ip, tag=g.name))
+    # ROSS's PointMass links bearing nodes; a lumped mass on the shaft is a disc without inertia.
+    disks += [
+        rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=m.name) for m in system.masses
+    ]
+    return rs.Rotor(shaft_elements, disks, bearings)

@@ -1,0 +1,213 @@
+"""Bearings on a shaft: the seat, the bearing's 5-DOF law, the housing and the axial location.
+
+SI units (m, N, N·m, rad, N/m, N·m/rad). Frames (design.md §3): each bearing has its own frame with
+its axis z'; its inner ring sits on the shaft node at the seat and its outer ring in the housing. The
+bearing law gives the contact force f(q) on the inner ring for the inner ring's displacement q
+relative to the outer ring, in the bearing frame, with its Jacobian and energy (the row kernels'
+``response``, exactly what the single-bearing solver uses).
+
+Orientation. ``"+z"``: the bearing frame is the shaft frame. ``"-z"``: the bearing is turned end for
+end, a half turn about x: (x', y', z') = (x, −y, −z), so q' = T q and f = Tᵀ f' with
+T = diag(1, −1, −1, 1, −1) (rotations are axial vectors: a half turn about x maps (θ_x, θ_y) to
+(θ_x, −θ_y)). An angular contact bearing that carries +F_z' carries −F_z of the shaft when turned.
+
+Relative displacement. q' = T (x_seat − x_outer): x_seat the shaft node's five DOFs, x_outer the
+outer ring's. The outer ring is held by the housing DOF by DOF: rigidly at its prescribed position
+(0, 0, ``axial_offset``, 0, 0), or by a spring of the given housing stiffness to that position; a
+``"floating"`` bearing's outer ring slides axially (axial spring 0), so it carries no axial load.
+``axial_offset`` moves the outer ring along the shaft's +z: the adjustment that preloads a pair of
+single angular contact or tapered bearings set against each other.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from bearingkit import checks
+from bearingkit.analysis.model import BearingModel
+from bearingkit.errors import InputError
+from bearingkit.rows.base import N_DOF, RowResponse
+
+#: Axial location of a bearing in its housing.
+AXIAL_LOCATIONS = ("locating", "floating")
+#: Frame transformation q' = T q of each orientation (module docstring).
+ORIENTATIONS = {
+    "+z": np.eye(N_DOF),
+    "-z": np.diag([1.0, -1.0, -1.0, 1.0, -1.0]),
+}
+#: Deflection scale [m] of a linear bearing law: the Newton step cap is 2 % of the smallest scale of
+#: the bearings, and a linear law needs none (one Newton step solves it).
+LINEAR_DEFLECTION_SCALE = 1.0
+
+
+@dataclass(frozen=True, eq=False)
+class LinearBearing:
+    """A bearing with a constant stiffness matrix: a hand model, or a stiffness taken from a table.
+
+    Parameters
+    ----------
+    stiffness : array_like (5, 5) [N/m, N, N·m/rad …]
+        K = −∂f/∂q in the bearing frame, symmetric positive semi-definite.
+    name : str
+    """
+
+    stiffness: np.ndarray
+    name: str = "linear bearing"
+
+    def __post_init__(self):
+        k = np.asarray(self.stiffness, dtype=float)
+        if k.shape != (N_DOF, N_DOF):
+            raise InputError(f"stiffness (shape {k.shape}) must be 5×5 (u_x, u_y, u_z, θ_x, θ_y)")
+        checks.finite("stiffness", k)
+        if not np.allclose(k, k.T, rtol=1e-12, atol=1e-12 * np.abs(k).max()):
+            raise InputError("stiffness must be symmetric (a conservative elastic support)")
+        if np.linalg.eigvalsh(k).min() < -1e-12 * np.abs(k).max():
+            raise InputError("stiffness must be positive semi-definite (a support that resists displacement)")
+        object.__setattr__(self, "stiffness", k)
+
+
+class BearingLaw:
+    """The 5-DOF law of one bearing for the system solver (sum of its rows' kernels).
+
+    Attributes
+    ----------
+    deflection_scale : float [m]
+        Smallest element diameter (sizes the Newton step cap and the divergence test).
+    char_length : float [m]
+        Largest pitch radius (scales rotations).
+    start_terms : list of (ndarray (5, 5), float)
+        (M, n) with the all-contacts-closed tangent stiffness n δ^(n−1) M (starting estimate).
+    reach : ndarray (M, 5)
+        Unloaded directions the contacts can push the inner ring along (support checks).
+    """
+
+    def __init__(self, bearing, kernels=None):
+        self.bearing = bearing
+        if isinstance(bearing, LinearBearing):
+            self.kernels = ()
+            self.linear = bearing.stiffness
+            self.deflection_scale = LINEAR_DEFLECTION_SCALE
+            self.char_length = 0.0
+            self.start_terms = [(bearing.stiffness, 1.0)]
+            lam, vec = np.linalg.eigh(bearing.stiffness)
+            live = vec[:, lam > 1e-12 * max(lam.max(), 1e-300)].T
+            self.reach = np.concatenate([live, -live]) if len(live) else np.zeros((0, N_DOF))
+            return
+        if not isinstance(bearing, BearingModel):
+            raise InputError(f"bearing ({bearing!r}) must be a BearingModel or a LinearBearing")
+        self.linear = None
+        self.kernels = tuple(kernels if kernels is not None else bearing.kernels)
+        self.deflection_scale = min(k.deflection_scale for k in self.kernels)
+        self.char_length = max(k.char_length for k in self.kernels)
+        self.start_terms = [(k.start_matrix, k.start_exponent) for k in self.kernels]
+        parts = []
+        for k in self.kernels:
+            reach = getattr(k, "reach", None)
+            parts.append(reach if reach is not None else (k.G[0] if hasattr(k, "G") else k.directions[0]))
+        self.reach = np.concatenate(parts, axis=0)
+
+    def response(self, q: np.ndarray) -> RowResponse:
+        """Contact force on the inner ring (C, 5), its Jacobian (C, 5, 5) and energy (C,) at q (C, 5)."""
+        if self.linear is not None:
+            force = -q @ self.linear
+            jac = np.broadcast_to(-self.linear, (q.shape[0], N_DOF, N_DOF)).copy()
+            return RowResponse(force, jac, 0.5 * np.einsum("ci,ci->c", q, -force))
+        force = np.zeros_like(q)
+        jac = np.zeros((*q.shape, N_DOF))
+        energy = np.zeros(q.shape[0])
+        for k in self.kernels:
+            r = k.response(q)
+            force += r.force
+            jac += r.jacobian
+            energy += r.energy
+        return RowResponse(force, jac, energy)
+
+    def take(self, cases: np.ndarray) -> BearingLaw:
+        """The law restricted to some cases of the batch (per-case kernel arrays sliced)."""
+        if self.linear is not None:
+            return self
+        return BearingLaw(self.bearing, [k.take(cases) for k in self.kernels])
+
+
+@dataclass(frozen=True, eq=False)
+class BearingSeat:
+    """One bearing on the shaft.
+
+    Parameters
+    ----------
+    name : str
+        Unique in the system; used in results and messages.
+    bearing : BearingModel or LinearBearing
+        The bearing (e.g. ``load_file("dgbb_6209.toml").model``).
+    position : float [m]
+        Axial position on the shaft of the bearing frame's origin (the builders put it mid-width).
+    orientation : {"+z", "-z"}
+        Bearing axis along the shaft's +z or turned end for end (module docstring).
+    axial : {"locating", "floating"}
+        Whether the outer ring is held axially in the housing (locating) or slides (floating).
+    axial_offset : float [m]
+        Outer ring's prescribed axial position along the shaft's +z (preload adjustment).
+    housing_stiffness : array_like (5,) or None [N/m, N/m, N/m, N·m/rad, N·m/rad]
+        Stiffness of the housing per outer-ring DOF in the shaft frame (inf: that DOF held rigidly);
+        None = rigid housing.
+    source : object
+        The loaded input file (:class:`bearingkit.io.loader.BearingInput`) when the bearing came
+        from one: its lubricant and name are used for ratings and friction.
+    """
+
+    name: str
+    bearing: object
+    position: float
+    orientation: str = "+z"
+    axial: str = "locating"
+    axial_offset: float = 0.0
+    housing_stiffness: np.ndarray | None = None
+    source: object = None
+
+    def __post_init__(self):
+        if not isinstance(self.name, str) or not self.name:
+            raise InputError(f"name ({self.name!r}) must be a non-empty string")
+        checks.finite(f"{self.name}.position", self.position, "m")
+        checks.one_of(f"{self.name}.orientation", self.orientation, ORIENTATIONS)
+        checks.one_of(f"{self.name}.axial", self.axial, AXIAL_LOCATIONS)
+        checks.finite(f"{self.name}.axial_offset", self.axial_offset, "m")
+        if self.housing_stiffness is not None:
+            k = np.asarray(self.housing_stiffness, dtype=float)
+            if k.shape != (N_DOF,):
+                raise InputError(
+                    f"{self.name}.housing_stiffness (shape {k.shape}) must have 5 values (radial x, "
+                    "radial y, axial, tilt x, tilt y)"
+                )
+            if np.any(np.isnan(k)) or np.any(k < 0):
+                raise InputError(
+                    f"{self.name}.housing_stiffness ({k.tolist()}) must be non-negative (inf: held rigidly)"
+                )
+            object.__setattr__(self, "housing_stiffness", k)
+        object.__setattr__(self, "law", BearingLaw(self.bearing))
+
+    @property
+    def transform(self) -> np.ndarray:
+        """T (5, 5) with q' = T q (orthogonal and symmetric, so also f = T f')."""
+        return ORIENTATIONS[self.orientation]
+
+    @property
+    def outer_position(self) -> np.ndarray:
+        """Prescribed outer-ring position (5,) in the shaft frame [m, m, m, rad, rad]."""
+        return np.array([0.0, 0.0, self.axial_offset, 0.0, 0.0])
+
+    @property
+    def global_reach(self) -> np.ndarray:
+        """Contact directions (M, 5) in the shaft frame, without the DOFs a free outer ring cannot pass on."""
+        reach = self.law.reach @ self.transform  # rows d' → d = T d' (T symmetric)
+        return np.where(self.outer_springs() == 0.0, 0.0, reach)
+
+    def outer_springs(self) -> np.ndarray:
+        """Housing stiffness per outer-ring DOF (5,): inf = held rigidly, 0 = free (floating axially)."""
+        k = np.full(N_DOF, np.inf) if self.housing_stiffness is None else self.housing_stiffness.copy()
+        if self.axial == "floating":
+            k[2] = 0.0
+        # A DOF the bearing cannot act on at all needs no outer-ring unknown: hold it.
+        acts = np.abs(self.law.reach @ self.transform).max(axis=0, initial=0.0) > 0.0
+        return np.where(acts, k, np.inf)

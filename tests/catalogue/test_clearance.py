@@ -1,0 +1,56 @@
+"""ISO 5753-1 radial internal clearance groups (as reproduced in NSK E1102, Tables 9.9 and 9.14)."""
+
+import itertools
+
+import pytest
+
+from bearingkit.catalogue import clearance, clearance_range
+from bearingkit.errors import InputError
+
+UM = 1e-6
+
+
+@pytest.mark.parametrize(
+    ("group", "bore_mm", "cls", "expected_um"),
+    [
+        # NSK E1102 Table 9.9 (deep groove ball), rows "10 only", "10-18", "24-30", "40-50"
+        ("deep_groove_ball", 10, "CN", (2, 13)),
+        ("deep_groove_ball", 12, "C3", (11, 25)),
+        ("deep_groove_ball", 25, "C3", (13, 28)),
+        ("deep_groove_ball", 45, "C2", (1, 11)),
+        ("deep_groove_ball", 50, "C5", (45, 73)),  # d = 50 belongs to "over 40 incl. 50"
+        # Table 9.14 (cylindrical roller, cylindrical bore, interchangeable), rows "24-30", "40-50"
+        ("cylindrical_roller", 30, "CN", (20, 45)),
+        ("cylindrical_roller", 45, "C4", (70, 100)),
+        # Table 9.15 (spherical roller, cylindrical bore), row "40-50"
+        ("spherical_roller", 45, "C3", (55, 75)),
+    ],
+)
+def test_published_groups(group, bore_mm, cls, expected_um):
+    lo, hi = clearance_range(group, bore_mm * 1e-3, cls)
+    assert (lo / UM, hi / UM) == pytest.approx(expected_um)
+
+
+def test_default_is_class_mean_and_position_interpolates():
+    lo, hi = clearance_range("deep_groove_ball", 0.025, "CN")
+    assert clearance("deep_groove_ball", 0.025) == pytest.approx(0.5 * (lo + hi))
+    assert clearance("deep_groove_ball", 0.025, "CN", 0.0) == pytest.approx(lo)
+    assert clearance("deep_groove_ball", 0.025, "CN", 1.0) == pytest.approx(hi)
+
+
+def test_classes_grow_from_c2_to_c5():
+    means = [clearance("deep_groove_ball", 0.060, c) for c in ("C2", "CN", "C3", "C4", "C5")]
+    assert all(a < b for a, b in itertools.pairwise(means))
+
+
+@pytest.mark.parametrize(
+    ("args", "match"),
+    [
+        (("deep_groove_ball", 0.025, "C7"), "must be one of C2"),
+        (("deep_groove_ball", 0.9, "CN"), "outside the deep_groove_ball clearance table"),
+        (("needle", 0.025, "CN"), "clearance group"),
+    ],
+)
+def test_bad_requests(args, match):
+    with pytest.raises(InputError, match=match):
+        clearance_range(*args)

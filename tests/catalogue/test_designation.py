@@ -1,0 +1,73 @@
+"""Designation parsing: bore codes, suffixes, clearance classes and one-line errors with suggestions."""
+
+import pytest
+
+from bearingkit.catalogue import parse
+from bearingkit.catalogue.designation import bore_from_code
+from bearingkit.errors import InputError
+
+
+@pytest.mark.parametrize(
+    ("code", "bore"), [("00", 10), ("01", 12), ("02", 15), ("03", 17), ("04", 20), ("05", 25), ("20", 100)]
+)
+def test_bore_codes(code, bore):
+    # ISO 15 bore codes: 00-03 are 10, 12, 15, 17 mm; from 04 on code x 5
+    assert bore_from_code(code) == bore
+
+
+@pytest.mark.parametrize(
+    ("text", "family", "base", "clearance", "suffixes"),
+    [
+        ("6205", "deep_groove_ball", "6205", None, ()),
+        ("6205-2RS C3", "deep_groove_ball", "6205", "C3", ("2RS",)),
+        ("6205 ZZ/C4", "deep_groove_ball", "6205", "C4", ("ZZ",)),
+        ("61805-2RS1", "deep_groove_ball", "61805", None, ("2RS1",)),
+        ("16008", "deep_groove_ball", "16008", None, ()),
+        ("7206B", "angular_contact_ball", "7206B", None, ()),
+        ("7206 BECBP", "angular_contact_ball", "7206B", None, ("ECBP",)),
+        ("7308AC", "angular_contact_ball", "7308AC", None, ()),
+        ("3205 A", "double_row_angular_contact_ball", "3205", None, ()),
+        ("QJ 308", "four_point_contact_ball", "QJ308", None, ()),
+        ("1206", "self_aligning_ball", "1206", None, ()),
+        ("NU 2206 ECP", "cylindrical_roller", "NU2206E", None, ("ECP",)),
+        ("NJ206E", "cylindrical_roller", "NU206E", None, ()),
+        ("NU1008", "cylindrical_roller", "NU1008", None, ()),
+        ("32206 J2", "tapered_roller", "32206", None, ("J2",)),
+        ("32008 X", "tapered_roller", "32008X", None, ()),
+        ("51205", "thrust_ball", "51205", None, ()),
+        ("81212", "thrust_cylindrical_roller", "81212", None, ()),
+    ],
+)
+def test_parse(text, family, base, clearance, suffixes):
+    d = parse(text)
+    assert (d.family, d.base, d.clearance_class, d.suffixes) == (family, base, clearance, suffixes)
+
+
+def test_unknown_type_suggests_nearest():
+    with pytest.raises(InputError) as exc:
+        parse("6z05")
+    msg = str(exc.value)
+    assert "\n" not in msg and "nearest:" in msg and "6205" in msg
+
+
+def test_unknown_suffix_names_the_token():
+    with pytest.raises(InputError, match=r"suffix 'XYZ' not recognised") as exc:
+        parse("6205-XYZ")
+    assert "\n" not in str(exc.value)
+
+
+def test_bore_outside_table_names_range_and_nearest():
+    with pytest.raises(InputError) as exc:
+        parse("6299")
+    msg = str(exc.value)
+    assert "bore 495 mm" in msg and "10–80 mm of series 62" in msg and "nearest: 6216" in msg
+
+
+def test_angular_contact_needs_angle_suffix():
+    with pytest.raises(InputError, match="contact angle suffix"):
+        parse("7206")
+
+
+def test_two_clearance_classes_refused():
+    with pytest.raises(InputError, match="two clearance classes"):
+        parse("6205 C3 C4")

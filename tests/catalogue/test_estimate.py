@@ -1,0 +1,133 @@
+"""Internal-geometry estimate per family: envelope fit, fill angle, cage pitch, and the ISO 281 C /
+ISO 76 C0 of the estimated geometry against published catalogue ratings.
+
+Published ratings: NSK *Rolling Bearings*, CAT. No. E1102 (bearing tables B8–B223; the page of each row
+is in the data file's ``source`` column). Tolerance 10 % (the issue's): the estimate uses textbook
+proportions, not the manufacturer's drawings, and NSK's ratings carry NSK's own material and design
+factors on top of ISO 281's b_m (the ISO formulas themselves are exact, tests/physics). The sizes listed
+per family are the ones checked here; docs/catalogue.md lists every tabulated size with its error.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearingkit.catalogue import RULES, entries, estimate, fill_angle, ratings
+from bearingkit.catalogue.internal import CONRAD_FILL_ANGLE, envelope_margins
+
+FAMILIES = [f for f in RULES]
+
+#: Sizes whose C and C0 must lie within 10 % of NSK E1102 (per family, ≥ 5).
+RATED_SIZES = {
+    "deep_groove_ball": [
+        "6004",
+        "6005",
+        "6006",
+        "6204",
+        "6205",
+        "6206",
+        "6207",
+        "6208",
+        "6209",
+        "6304",
+        "6305",
+    ],
+    "angular_contact_ball": ["7204B", "7206B", "7207B", "7208B", "7209B", "7305B", "7306B", "7208C"],
+    "double_row_angular_contact_ball": ["3201", "3203", "3303", "3204", "3205", "3306", "3211"],
+    "cylindrical_roller": ["NU207E", "NU209E", "NU306E", "NU2306E", "NU2207E", "NU1006", "NU1008"],
+    "tapered_roller": ["30206", "30207", "30208", "30210", "32206", "32207", "30306", "30307", "32306"],
+    "thrust_cylindrical_roller": ["81115", "81118", "81132", "81213", "81217", "81226", "81228"],
+}
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+def test_every_size_fits_its_envelope(family):
+    for e in entries(family).values():
+        est = estimate(e)
+        gaps = envelope_margins(est)
+        assert (gaps > 0).all(), (e.designation, gaps)
+        assert est.n_elements >= 3
+        # cage pitch feasible: neighbouring elements do not overlap on the pitch circle
+        assert math.pi * est.pitch_diameter / est.n_elements > est.element_diameter, e.designation
+
+
+def test_deep_groove_fill_angle_below_conrad_limit():
+    for e in entries("deep_groove_ball").values():
+        est = estimate(e)
+        phi = fill_angle(est.n_elements, est.element_diameter, est.pitch_diameter)
+        assert phi <= CONRAD_FILL_ANGLE
+        # and one more ball would not fit: the count is the largest the rule allows
+        assert fill_angle(est.n_elements + 1, est.element_diameter, est.pitch_diameter) > CONRAD_FILL_ANGLE
+
+
+def test_tapered_angles_and_roller_taper_consistent():
+    for e in entries("tapered_roller").values():
+        est = estimate(e)
+        x = est.extra
+        assert 0 < x["contact_angle_inner"] < est.contact_angle
+        # cup angle from the published e (ISO 281 cl. 7.2: e = 1.5 tan α)
+        assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        # large - small = 2 L tan(half angle), the roller's own geometry
+        assert x["large_diameter"] - x["small_diameter"] == pytest.approx(
+            2 * est.effective_length * math.tan(x["roller_angle"])
+        )
+
+
+@pytest.mark.parametrize("family", sorted(RATED_SIZES))
+def test_iso_ratings_within_10_percent_of_nsk_e1102(family):
+    rows = entries(family)
+    assert len(RATED_SIZES[family]) >= 5
+    for name in RATED_SIZES[family]:
+        e = rows[name]
+        c, c0 = ratings(estimate(e))
+        assert c == pytest.approx(e.C, rel=0.10), (name, c, e.C)
+        assert c0 == pytest.approx(e.C0, rel=0.10), (name, c0, e.C0)
+
+
+@pytest.mark.parametrize("family", sorted(RATED_SIZES))
+def test_family_median_error_small(family):
+    """Over every tabulated size (not only the listed ones) the median |error| of C stays below 10 %."""
+    errs = []
+    for e in entries(family).values():
+        if e.C is None:
+            continue
+        c, _ = ratings(estimate(e))
+        errs.append(abs(c / e.C - 1))
+    assert np.median(errs) < 0.10
+
+
+def test_thrust_ball_dynamic_rating_and_known_static_deviation():
+    """C_a within 10 % for the listed sizes; C_0a systematically 15-30 % below NSK (known deviation:
+    NSK's C_0a imply f_0 ≈ 58 MPa at γ ≈ 0.22 where the shipped ISO 76 Table 3 gives 44 MPa, see
+    docs/catalogue.md), so only its sign and band are asserted."""
+    for name in ["51105", "51106", "51107", "51205", "51206", "51207", "51208", "51305"]:
+        e = entries("thrust_ball")[name]
+        c, c0 = ratings(estimate(e))
+        assert c == pytest.approx(e.C, rel=0.10), name
+        assert -0.35 < c0 / e.C0 - 1 < -0.10, name
+
+
+def test_thrust_cylindrical_roller_diameter_against_published():
+    """NSK E1102 B220 prints the roller diameter D_w of the cylindrical roller thrust bearings: the
+    estimate D_we = 0.42 T lies within 20 % of it for every listed size (81132: +18 %)."""
+    for e in entries("thrust_cylindrical_roller").values():
+        est = estimate(e)
+        assert est.element_diameter == pytest.approx(float(e.extra["D_w_mm"]) * 1e-3, rel=0.20), e.designation
+
+
+def test_tapered_32008_against_seed001_internal_geometry():
+    """Liu et al. (2022) Table 1 (seed 001) gives the 32008's internal geometry: Z = 23 rollers of mean
+    diameter (6.131 + 6.846)/2 = 6.49 mm. The estimate from the boundary dimensions alone (NSK B116 row
+    32008X) reproduces Z exactly and D_we within 2 %."""
+    est = estimate(entries("tapered_roller")["32008X"])
+    assert est.n_elements == 23
+    assert est.element_diameter == pytest.approx(0.5 * (6.131 + 6.846) * 1e-3, rel=0.02)
+
+
+@pytest.mark.parametrize("family", ["four_point_contact_ball", "self_aligning_ball"])
+def test_families_without_row_kind_deliver_geometry_not_ratings(family):
+    for e in entries(family).values():
+        est = estimate(e)
+        assert (envelope_margins(est) > 0).all()
+        assert ratings(est) == (None, None)

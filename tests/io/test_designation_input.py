@@ -1,0 +1,53 @@
+"""Input files with ``[bearing] designation``: estimate, overrides, calibration and one-line errors."""
+
+import pytest
+
+from bearingkit.catalogue import resolve
+from bearingkit.errors import InputError
+from bearingkit.io.loader import loads
+
+CASE = '\n[[load_cases]]\nname = "r"\nF_x = "2 kN"\n'
+
+
+def test_designation_builds_the_estimated_bearing():
+    b = loads('[bearing]\ndesignation = "6205-2RS C3"\n' + CASE)
+    r = resolve("6205-2RS C3")
+    row = b.model.rows[0]
+    assert b.bearing_type == "deep_groove_ball" and b.model.name == "6205-2RS C3"
+    assert row.n_elements == r.geometry["n_elements"]
+    assert float(row.element_diameter) == pytest.approx(r.geometry["element_diameter"])
+    assert "ESTIMATED" in b.spec.bearing.source
+    assert b.solve().converged.all()
+
+
+def test_explicit_geometry_overrides_the_estimate():
+    b = loads(
+        '[bearing]\ndesignation = "6205"\n[geometry]\nn_elements = 9\nelement_diameter = "7.938 mm"\n' + CASE
+    )
+    row = b.model.rows[0]
+    assert row.n_elements == 9 and float(row.element_diameter) == pytest.approx(7.938e-3)
+    assert float(row.pitch_diameter) == pytest.approx(resolve("6205").geometry["pitch_diameter"])
+    assert "not estimated: element_diameter, n_elements" in b.spec.bearing.source
+
+
+def test_catalogue_c_calibrates():
+    b = loads('[bearing]\ndesignation = "6205"\nC = "14.8 kN"\n' + CASE)
+    assert float(b.model.rows[0].element_diameter) == pytest.approx(
+        resolve("6205", C=14.8e3).geometry["element_diameter"]
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "match"),
+    [
+        ('[bearing]\ndesignation = "6z05"\n', r"^f\.toml: bearing\.designation \('6z05'\).*nearest: "),
+        ('[bearing]\ndesignation = "6205"\ntype = "thrust_ball"\n', "does not match designation"),
+        ('[bearing]\ntype = "deep_groove_ball"\nC = "14 kN"\n', "give it together with designation"),
+        ('[bearing]\ndesignation = "QJ208"\n', "no row kind in the engine yet"),
+        ("[bearing]\n", "type: missing required field"),
+    ],
+)
+def test_errors_are_one_line(text, match):
+    with pytest.raises(InputError, match=match) as exc:
+        loads(text + CASE, source="f.toml")
+    assert "\n" not in str(exc.value)

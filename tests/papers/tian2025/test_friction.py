@@ -1,0 +1,151 @@
+"""Seed-000 friction studies (Tian et al. 2025 §5.3, §6.1): finiteness, breakdowns, reproduced conclusions."""
+
+import numpy as np
+import pytest
+
+from bearingkit.analysis.friction import COMPONENT_NAMES
+from bearingkit.errors import InputError
+from bearingkit.papers.tian2025 import friction as sf
+from bearingkit.papers.tian2025 import validation as v000
+
+
+@pytest.fixture(scope="module")
+def studies():
+    return {
+        "speed": sf.speed_sweep(speeds_rpm=(5.0, 30.0, 90.0)),
+        "axial_load": sf.axial_load_sweep(axial_loads=(0.0, 2000.0, 4000.0, 8000.0)),
+        "moment": sf.moment_sweep(moments=(0.0, 200.0, 400.0)),
+        "yrt": sf.composite_vs_yrt(axial_loads=(0.0, 3000.0, 6000.0)),
+        "clearance": sf.clearance_map(roller_clearances=(0.0, -2e-6), ball_clearances=(0.0, -3e-6, -6e-6)),
+        "groove": sf.groove_sweep(grooves=(0.505, 0.52, 0.54)),
+        "eccentricity": sf.eccentricity_sweep(),
+        "ratio": sf.ratio_study(),
+        "crowning": sf.crowning_study(),
+    }
+
+
+def test_every_study_is_finite_and_converged(studies):
+    for name, t in studies.items():
+        assert t["converged"].all(), name
+        num = t.select_dtypes("number")
+        assert np.isfinite(num.to_numpy()).all(), name
+        assert (t["total_Nm"] > 0).all(), name
+
+
+def test_breakdowns_add_up(studies):
+    for name, t in studies.items():
+        comps = sum(t[f"{k}_Nm"] for k in COMPONENT_NAMES)
+        rows = t[[c for c in t.columns if c.startswith("row_") and c.endswith("_Nm")]].sum(axis=1)
+        np.testing.assert_allclose(comps, t["total_Nm"], rtol=1e-12, err_msg=name)
+        np.testing.assert_allclose(rows, t["total_Nm"], rtol=1e-12, err_msg=name)
+        assert (t[[f"{k}_Nm" for k in COMPONENT_NAMES]] >= 0).all().all(), name
+
+
+def test_torque_rises_with_speed_load_moment_and_eccentricity(studies):
+    """§5.3.2 (Figs. 11–13) and §6.1.3 (Fig. 16)."""
+    for name in ("speed", "axial_load", "moment", "eccentricity"):
+        assert np.all(np.diff(studies[name]["total_Nm"]) > 0), name
+
+
+def test_speed_raises_only_the_viscous_part(studies):
+    """Coulomb losses are speed independent per radian; the EHL terms grow with U^0.7."""
+    t = studies["speed"]
+    for k in ("hysteresis_roller", "hysteresis_ball", "cage"):
+        np.testing.assert_allclose(t[f"{k}_Nm"], t[f"{k}_Nm"].iloc[0], rtol=1e-9)
+    assert np.all(np.diff(t["viscous_roller_Nm"]) > 0)
+
+
+def test_ratio_torque_falls_and_stress_rises(studies):
+    """§6.1.4: 31/31 → 42/21 → 48/16: torque falls, max contact stress (balls and rollers) rises."""
+    t = studies["ratio"]
+    assert list(t["ratio"]) == ["31/31", "42/21", "48/16"]
+    assert np.all(np.diff(t["total_Nm"]) < 0)
+    assert np.all(np.diff(t["max_pressure_ball_Pa"]) > 0)
+    assert np.all(np.diff(t["max_pressure_roller_Pa"]) > 0)
+
+
+def test_crowning_extremes(studies):
+    """§6.1.5: full crown d lowest torque + highest stress; straight e highest torque + lowest stress."""
+    t = studies["crowning"].set_index("crowning")
+    stress = t[["max_pressure_ball_Pa", "max_pressure_roller_Pa"]].max(axis=1)
+    assert t["total_Nm"].idxmin() == "d" and stress.idxmax() == "d"
+    assert t["total_Nm"].idxmax() == "e" and stress.idxmin() == "e"
+
+
+def test_clearance_map_roller_preload_raises_torque(studies):
+    """§6.1.1: torque grows with the roller preload (−2 µm above 0 µm at every ball clearance)."""
+    t = studies["clearance"].set_index(["roller_clearance_m", "ball_clearance_m"])["total_Nm"]
+    assert (t.loc[-2e-6].to_numpy() > t.loc[0.0].to_numpy()).all()
+
+
+def test_composite_below_yrt_once_loaded(studies):
+    t = studies["yrt"]
+    c = t[t.bearing == "composite"]["total_Nm"].to_numpy()
+    y = t[t.bearing == "yrt"]["total_Nm"].to_numpy()
+    assert np.all(c[1:] < y[1:])
+
+
+def test_preloaded_yrt_reading_puts_the_composite_below_at_every_load():
+    """§5.3.1 with the YRT preloaded (catalogue YRT bearings are): composite < YRT for F_a = 0–6 kN."""
+    t = sf.composite_vs_yrt(axial_loads=(0.0, 1000.0, 6000.0), variant="yrt_preloaded")
+    c = t[t.bearing == "composite"]["total_Nm"].to_numpy()
+    y = t[t.bearing == "yrt"]["total_Nm"].to_numpy()
+    assert np.all(c < y)
+
+
+def test_spin_readings_order_and_leave_the_rest_unchanged():
+    """μ_EHL ≤ μ_mixed ≤ μ_bl, and only the spin term of the ball rows changes."""
+    tabs = {
+        s: sf.groove_sweep(grooves=(0.51, 0.53), variant=sf.FrictionVariant(s, spin=s, viscosity_factor=3.0))
+        for s in sf.SPIN_READINGS
+    }
+    ehl, mixed, bl = (tabs[s]["spin_ball_Nm"].to_numpy() for s in ("ehl", "mixed", "boundary"))
+    assert np.all(ehl < mixed) and np.all(mixed < bl)
+    np.testing.assert_allclose(bl / ehl, v000.operating_point().mu_boundary / v000.operating_point().mu_ehl)
+    for k in COMPONENT_NAMES:
+        if k != "spin_ball":
+            np.testing.assert_allclose(tabs["ehl"][f"{k}_Nm"], tabs["boundary"][f"{k}_Nm"], rtol=1e-12)
+    np.testing.assert_allclose(tabs["ehl"]["row_roller_upper_Nm"], tabs["boundary"]["row_roller_upper_Nm"])
+
+
+def test_recalibrated_variant_meets_table3_run1():
+    """The one calibration (η_eff/η_base on Table 3 run 1, 2871.7 N·mm) holds for a recalibrated reading."""
+    t = sf.table3("spin_ehl")
+    assert t["total_Nm"].iloc[0] == pytest.approx(2.8717, rel=2e-3)
+    assert np.isfinite(t["rel_error"]).all()
+
+
+def test_seed000_variant_is_the_validated_reading():
+    t = sf.table3("seed000")
+    assert t["total_Nm"].iloc[0] == pytest.approx(v000.table3_torque(1), rel=1e-9)
+
+
+def test_bad_variant_is_an_input_error():
+    with pytest.raises(InputError):
+        sf.speed_sweep(variant="nope")
+    with pytest.raises(InputError):
+        sf.FrictionVariant("x", spin="wet")
+
+
+def test_plot_writes_png(tmp_path, studies):
+    path = tmp_path / "speed.png"
+    sf.plot_study(studies["speed"], "speed_rpm", "speed [r/min]", "t", path)
+    assert path.stat().st_size > 1000
+
+
+@pytest.mark.slow
+def test_main_writes_every_table_and_figure(tmp_path):
+    assert sf.main([str(tmp_path)]) == 0
+    for key in (
+        "speed",
+        "axial_load",
+        "moment",
+        "yrt",
+        "clearance",
+        "groove",
+        "eccentricity",
+        "ratio",
+        "crowning",
+    ):
+        assert (tmp_path / f"seed000_friction_{key}.csv").exists()
+        assert (tmp_path / f"seed000_friction_{key}.png").exists()

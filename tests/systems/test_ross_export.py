@@ -1,0 +1,98 @@
+"""ROSS export: a rotor with bearingkit's exported stiffness has the critical speeds of the same rotor
+with that stiffness typed in by hand.
+
+Needs ross-rotordynamics (the ``[ross]`` extra). ``make test`` installs it and runs this file with
+``-m ross`` (ROSS's start-up, numba compilation included, takes ~40 s, so the default run leaves it
+out as slow). Under CI a missing ROSS is a failure, not a skip.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from bearingkit.errors import InputError
+from bearingkit.systems.input import load_shaft_file
+from bearingkit.systems.solver import solve
+from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
+
+SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
+pytestmark = [pytest.mark.slow, pytest.mark.ross]
+
+
+def _ross():
+    from bearingkit.systems.ross import import_ross
+
+    try:
+        return import_ross()
+    except InputError:
+        if os.environ.get("CI"):
+            pytest.fail("ross-rotordynamics must be installed in CI (make test installs the [ross] extra)")
+        pytest.skip("ross-rotordynamics not installed (pip install 'bearingkit[ross]')")
+
+
+def _first_critical_speeds(rotor, n=2):
+    # Rotors with the same matrices follow the same Newton path in ROSS, so its default tolerance
+    # (0.5 %) still gives equal results to round-off; 6 modes hold the first two whirl pairs.
+    return np.sort(rotor.run_critical_speed(num_modes=6).wn())[:n]
+
+
+def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(tmp_path):
+    rs = _ross()
+    from bearingkit.systems.ross import ross_rotor
+
+    inp = load_shaft_file(SPINDLE)
+    # A coarser mesh than the file's (nodal results are exact either way) keeps ROSS's eigen solves short.
+    inp = dataclasses.replace(inp, system=dataclasses.replace(inp.system, max_element_length=0.03))
+    res = inp.solve()
+    assert res.converged.all()
+    # 1. Exported: constant stiffness of load case 0 at each seat.
+    exported = ross_rotor(res, cases=[0])
+    # 2. By hand: the same shaft elements, bearings typed from the CSV file bearingkit wrote.
+    path = write_tables([shaft_stiffness_table(res, b.name) for b in inp.system.bearings], tmp_path / "k.csv")
+    csv = pd.read_csv(path)
+    hand_bearings = []
+    for b, node in zip(inp.system.bearings, res.assembly.seat_nodes, strict=True):
+        row = csv[(csv["bearing"] == b.name) & (csv["point"] == inp.loads.names[0])].iloc[0]
+        hand_bearings.append(
+            rs.BearingElement(
+                n=int(node),
+                kxx=float(row["K_ux_ux_N_per_m"]),
+                kxy=float(row["K_ux_uy_N_per_m"]),
+                kyx=float(row["K_uy_ux_N_per_m"]),
+                kyy=float(row["K_uy_uy_N_per_m"]),
+                kzz=float(row["K_uz_uz_N_per_m"]),
+                cxx=0.0,
+            )
+        )
+    by_hand = rs.Rotor(exported.shaft_elements, exported.disk_elements, hand_bearings)
+    # 3. Speed-indexed: load case 0 at four speeds (the ball and roller rows have no speed terms, so
+    #    the table is flat) → elements whose coefficients ROSS interpolates over speed.
+    speeds = np.array([100.0, 400.0, 900.0, 1600.0])
+    sweep = dataclasses.replace(inp.loads.take([0]), names=tuple("abcd"), speed=speeds)
+    res4 = solve(inp.system, sweep)
+    indexed = ross_rotor(res4)
+    assert (
+        indexed.bearing_elements[0].frequency is not None and len(indexed.bearing_elements[0].frequency) == 4
+    )
+
+    wn_exported = _first_critical_speeds(exported)
+    wn_hand = _first_critical_speeds(by_hand)
+    wn_indexed = _first_critical_speeds(indexed)
+    assert np.all(wn_exported > 100.0)
+    assert np.allclose(wn_exported, wn_hand, rtol=1e-6)
+    assert np.allclose(wn_indexed, wn_hand, rtol=1e-6)
+    # The bearings matter in this rotor: ten times stiffer bearings move the first critical speed.
+    stiff = [
+        rs.BearingElement(
+            n=b.n, kxx=10 * b.kxx[0], kyy=10 * b.kyy[0], kxy=10 * b.kxy[0], kyx=10 * b.kyx[0], cxx=0.0
+        )
+        for b in hand_bearings
+    ]
+    wn_stiff = _first_critical_speeds(rs.Rotor(exported.shaft_elements, exported.disk_elements, stiff))
+    assert wn_stiff[0] / wn_hand[0] - 1 > 0.01

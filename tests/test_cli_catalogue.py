@@ -1,0 +1,62 @@
+"""Command line with designations instead of files, and ``bearingkit catalogue``."""
+
+from __future__ import annotations
+
+import json
+
+from typer.testing import CliRunner
+
+from bearingkit.cli import app
+
+runner = CliRunner()
+
+
+def test_analyze_designation_prints_estimated_geometry():
+    result = runner.invoke(app, ["analyze", "6205", "--load", "Fr=2kN"])
+    assert result.exit_code == 0, result.output
+    assert "6205" in result.output and "ESTIMATED" in result.output
+    assert "converged" in result.output
+
+
+def test_analyze_designation_json_has_source_and_balance():
+    result = runner.invoke(
+        app, ["analyze", "6205-2RS C3", "--load", "Fr=2kN", "--load", "Fa=0.5kN", "--json"]
+    )
+    data = json.loads(result.stdout)
+    assert data["bearing_type"] == "deep_groove_ball" and "ESTIMATED" in data["source"]
+    case = data["cases"][0]
+    assert case["converged"]
+    # equilibrium: the row carries the applied axial and radial load
+    row = case["rows"][0]
+    assert abs(row["axial_load_N"] - 500.0) < 1e-6 * 500 and abs(row["radial_load_N"] - 2000.0) < 1e-6 * 2000
+
+
+def test_rating_angular_contact_designation():
+    result = runner.invoke(app, ["rating", "7206B", "--load", "Fa=3kN", "--speed", "1000rpm", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    row = data["cases"][0]["rows"][0]
+    assert row["C_N"] > 0 and row["L10r_h"] > 0
+
+
+def test_bad_designation_one_line_error_nothing_on_stdout():
+    for text in ("6z05", "6205-XYZ", "6299"):
+        result = runner.invoke(app, ["analyze", text, "--load", "Fr=1kN"])
+        assert result.exit_code == 2
+        assert result.stdout == ""
+        lines = result.stderr.strip().splitlines()
+        assert len(lines) == 1 and lines[0].startswith(f"error: {text}:")
+
+
+def test_catalogue_lists_pattern_with_ratings():
+    result = runner.invoke(app, ["catalogue", "620*", "--json"])
+    rows = json.loads(result.stdout)
+    names = [r["designation"] for r in rows]
+    assert names[:2] == ["6200", "6201"] and "6205" in names and all(n.startswith("620") for n in names)
+    row = next(r for r in rows if r["designation"] == "6205")
+    assert row["d_m"] == 0.025 and row["C_catalogue_N"] == 14000.0 and row["C_estimate_N"] > 0
+
+
+def test_catalogue_pattern_without_match():
+    result = runner.invoke(app, ["catalogue", "9999*"])
+    assert result.exit_code == 2 and "matches no designation" in result.stderr
