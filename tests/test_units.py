@@ -71,6 +71,7 @@ def test_mm_round_trip(x):
         "0x10 N",
         "(((((N)))))",
         "5 N^999",
+        "５ kN",  # fullwidth digit: Python's float() would read it
     ],
 )
 def test_only_number_and_unit_syntax_reaches_pint(value, monkeypatch):

@@ -8,7 +8,7 @@ A rotational speed such as ``"5 rpm"`` becomes an angular velocity in rad/s.
 expression evaluator run long or overflow: ``"9**9**9 N"`` ran for minutes, ``"10**400 N"`` raised
 OverflowError): at most :data:`MAX_VALUE_CHARS` characters, made of
 
-- a decimal number with an optional exponent: ``5``, ``-2.5``, ``.5``, ``1e-6``, ``+3E4``;
+- a decimal number (ASCII digits) with an optional exponent: ``5``, ``-2.5``, ``.5``, ``1e-6``, ``+3E4``;
 - optionally, after optional spaces, a unit expression of at most :data:`MAX_UNIT_CHARS` characters:
   unit names (letters, ``_``, ``µ``/``μ``, ``°``, ``Ω``) joined by ``*``, ``·``, ``/`` or a space,
   each optionally raised to a signed integer power of one or two digits (``^2``, ``**-1``), one
@@ -83,11 +83,11 @@ MAX_VALUE_CHARS = 64
 #: Longest accepted unit expression [characters] ("kg/m^3" is 6, "W/(m*K)" 7).
 MAX_UNIT_CHARS = 32
 
-_NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
+_NUMBER = r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"  # ASCII digits only
 _VALUE = re.compile(rf"\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*")
 _NON_FINITE = re.compile(r"\s*[+-]?(?:nan|inf|infinity)\b.*", re.IGNORECASE)
 _NAME = r"[A-Za-z_µμ°Ω]+"
-_POWER = r"(?:\^|\*\*)[+-]?\d{1,2}"
+_POWER = r"(?:\^|\*\*)[+-]?[0-9]{1,2}"
 _ATOM = rf"{_NAME}(?:{_POWER})?"
 _GROUP = rf"\(\s*{_ATOM}(?:\s*[*·/]\s*{_ATOM}|\s+{_ATOM})*\s*\)(?:{_POWER})?"
 _TERM = rf"(?:{_ATOM}|{_GROUP})"
