@@ -122,3 +122,15 @@ def test_cli_dev_zero_is_exit_2_one_line():
     res = CliRunner().invoke(app, ["analyze", "/dev/zero"])
     assert res.exit_code == 2 and res.stdout == ""
     assert res.stderr == "error: /dev/zero: cannot read the file (it is a device, not a regular file)\n"
+
+
+@pytest.mark.parametrize(
+    "opening",
+    ['x = "never closed', 'x = "\\"\\"\\"\\"', "x = 'never closed", 'x = "ends in a backslash \\'],
+)
+def test_an_unterminated_string_ends_at_its_line(opening):
+    """A basic or literal string cannot span lines: the brackets on the next line count. (The scan
+    takes every string whole, closed or not: a line of escaped quotes used to make it restart at
+    each quote, quadratic — 89 s for 80 kB; benchmarks/bench_input.py times it.)"""
+    depth, line = reading._bracket_depth(f"{opening}\ny = {'[' * 17}{']' * 17}\n")
+    assert (depth, line) == (17, 2)

@@ -35,16 +35,19 @@ MAX_NESTING = 16
 #: Longest excerpt of the offending line quoted in a TOML error [characters].
 EXCERPT_CHARS = 40
 
-# Strings and comments of TOML text, removed before the brackets are counted (the alternatives are
-# single characters or fixed delimiters: linear time, no catastrophic backtracking).
+# Strings and comments of TOML text, removed before the brackets are counted. Every alternative,
+# once its opening quote matches, runs to its closing quote or to the end of the line (of the text)
+# and then always matches: an unterminated string never makes the scan restart at the next quote
+# (that restart was quadratic on a line of escaped quotes). Linear time.
 _STRINGS_AND_COMMENTS = re.compile(
-    r'"""(?:[^"\\]|\\.|"(?!""))*"""'
-    r"|'''(?:[^']|'(?!''))*'''"
-    r'|"(?:[^"\\\n]|\\.)*"'
-    r"|'[^'\n]*'"
+    r'"""(?:[^"\\]+|\\[\s\S]?|"(?!""))*(?:"""|\Z)'
+    r"|'''(?:[^']+|'(?!''))*(?:'''|\Z)"
+    r'|"(?:[^"\\\n]+|\\[^\n]?)*(?:"|$)'
+    r"|'[^'\n]*(?:'|$)"
     r"|#[^\n]*",
-    re.DOTALL,
+    re.MULTILINE,
 )
+_TOKENS = re.compile(f"{_STRINGS_AND_COMMENTS.pattern}|(?P<bracket>[\\[\\]{{}}])", re.MULTILINE)
 _POSITION = re.compile(r"\(at line (\d+), column (\d+)\)")
 
 
@@ -155,22 +158,20 @@ def table_depth(data) -> int:
 
 def _bracket_depth(text: str) -> tuple[int, int]:
     """(deepest nesting of [ and { outside strings and comments, line where it first passes the cap)."""
-    bare = _STRINGS_AND_COMMENTS.sub(lambda m: "\n" * m.group().count("\n"), text)
     depth = deepest = 0
-    line = 1
-    for match in re.finditer(r"[\[\]{}\n]", bare):
-        ch = match.group()
-        if ch == "\n":
-            line += 1
-        elif ch in "[{":
+    for match in _TOKENS.finditer(text):
+        ch = match.group("bracket")
+        if ch is None:  # a string or a comment: skipped whole
+            continue
+        if ch in "[{":
             depth += 1
             if depth > deepest:
                 deepest = depth
                 if deepest > MAX_NESTING:
-                    return deepest, line
+                    return deepest, text.count("\n", 0, match.start()) + 1
         else:
             depth = max(depth - 1, 0)
-    return deepest, line
+    return deepest, text.count("\n") + 1
 
 
 def _toml_message(message: str, text: str) -> str:
