@@ -537,5 +537,5 @@ def test_mutants_of_every_example_through_the_commands(tmp_path):
 
 @pytest.mark.slow
 def test_ten_thousand_mutants_through_the_commands(tmp_path):
-    findings = run_fuzz(10_000, seed=7, tmp=tmp_path, shaft_share=0.01)
+    findings = run_fuzz(10_000, seed=7, tmp=tmp_path, shaft_share=0.01, huge=20_000)
     assert findings == []
