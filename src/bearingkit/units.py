@@ -50,6 +50,9 @@ SI_UNITS: dict[str, str] = {
     "line_load": "N/m",
     "stiffness": "N/m",
     "rotational_stiffness": "N*m/rad",
+    "power": "W",
+    "thermal_conductance": "W/K",
+    "volume_flow": "m^3/s",
     "dimensionless": "",
 }
 
@@ -75,6 +78,9 @@ UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
     "line_load": ("N/m", "N/mm", "kN/m"),
     "stiffness": ("N/m", "N/mm", "N/um", "kN/mm"),
     "rotational_stiffness": ("N*m/rad", "kN*m/rad", "N*m/mrad"),
+    "power": ("W", "kW", "mW"),
+    "thermal_conductance": ("W/K", "kW/K"),
+    "volume_flow": ("m^3/s", "l/min", "mm^3/s"),
     "dimensionless": (),
 }
 

@@ -8,8 +8,10 @@ import time
 from pathlib import Path
 
 import pandas as pd
+import pytest
 
 from bearingkit.studies import definition as sd
+from bearingkit.studies import evaluators
 from bearingkit.studies.runner import run_study
 
 HERE = Path(__file__).resolve().parent
@@ -18,7 +20,7 @@ STUDY = f"""
 [study]
 name = "resume_probe"
 design = "factorial"
-evaluator = "bk_study_helpers:SLOW"
+evaluator = "slow_counter"
 chunk_size = 4
 
 [[factors]]
@@ -43,7 +45,11 @@ def test_kill_and_resume(tmp_path, monkeypatch):
         "BK_SLEEP": "0.3",
     }
     proc = subprocess.Popen(
-        [sys.executable, "-m", "bearingkit.studies", str(study), "--out", str(out), "--no-progress"], env=env
+        [
+            *(sys.executable, "-m", "bearingkit.studies", str(study), "--out", str(out), "--no-progress"),
+            *("--allow-plugin", "bk_study_helpers:SLOW"),
+        ],
+        env=env,
     )
     chunk_dir = out / "chunks"
     deadline = time.monotonic() + 60
@@ -58,9 +64,12 @@ def test_kill_and_resume(tmp_path, monkeypatch):
     assert 3 <= len(finished) < N_CHUNKS, "the kill must land mid-run"
 
     monkeypatch.syspath_prepend(str(HERE))
+    monkeypatch.setattr(evaluators, "ALLOWED_PLUGINS", {})
+    evaluators.allow_plugin("bk_study_helpers:SLOW")
     monkeypatch.setenv("BK_CALL_LOG", str(log2))
     monkeypatch.setenv("BK_SLEEP", "0")
-    resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
+    with pytest.warns(UserWarning, match="recovered the stale lock of study 'resume_probe'"):
+        resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
     # nothing finished is recomputed: the resumed run called the evaluator once per missing chunk
     recomputed = {int(x / 0.5) // 4 for x in _calls(log2)}
     assert recomputed == set(range(N_CHUNKS)) - finished

@@ -22,10 +22,14 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "studies"
 #: Known level effects of the toy model (added to y), per level index of factor "a".
 EFFECT_A = (0.0, 4.0, 1.0)
 CALLS: list[int] = []
+#: Call counts at which the toy raises (a simulated crash: the same evaluator, so the same study).
+CRASH_AT: list[int] = []
 
 
 def _toy(cases):
     """y = 10 + EFFECT_A[a] + b·(1 + e) + t/1 mm; ok = e > 0. Logs the first case of each call."""
+    if len(CALLS) in CRASH_AT:
+        raise RuntimeError("killed")
     CALLS.append(len(cases))
     a = cases["a"].to_numpy(int)
     b = cases["b"].to_numpy(float)
@@ -52,6 +56,9 @@ TOY = Evaluator(
 def toy_evaluator(monkeypatch):
     monkeypatch.setitem(evaluators.REGISTRY, TOY.name, TOY)
     CALLS.clear()
+    CRASH_AT.clear()
+    yield
+    CRASH_AT.clear()
 
 
 def study(per_point=40, common=True, design="factorial", chunk_size=25, **mc):
@@ -216,13 +223,8 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
     fresh = run_study(d, progress=False)
     store = tmp_path / "store"
 
-    def crash_on_fourth(cases):
-        if len(CALLS) == 3:
-            raise RuntimeError("killed")
-        return _toy(cases)
-
-    monkeypatch.setitem(evaluators.REGISTRY, TOY.name, Evaluator(TOY.name, crash_on_fourth, TOY.factors))
     CALLS.clear()
+    CRASH_AT.append(3)  # the fourth call raises
     with pytest.raises(RuntimeError, match="killed"):
         run_study(d, store=store, progress=False)
     chunk_files = sorted((store / "chunks").glob("chunk-*.parquet"))
@@ -232,7 +234,7 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
     np.testing.assert_array_equal(on_disk["point"], fresh.cases["point"].iloc[25:50])
     np.testing.assert_array_equal(on_disk["draw"], fresh.cases["draw"].iloc[25:50])
 
-    monkeypatch.setitem(evaluators.REGISTRY, TOY.name, TOY)
+    CRASH_AT.clear()
     CALLS.clear()
     resumed = run_study(d, store=store, resume=True, progress=False)
     assert CALLS == [25, 20], "only the two missing chunks (cases 75-99, 100-119) are computed"

@@ -48,31 +48,31 @@ class ProfileSpec(Strict):
     clip: Dimensionless | None = None
 
 
-class _Envelope(Strict):
+class Envelope(Strict):
     bore: PositiveLength | None = Field(None, description="Bore d; rows must fit between d and D.")
     outer_diameter: PositiveLength | None = Field(None, description="Outside diameter D.")
 
 
-class _BallBase(_Envelope):
+class BallBase(Envelope):
     n_elements: Count
     element_diameter: PositiveLength
     pitch_diameter: PositiveLength
 
 
-class DeepGrooveBallGeometry(_BallBase):
+class DeepGrooveBallGeometry(BallBase):
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance_radial: Length | None = Field(None, description="Diametral clearance P_d (negative: preload).")
 
 
-class AngularContactBallGeometry(_BallBase):
+class AngularContactBallGeometry(BallBase):
     contact_angle: Angle
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance: Length | None = Field(None, description="Clearance along the contact line, counted twice.")
 
 
-class AngularContactPairGeometry(_BallBase):
+class AngularContactPairGeometry(BallBase):
     arrangement: Literal["DB", "DF", "DT"]
     contact_angle: Angle
     row_spacing: PositiveLength
@@ -81,11 +81,11 @@ class AngularContactPairGeometry(_BallBase):
     conformity_outer: Dimensionless | None = None
 
 
-class ThrustBallGeometry(_BallBase):
+class ThrustBallGeometry(BallBase):
     conformity: Dimensionless | None = None
 
 
-class _RollerBase(_Envelope):
+class RollerBase(Envelope):
     n_elements: Count
     element_diameter: PositiveLength
     effective_length: PositiveLength
@@ -97,11 +97,11 @@ class _RollerBase(_Envelope):
     line_law: Literal["kunert", "iso16281"] | None = None
 
 
-class CylindricalRollerGeometry(_RollerBase):
+class CylindricalRollerGeometry(RollerBase):
     clearance_radial: Length | None = Field(None, description="Diametral clearance (negative: preload).")
 
 
-class CylindricalRollerThrustGeometry(_RollerBase):
+class CylindricalRollerThrustGeometry(RollerBase):
     pass
 
 
@@ -129,7 +129,7 @@ class CompositeTurntableGeometry(Strict):
     n_slices: SliceCount | None = None
 
 
-class YRTGeometry(_Envelope):
+class YRTGeometry(Envelope):
     """YRT-type three-row roller turntable (fields of bearings.turntable.YRTGeometry)."""
 
     pitch_diameter_axial_roller: PositiveLength | None = None
@@ -205,7 +205,7 @@ Deviations = Annotated[
 ]
 
 
-class TaperedRollerGeometry(_Envelope):
+class TaperedRollerGeometry(Envelope):
     """Tapered roller bearing: one row (rows.tapered.TaperedRow fields) or a DB/DF pair."""
 
     arrangement: Literal["single", "DB", "DF"] = Field(

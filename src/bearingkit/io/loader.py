@@ -22,7 +22,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError, did_you_mean, quote
-from bearingkit.io import schema
+from bearingkit.io import kinds, schema
 from bearingkit.io.messages import one_line, prefix_field, section_models
 from bearingkit.io.reading import parse_toml, read_text
 
@@ -197,6 +197,7 @@ BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
     "ptrb": _ptrb,
     "ball_column": _ball_column,
 }
+kinds.register(BUILDERS, schema.GEOMETRY_MODELS)  # four-point, slewing, spherical, self-aligning, needle
 assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
 
 
@@ -267,6 +268,8 @@ class BearingInput:
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
     options : bearingkit.analysis.quasistatic.SolverOptions
+    sections : bearingkit.io.schema_operating.OperatingSections
+        The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     """
 
     source: str
@@ -278,6 +281,7 @@ class BearingInput:
     cases: tuple
     free: np.ndarray
     options: object
+    sections: object = None
 
     @property
     def bearing_type(self) -> str:
@@ -381,6 +385,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     opts = {
         k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
     }
+    from bearingkit.io.schema_operating import validate_sections
+
+    sections = validate_sections(spec, source, one_line)
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_case_count(source, model, len(cases))
     _check_fixed_loads(source, cases, free)
@@ -395,6 +402,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         cases=cases,
         free=free,
         options=SolverOptions(**opts),
+        sections=sections,
     )
 
 

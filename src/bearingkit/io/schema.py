@@ -14,6 +14,9 @@ File layout (see docs/input-format.md)::
     [lubricant]    name = "ISO_VG100"                     (optional)
     [[load_cases]] name, F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature
     [solver]       free, rtol, max_iterations             (optional)
+    [operating]    speed effects, tilt, preload, temperatures (optional)
+    [fits]         shaft / housing tolerance fields      (optional)
+    [lubrication]  contamination, roughness, grease      (optional)
 
 The models live in three modules, one idea each; this module gathers their public names and writes
 the JSON Schema:
@@ -54,6 +57,7 @@ from bearingkit.io.geometries import (
     GEOMETRY_MODELS,
     AngularContactBallGeometry,
     AngularContactPairGeometry,
+    BallBase,
     BallColumnGeometrySpec,
     BallColumnRingSpec,
     CompositeTurntableGeometry,
@@ -62,8 +66,10 @@ from bearingkit.io.geometries import (
     DeepGrooveBallGeometry,
     DeviationGenerator,
     Deviations,
+    Envelope,
     ProfileSpec,
     PTRBGeometrySpec,
+    RollerBase,
     SupportPositions,
     TaperedRollerGeometry,
     ThrustBallGeometry,
@@ -80,6 +86,10 @@ from bearingkit.io.sections import (
     SolverSpec,
 )
 
+#: The names these classes had before the split, for modules written against them (io.kinds,
+#: io.schema_operating and branches in flight); new code uses the public names.
+_Strict, _Envelope, _BallBase, _RollerBase = Strict, Envelope, BallBase, RollerBase
+
 __all__ = [
     "DOF_CHOICES",
     "GEOMETRY_MODELS",
@@ -92,6 +102,7 @@ __all__ = [
     "AngularContactBallGeometry",
     "AngularContactPairGeometry",
     "AngularVelocity",
+    "BallBase",
     "BallColumnGeometrySpec",
     "BallColumnRingSpec",
     "BearingFile",
@@ -104,6 +115,7 @@ __all__ = [
     "DeviationGenerator",
     "Deviations",
     "Dimensionless",
+    "Envelope",
     "Force",
     "IterationCount",
     "Length",
@@ -119,6 +131,7 @@ __all__ = [
     "PositiveLength",
     "PositivePressure",
     "ProfileSpec",
+    "RollerBase",
     "SliceCount",
     "SolverSpec",
     "Strict",

@@ -157,6 +157,15 @@ class BearingFile(Strict):
         default_factory=list, description=f"At most {MAX_LOAD_CASES} load cases."
     )
     solver: SolverSpec = Field(default_factory=SolverSpec)
+    operating: dict[str, Any] | None = Field(
+        None, description="Speed effects, tilt, preload, temperatures (io.schema_operating.OperatingSpec)."
+    )
+    fits: dict[str, Any] | None = Field(
+        None, description="Shaft/housing fits (io.schema_operating.FitsSpec)."
+    )
+    lubrication: dict[str, Any] | None = Field(
+        None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
+    )
 
     @field_validator("load_cases", mode="before")
     @classmethod

@@ -86,6 +86,14 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
             for i, c in enumerate(analysis.input.cases)
         ]
     )
+    from bearingkit.report.html_operating import operating_html
+
+    statics = analysis.statics_dict()["cases"]
+    lub = analysis.lubrication
+    extras = [
+        (lambda number, c=c, i=i: operating_html(c, None if lub is None else lub.to_dict(i), number))
+        for i, c in enumerate(statics)
+    ]
     html = build_report(
         shown,
         analysis.statics,
@@ -94,6 +102,8 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         title=title,
         notes=[*notes, describe_operating_point(analysis), *analysis.notes],
         warnings=analysis.warnings,
+        load_diagram=analysis.load_diagram,
+        case_extras=extras,
     )
     return write_report(path, html)
 

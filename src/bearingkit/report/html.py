@@ -35,6 +35,7 @@ from bearingkit.report.html_format import (
     fmt,
 )
 from bearingkit.report.html_inputs import _inputs_html
+from bearingkit.report.slewing import slewing_section_html
 
 _CSS = """
 body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:0;background:#f4f6f8;color:#1c2833;
@@ -162,7 +163,7 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
+def _case_html(bearing, result, friction, rating, case: int, warnings, extra=None) -> str:
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
@@ -222,6 +223,9 @@ def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
         k += 1
     if rating is not None:
         parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
+        k += 1
+    if extra:
+        parts.append(extra(f"{case + 2}.{k}"))
         k += 1
     parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
@@ -295,7 +299,16 @@ def _check_shapes(bearing, result, friction, rating) -> None:
 
 
 def build_report(
-    bearing_input, result, *, friction=None, rating=None, title=None, notes=(), warnings=None
+    bearing_input,
+    result,
+    *,
+    friction=None,
+    rating=None,
+    title=None,
+    notes=(),
+    warnings=None,
+    case_extras=None,
+    load_diagram=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -313,9 +326,13 @@ def build_report(
         Page title (default: "bearingkit report — <bearing name>").
     notes : sequence of str
         Assumptions of the run shown under "Run notes" (e.g. the friction operating point).
+    load_diagram : SlewingLoadDiagram, optional
+        The static load diagram of a slewing ring (:attr:`bearingkit.pipeline.Analysis.load_diagram`).
     warnings : list of list of str, optional
         Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
+    case_extras : list of callables, optional
+        Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
 
     Returns
     -------
@@ -356,7 +373,11 @@ def build_report(
     if notes:
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
-    body.extend(_case_html(bearing_input, result, friction, rating, c, warnings) for c in range(n_cases))
+    body.append(slewing_section_html(bearing_input, load_diagram))  # slewing rings only
+    extras = case_extras or [None] * n_cases
+    body.extend(
+        _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)
+    )
     body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
     body.append(
         "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "

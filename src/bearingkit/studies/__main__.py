@@ -1,4 +1,5 @@
-"""``python -m bearingkit.studies FILE [--scheduler ADDRESS] [--workers N] [--resume] [--out DIR]``.
+"""``python -m bearingkit.studies FILE [--scheduler ADDRESS] [--workers N] [--resume] [--out DIR]
+[--allow-plugin MODULE:ATTR]``.
 
 SI units in every written table (units in the column names). :func:`run_cli` is what the
 ``bearingkit study`` command calls; it runs the study (:func:`bearingkit.studies.runner.run_study`),
@@ -11,7 +12,10 @@ streams chunks to ``DIR/chunks`` and writes, in ``DIR``:
   quantiles of every output per design point) and, with a response, ``point_statistics.png`` and
   ``range_std.csv`` (range analysis of the per-point standard deviation);
 - optimisations: ``pareto.csv``, ``selections.csv``, ``pareto.png``;
-- ``summary.json`` — the run statistics.
+- ``summary.json`` — the run statistics, the study's fingerprint and the files of the set.
+
+The outputs are published as one set (``.outputs/<run>/`` behind the link ``current``; the names
+above are links into it): a kill leaves the previous complete set or the new one, never a mix.
 """
 
 from __future__ import annotations
@@ -32,6 +36,7 @@ def run_cli(
     out=None,
     progress: bool | None = None,
     echo=print,
+    allow_plugins=(),
 ):
     """Run the study in ``file`` and write its outputs; returns the StudyResult.
 
@@ -46,59 +51,103 @@ def run_cli(
     resume : bool
         Continue a killed run in ``out`` (chunks already there are not recomputed).
     out : path or None
-        Output directory (default ``study-<name>`` in the current directory).
+        Output directory (default ``study-<name>`` in the current directory). It must be new, empty
+        or a study's folder; the run locks it, and writes and deletes only its own files in it.
+    allow_plugins : sequence of str
+        Evaluator plugins ``"package.module:attribute"`` the study file may name (the explicit opt-in
+        of ``--allow-plugin``; a file alone can name only built-in and installed evaluators).
+
+    Notes
+    -----
+    Everything that can refuse the study (the file, the evaluator, the bearing file, the cases) is
+    checked before ``out`` is created: a refused study leaves no folder. The final files are published
+    as one set (:func:`bearingkit.studies.outputs.publish`).
     """
-    from bearingkit.studies import analysis
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.cases import plan_study
     from bearingkit.studies.definition import load_study
     from bearingkit.studies.executors import make_executor
+    from bearingkit.studies.outputs import publish
     from bearingkit.studies.runner import run_study
     from bearingkit.studies.store import ParquetStore
 
+    for spec in allow_plugins:
+        evaluators.allow_plugin(spec)
     d = load_study(file)
+    plan = plan_study(d)
     out = Path(out or f"study-{d.name}")
-    out.mkdir(parents=True, exist_ok=True)
-    executor = make_executor(workers=workers, scheduler=scheduler)
+    store = ParquetStore(out)
+    store.lock(d.name, notify=echo)
     try:
-        res = run_study(d, executor=executor, store=ParquetStore(out), resume=resume, progress=progress)
+        executor = make_executor(workers=workers, scheduler=scheduler)
+        try:
+            res = run_study(d, executor=executor, store=store, resume=resume, progress=progress, plan=plan)
+        finally:
+            executor.close()
+        publish(out, _writers(res, plan.fingerprint, echo))
+    except BaseException:
+        store.discard_if_unused()
+        raise
     finally:
-        executor.close()
-    res.results.to_parquet(out / "results.parquet", index=False)
-    res.results.to_csv(out / "results.csv", index=False)
-    if "range" in res.analysis:
-        res.analysis["main_effects"].to_csv(out / "main_effects.csv", index=False)
-        res.analysis["range"].to_csv(out / "range.csv", index=False)
-        labels = {f.name: f.label or f.name for f in d.factors}
-        analysis.plot_main_effects(res.analysis["main_effects"], out / "main_effects.png", d.response, labels)
-        analysis.plot_range(res.analysis["range"], out / "range.png", d.response)
-        ranking = " > ".join(f"{r.label}" for r in res.analysis["range"].itertuples())
-        echo(f"sensitivity ranking of {d.response}: {ranking}")
-    if "point_statistics" in res.analysis:
-        table = res.analysis["point_statistics"]
-        table.to_csv(out / "point_statistics.csv", index=False)
-        if d.response:
-            analysis.plot_point_statistics(
-                table, d.response, out / "point_statistics.png", d.monte_carlo.quantiles
-            )
-        if "range_std" in res.analysis:
-            res.analysis["range_std"].to_csv(out / "range_std.csv", index=False)
-            ranking = " > ".join(f"{r.label}" for r in res.analysis["range_std"].itertuples())
-            echo(f"sensitivity ranking of the scatter (std) of {d.response}: {ranking}")
-        echo(f"{len(table)} design points x {d.monte_carlo.per_point} draws → point_statistics.csv")
-    if res.pareto is not None:
-        res.pareto.to_csv(out / "pareto.csv", index=False)
-        res.selections.to_csv(out / "selections.csv", index=False)
-        if len(d.objectives) >= 2:
-            analysis.plot_pareto(
-                res.pareto, [o.output for o in d.objectives], out / "pareto.png", res.selections
-            )
-        echo(f"Pareto front: {len(res.pareto)} points; selections: {list(res.selections['selection'])}")
-    (out / "summary.json").write_text(json.dumps({"study": d.name, **res.stats}, indent=1, default=str))
+        store.close()
     s = res.stats
     echo(
         f"{d.name}: {len(res.results)} cases, {s['computed']} chunks computed, {s['reused']} reused, "
         f"{s['seconds']:.1f} s on {s['executor']} → {out}"
     )
+    if s.get("discarded"):
+        echo(f"{s['discarded']} chunk file(s) in {out} were not this study's (or damaged): recomputed")
     return res
+
+
+def _writers(res, fingerprint: str, echo) -> dict:
+    """Output name → function writing it (summary.json last: it lists the others with their sizes)."""
+    from bearingkit.studies import analysis
+
+    d = res.definition
+    w = {
+        "results.parquet": lambda p: res.results.to_parquet(p, index=False),
+        "results.csv": lambda p: res.results.to_csv(p, index=False),
+    }
+    if "range" in res.analysis:
+        labels = {f.name: f.label or f.name for f in d.factors}
+        w["main_effects.csv"] = lambda p: res.analysis["main_effects"].to_csv(p, index=False)
+        w["range.csv"] = lambda p: res.analysis["range"].to_csv(p, index=False)
+        w["main_effects.png"] = lambda p: analysis.plot_main_effects(
+            res.analysis["main_effects"], p, d.response, labels
+        )
+        w["range.png"] = lambda p: analysis.plot_range(res.analysis["range"], p, d.response)
+        ranking = " > ".join(f"{r.label}" for r in res.analysis["range"].itertuples())
+        echo(f"sensitivity ranking of {d.response}: {ranking}")
+    if "point_statistics" in res.analysis:
+        table = res.analysis["point_statistics"]
+        w["point_statistics.csv"] = lambda p: table.to_csv(p, index=False)
+        if d.response:
+            w["point_statistics.png"] = lambda p: analysis.plot_point_statistics(
+                table, d.response, p, d.monte_carlo.quantiles
+            )
+        if "range_std" in res.analysis:
+            w["range_std.csv"] = lambda p: res.analysis["range_std"].to_csv(p, index=False)
+            ranking = " > ".join(f"{r.label}" for r in res.analysis["range_std"].itertuples())
+            echo(f"sensitivity ranking of the scatter (std) of {d.response}: {ranking}")
+        echo(f"{len(table)} design points x {d.monte_carlo.per_point} draws → point_statistics.csv")
+    if res.pareto is not None:
+        w["pareto.csv"] = lambda p: res.pareto.to_csv(p, index=False)
+        w["selections.csv"] = lambda p: res.selections.to_csv(p, index=False)
+        if len(d.objectives) >= 2:
+            w["pareto.png"] = lambda p: analysis.plot_pareto(
+                res.pareto, [o.output for o in d.objectives], p, res.selections
+            )
+        echo(f"Pareto front: {len(res.pareto)} points; selections: {list(res.selections['selection'])}")
+
+    def summary(path):
+        files = {n: (path.parent / n).stat().st_size for n in w if n != "summary.json"}
+        data = {"study": d.name, "cases": len(res.results), **res.stats, "fingerprint": fingerprint}
+        data["files"] = files
+        path.write_text(json.dumps(data, indent=1, default=str), encoding="utf-8")
+
+    w["summary.json"] = summary
+    return w
 
 
 def main(argv=None) -> int:
@@ -109,9 +158,24 @@ def main(argv=None) -> int:
     p.add_argument("--resume", action="store_true", help="continue a killed run in --out")
     p.add_argument("--out", default=None, help="output directory")
     p.add_argument("--no-progress", action="store_true")
+    p.add_argument(
+        "--allow-plugin",
+        action="append",
+        default=[],
+        metavar="MODULE:ATTR",
+        help="let the study use this evaluator plugin (a study file alone cannot import code)",
+    )
     a = p.parse_args(argv)
     try:
-        run_cli(a.file, a.scheduler, a.workers, a.resume, a.out, progress=False if a.no_progress else None)
+        run_cli(
+            a.file,
+            a.scheduler,
+            a.workers,
+            a.resume,
+            a.out,
+            progress=False if a.no_progress else None,
+            allow_plugins=a.allow_plugin,
+        )
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

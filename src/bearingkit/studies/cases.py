@@ -1,13 +1,21 @@
-"""What a study evaluates: its cases (design × base values), their fingerprint, and the result object.
+"""The cases of a study, its fingerprint and its result object (shared by the runner and the optimiser).
 
-SI units (factor values as the evaluator defines them). :func:`build_cases` turns a study definition
-into its case table; :func:`base_values` gives every factor the design does not vary; the fingerprint
-identifies a study's definition and cases in a store. Used by :mod:`bearingkit.studies.runner` and
-:mod:`bearingkit.studies.optimize`.
+SI units throughout (factor values as the evaluator declares them, outputs with units in their names).
+
+Kept apart from :mod:`bearingkit.studies.runner` so that the runner and
+:mod:`bearingkit.studies.optimize` both import downward from here and never from each other.
+
+The **fingerprint** identifies a study in a store: the definition (without its file name), the
+evaluator's identity (name, the function's module and qualified name, declared factors and
+outputs), the bearingkit version, and the inputs derived from outside the file (the case table
+with every factor value, so the geometry read from ``study.bearing`` counts; for an optimisation
+the base values). Every chunk file carries it, so a chunk of another study is never reused.
 """
 
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -16,10 +24,13 @@ from bearingkit.errors import InputError
 from bearingkit.studies import evaluators, generators
 from bearingkit.studies.definition import StudyDefinition
 
+#: Index columns of a levels × samples study: design point and draw (also kept in the chunk files).
+INDEX_COLUMNS = ("point", "draw")
+
 
 @dataclass
 class StudyResult:
-    """Outcome of :func:`run_study`.
+    """Outcome of :func:`bearingkit.studies.runner.run_study`.
 
     Attributes
     ----------
@@ -32,7 +43,9 @@ class StudyResult:
         ``cases`` joined with the evaluator's outputs (one row per case, ordered by ``case``); for an
         optimisation, every evaluated point with its ``generation``.
     stats : dict
-        ``chunks`` (total), ``computed`` (this run), ``reused`` (found in the store), ``seconds``.
+        ``chunks`` (total), ``computed`` (this run), ``reused`` (found in the store), ``seconds``,
+        ``executor``; ``discarded`` (chunk files of another study or damaged, recomputed) when a
+        resumed store held any.
     analysis : dict of DataFrame
         ``main_effects`` and ``range`` (designs with levels and a ``response``); levels × samples:
         ``point_statistics`` (one row per design point) and, with a response, the main effects and
@@ -76,6 +89,19 @@ def build_cases(definition: StudyDefinition):
     """The cases of a non-optimisation study (DataFrame with a ``case`` id column first)."""
     d = definition
     base = base_values(d)
+    try:
+        design = _design(d, base)
+    except InputError as exc:  # a generator's message names the factor; say which file and section
+        raise InputError(f"{d.source}: factors: {exc}") from None
+    for k, v in base.items():
+        if k not in design.columns:
+            design[k] = v
+    design.insert(0, "case", np.arange(len(design)))
+    return design
+
+
+def _design(d: StudyDefinition, base: dict):
+    """The design columns of the cases (before the base values and the ``case`` id)."""
     levels = {f.name: list(f.levels or ()) for f in d.factors}
     if d.design == "orthogonal":
         cols = [f.column for f in d.factors]
@@ -106,19 +132,73 @@ def build_cases(definition: StudyDefinition):
             mc.common,
             deviations=[f.name for f in mc.factors if f.deviation],
         )
-    for k, v in base.items():
-        if k not in design.columns:
-            design[k] = v
-    design.insert(0, "case", np.arange(len(design)))
     return design
 
 
-def _fingerprint(definition: StudyDefinition, cases=None) -> str:
-    import hashlib
+@dataclass
+class StudyPlan:
+    """What a study will run, known before anything is written: every check of the inputs is done.
 
+    Attributes
+    ----------
+    definition : StudyDefinition
+    evaluator : Evaluator
+        Resolved once here (workers receive this object, never a name to resolve).
+    cases : DataFrame or None
+        The case table (None for an optimisation, whose cases come per generation).
+    base : dict
+        The value of every factor not varied (evaluator default < bearing file < [fixed]).
+    fingerprint : str
+        The study's identity in a store (:func:`fingerprint`).
+    """
+
+    definition: StudyDefinition
+    evaluator: evaluators.Evaluator
+    cases: object
+    base: dict
+    fingerprint: str
+
+
+def plan_study(definition: StudyDefinition) -> StudyPlan:
+    """Resolve the evaluator, read the bearing file, build the cases and the fingerprint.
+
+    Everything that can refuse a study happens here, before a study touches its output folder.
+    """
+    ev = evaluators.get(definition.evaluator)
+    base = base_values(definition)
+    if definition.design == "optimize":
+        return StudyPlan(definition, ev, None, base, fingerprint(definition, base=base))
+    cases = build_cases(definition)
+    return StudyPlan(definition, ev, cases, base, fingerprint(definition, cases))
+
+
+def evaluator_identity(evaluator: evaluators.Evaluator) -> str:
+    """What identifies an evaluator's code: name, function, declared factors and outputs."""
+    fn = evaluator.function
+    factors = [(f.name, f.dimension, repr(f.default), f.batched) for f in evaluator.factors.values()]
+    return json.dumps(
+        {
+            "name": evaluator.name,
+            "function": f"{getattr(fn, '__module__', '?')}:{getattr(fn, '__qualname__', repr(fn))}",
+            "factors": factors,
+            "outputs": list(evaluator.outputs),
+            "bearing_type": evaluator.bearing_type,
+        },
+        sort_keys=True,
+    )
+
+
+def fingerprint(definition: StudyDefinition, cases=None, base: dict | None = None) -> str:
+    """SHA-256 identifying a study in a store (see the module docstring)."""
     import pandas as pd
 
+    import bearingkit
+
     h = hashlib.sha256(definition.fingerprint().encode())
+    h.update(evaluator_identity(evaluators.get(definition.evaluator)).encode())
+    h.update(f"bearingkit {bearingkit.__version__}".encode())
     if cases is not None:
         h.update(pd.util.hash_pandas_object(cases, index=False).to_numpy().tobytes())
+    if base is not None:
+        h.update(json.dumps(base, sort_keys=True, default=repr).encode())
     return h.hexdigest()

@@ -55,15 +55,46 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
+import re
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from bearingkit import units
 from bearingkit.errors import InputError
 
 DESIGNS = ("sweep", "factorial", "orthogonal", "monte_carlo", "optimize")
+
+#: Sections a study file may have.
+SECTIONS = (
+    "study",
+    "fixed",
+    "factors",
+    "variables",
+    "objectives",
+    "constraints",
+    "optimizer",
+    "monte_carlo",
+    "targets",
+)
+
+#: A study name: it becomes the default output folder (``study-<name>``) and is written into the
+#: store, so it is a plain file name — no separators, no ``..``, nothing absolute, no hidden name.
+NAME_PATTERN = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,63}$")
+NAME_RULE = "a plain name of letters, digits, '.', '_' and '-' starting with a letter or digit (at most 64)"
+
+#: Most cases one study may have: the case table is built in memory before anything runs (10 million
+#: cases x 30 factors of float64 is 2.4 GB). Larger studies are split into several.
+MAX_CASES = 10_000_000
+
+#: Largest chunk: one chunk is one batched solve in one process, memory O(chunk x elements).
+MAX_CHUNK_SIZE = 1_000_000
+
+#: Most NSGA-III reference directions (Das-Dennis count C(p + m - 1, m - 1) for p partitions and m
+#: objectives); the directions are built in memory.
+MAX_REFERENCE_DIRECTIONS = 100_000
 
 
 class _Strict(BaseModel):
@@ -91,7 +122,7 @@ class MonteCarloDef(_Strict):
 
     per_point: int = Field(ge=1)
     sampler: Literal["random", "lhs", "sobol"] = "random"
-    seed: int | None = None
+    seed: int | None = Field(None, ge=0)
     common: bool = True
     quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     factors: tuple[FactorDef, ...] = ()
@@ -123,7 +154,7 @@ class OptimizerDef(_Strict):
     algorithm: Literal["nsga2", "nsga3"] = "nsga2"
     pop_size: int = Field(100, ge=4)
     generations: int = Field(100, ge=1)
-    seed: int = 1
+    seed: int = Field(1, ge=0)
     n_partitions: int = Field(12, ge=1)
 
 
@@ -138,8 +169,8 @@ class StudyDefinition(_Strict):
     response: str | None = None
     samples: int | None = Field(None, ge=1)
     sampler: Literal["random", "lhs", "sobol"] = "random"
-    seed: int = 0
-    chunk_size: int = Field(1000, ge=1)
+    seed: int = Field(0, ge=0)
+    chunk_size: int = Field(1000, ge=1, le=MAX_CHUNK_SIZE)
     outputs: tuple[str, ...] | None = None
     fixed: dict = Field(default_factory=dict)
     factors: tuple[FactorDef, ...] = ()
@@ -150,6 +181,13 @@ class StudyDefinition(_Strict):
     monte_carlo: MonteCarloDef | None = None
     targets: dict = Field(default_factory=dict)
     source: str = "<dict>"
+
+    @field_validator("name")
+    @classmethod
+    def _plain_name(cls, value: str) -> str:
+        if not NAME_PATTERN.match(value):
+            raise ValueError(f"must be {NAME_RULE}; it names the output folder")
+        return value
 
     def fingerprint(self) -> str:
         """SHA-256 of the definition (without its file name): identifies the study in a store."""
@@ -180,88 +218,101 @@ def _si(value, factor, where: str):
     return units.parse(value, dim, where)
 
 
-#: Sections that are tables, and those that are arrays of tables ([[factors]] …), of a study file.
-_TABLES = ("fixed", "optimizer", "monte_carlo", "targets")
-_TABLE_ARRAYS = ("factors", "variables", "objectives", "constraints")
+def _short(value, limit: int = 60) -> str:
+    """``repr(value)``, cut to ``limit`` characters (a message stays one readable line)."""
+    text = repr(value).replace("\n", " ")
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def _check_shape(data: dict, source: str) -> None:
-    """Tables where tables belong, arrays of tables where those do, names as strings and numbers as
-    numbers, before the values are read (a mutated file must give one line, not a TypeError)."""
-    from bearingkit.errors import quote
+def _table(value, where: str) -> dict:
+    if not isinstance(value, dict):
+        raise InputError(f"{where} ({_short(value)}) must be a table")
+    return value
 
-    def table_array(items, where: str) -> None:
-        if not isinstance(items, list) or not all(isinstance(x, dict) for x in items):
-            raise InputError(f"{source}: {where} ({quote(items)}) must be an array of tables ([[{where}]])")
-        for i, item in enumerate(items):
-            for key in ("name", "output"):
-                if key in item and not isinstance(item[key], str):
-                    raise InputError(f"{source}: {where}[{i}].{key} ({quote(item[key])}) must be a string")
-            if "levels" in item and not isinstance(item["levels"], list):
-                raise InputError(f"{source}: {where}[{i}].levels ({quote(item['levels'])}) must be an array")
 
-    for key in _TABLES:
-        if key in data and not isinstance(data[key], dict):
-            raise InputError(f"{source}: {key} ({quote(data[key])}) must be a table ([{key}])")
-    for key in _TABLE_ARRAYS:
-        if key in data:
-            table_array(data[key], key)
-    if "factors" in data.get("monte_carlo", {}):
-        table_array(data["monte_carlo"]["factors"], "monte_carlo.factors")
-    for name, target in data.get("targets", {}).items():
-        if not isinstance(target, dict):
-            raise InputError(f"{source}: targets.{name} ({quote(target)}) must be a table of values")
+def _tables(value, where: str) -> list[dict]:
+    if not isinstance(value, list):
+        raise InputError(f"{where} ({_short(value)}) must be an array of tables ([[...]])")
+    for i, item in enumerate(value):
+        if not isinstance(item, dict):
+            raise InputError(f"{where}[{i}] ({_short(item)}) must be a table")
+    return value
+
+
+def _number(value, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise InputError(f"{where} ({_short(value)}) must be a finite number")
+    return float(value)
+
+
+def _pydantic_message(exc: ValidationError, source: str, head: dict) -> str:
+    """One line naming the field of the first error, its value and what was expected."""
+    err = exc.errors()[0]
+    parts = [str(p) for p in err["loc"]]
+    if parts and (parts[0] in head or parts[0] in StudyDefinition.model_fields) and parts[0] not in SECTIONS:
+        parts.insert(0, "study")
+    loc = ""
+    for p in parts:
+        loc += f"[{p}]" if p.isdigit() else (f".{p}" if loc else p)
+    msg = err["msg"].removeprefix("Value error, ")
+    return f"{source}: {loc} ({_short(err.get('input'))}) {msg}"
 
 
 def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinition:
-    """Validate a parsed study file (see the module docstring); InputError with one line if malformed."""
+    """Validate a parsed study file (see the module docstring); InputError with one line if malformed.
+
+    Every malformed value gives one line naming the file, the field, the value and what was expected;
+    nothing else escapes (a study file may come from someone else).
+    """
     from bearingkit.studies import evaluators
 
-    if not isinstance(data, dict) or "study" not in data or not isinstance(data["study"], dict):
+    if not isinstance(data, dict) or not isinstance(data.get("study"), dict):
         raise InputError(f"{source}: a study file needs a [study] table")
-    unknown = set(data) - {
-        "study",
-        "fixed",
-        "factors",
-        "variables",
-        "objectives",
-        "constraints",
-        "optimizer",
-        "monte_carlo",
-        "targets",
-    }
+    unknown = set(data) - set(SECTIONS)
     if unknown:
-        raise InputError(f"{source}: unknown section(s) {sorted(unknown)}")
-    _check_shape(data, source)
+        raise InputError(
+            f"{source}: unknown section(s) {sorted(map(str, unknown))}; expected {list(SECTIONS)}"
+        )
     head = dict(data["study"])
+    keys = set(StudyDefinition.model_fields) - set(SECTIONS) - {"source"}
+    stray = sorted(map(str, set(head) - keys))
+    if stray:
+        raise InputError(
+            f"{source}: study.{stray[0]} is not a key of [study]; expected some of {sorted(keys)} "
+            "(sections such as [[factors]] go after [study], not inside it)"
+        )
+    name = head.get("name")
+    if not isinstance(name, str) or not NAME_PATTERN.match(name):
+        raise InputError(
+            f"{source}: study.name ({_short(name)}) must be {NAME_RULE}; it names the output folder"
+        )
     ev_name = head.get("evaluator")
     if not isinstance(ev_name, str):
-        raise InputError(f"{source}: study.evaluator ({ev_name!r}) must name an evaluator")
+        raise InputError(f"{source}: study.evaluator ({_short(ev_name)}) must name an evaluator")
     try:
         ev = evaluators.get(ev_name)
     except InputError as exc:
         raise InputError(f"{source}: study.{exc}") from None
 
-    def factor(name, where):
-        if name not in ev.factors:
-            raise InputError(f"{source}: {where} ({name!r}) is not a factor of evaluator {ev.name!r}")
-        return ev.factors[name]
+    def factor(fname, where):
+        if not isinstance(fname, str) or fname not in ev.factors:
+            raise InputError(f"{source}: {where} ({_short(fname)}) is not a factor of evaluator {ev.name!r}")
+        return ev.factors[fname]
 
     fixed = {
-        k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}") for k, v in data.get("fixed", {}).items()
+        k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}")
+        for k, v in _table(data.get("fixed", {}), f"{source}: fixed").items()
     }
 
     def factor_list(items, where):
-        if not isinstance(items, list):
-            raise InputError(f"{source}: {where} must be an array of tables ([[{where}]])")
         out = []
-        for i, f in enumerate(items):
-            if not isinstance(f, dict):
-                raise InputError(f"{source}: {where}[{i}] ({f!r}) must be a table")
+        for i, f in enumerate(_tables(items, f"{source}: {where}")):
             f = dict(f)
             spec = factor(f.get("name"), f"{where}[{i}].name")
             w = f"{source}: {where}[{i}] ({spec.name})"
             if "levels" in f:
+                if not isinstance(f["levels"], list):
+                    raise InputError(f"{w}.levels ({_short(f['levels'])}) must be an array of values")
                 f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
             for key in ("base", "mean", "std", "low", "high"):
                 if key in f:
@@ -272,14 +323,13 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     factors = factor_list(data.get("factors", []), "factors")
     monte_carlo = data.get("monte_carlo")
     if monte_carlo is not None:
-        if not isinstance(monte_carlo, dict):
-            raise InputError(f"{source}: monte_carlo ({monte_carlo!r}) must be a table ([monte_carlo])")
+        monte_carlo = _table(monte_carlo, f"{source}: monte_carlo")
         monte_carlo = {
             **monte_carlo,
             "factors": factor_list(monte_carlo.get("factors", []), "monte_carlo.factors"),
         }
     variables = []
-    for i, v in enumerate(data.get("variables", [])):
+    for i, v in enumerate(_tables(data.get("variables", []), f"{source}: variables")):
         v = dict(v)
         spec = factor(v.get("name"), f"variables[{i}].name")
         for key in ("low", "high"):
@@ -287,19 +337,18 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
                 v[key] = _si(v[key], spec, f"{source}: variables[{i}] ({spec.name}).{key}")
         variables.append(v)
     targets = {}
-    for tname, t in data.get("targets", {}).items():
-        if not isinstance(t, dict):
-            raise InputError(f"{source}: targets.{tname} must be a table of values")
+    for tname, t in _table(data.get("targets", {}), f"{source}: targets").items():
+        t = _table(t, f"{source}: targets.{tname}")
         targets[tname] = {
             k: (
                 _si(v, ev.factors[k], f"{source}: targets.{tname}.{k}")
                 if k in ev.factors
-                else units.parse(v, "dimensionless", f"{source}: targets.{tname}.{k}")
+                else _number(v, f"{source}: targets.{tname}.{k}")
             )
             for k, v in t.items()
         }
     bearing = head.get("bearing")
-    if bearing is not None and base_dir is not None and not Path(bearing).is_absolute():
+    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
         bearing = str((Path(base_dir) / bearing).resolve())
     raw = {
         **head,
@@ -317,14 +366,48 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     try:
         definition = StudyDefinition.model_validate(raw)
     except ValidationError as exc:
-        err = exc.errors()[0]
-        loc = ".".join(str(p) for p in err["loc"])
-        raise InputError(f"{source}: {loc} ({err.get('input')!r}) {err['msg']}") from None
+        raise InputError(_pydantic_message(exc, source, head)) from None
     _check(definition)
     return definition
 
 
+def case_count(d: StudyDefinition) -> int:
+    """Number of cases (evaluations, for an optimisation) the study asks for, without building them."""
+    from bearingkit.studies.generators import orthogonal_array
+
+    if d.design == "optimize":
+        return d.optimizer.pop_size * d.optimizer.generations
+    if d.design == "monte_carlo":
+        n = d.samples or 0
+    elif d.design == "orthogonal":
+        n = orthogonal_array(d.array).shape[0]
+    elif d.design == "factorial":
+        n = math.prod(len(f.levels or ()) for f in d.factors)
+    else:
+        n = sum(len(f.levels or ()) for f in d.factors)
+    return n * (d.monte_carlo.per_point if d.monte_carlo is not None else 1)
+
+
 def _check(d: StudyDefinition) -> None:
+    _check_design(d)
+    n = case_count(d)
+    if n > MAX_CASES:
+        what = "evaluations (pop_size x generations)" if d.design == "optimize" else "cases"
+        raise InputError(
+            f"{d.source}: the study asks for {n:,} {what}; at most {MAX_CASES:,} in one study "
+            "(its case table is built in memory): split it into several studies"
+        )
+    if d.design == "optimize" and d.optimizer.algorithm == "nsga3":
+        dirs = math.comb(d.optimizer.n_partitions + len(d.objectives) - 1, len(d.objectives) - 1)
+        if dirs > MAX_REFERENCE_DIRECTIONS:
+            raise InputError(
+                f"{d.source}: optimizer.n_partitions ({d.optimizer.n_partitions}) gives {dirs:,} "
+                f"NSGA-III reference directions for {len(d.objectives)} objectives; "
+                f"at most {MAX_REFERENCE_DIRECTIONS:,}"
+            )
+
+
+def _check_design(d: StudyDefinition) -> None:
     src = d.source
     if d.monte_carlo is not None and d.design not in ("sweep", "factorial", "orthogonal"):
         raise InputError(
@@ -355,8 +438,13 @@ def _check(d: StudyDefinition) -> None:
                 f"{src}: factors ({f.name}).deviation (true) belongs in [[monte_carlo.factors]], "
                 "next to the tolerance's distribution"
             )
-    if d.design == "orthogonal" and d.array is None:
-        raise InputError(f"{src}: study.array (None) must name an orthogonal array, e.g. 'L9'")
+    if d.design == "orthogonal":
+        from bearingkit.studies.generators import ARRAYS
+
+        if d.array not in ARRAYS:
+            raise InputError(
+                f"{src}: study.array ({d.array!r}) must name an orthogonal array: {', '.join(ARRAYS)}"
+            )
     if d.monte_carlo is not None:
         _check_monte_carlo(d)
 

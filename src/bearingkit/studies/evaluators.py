@@ -6,10 +6,15 @@ API); every output column names its unit (``max_load_N``, ``friction_torque_Nm``
 An :class:`Evaluator` declares the factors it accepts (name, physical dimension used to parse the
 study file, default) and computes a DataFrame of outputs, one row per case, from a DataFrame of cases.
 It must be a pure function of the case values (no state, no randomness) so that any executor and any
-chunking give the same numbers. Evaluators are looked up by name in :data:`REGISTRY`, then among the
-entry points of the group ``bearingkit.evaluators`` (installed packages, e.g. the paper reproductions
-of :mod:`bearingkit.papers`, declare theirs in their metadata); a study may also name one as
-``"package.module:attribute"`` (an :class:`Evaluator` object importable on every worker).
+chunking give the same numbers.
+
+A study file names its evaluator; the name is looked up, in this order, among the registered ones
+(:data:`REGISTRY`: the built-in ``zdt1`` and any registered by Python code), the plugins this process
+allowed with :func:`allow_plugin` (the CLI's ``--allow-plugin module:attribute``), and the entry points
+of the group :data:`ENTRY_POINT_GROUP` (installed packages, e.g. the paper reproductions of
+:mod:`bearingkit.papers`, declare theirs in their metadata; loaded only when a file names one). A file
+never imports code: a value ``"module:attribute"`` is refused unless that exact plugin was allowed by
+the person running the study (input files are data; they may come from someone else).
 
 Built-in evaluator: ``zdt1``, Zitzler–Deb–Thiele problem 1 (30 variables ``x1…x30`` → ``f1``, ``f2``),
 the cheap vectorised objective of tests and benchmarks.
@@ -18,6 +23,7 @@ the cheap vectorised objective of tests and benchmarks.
 from __future__ import annotations
 
 import importlib
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
@@ -92,19 +98,53 @@ class Evaluator:
         return out
 
 
-#: Evaluator name → Evaluator.
+#: Evaluator name → Evaluator (the built-in ones, and any registered by Python code).
 REGISTRY: dict[str, Evaluator] = {}
+
+#: Entry-point group through which installed packages (and :mod:`bearingkit.papers`) offer evaluators:
+#: ``[project.entry-points."bearingkit.evaluators"]`` ``my_model = "my_package.models:MY_EVALUATOR"``
+#: in the package's pyproject.toml; a study file then says ``evaluator = "my_model"``. Installing the
+#: package is the opt-in.
+ENTRY_POINT_GROUP = "bearingkit.evaluators"
+
+#: Plugins allowed in this process by :func:`allow_plugin`: ``"module:attribute"`` → Evaluator.
+ALLOWED_PLUGINS: dict[str, Evaluator] = {}
+
+_SPEC = re.compile(r"^[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_][\w]*$")
 
 
 def register(evaluator: Evaluator) -> Evaluator:
-    """Add (or replace) an evaluator under its name."""
+    """Add (or replace) an evaluator under its name (Python code only; files cannot register)."""
     REGISTRY[evaluator.name] = evaluator
     return evaluator
 
 
-#: Entry-point group through which installed packages (and :mod:`bearingkit.papers`) offer evaluators:
-#: ``name = "package.module:EVALUATOR"`` in the package metadata.
-ENTRY_POINT_GROUP = "bearingkit.evaluators"
+def allow_plugin(spec: str) -> Evaluator:
+    """Import the evaluator ``"package.module:attribute"`` and let study files name it.
+
+    The explicit opt-in for code outside bearingkit (what ``--allow-plugin`` calls). A study file may
+    then name it by its evaluator name or by ``spec`` itself. It may not take the name of a built-in.
+    """
+    if not isinstance(spec, str) or not _SPEC.match(spec):
+        raise InputError(f"--allow-plugin ({spec!r}) must be 'package.module:attribute'")
+    if spec in ALLOWED_PLUGINS:
+        return ALLOWED_PLUGINS[spec]
+    mod, _, attr = spec.partition(":")
+    try:
+        obj = getattr(importlib.import_module(mod), attr)
+    except (ImportError, AttributeError) as exc:
+        raise InputError(f"--allow-plugin ({spec!r}) cannot be imported: {exc}".replace("\n", " ")) from None
+    if not isinstance(obj, Evaluator):
+        raise InputError(f"--allow-plugin ({spec!r}) is a {type(obj).__name__}, not an Evaluator")
+    from importlib.metadata import entry_points
+
+    taken = set(REGISTRY) | {ep.name for ep in entry_points(group=ENTRY_POINT_GROUP)}
+    if obj.name in taken and REGISTRY.get(obj.name) is not obj:
+        raise InputError(
+            f"--allow-plugin ({spec!r}): its name {obj.name!r} is that of a built-in or installed evaluator"
+        )
+    ALLOWED_PLUGINS[spec] = obj
+    return obj
 
 
 def _from_entry_point(name: str) -> Evaluator | None:
@@ -112,7 +152,11 @@ def _from_entry_point(name: str) -> Evaluator | None:
     from importlib.metadata import entry_points
 
     for ep in entry_points(group=ENTRY_POINT_GROUP, name=name):
-        obj = ep.load()
+        try:
+            obj = ep.load()
+        except Exception as exc:  # a broken plugin is the plugin's error, said in one line
+            msg = f"evaluator ({name!r}): the installed plugin {ep.value!r} does not load: {exc}"
+            raise InputError(msg.replace("\n", " ")) from None
         if not isinstance(obj, Evaluator):
             raise InputError(f"evaluator ({name!r}): entry point {ep.value} is a {type(obj).__name__}")
         return register(obj)
@@ -120,41 +164,59 @@ def _from_entry_point(name: str) -> Evaluator | None:
 
 
 def available() -> list[str]:
-    """Names of every evaluator: registered ones and those installed packages declare."""
+    """Names of every evaluator: registered ones, allowed plugins and those installed packages declare."""
     from importlib.metadata import entry_points
 
-    return sorted(set(REGISTRY) | {ep.name for ep in entry_points(group=ENTRY_POINT_GROUP)})
+    names = set(REGISTRY) | {ev.name for ev in ALLOWED_PLUGINS.values()}
+    return sorted(names | {ep.name for ep in entry_points(group=ENTRY_POINT_GROUP)})
 
 
 def get(name: str) -> Evaluator:
-    """The evaluator called ``name`` (registered or declared by an entry point), or ``"module:attribute"``."""
+    """The evaluator called ``name``: registered, allowed plugin, or entry point (in that order).
+
+    A ``"module:attribute"`` name resolves only when that plugin was allowed (:func:`allow_plugin`).
+    """
+    if not isinstance(name, str):
+        raise InputError(f"evaluator ({name!r}) must be the name of an evaluator")
     if name in REGISTRY:
         return REGISTRY[name]
+    if name in ALLOWED_PLUGINS:
+        return ALLOWED_PLUGINS[name]
+    for ev in ALLOWED_PLUGINS.values():
+        if ev.name == name:
+            return ev
+    if ":" in name:
+        raise InputError(
+            f"evaluator ({name!r}) names Python code; a study file cannot import code. Use one of "
+            f"{', '.join(available())} (built in or installed: entry point group {ENTRY_POINT_GROUP!r}), "
+            f"or allow this one explicitly: --allow-plugin {name}"
+        )
     found = _from_entry_point(name)
     if found is not None:
         return found
-    if ":" in name:
-        mod, _, attr = name.partition(":")
-        try:
-            obj = getattr(importlib.import_module(mod), attr)
-        except (ImportError, AttributeError) as exc:
-            raise InputError(f"evaluator ({name!r}) cannot be imported: {exc}") from None
-        if not isinstance(obj, Evaluator):
-            raise InputError(f"evaluator ({name!r}) is a {type(obj).__name__}, not an Evaluator")
-        return obj
     raise InputError(
-        f"evaluator ({name!r}) must be one of {', '.join(available())} or 'module:attribute'"
+        f"evaluator ({name!r}) must be one of {', '.join(available())} (built in or installed: entry point "
+        f"group {ENTRY_POINT_GROUP!r}) or a plugin allowed with --allow-plugin"
     )
 
 
-def evaluate_chunk(evaluator_name: str, cases):
+def evaluate_chunk(evaluator, cases):
     """Evaluate one chunk (top-level, picklable: what executors send to workers).
+
+    ``evaluator`` is the :class:`Evaluator` itself (resolved once, by the process that read the study
+    file; a worker never resolves a name from data) or the name of a built-in. The chunk runs with
+    one BLAS thread in every executor (:func:`bearingkit.studies.executors.one_blas_thread`): OpenBLAS
+    splits a matrix product differently for another thread count and the last bits of a result
+    depend on it, so this is what makes the executors agree bit for bit.
 
     Returns the cases' ``case`` ids joined with the outputs.
     """
-    ev = get(evaluator_name)
+    from bearingkit.studies.executors import one_blas_thread
+
+    ev = evaluator if isinstance(evaluator, Evaluator) else get(evaluator)
     ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))
-    out = ev(cases.drop(columns=["case"], errors="ignore"))
+    with one_blas_thread():
+        out = ev(cases.drop(columns=["case"], errors="ignore"))
     out = out.reset_index(drop=True)
     out.insert(0, "case", ids)
     return out

@@ -25,6 +25,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 
 from bearingkit.analysis.quasistatic import THREADS_ENV
 from bearingkit.errors import InputError
@@ -33,6 +34,9 @@ from bearingkit.errors import InputError
 #: worker process started with this environment never spawns more threads than it is given.
 BLAS_ENV = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 
+
+#: The interface a LocalCluster started by :class:`DaskExecutor` listens on.
+LOOPBACK = "127.0.0.1"
 
 #: Variables of Dask's default ``distributed.nanny.pre-spawn-environ`` that a LocalCluster started by
 #: :class:`DaskExecutor` does NOT pass on. ``MALLOC_TRIM_THRESHOLD_=65536`` makes glibc hand freed
@@ -95,8 +99,113 @@ def restore_worker_threads() -> None:
         _LIMIT_STATE.update(environ={}, blas=None)
 
 
+# One BLAS thread while a chunk is evaluated, counted per process. Measured with numpy's OpenBLAS 0.3.31:
+# - threadpoolctl's limit (``openblas_set_num_threads``) set from a thread other than the main one has
+#   no effect on that thread's products, while ``openblas_set_num_threads_local`` (OpenBLAS >= 0.3.27)
+#   does, from any thread;
+# - the value the latter returns is shared between threads: two chunks restoring their "previous"
+#   values in the wrong order left the process at one thread.
+# So every chunk sets one thread in its own thread, the first chunk in remembers the previous count and
+# the last one out restores it (the first out must not lift the limit of a chunk still running). For
+# BLAS libraries without the thread-local call, threadpoolctl's process-wide limit, counted the same way.
+_BLAS_LOCK = threading.Lock()
+_BLAS_STATE: dict = {"users": 0, "limiter": None, "previous": None}
+_LOCAL_SETTERS: list | None = None
+
+#: Names of OpenBLAS's thread-local setter in the builds numpy and scipy ship (plain and prefixed).
+_LOCAL_SETTER_NAMES = (
+    "openblas_set_num_threads_local",
+    "scipy_openblas_set_num_threads_local64_",
+    "scipy_openblas_set_num_threads_local_64_",
+    "scipy_openblas_set_num_threads_local",
+)
+
+
+def _thread_local_setters() -> list:
+    """``openblas_set_num_threads_local`` of every loaded OpenBLAS that has it (looked up once)."""
+    global _LOCAL_SETTERS
+    if _LOCAL_SETTERS is None:
+        import ctypes
+
+        from threadpoolctl import threadpool_info
+
+        setters = []
+        for lib in threadpool_info():
+            if lib.get("internal_api") != "openblas":
+                continue
+            try:
+                handle = ctypes.CDLL(lib["filepath"])
+            except OSError:  # pragma: no cover - a library threadpoolctl saw but ctypes cannot open
+                continue
+            for name in _LOCAL_SETTER_NAMES:
+                fn = getattr(handle, name, None)
+                if fn is not None:
+                    fn.restype, fn.argtypes = ctypes.c_int, [ctypes.c_int]
+                    setters.append(fn)
+                    break
+        _LOCAL_SETTERS = setters
+    return _LOCAL_SETTERS
+
+
+@contextmanager
+def one_blas_thread():
+    """Run the body with one BLAS thread (what every executor does around a chunk).
+
+    Why: OpenBLAS partitions a matrix product (the row kernels' ``(C, N) @ (N, 5)`` products) by its
+    thread count, and the edge blocks of a partition are summed in another order, so a case's last
+    bits depended on the thread count: 32 of 3,000 seed-000 sweep cases (chunks of 250) differed by up
+    to 8e-16 between the in-process run (2 BLAS threads) and the worker processes (1). The solver
+    already runs large batches with one BLAS thread per solver thread, so this costs nothing there.
+    """
+    from threadpoolctl import threadpool_limits
+
+    setters = _thread_local_setters()
+    with _BLAS_LOCK:
+        previous = [set_local(1) for set_local in setters]
+        if _BLAS_STATE["users"] == 0:
+            _BLAS_STATE["previous"] = previous
+            if not setters:
+                _BLAS_STATE["limiter"] = threadpool_limits(limits=1, user_api="blas")
+        _BLAS_STATE["users"] += 1
+    try:
+        yield
+    finally:
+        with _BLAS_LOCK:
+            _BLAS_STATE["users"] -= 1
+            if _BLAS_STATE["users"] == 0:
+                for set_local, old in zip(setters, _BLAS_STATE["previous"], strict=True):
+                    set_local(old)
+                if _BLAS_STATE["limiter"] is not None:
+                    _BLAS_STATE["limiter"].restore_original_limits()
+                _BLAS_STATE.update(limiter=None, previous=None)
+
+
+def exit_with_parent() -> None:
+    """End this worker process as soon as the process that started it ends, however it ends.
+
+    A pool worker otherwise outlives a parent killed with SIGKILL (measured: over a minute, finishing
+    the chunks it had queued). ``multiprocessing`` gives every spawned child a sentinel that becomes
+    ready when its parent is gone (the pipe's other end closes with the parent); a daemon thread waits
+    on it and exits the process at once. No polling, any platform, and it does not depend on which
+    thread of the parent started the worker (Linux's ``PR_SET_PDEATHSIG`` would).
+    """
+    import multiprocessing
+    from multiprocessing.connection import wait
+
+    parent = multiprocessing.parent_process()
+    if parent is None or getattr(parent, "sentinel", None) is None:
+        return
+
+    def watch():
+        wait([parent.sentinel])
+        os._exit(1)
+
+    threading.Thread(target=watch, name="bearingkit-exit-with-parent", daemon=True).start()
+
+
 def _init_pool_worker(threads: int | None) -> None:
     """Initializer of a process-pool worker (top-level: picklable under ``spawn``)."""
+    exit_with_parent()
     if threads is not None:
         limit_worker_threads(threads)
 
@@ -236,9 +345,22 @@ class DaskExecutor(InProcessExecutor):
         worker processes' environment; every cluster also gets a worker plugin
         (``SolverThreadsPlugin``) that sets them in running and later workers. None: leave workers as
         they are.
+    dashboard : str or None
+        A LocalCluster started here serves Dask's dashboard only when asked: ``"127.0.0.1:8787"``
+        (or any address you choose). Default None: no dashboard and no HTTP endpoint at all.
 
     Notes
     -----
+    A LocalCluster started here listens on the loopback interface only (127.0.0.1, random ports for
+    the scheduler and workers). Dask's servers start an HTTP server even with
+    ``dashboard_address=None`` (the scheduler then binds the default 8787 and serves its health,
+    info, JSON and proxy routes; each worker serves its own on a random port), so without
+    ``dashboard`` the executor gives those servers no routes (``distributed.scheduler.http.routes``
+    and ``distributed.worker.http.routes`` empty: every request is a 404) and binds them to a random
+    loopback port. The scheduler's comm port has no authentication: any local user can connect to it
+    (Dask's own model; use TLS through ``distributed.Security`` on shared machines, or the process
+    pool, which opens no port).
+
     A LocalCluster started here keeps glibc's default memory trimming in its workers (Dask's
     ``MALLOC_TRIM_THRESHOLD_`` is left out, see :data:`DASK_MALLOC_ENV`). Workers of a cluster started
     elsewhere keep their own settings; remove that variable from their
@@ -254,6 +376,7 @@ class DaskExecutor(InProcessExecutor):
         workers: int | None = None,
         max_in_flight=None,
         solver_threads: int | None = 1,
+        dashboard: str | None = None,
     ):
         env = worker_environment(solver_threads) if solver_threads is not None else {}
         self._own = client is None
@@ -272,13 +395,23 @@ class DaskExecutor(InProcessExecutor):
                     for k, v in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
                     if k not in DASK_MALLOC_ENV
                 }
-                with dask.config.set({"distributed.nanny.pre-spawn-environ": pre_spawn}):
+                config = {"distributed.nanny.pre-spawn-environ": pre_spawn}
+                http = {}
+                if dashboard is None:  # no dashboard, no HTTP routes (see Notes)
+                    config.update(
+                        {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": []}
+                    )
+                    http = {"scheduler_kwargs": {"dashboard": False, "dashboard_address": f"{LOOPBACK}:0"}}
+                with dask.config.set(config):
                     self._cluster = LocalCluster(
                         n_workers=int(workers or 2),
                         threads_per_worker=1,
                         processes=True,
-                        dashboard_address=None,
+                        host=LOOPBACK,
+                        dashboard_address=dashboard,
+                        worker_dashboard_address=None,
                         env=env,  # set in the worker process before it runs any task
+                        **http,
                     )
                 client = Client(self._cluster)
         self.client = client

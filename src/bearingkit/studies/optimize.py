@@ -28,6 +28,8 @@ import numpy as np
 from bearingkit import references
 from bearingkit.errors import InputError
 from bearingkit.studies import evaluators
+from bearingkit.studies.cases import StudyResult, plan_study
+from bearingkit.studies.store import advance, progress_bar
 
 references.add(
     "deb2002",
@@ -163,22 +165,19 @@ def algorithm_for(d):
     return NSGA3(ref_dirs=ref, **kw)
 
 
-def run_optimization(d, executor, store, resume: bool, progress):
+def run_optimization(d, executor, store, resume: bool, progress, plan=None):
     """Run an ``optimize`` study (called by :func:`bearingkit.studies.runner.run_study`)."""
     import pandas as pd
     from pymoo.optimize import minimize
 
-    from bearingkit.studies.cases import StudyResult, _fingerprint, base_values
-    from bearingkit.studies.store import advance, progress_bar
-
     t0 = time.perf_counter()
-    ev = evaluators.get(d.evaluator)
-    base = base_values(d)
+    plan = plan or plan_study(d)
+    ev, base = plan.evaluator, plan.base
     names = [v.name for v in d.variables]
     o = d.optimizer
-    done = store.open(_fingerprint(d), o.generations, d.chunk_size, resume)
+    done = store.open(plan.fingerprint, o.generations, d.chunk_size, resume, study=d.name)
     counts = {"computed": 0, "reused": 0, "generation": 0}
-    fn = functools.partial(evaluators.evaluate_chunk, d.evaluator)
+    fn = functools.partial(evaluators.evaluate_chunk, ev)
     prog, task = progress_bar(o.pop_size * o.generations, d.name, progress)
 
     def evaluate(X):

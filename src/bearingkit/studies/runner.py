@@ -19,16 +19,33 @@ from __future__ import annotations
 import functools
 import time
 
+import numpy as np
+
 from bearingkit.errors import InputError
 from bearingkit.studies import analysis, evaluators
 from bearingkit.studies.cases import (
+    INDEX_COLUMNS,
+    StudyPlan,
     StudyResult,
-    _fingerprint,
+    base_values,
     build_cases,
+    plan_study,
 )
 from bearingkit.studies.definition import StudyDefinition, load_study
 from bearingkit.studies.executors import InProcessExecutor
+from bearingkit.studies.optimize import run_optimization
 from bearingkit.studies.store import MemoryStore, ParquetStore, advance, progress_bar
+
+__all__ = [
+    "INDEX_COLUMNS",
+    "StudyPlan",
+    "StudyResult",
+    "base_values",
+    "build_cases",
+    "design_points",
+    "plan_study",
+    "run_study",
+]
 
 
 def _as_definition(definition) -> StudyDefinition:
@@ -43,7 +60,14 @@ def _as_store(store):
     return store
 
 
-def run_study(definition, executor=None, store=None, resume: bool = False, progress: bool | None = None):
+def run_study(
+    definition,
+    executor=None,
+    store=None,
+    resume: bool = False,
+    progress: bool | None = None,
+    plan: StudyPlan | None = None,
+):
     """Run a study and return a :class:`StudyResult`.
 
     Parameters
@@ -55,31 +79,49 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
         or ``DaskExecutor``; not closed here.
     store : ParquetStore, path or None
         Where finished chunks stream to (a directory path makes a :class:`ParquetStore`); None keeps
-        them in memory.
+        them in memory. A directory is locked for the run (a second writer is refused) unless the
+        caller locked it already, and is removed again if this run created it and failed before
+        finishing a chunk.
     resume : bool
         Keep the chunks already in ``store`` (same study) and compute only the missing ones.
     progress : bool or None
         Show a rich progress bar (None: only on a terminal).
+    plan : StudyPlan or None
+        The study's :func:`~bearingkit.studies.cases.plan_study` when the caller made it already.
     """
     d = _as_definition(definition)
-    executor = executor or InProcessExecutor()
     store = _as_store(store)
     if resume and isinstance(store, MemoryStore):
         raise InputError("resume (True) needs a ParquetStore (an output directory)")
-    if d.design == "optimize":
-        from bearingkit.studies.optimize import run_optimization
+    plan = plan or plan_study(d)  # every check of the inputs, before the store is touched
+    executor = executor or InProcessExecutor()
+    own_lock = isinstance(store, ParquetStore) and not store.locked
+    try:
+        if own_lock:
+            store.lock(d.name)
+        if d.design == "optimize":
+            return run_optimization(d, executor, store, resume, progress, plan)
+        return _run_cases(plan, executor, store, resume, progress)
+    except BaseException:
+        if own_lock:
+            store.discard_if_unused()
+        raise
+    finally:
+        if own_lock:
+            store.close()
 
-        return run_optimization(d, executor, store, resume, progress)
+
+def _run_cases(plan: StudyPlan, executor, store, resume: bool, progress) -> StudyResult:
+    """Evaluate the case table of a non-optimisation study chunk by chunk into ``store``."""
+    d, ev, cases = plan.definition, plan.evaluator, plan.cases
     t0 = time.perf_counter()
-    cases = build_cases(d)
-    ev = evaluators.get(d.evaluator)
     inputs = cases[["case", *[c for c in cases.columns if c in ev.factors]]]
     index = [c for c in INDEX_COLUMNS if c in cases.columns]
     bounds = list(range(0, len(cases), d.chunk_size))
-    done = store.open(_fingerprint(d, cases), len(bounds), d.chunk_size, resume)
+    done = store.open(plan.fingerprint, len(bounds), d.chunk_size, resume, study=d.name)
     todo = [i for i in range(len(bounds)) if i not in done]
     chunks = [inputs.iloc[bounds[i] : bounds[i] + d.chunk_size].reset_index(drop=True) for i in todo]
-    fn = functools.partial(evaluators.evaluate_chunk, d.evaluator)
+    fn = functools.partial(evaluators.evaluate_chunk, ev)
     prog, task = progress_bar(len(cases), d.name, progress)
     with prog:
         advance(prog, task, sum(min(d.chunk_size, len(cases) - bounds[i]) for i in done))
@@ -90,19 +132,23 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
             store.write(todo[pos], out)
             advance(prog, task, len(out))
     outputs = store.read()
+    got = np.sort(outputs["case"].to_numpy()) if len(outputs) else np.array([], int)
+    if not np.array_equal(got, cases["case"].to_numpy()):
+        raise RuntimeError(
+            f"study {d.name!r}: the store holds {len(outputs)} result rows for {len(cases)} cases "
+            "(a chunk file is missing or doubled); run again without --resume"
+        )
     results = cases.merge(outputs, on=["case", *index], how="left", validate="one_to_one")
-    result = StudyResult(
-        d,
-        cases,
-        results,
-        stats={
-            "chunks": len(bounds),
-            "computed": len(todo),
-            "reused": len(done),
-            "seconds": time.perf_counter() - t0,
-            "executor": getattr(executor, "name", type(executor).__name__),
-        },
-    )
+    stats = {
+        "chunks": len(bounds),
+        "computed": len(todo),
+        "reused": len(done),
+        "seconds": time.perf_counter() - t0,
+        "executor": getattr(executor, "name", type(executor).__name__),
+    }
+    if getattr(store, "discarded", 0):
+        stats["discarded"] = store.discarded
+    result = StudyResult(d, cases, results, stats=stats)
     if d.monte_carlo is not None:
         _levels_by_samples_analysis(result, outputs.columns.difference(["case", *index], sort=False))
     elif d.response and d.design in ("orthogonal", "factorial"):
@@ -111,10 +157,6 @@ def run_study(definition, executor=None, store=None, resume: bool = False, progr
         labels = {f.name: f.label or f.name for f in d.factors}
         result.analysis["range"] = analysis.range_analysis(results, names, d.response, labels)
     return result
-
-
-#: Index columns of a levels × samples study: design point and draw (also kept in the chunk files).
-INDEX_COLUMNS = ("point", "draw")
 
 
 def design_points(cases, factors):

@@ -4,14 +4,25 @@ SI units: the store keeps whatever the evaluator returned (units in the column n
 
 Layout of a store directory::
 
-    manifest.json            study fingerprint, number of chunks, chunk size
-    chunks/chunk-000017.parquet   results of chunk 17 (case ids + outputs)
+    .bearingkit.lock         the writer's lock (see bearingkit.studies.lock)
+    manifest.json            study name, fingerprint, number of chunks, chunk size
+    chunks/chunk-000017.parquet   results of chunk 17 (case ids + outputs), stamped with the study
 
 A chunk is written to ``chunks/.chunk-000017.parquet.<pid>.tmp``, flushed to disk (fsync) and renamed
 onto its final name (``os.replace``: atomic on POSIX). A process killed at any instant therefore
 leaves every chunk either complete or absent (stray ``*.tmp`` files are removed on open), and
-``resume=True`` recomputes exactly the chunks whose file is absent. The manifest carries a
-fingerprint of the study (definition + cases): resuming into a store of another study is an error.
+``resume=True`` recomputes exactly the chunks whose file is absent.
+
+Integrity (issue 24):
+
+- one writer: :meth:`ParquetStore.lock` takes the directory's lock before anything is written, and a
+  second run on the same directory is refused with one line naming the holder;
+- every chunk file carries, in its Parquet metadata, the study's fingerprint (definition, evaluator,
+  code version, cases: :func:`bearingkit.studies.cases.fingerprint`) and its chunk number; on resume a
+  chunk file of another study, of another chunk or unreadable is discarded and recomputed, never
+  reused; resuming into a store whose manifest names another study is an error;
+- the directory holds only the study's own files: a folder with other files is refused before
+  anything is written (a study writes and deletes only its own files inside its output folder).
 """
 
 from __future__ import annotations
@@ -19,24 +30,26 @@ from __future__ import annotations
 import json
 import os
 import re
+import warnings
 from pathlib import Path
 
 from bearingkit.errors import InputError
+from bearingkit.studies.lock import LOCK_FILE, StoreLock, describe
+from bearingkit.studies.outputs import CURRENT, OUTPUT_FILES, OUTPUTS_DIR, fsync_dir
 
 MANIFEST = "manifest.json"
 CHUNK_DIR = "chunks"
 _CHUNK_RE = re.compile(r"^chunk-(\d{6})\.parquet$")
+#: Key of the study stamp in a chunk file's Parquet metadata.
+STAMP_KEY = b"bearingkit.study"
+#: Temporary names of this module and of :mod:`bearingkit.studies.outputs` (``.<name>.<pid>.tmp``).
+_TMP_RE = re.compile(r"^\..+\.\d+\.tmp$")
+#: Entries a study's output directory may hold.
+OWN_ENTRIES = frozenset({LOCK_FILE, MANIFEST, CHUNK_DIR, OUTPUTS_DIR, CURRENT, *OUTPUT_FILES})
 
 
 def _fsync_dir(path: Path) -> None:
-    try:
-        fd = os.open(path, os.O_RDONLY)
-    except OSError:  # pragma: no cover - platforms without directory fds
-        return
-    try:
-        os.fsync(fd)
-    finally:
-        os.close(fd)
+    fsync_dir(path)
 
 
 def write_atomic(path: Path, data: bytes) -> None:
@@ -51,66 +64,210 @@ def write_atomic(path: Path, data: bytes) -> None:
     _fsync_dir(path.parent)
 
 
+def _read_manifest(path: Path) -> dict:
+    """The manifest of a store, {} when absent or unreadable."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def foreign_entries(directory: Path) -> list[str]:
+    """Names in ``directory`` that a study does not write (empty for a new or a study folder)."""
+    if not directory.is_dir():
+        return []
+    return sorted(
+        p.name for p in directory.iterdir() if p.name not in OWN_ENTRIES and not _TMP_RE.match(p.name)
+    )
+
+
 class ParquetStore:
     """Chunked Parquet results of one study in ``directory``.
 
     Parameters
     ----------
     directory : path
-        Created if missing.
+        Created if missing (by :meth:`lock`); an existing one must be empty or a study's folder.
     """
 
     def __init__(self, directory):
         self.directory = Path(directory)
         self.chunk_dir = self.directory / CHUNK_DIR
+        self.created = False
+        self.discarded = 0
+        self._lock: StoreLock | None = None
+        self._fingerprint: str | None = None
+        self._notify = warnings.warn
 
     # -- lifecycle -----------------------------------------------------------------------------
-    def open(self, fingerprint: str, n_chunks: int, chunk_size: int, resume: bool) -> set[int]:
+    @property
+    def locked(self) -> bool:
+        return self._lock is not None and self._lock.held
+
+    def lock(self, study: str, notify=None) -> None:
+        """Check the directory, create it if missing, and take its lock for ``study``.
+
+        ``notify(message)`` is told when a stale lock (of a run that was killed) is recovered;
+        default :func:`warnings.warn`.
+        """
+        if self.locked:
+            return
+        self._notify = notify or warnings.warn
+        d = self.directory
+        if d.exists() and not d.is_dir():
+            raise InputError(f"{d} is a file; expected a folder for the study's outputs (--out)")
+        foreign = foreign_entries(d)
+        if foreign:
+            shown = ", ".join(foreign[:4]) + (", ..." if len(foreign) > 4 else "")
+            raise InputError(
+                f"{d} holds files that are not a study's ({shown}); choose an empty or new folder for "
+                "--out (a study writes and deletes only its own files)"
+            )
+        for sub in (CHUNK_DIR, OUTPUTS_DIR):
+            if (d / sub).is_symlink():
+                raise InputError(f"{d / sub} is a symbolic link; a study writes only inside its own folder")
+        if not d.exists():
+            d.mkdir(parents=True)
+            self.created = True
+        self._lock = StoreLock(d, study)
+        stale = self._lock.acquire()
+        if stale is not None:
+            self._notify(
+                f"{d}: recovered the stale lock of {describe(stale)}: that run ended without releasing it"
+            )
+
+    def close(self) -> None:
+        """Release the lock (the store can be locked again)."""
+        if self._lock is not None:
+            self._lock.release()
+            self._lock = None
+
+    def discard_if_unused(self) -> None:
+        """Remove the directory again when this store created it and no chunk was written.
+
+        What a run that failed before computing anything calls: it leaves no output folder behind.
+        Removes only the store's own entries; a folder someone else wrote into is kept.
+        """
+        self.close()
+        d = self.directory
+        if not self.created or not d.is_dir() or self.finished_files():
+            return
+        for name in (LOCK_FILE, MANIFEST):
+            (d / name).unlink(missing_ok=True)
+        for sub in (CHUNK_DIR, OUTPUTS_DIR):
+            if (d / sub).is_dir() and not any((d / sub).iterdir()):
+                (d / sub).rmdir()
+        if not any(d.iterdir()):
+            d.rmdir()
+        self.created = False
+
+    def open(
+        self, fingerprint: str, n_chunks: int, chunk_size: int, resume: bool, study: str = "?"
+    ) -> set[int]:
         """Prepare the store for a run; returns the ids of the chunks already finished.
 
         ``resume=False`` starts afresh (previous chunks of this directory are deleted);
-        ``resume=True`` keeps them, after checking that they belong to the same study.
+        ``resume=True`` keeps those of the same study (same fingerprint, checked per chunk file).
+        Takes the lock for ``study`` if the caller did not.
         """
-        self.chunk_dir.mkdir(parents=True, exist_ok=True)
+        self.lock(study)
+        self.chunk_dir.mkdir(exist_ok=True)
         for tmp in self.chunk_dir.glob(".*.tmp"):
             tmp.unlink(missing_ok=True)
-        manifest = {"fingerprint": fingerprint, "n_chunks": int(n_chunks), "chunk_size": int(chunk_size)}
+        self._fingerprint = fingerprint
+        self.discarded = 0
+        manifest = {
+            "study": study,
+            "fingerprint": fingerprint,
+            "n_chunks": int(n_chunks),
+            "chunk_size": int(chunk_size),
+        }
         mpath = self.directory / MANIFEST
         if resume and mpath.exists():
-            old = json.loads(mpath.read_text(encoding="utf-8"))
+            old = _read_manifest(mpath)
             if old.get("fingerprint") != fingerprint:
+                other = old.get("study", "?")
                 raise InputError(
-                    f"{self.directory}: resume (True) but the store holds another study "
-                    "(definition or cases changed); use another --out or run without --resume"
+                    f"{self.directory}: resume (True) but the store holds another study ({other!r}; "
+                    "definition, evaluator or cases changed); use another --out or run without --resume"
                 )
-        else:
-            for f in self.chunk_dir.glob("chunk-*.parquet"):
-                f.unlink()
-            write_atomic(mpath, json.dumps(manifest, indent=1).encode())
-        return self.finished()
+            return self._valid_chunks(n_chunks)
+        old = _read_manifest(mpath)
+        if old.get("fingerprint") not in (None, fingerprint) and self.finished_files():
+            self._notify(f"{self.directory}: replacing the chunks of study {old.get('study', '?')!r}")
+        for f in self.finished_files():
+            f.unlink()
+        write_atomic(mpath, json.dumps(manifest, indent=1).encode())
+        return set()
+
+    # -- chunk files ---------------------------------------------------------------------------
+    def finished_files(self) -> list[Path]:
+        if not self.chunk_dir.is_dir():
+            return []
+        return [p for p in self.chunk_dir.iterdir() if _CHUNK_RE.match(p.name)]
 
     def finished(self) -> set[int]:
         """Ids of the chunks whose results are on disk."""
-        if not self.chunk_dir.exists():
-            return set()
-        return {int(m.group(1)) for p in self.chunk_dir.iterdir() if (m := _CHUNK_RE.match(p.name))}
+        return {int(_CHUNK_RE.match(p.name).group(1)) for p in self.finished_files()}
+
+    def _stamp(self, path: Path) -> dict | None:
+        import pyarrow.parquet as pq
+
+        try:
+            meta = pq.read_schema(path).metadata or {}
+            stamp = json.loads(meta[STAMP_KEY].decode())
+        except Exception:  # unreadable, truncated or unstamped: not a chunk this study can trust
+            return None
+        return stamp if isinstance(stamp, dict) else None
+
+    def _valid_chunks(self, n_chunks: int) -> set[int]:
+        """Chunks of this study on disk; files of another study, chunk or damaged are deleted."""
+        ok = set()
+        for path in self.finished_files():
+            chunk = int(_CHUNK_RE.match(path.name).group(1))
+            stamp = self._stamp(path)
+            if (
+                stamp is not None
+                and stamp.get("fingerprint") == self._fingerprint
+                and stamp.get("chunk") == chunk
+                and chunk < n_chunks
+            ):
+                ok.add(chunk)
+            else:
+                path.unlink()
+                self.discarded += 1
+        return ok
 
     def _path(self, chunk: int) -> Path:
         return self.chunk_dir / f"chunk-{int(chunk):06d}.parquet"
 
     # -- data ----------------------------------------------------------------------------------
     def write(self, chunk: int, frame) -> None:
-        """Store the results of one finished chunk (atomic)."""
+        """Store the results of one finished chunk (atomic), stamped with the study's fingerprint."""
         import io
 
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        if not self.locked or self._fingerprint is None:
+            raise RuntimeError("ParquetStore.write before open(): the store is not locked")
+        table = pa.Table.from_pandas(frame, preserve_index=False)
+        stamp = json.dumps({"fingerprint": self._fingerprint, "chunk": int(chunk), "rows": len(frame)})
+        table = table.replace_schema_metadata({**(table.schema.metadata or {}), STAMP_KEY: stamp.encode()})
         buf = io.BytesIO()
-        frame.to_parquet(buf, index=False)
+        pq.write_table(table, buf)
         write_atomic(self._path(chunk), buf.getvalue())
 
     def read_chunk(self, chunk: int):
-        import pandas as pd
+        import pyarrow.parquet as pq
 
-        return pd.read_parquet(self._path(chunk))
+        path = self._path(chunk)
+        table = pq.read_table(path)
+        stamp = json.loads((table.schema.metadata or {}).get(STAMP_KEY, b"{}").decode())
+        if stamp.get("fingerprint") != self._fingerprint or stamp.get("chunk") != int(chunk):
+            raise InputError(f"{path} is not chunk {chunk} of this study (the store changed during the run)")
+        return table.to_pandas()
 
     def read(self):
         """All finished chunks as one DataFrame, in chunk order."""
@@ -128,9 +285,14 @@ class MemoryStore:
     def __init__(self):
         self._chunks: dict[int, object] = {}
 
-    def open(self, fingerprint: str, n_chunks: int, chunk_size: int, resume: bool) -> set[int]:
+    def open(
+        self, fingerprint: str, n_chunks: int, chunk_size: int, resume: bool, study: str = "?"
+    ) -> set[int]:
         self._chunks.clear()
         return set()
+
+    def close(self) -> None:
+        pass
 
     def finished(self) -> set[int]:
         return set(self._chunks)
