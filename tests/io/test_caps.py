@@ -86,3 +86,17 @@ def test_report_refuses_many_cases_before_writing(tmp_path):
         "split the file"
     )
     assert not out.exists()
+
+
+def test_shaft_file_cases():
+    """The shaft solver takes ~0.1-0.2 s per case: at most MAX_SHAFT_CASES per file, counted first."""
+    from bearingkit.systems.input import MAX_SHAFT_CASES, shaft_from_dict
+
+    data = tomllib.loads((EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8"))
+    data["load_cases"] = [{**data["load_cases"][0], "name": f"c{i}"} for i in range(MAX_SHAFT_CASES + 1)]
+    with pytest.raises(InputError) as err:
+        shaft_from_dict(data, "shaft.toml", base=EXAMPLES)
+    assert (
+        str(err.value)
+        == "shaft.toml: load_cases (101 cases) must be at most 100 per shaft file; split the file"
+    )

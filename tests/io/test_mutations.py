@@ -344,11 +344,10 @@ class Mutator:
             cases = data.get("load_cases")
             if isinstance(cases, list) and cases:
                 n = rng.choice((101, 1001, 5000))
-                data["load_cases"] = (
-                    [{**cases[0], "name": f"c{i}"} for i in range(n)]
-                    if isinstance(cases[0], dict)
-                    else cases * n
-                )
+                # copies of the first case without its huge arrays (5,000 × 20,000 items is 200 MB of text)
+                first = cases[0] if isinstance(cases[0], dict) else {"F_x": "1 kN"}
+                first = {k: v for k, v in first.items() if not (isinstance(v, list) and len(v) > 50)}
+                data["load_cases"] = [{**first, "name": f"c{i}"} for i in range(n)]
                 where = f"load_cases × {n}"
         return f"{kind} {where}"
 
