@@ -253,3 +253,17 @@ def test_linear_bearing_has_reactions_but_no_analysis():
     np.testing.assert_allclose(
         np.ma.getdata(sa.rating.life), np.ma.getdata(sa.bearings["A"].rating.life), rtol=1e-12
     )
+
+
+def test_report_refuses_more_cases_than_the_report_cap(tmp_path):
+    from bearingkit.io.loader import MAX_REPORT_CASES
+
+    raw = tomllib.loads(COUNTERSHAFT.read_text())
+    one = raw["load_cases"][0]
+    raw["load_cases"] = [{**one, "name": f"c{i}"} for i in range(MAX_REPORT_CASES + 1)]
+    analysis = ShaftAnalysis(shaft_from_dict(raw, "many.toml", base=EXAMPLES))
+    with pytest.raises(InputError) as info:
+        analysis.report(tmp_path / "many.html")
+    assert str(info.value).startswith(f"many.toml: load_cases ({MAX_REPORT_CASES + 1} cases) must be at most")
+    assert "result" not in analysis.__dict__  # refused before anything was solved
+    assert not (tmp_path / "many.html").exists()

@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from bearingkit.errors import InputError
 from bearingkit.report import write_report
 from bearingkit.report.html import _CSS, _case_html, _references_html
 from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _warning_list, fmt
@@ -378,7 +379,13 @@ def build_shaft_report(analysis, *, title=None, notes=()) -> str:
         Extra run notes shown before the analysis's own.
     """
     from bearingkit import __version__
+    from bearingkit.io.loader import MAX_REPORT_CASES
 
+    if analysis.n_cases > MAX_REPORT_CASES:  # before anything is computed: figures grow with the cases
+        raise InputError(
+            f"{analysis.input.source}: load_cases ({analysis.n_cases} cases) must be at most "
+            f"{MAX_REPORT_CASES} for a report; split the file (the JSON output has no such limit)"
+        )
     data = analysis.to_dict()
     title = title or f"bearingkit shaft report — {data['shaft']}"
     n = analysis.n_cases
