@@ -31,7 +31,6 @@ import numpy as np
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import ModelInput, analyze
-from bearingkit.pipeline.inputs import _ModelHeader, _ModelSolver, _ModelSpec
 from bearingkit.systems.life import combine_ratings
 
 __all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis", "inputs_dict"]
@@ -107,17 +106,19 @@ class SeatInput(ModelInput):
         return OperatingSections(operating=OperatingSpec(speed_effects=False), lubrication=lub)
 
     @property
-    def spec(self) -> _ModelSpec:
+    def spec(self):
+        """ModelInput's header and (empty) free DOFs, with the bearing file's source and geometry."""
+        base = super().spec
         b = self.bearing_input
-        head = b.spec.bearing if b is not None else None
-        header = _ModelHeader(
-            self.bearing_type,
-            source=getattr(head, "source", None),
-            designation=getattr(head, "designation", None),
-            name=self.model.name,
+        if b is None:
+            return base
+        header = dataclasses.replace(
+            base.bearing,
+            type=self.bearing_type,
+            source=b.spec.bearing.source,
+            designation=getattr(b.spec.bearing, "designation", None),
         )
-        geometry = dict(b.spec.geometry) if b is not None else {}
-        return _ModelSpec(header, _ModelSolver(()), geometry)
+        return dataclasses.replace(base, bearing=header, geometry=dict(b.spec.geometry))
 
     @property
     def geometry(self):
