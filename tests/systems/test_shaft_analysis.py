@@ -267,3 +267,18 @@ def test_report_refuses_more_cases_than_the_report_cap(tmp_path):
     assert str(info.value).startswith(f"many.toml: load_cases ({MAX_REPORT_CASES + 1} cases) must be at most")
     assert "result" not in analysis.__dict__  # refused before anything was solved
     assert not (tmp_path / "many.html").exists()
+
+
+def test_report_tells_a_shaft_file_by_the_bounded_reader(tmp_path):
+    """`bearingkit report` looks for [shaft] through the bounded reader: a deeply nested bearing file
+    still gets the reader's one-line message (a plain tomllib parse would recurse too deep)."""
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    deep = tmp_path / "deep.toml"
+    deep.write_text("[geometry]\nouter_diameter = " + "[" * 5000 + "]" * 5000 + "\n")
+    out = CliRunner().invoke(app, ["report", str(deep), "-o", str(tmp_path / "r.html")])
+    assert out.exit_code == 2 and (out.exception is None or isinstance(out.exception, SystemExit))
+    assert out.stderr.count("\n") == 1 and out.stderr.startswith(f"error: {deep}: ")
+    assert "nested" in out.stderr

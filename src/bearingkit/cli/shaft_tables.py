@@ -6,7 +6,6 @@ mrad, N, MPa, h, W. Faces only: nothing is computed here.
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 
 from rich.markup import escape
@@ -17,13 +16,17 @@ from bearingkit.cli.tables import _num
 
 
 def is_shaft_file(path) -> bool:
-    """True for a readable TOML file with a ``[shaft]`` table (anything else goes the bearing way)."""
+    """True for a readable TOML file with a ``[shaft]`` table (anything else goes the bearing way, whose
+    reader reports what is wrong with it). Read through the bounded reader (size, nesting)."""
+    from bearingkit.errors import InputError
+    from bearingkit.io.reading import load_toml
+
     path = Path(path)
     if path.suffix.lower() != ".toml" or not path.is_file():
         return False
     try:
-        return isinstance(tomllib.loads(path.read_text(encoding="utf-8")).get("shaft"), dict)
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return isinstance(load_toml(path).get("shaft"), dict)
+    except InputError:
         return False
 
 
