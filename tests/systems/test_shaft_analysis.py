@@ -282,3 +282,16 @@ def test_report_tells_a_shaft_file_by_the_bounded_reader(tmp_path):
     assert out.exit_code == 2 and (out.exception is None or isinstance(out.exception, SystemExit))
     assert out.stderr.count("\n") == 1 and out.stderr.startswith(f"error: {deep}: ")
     assert "nested" in out.stderr
+
+
+def test_a_bearing_without_rating_leaves_the_system_without_life():
+    """A bearing whose rating failed (the Analysis says why in its notes) masks the system life: the
+    system is not the longer-lived rest."""
+    sa = ShaftAnalysis(load_shaft_file(COUNTERSHAFT))
+    sa.bearings["B"].__dict__["_rating"] = (None, "ratings not computed: stand-in failure")
+    assert np.ma.getmaskarray(sa.rating.life).all() and np.ma.getmaskarray(sa.rating.modified_life).all()
+    assert all(any("no system life: bearing(s) ['B']" in w for w in case) for case in sa.warnings)
+    assert "B: ratings not computed: stand-in failure" in sa.notes
+    d = sa.to_dict()
+    assert d["cases"][0]["rating"]["system"]["L10r_rev"] is None
+    assert d["cases"][0]["bearings"][1]["summary"]["L10h_h"] is None

@@ -10,7 +10,10 @@ Palmgren 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8):
 
 computed by :func:`bearingkit.analysis.rating.system_life` over the rows of all bearings, which for
 rows of one slope per bearing is exactly this formula over the bearings and solves the Weibull
-equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed.
+equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed. :func:`combine_ratings` does
+the combination for bearings already rated (the shaft's pipeline analyses,
+:mod:`bearingkit.systems.shaft_analysis`), also for the modified lives L_nm (at 90 % reliability, then
+times a1: the practice of system calculations, an assumption, as ISO 281 defines L_nm per bearing).
 """
 
 from __future__ import annotations

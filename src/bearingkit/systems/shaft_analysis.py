@@ -244,7 +244,14 @@ class ShaftAnalysis:
         speed = self.input.loads.speed
         if speed is not None and not np.all(np.asarray(speed) != 0):
             speed = None  # a standstill case has no life in hours; revolutions are still given
-        return combine_ratings(ratings, self.result.converged, None if speed is None else np.abs(speed))
+        out = combine_ratings(ratings, self.result.converged, None if speed is None else np.abs(speed))
+        unrated = [n for n in self.bearings if n not in ratings]
+        if unrated:  # a system without one of its bearings' lives has no life (not a longer one)
+            out.life = np.ma.masked_all(self.n_cases)
+            out.modified_life = np.ma.masked_all(self.n_cases)
+            for notes in out.warnings:
+                notes.append(f"system: no system life: bearing(s) {unrated} could not be rated (see notes)")
+        return out
 
     @functools.cached_property
     def warnings(self) -> list[list[str]]:
