@@ -19,7 +19,7 @@ from rich.console import Console
 from rich.table import Table
 
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
-from bearingkit.cli.tables import case_table, friction_table, rating_table, warnings_text
+from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
@@ -285,7 +285,14 @@ def rating(
             console.print(rating_table(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
-    _fail_unconverged(file, a)
+        if "duty_cycle" in data:
+            cycle = data["duty_cycle"]
+            console.print(duty_cycle_table(cycle))
+            for b in cycle["bins"]:
+                console.print(warnings_text([f"{b['bin']}: {w}" for w in b["warnings"]]))
+            console.print(warnings_text([], cycle["notes"]))
+    if a.n_cases:
+        _fail_unconverged(file, a)
 
 
 #: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).

@@ -24,7 +24,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.io import schema
+from bearingkit.io import schema, schema_cycle
 
 #: Inner-ring DOF names, in the solver's order.
 DOF_NAMES = schema.DOF_CHOICES
@@ -256,6 +256,10 @@ class BearingInput:
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
     options : bearingkit.analysis.quasistatic.SolverOptions
+    duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
+        The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
+    tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
+        The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     """
 
     source: str
@@ -267,6 +271,8 @@ class BearingInput:
     cases: tuple
     free: np.ndarray
     options: object
+    duty_cycle: object = None
+    tolerances: tuple = ()
 
     @property
     def bearing_type(self) -> str:
@@ -367,6 +373,10 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
+    duty = schema_cycle.duty_cycle_of(source, spec.duty_cycle, _load_case, _one_line)
+    if duty is not None:
+        _check_fixed_loads(source, duty.bins, free)
+        _check_single_tapered(source, model, duty.bins, free)
     return BearingInput(
         source=source,
         spec=spec,
@@ -377,6 +387,8 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         cases=cases,
         free=free,
         options=SolverOptions(**opts),
+        duty_cycle=duty,
+        tolerances=schema_cycle.tolerances_of(source, spec.tolerances, _one_line),
     )
 
 

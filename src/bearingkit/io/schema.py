@@ -14,6 +14,8 @@ File layout (see docs/input-format.md)::
     [lubricant]    name = "ISO_VG100"                     (optional)
     [[load_cases]] name, F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature
     [solver]       free, rtol, max_iterations             (optional)
+    [[duty_cycle]] load-case fields + time_fraction | revolution_fraction   (optional, schema_cycle)
+    [[tolerances]] path, distribution, mean/std/low/high | clearance_class (optional, schema_cycle)
 
 The geometry table depends on ``bearing.type``; :data:`GEOMETRY_MODELS` maps each type to its
 model, and :func:`json_schema` writes the dependency as JSON Schema ``if``/``then`` clauses.
@@ -263,6 +265,12 @@ class BearingFile(_Strict):
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(default_factory=list)
     solver: SolverSpec = Field(default_factory=SolverSpec)
+    duty_cycle: list[dict[str, Any]] = Field(
+        default_factory=list, description="Bins of a load spectrum (io.schema_cycle.DutyBinSpec)."
+    )
+    tolerances: list[dict[str, Any]] = Field(
+        default_factory=list, description="Scatter of input values (io.schema_cycle.ToleranceSpec)."
+    )
 
     @field_validator("load_cases")
     @classmethod
@@ -677,6 +685,7 @@ def json_schema() -> dict:
             }
         )
     defs["BearingHeader"]["properties"]["type"]["enum"] = list(GEOMETRY_MODELS)
+
     schema["allOf"] = branches
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema["title"] = "bearingkit input file"

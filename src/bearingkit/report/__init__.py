@@ -91,6 +91,7 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         title=title,
         notes=[*notes, describe_operating_point(analysis), *analysis.notes],
         warnings=analysis.warnings,
+        duty_cycle=None if analysis.duty_cycle is None else analysis.duty_cycle.to_dict(),
     )
     return write_report(path, html)
 
