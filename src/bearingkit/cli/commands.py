@@ -359,7 +359,13 @@ def run_flagship(
 @app.command()
 @one_line_errors
 def study(
-    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/."),
+    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/; or a bearing file."),
+    list_outputs: bool = typer.Option(
+        False, "--list-outputs", help="List the outputs of FILE's bearing (generic evaluator) with units."
+    ),
+    list_factors: bool = typer.Option(
+        False, "--list-factors", help="List the factor paths of FILE's bearing with units and values."
+    ),
     scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
     workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
     resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
@@ -369,7 +375,16 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
-    from bearingkit.studies.__main__ import run_cli
+    from bearingkit.studies.__main__ import list_factors as factors_of
+    from bearingkit.studies.__main__ import list_outputs as outputs_of
+    from bearingkit.studies.__main__ import print_table, run_cli
+
+    if list_outputs or list_factors:
+        if list_outputs:
+            print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
+        if list_factors:
+            print_table(factors_of(file), ("path", "unit", "kind", "value in the file (SI)"), echo=typer.echo)
+        return
 
     run_cli(
         file,

@@ -100,6 +100,71 @@ def run_cli(
     return res
 
 
+def _bearing_of(file) -> str:
+    """The bearing a ``--list-*`` request is about: FILE itself, or the ``bearing`` of a study FILE."""
+    import tomllib
+
+    from bearingkit.studies.generic import is_designation
+
+    text = str(file)
+    if is_designation(text):
+        return text
+    path = Path(text)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read the file ({exc.strerror or exc})") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    study = data.get("study")
+    if not isinstance(study, dict):
+        return str(path.resolve())
+    bearing = study.get("bearing")
+    if not isinstance(bearing, str):
+        raise InputError(f"{path}: study.bearing: missing; --list-outputs needs a bearing file or designation")
+    if is_designation(bearing, path.parent):
+        return bearing
+    return str((path.parent / bearing).resolve())
+
+
+def list_outputs(file) -> list[tuple[str, str, str]]:
+    """(name, SI unit, description) of every output the generic evaluator offers for FILE.
+
+    FILE is a bearing file, a designation, or a study file (its ``bearing`` is used).
+    """
+    from bearingkit.io.loader import from_dict
+    from bearingkit.studies import quantities
+    from bearingkit.studies.generic import load_bearing
+
+    source = _bearing_of(file)
+    bearing = from_dict(load_bearing(source)[0], source)
+    return [(q.name, q.unit, q.description) for q in quantities.catalogue(bearing).values()]
+
+
+def list_factors(file) -> list[tuple[str, str, str, str]]:
+    """(path, SI unit, kind, nominal value) of every factor path of FILE (as :func:`list_outputs`)."""
+    from bearingkit.io.loader import from_dict
+    from bearingkit.studies.generic import DEFAULT_CASE, load_bearing
+    from bearingkit.studies.generic import _paths as paths_of
+
+    source = _bearing_of(file)
+    bearing = from_dict(load_bearing(source)[0], source)
+    del DEFAULT_CASE
+    out = []
+    for p in paths_of(bearing).values():
+        nominal = "" if p.nominal is None else f"{p.nominal!r}"
+        kind = p.kind + (f" ({'|'.join(p.choices)})" if p.choices else "")
+        out.append((p.path, p.unit, kind, nominal))
+    return out
+
+
+def print_table(rows, head, echo=print) -> None:
+    """Rows of text as aligned columns."""
+    widths = [max(len(str(r[i])) for r in [head, *rows]) for i in range(len(head))]
+    for r in [head, *rows]:
+        echo("  ".join(str(c).ljust(w) for c, w in zip(r, widths, strict=True)).rstrip())
+
+
 def _writers(res, fingerprint: str, echo) -> dict:
     """Output name → function writing it (summary.json last: it lists the others with their sizes)."""
     from bearingkit.studies import analysis
@@ -153,6 +218,8 @@ def _writers(res, fingerprint: str, echo) -> dict:
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m bearingkit.studies", description="Run a design study.")
     p.add_argument("file")
+    p.add_argument("--list-outputs", action="store_true", help="list the outputs of FILE's bearing and exit")
+    p.add_argument("--list-factors", action="store_true", help="list the factor paths of FILE's bearing and exit")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address, e.g. tcp://host:8786")
     p.add_argument("--workers", type=int, default=None, help="local worker processes")
     p.add_argument("--resume", action="store_true", help="continue a killed run in --out")
@@ -167,6 +234,12 @@ def main(argv=None) -> int:
     )
     a = p.parse_args(argv)
     try:
+        if a.list_outputs or a.list_factors:
+            if a.list_outputs:
+                print_table(list_outputs(a.file), ("output", "unit", "meaning"))
+            if a.list_factors:
+                print_table(list_factors(a.file), ("path", "unit", "kind", "value in the file (SI)"))
+            return 0
         run_cli(
             a.file,
             a.scheduler,

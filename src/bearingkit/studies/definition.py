@@ -116,6 +116,7 @@ class FactorDef(_Strict):
     low: float | None = None
     high: float | None = None
     deviation: bool = False
+    clearance_class: str | None = None
 
 
 class MonteCarloDef(_Strict):
@@ -167,6 +168,9 @@ class StudyDefinition(_Strict):
     evaluator: str
     array: str | None = None
     bearing: str | None = None
+    load_case: str | None = None
+    tolerances: bool = False
+    quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     response: str | None = None
     samples: int | None = Field(None, ge=1)
     sampler: Literal["random", "lhs", "sobol"] = "random"
@@ -268,7 +272,6 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     Every malformed value gives one line naming the file, the field, the value and what was expected;
     nothing else escapes (a study file may come from someone else).
     """
-    from bearingkit.studies import evaluators
 
     if not isinstance(data, dict) or not isinstance(data.get("study"), dict):
         raise InputError(f"{source}: a study file needs a [study] table")
@@ -290,22 +293,46 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         raise InputError(
             f"{source}: study.name ({_short(name)}) must be {NAME_RULE}; it names the output folder"
         )
+    bearing = head.get("bearing")
+    if bearing is not None and not isinstance(bearing, str):
+        raise InputError(
+            f"{source}: study.bearing ({_short(bearing)}) must be a bearing file or a designation"
+        )
+    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
+        from bearingkit.studies.generic import is_designation
+
+        if not is_designation(bearing, base_dir):
+            bearing = str((Path(base_dir) / bearing).resolve())
+    head["bearing"] = bearing
     ev_name = head.get("evaluator")
+    if ev_name is None and bearing is not None:
+        from bearingkit.studies.generic import GENERIC
+
+        ev_name = head["evaluator"] = GENERIC  # a study that names a bearing runs on its input
     if not isinstance(ev_name, str):
-        raise InputError(f"{source}: study.evaluator ({_short(ev_name)}) must name an evaluator")
+        raise InputError(
+            f"{source}: study.evaluator ({_short(ev_name)}) must name an evaluator (or give study.bearing, "
+            "a bearing file or designation, for the generic evaluator)"
+        )
     try:
-        ev = evaluators.get(ev_name)
+        ev = _evaluator(ev_name, bearing, head, data, source)
     except InputError as exc:
-        raise InputError(f"{source}: study.{exc}") from None
+        text = str(exc)
+        raise InputError(text if text.startswith(source) else f"{source}: study.{text}") from None
 
     def factor(fname, where):
         if not isinstance(fname, str) or fname not in ev.factors:
-            raise InputError(f"{source}: {where} ({_short(fname)}) is not a factor of evaluator {ev.name!r}")
+            near = ""
+            if isinstance(fname, str):
+                from bearingkit.studies.paths import nearest
+
+                near = f"; nearest: {', '.join(nearest(fname, ev.factors))}"
+            raise InputError(f"{source}: {where} ({_short(fname)}) is not {ev.noun}{near}")
         return ev.factors[fname]
 
     fixed = {
         k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}")
-        for k, v in _table(data.get("fixed", {}), f"{source}: fixed").items()
+        for k, v in _flatten(_table(data.get("fixed", {}), f"{source}: fixed"))
     }
 
     def factor_list(items, where):
@@ -317,7 +344,14 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             if "levels" in f:
                 if not isinstance(f["levels"], list):
                     raise InputError(f"{w}.levels ({_short(f['levels'])}) must be an array of values")
+                if not f["levels"]:
+                    raise InputError(f"{w}.levels ([]) must list at least one value")
                 f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
+            if f.get("clearance_class") is not None:
+                from bearingkit.studies.generic import clearance_class_range
+
+                low, high = clearance_class_range(ev, spec.name, f["clearance_class"], w)
+                f.update(distribution="uniform", low=low, high=high)
             for key in ("base", "mean", "std", "low", "high"):
                 if key in f:
                     f[key] = _si(f[key], spec, f"{w}.{key}")
@@ -332,6 +366,20 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             **monte_carlo,
             "factors": factor_list(monte_carlo.get("factors", []), "monte_carlo.factors"),
         }
+    if head.get("tolerances"):  # the bearing file's [[tolerances]] join the sampled factors
+        from bearingkit.studies.generic import tolerance_factors
+
+        design = {f["name"] for f in factors}
+        extra = factor_list(tolerance_factors(ev, design, source), "tolerances")
+        if monte_carlo is not None:
+            monte_carlo["factors"] = [*monte_carlo["factors"], *extra]
+        elif head.get("design") == "monte_carlo":
+            factors = [*factors, *extra]
+        else:
+            raise InputError(
+                f"{source}: study.tolerances (true) samples the bearing's [[tolerances]]: use design = "
+                "'monte_carlo' or add a [monte_carlo] section (levels x samples)"
+            )
     variables = []
     for i, v in enumerate(_tables(data.get("variables", []), f"{source}: variables")):
         v = dict(v)
@@ -351,9 +399,6 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             )
             for k, v in t.items()
         }
-    bearing = head.get("bearing")
-    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
-        bearing = str((Path(base_dir) / bearing).resolve())
     raw = {
         **head,
         "bearing": bearing,
@@ -373,6 +418,57 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         raise InputError(_pydantic_message(exc, source, head)) from None
     _check(definition)
     return definition
+
+
+def _flatten(table: dict, prefix: str = ""):
+    """``(key, value)`` of a table, nested tables as dotted keys (TOML ``geometry.bore = …`` in [fixed])."""
+    for k, v in table.items():
+        if isinstance(v, dict):
+            yield from _flatten(v, f"{prefix}{k}.")
+        else:
+            yield f"{prefix}{k}", v
+
+
+def _names(data: dict) -> list:
+    """Every factor name a parsed study file uses (before it is checked), for the generic evaluator."""
+    out = []
+    for key in ("factors", "variables"):
+        items = data.get(key, [])
+        out += [f.get("name") for f in items if isinstance(f, dict)] if isinstance(items, list) else []
+    mc = data.get("monte_carlo")
+    if isinstance(mc, dict) and isinstance(mc.get("factors"), list):
+        out += [f.get("name") for f in mc["factors"] if isinstance(f, dict)]
+    fixed = data.get("fixed")
+    if isinstance(fixed, dict):
+        out += [k for k, _ in _flatten(fixed)]
+    return out
+
+
+def _evaluator(name: str, bearing, head: dict, data: dict, source: str):
+    """The evaluator a study file names (the generic one is built from its bearing and checked)."""
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.generic import GENERIC, study_evaluator
+
+    if name != GENERIC:
+        return evaluators.get(name)
+    if bearing is None:
+        raise InputError(
+            f"{source}: study.bearing: missing; the generic evaluator needs a bearing file or a designation"
+        )
+    ev = study_evaluator(bearing, head, _names(data), source)
+    head["load_case"] = ev.function.load_case  # the choice is part of the definition (and its fingerprint)
+    return ev
+
+
+def evaluator_of(d: StudyDefinition):
+    """The evaluator of a checked study definition (the generic one rebuilt from its bearing, cached)."""
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.generic import GENERIC, study_evaluator
+
+    if d.evaluator != GENERIC:
+        return evaluators.get(d.evaluator)
+    head = {"load_case": d.load_case, "outputs": None if d.outputs is None else list(d.outputs)}
+    return study_evaluator(d.bearing, head, (), d.source)
 
 
 def case_count(d: StudyDefinition) -> int:
@@ -484,7 +580,7 @@ def _check_monte_carlo(d: StudyDefinition) -> None:
             raise InputError(
                 f"{where} is also a design factor; expected deviation = true (level + draw) or another factor"
             )
-        if evaluators.get(d.evaluator).factors[f.name].dimension in evaluators.NON_PHYSICAL:
+        if evaluator_of(d).factors[f.name].dimension in evaluators.NON_PHYSICAL:
             raise InputError(f"{where} is a count or a name; expected a continuous factor to sample")
     for q in mc.quantiles:
         if not 0.0 < q < 1.0:

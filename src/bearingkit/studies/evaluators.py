@@ -67,7 +67,12 @@ class Factor:
 
 @dataclass(frozen=True)
 class Evaluator:
-    """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors."""
+    """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors.
+
+    ``fill_defaults`` False: the cases carry only the factors a study sets (the evaluator takes the
+    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic` does);
+    ``factor_noun`` says in messages what a factor is (default "a factor of evaluator NAME").
+    """
 
     name: str
     function: Callable
@@ -76,10 +81,19 @@ class Evaluator:
     bearing_type: str | None = None
     description: str = ""
     references: tuple = field(default_factory=tuple)
+    fill_defaults: bool = True
+    factor_noun: str = ""
+
+    @property
+    def noun(self) -> str:
+        """What a factor of this evaluator is, for messages."""
+        return self.factor_noun or f"a factor of evaluator {self.name!r}"
 
     def complete(self, cases):
         """``cases`` with a column for every declared factor (defaults filled in)."""
         out = cases.copy()
+        if not self.fill_defaults:
+            return out
         for name, f in self.factors.items():
             if name not in out.columns:
                 out[name] = f.default
