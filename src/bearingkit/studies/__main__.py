@@ -121,7 +121,9 @@ def _bearing_of(file) -> str:
         return str(path.resolve())
     bearing = study.get("bearing")
     if not isinstance(bearing, str):
-        raise InputError(f"{path}: study.bearing: missing; --list-outputs needs a bearing file or designation")
+        raise InputError(
+            f"{path}: study.bearing: missing; --list-outputs needs a bearing file or a designation"
+        )
     if is_designation(bearing, path.parent):
         return bearing
     return str((path.parent / bearing).resolve())
@@ -144,12 +146,11 @@ def list_outputs(file) -> list[tuple[str, str, str]]:
 def list_factors(file) -> list[tuple[str, str, str, str]]:
     """(path, SI unit, kind, nominal value) of every factor path of FILE (as :func:`list_outputs`)."""
     from bearingkit.io.loader import from_dict
-    from bearingkit.studies.generic import DEFAULT_CASE, load_bearing
     from bearingkit.studies.generic import _paths as paths_of
+    from bearingkit.studies.generic import load_bearing
 
     source = _bearing_of(file)
     bearing = from_dict(load_bearing(source)[0], source)
-    del DEFAULT_CASE
     out = []
     for p in paths_of(bearing).values():
         nominal = "" if p.nominal is None else f"{p.nominal!r}"
@@ -165,6 +166,18 @@ def print_table(rows, head, echo=print) -> None:
         echo("  ".join(str(c).ljust(w) for c, w in zip(r, widths, strict=True)).rstrip())
 
 
+def _named(row) -> str:
+    """A factor of a range table by name, its short label in parentheses when it has one."""
+    return row.factor if row.label == row.factor else f"{row.factor} ({row.label})"
+
+
+def _dimensions(d) -> dict:
+    """Factor name → physical dimension (for the plots' display units)."""
+    from bearingkit.studies.definition import evaluator_of
+
+    return {name: f.dimension for name, f in evaluator_of(d).factors.items()}
+
+
 def _writers(res, fingerprint: str, echo) -> dict:
     """Output name → function writing it (summary.json last: it lists the others with their sizes)."""
     from bearingkit.studies import analysis
@@ -178,11 +191,12 @@ def _writers(res, fingerprint: str, echo) -> dict:
         labels = {f.name: f.label or f.name for f in d.factors}
         w["main_effects.csv"] = lambda p: res.analysis["main_effects"].to_csv(p, index=False)
         w["range.csv"] = lambda p: res.analysis["range"].to_csv(p, index=False)
+        dims = _dimensions(d)
         w["main_effects.png"] = lambda p: analysis.plot_main_effects(
-            res.analysis["main_effects"], p, d.response, labels
+            res.analysis["main_effects"], p, d.response, labels, dims
         )
         w["range.png"] = lambda p: analysis.plot_range(res.analysis["range"], p, d.response)
-        ranking = " > ".join(f"{r.label}" for r in res.analysis["range"].itertuples())
+        ranking = " > ".join(_named(r) for r in res.analysis["range"].itertuples())
         echo(f"sensitivity ranking of {d.response}: {ranking}")
     if "point_statistics" in res.analysis:
         table = res.analysis["point_statistics"]
@@ -193,9 +207,25 @@ def _writers(res, fingerprint: str, echo) -> dict:
             )
         if "range_std" in res.analysis:
             w["range_std.csv"] = lambda p: res.analysis["range_std"].to_csv(p, index=False)
-            ranking = " > ".join(f"{r.label}" for r in res.analysis["range_std"].itertuples())
+            ranking = " > ".join(_named(r) for r in res.analysis["range_std"].itertuples())
             echo(f"sensitivity ranking of the scatter (std) of {d.response}: {ranking}")
         echo(f"{len(table)} design points x {d.monte_carlo.per_point} draws → point_statistics.csv")
+    if "statistics" in res.analysis:
+        w["statistics.csv"] = lambda p: res.analysis["statistics"].to_csv(p, index=False)
+        echo(f"{len(res.results)} draws → statistics.csv (mean, std, min, max, quantiles of every output)")
+    if d.plots:
+        from bearingkit.studies import figures
+
+        dims = _dimensions(d)
+        quantiles = d.monte_carlo.quantiles if d.monte_carlo is not None else d.quantiles
+        for i, spec in enumerate(d.plots, 1):
+            missing = [n for n in (spec.x, spec.series, *spec.y) if n is not None and n not in res.results]
+            if missing:
+                raise InputError(
+                    f"{d.source}: plots[{i - 1}] names {missing}, which the results do not have; they have "
+                    f"{list(res.results.columns)}"
+                )
+            w[f"plot_{i}.png"] = lambda p, spec=spec: figures.plot(spec, res.results, p, dims, quantiles)
     if res.pareto is not None:
         w["pareto.csv"] = lambda p: res.pareto.to_csv(p, index=False)
         w["selections.csv"] = lambda p: res.selections.to_csv(p, index=False)
@@ -218,8 +248,8 @@ def _writers(res, fingerprint: str, echo) -> dict:
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m bearingkit.studies", description="Run a design study.")
     p.add_argument("file")
-    p.add_argument("--list-outputs", action="store_true", help="list the outputs of FILE's bearing and exit")
-    p.add_argument("--list-factors", action="store_true", help="list the factor paths of FILE's bearing and exit")
+    p.add_argument("--list-outputs", action="store_true", help="list the outputs of FILE's bearing")
+    p.add_argument("--list-factors", action="store_true", help="list the factor paths of FILE's bearing")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address, e.g. tcp://host:8786")
     p.add_argument("--workers", type=int, default=None, help="local worker processes")
     p.add_argument("--resume", action="store_true", help="continue a killed run in --out")

@@ -79,7 +79,11 @@ SECTIONS = (
     "optimizer",
     "monte_carlo",
     "targets",
+    "plots",
 )
+
+#: Most ``[[plots]]`` a study may ask for (they are written as plot_1.png … plot_9.png).
+MAX_PLOTS = 9
 
 #: A study name: it becomes the default output folder (``study-<name>``) and is written into the
 #: store, so it is a plain file name — no separators, no ``..``, nothing absolute, no hidden name.
@@ -128,6 +132,22 @@ class MonteCarloDef(_Strict):
     common: bool = True
     quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     factors: tuple[FactorDef, ...] = ()
+
+
+class PlotDef(_Strict):
+    """A plot of the results (``[[plots]]``, :mod:`bearingkit.studies.figures`)."""
+
+    kind: Literal["lines", "map", "scatter", "histogram"] = "lines"
+    x: str | None = None
+    y: tuple[str, ...]
+    series: str | None = None
+    title: str | None = None
+    log_y: bool = False
+
+    @field_validator("y", mode="before")
+    @classmethod
+    def _one_or_more(cls, value):
+        return (value,) if isinstance(value, str) else value
 
 
 class VariableDef(_Strict):
@@ -185,6 +205,7 @@ class StudyDefinition(_Strict):
     optimizer: OptimizerDef = OptimizerDef()
     monte_carlo: MonteCarloDef | None = None
     targets: dict = Field(default_factory=dict)
+    plots: tuple[PlotDef, ...] = ()
     source: str = "<dict>"
 
     @field_validator("name")
@@ -217,6 +238,10 @@ def _si(value, factor, where: str):
     if dim == "text":
         if not isinstance(value, str):
             raise InputError(f"{where} ({value!r}) must be a name (string)")
+        return value
+    if dim == "flag":
+        if not isinstance(value, bool):
+            raise InputError(f"{where} ({value!r}) must be true or false")
         return value
     if dim == "count":
         x = units.parse(value, "dimensionless", where)
@@ -410,6 +435,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         "optimizer": data.get("optimizer", {}),
         "monte_carlo": monte_carlo,
         "targets": targets,
+        "plots": _tables(data.get("plots", []), f"{source}: plots"),
         "source": source,
     }
     try:
@@ -417,6 +443,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     except ValidationError as exc:
         raise InputError(_pydantic_message(exc, source, head)) from None
     _check(definition)
+    _check_plots(definition, ev)
     return definition
 
 
@@ -430,7 +457,8 @@ def _flatten(table: dict, prefix: str = ""):
 
 
 def _names(data: dict) -> list:
-    """Every factor name a parsed study file uses (before it is checked), for the generic evaluator."""
+    """Every factor and output name a parsed study file uses (before it is checked), for the generic
+    evaluator: the load case its paths name, the outputs it needs."""
     out = []
     for key in ("factors", "variables"):
         items = data.get(key, [])
@@ -441,6 +469,18 @@ def _names(data: dict) -> list:
     fixed = data.get("fixed")
     if isinstance(fixed, dict):
         out += [k for k, _ in _flatten(fixed)]
+    head = data.get("study", {})
+    out.append(head.get("response"))
+    for key, fields in (
+        ("plots", ("x", "y", "series")),
+        ("objectives", ("output",)),
+        ("constraints", ("output",)),
+    ):
+        items = data.get(key, [])
+        for item in items if isinstance(items, list) else []:
+            for f in fields if isinstance(item, dict) else ():
+                value = item.get(f)
+                out += value if isinstance(value, list) else [value]
     return out
 
 
@@ -486,6 +526,42 @@ def case_count(d: StudyDefinition) -> int:
     else:
         n = sum(len(f.levels or ()) for f in d.factors)
     return n * (d.monte_carlo.per_point if d.monte_carlo is not None else 1)
+
+
+def _check_plots(d: StudyDefinition, ev) -> None:
+    """Every ``[[plots]]`` entry names columns the study has (checked fully where the outputs are known)."""
+    if len(d.plots) > MAX_PLOTS:
+        raise InputError(f"{d.source}: plots ({len(d.plots)} of them) must be at most {MAX_PLOTS}")
+    if d.design == "optimize" and d.plots:
+        raise InputError(
+            f"{d.source}: plots: an optimisation writes pareto.png; [[plots]] are for case tables"
+        )
+    factors = {f.name for f in d.factors} | set(d.fixed)
+    if d.monte_carlo is not None:
+        factors |= {f.name for f in d.monte_carlo.factors}
+    known = set(ev.outputs) if not ev.fill_defaults else None  # the generic evaluator lists every output
+    for i, p in enumerate(d.plots):
+        where = f"{d.source}: plots[{i}]"
+        need = {"lines": ("x",), "map": ("x", "series"), "scatter": ("x",), "histogram": ()}[p.kind]
+        for key in need:
+            if getattr(p, key) is None:
+                raise InputError(f"{where}.{key}: missing; a {p.kind} plot needs {' and '.join(need)}")
+        if p.kind == "histogram" and (p.x is not None or p.series is not None):
+            raise InputError(f"{where}: a histogram shows the distribution of y; it takes no x or series")
+        if not p.y:
+            raise InputError(f"{where}.y ([]) must name at least one output")
+        for key, names in (("x", [p.x]), ("series", [p.series]), ("y", list(p.y))):
+            for name in names:
+                if name is None or name in factors:
+                    continue
+                if known is not None and name not in known:
+                    from bearingkit.studies.paths import nearest
+
+                    near = ", ".join(nearest(name, sorted(known | factors)))
+                    raise InputError(
+                        f"{where}.{key} ({name!r}) is neither a factor of the study nor one of its outputs; "
+                        f"nearest: {near}"
+                    )
 
 
 def _check(d: StudyDefinition) -> None:

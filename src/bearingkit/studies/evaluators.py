@@ -39,7 +39,7 @@ references.add(
 )
 
 #: Dimensions a factor may have besides the physical ones of :data:`bearingkit.units.SI_UNITS`.
-NON_PHYSICAL = ("count", "text")
+NON_PHYSICAL = ("count", "text", "flag")
 
 
 @dataclass(frozen=True)
@@ -51,7 +51,8 @@ class Factor:
     name : str
     dimension : str
         A key of :data:`bearingkit.units.SI_UNITS` (values in the study file need a unit unless
-        ``"dimensionless"``), ``"count"`` (integer) or ``"text"`` (a name, e.g. a crowning type).
+        ``"dimensionless"``), ``"count"`` (integer), ``"text"`` (a name, e.g. a crowning type) or
+        ``"flag"`` (true / false).
     default : object
         Value (SI) used when the study neither varies nor fixes the factor.
     batched : bool
@@ -254,6 +255,8 @@ def python_value(value, factor: Factor):
         return int(value)
     if factor.dimension == "text":
         return str(value)
+    if factor.dimension == "flag":
+        return bool(value)
     return float(value)
 
 

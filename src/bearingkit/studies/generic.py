@@ -36,6 +36,9 @@ __all__ = ["GENERIC", "GenericModel", "is_designation", "load_bearing", "study_e
 
 #: The name a study file may give the generic evaluator (the default when it names a bearing).
 GENERIC = "generic"
+#: Analysis parts whose outputs a study gets when it lists no ``outputs`` (friction and the duty cycle
+#: cost another model or more solves: they are computed when the study names one of their outputs).
+DEFAULT_PARTS = ("statics", "rows", "rating")
 #: Name of the load case a study adds when the input has none (a designation, or a duty cycle only).
 DEFAULT_CASE = "load"
 
@@ -365,8 +368,9 @@ def study_evaluator(bearing_source: str, head: dict, names=(), source: str = "<s
     load_case = choose_load_case(bearing, head, names, source)
     cat = qmod.catalogue(bearing)
     outputs = head.get("outputs")
-    if outputs is None:
-        outputs = tuple(cat)
+    if outputs is None:  # the cheap parts, and whatever else the study names (response, plots, objectives)
+        named = {n for n in names if isinstance(n, str)}
+        outputs = tuple(n for n, q in cat.items() if q.part in DEFAULT_PARTS or n in named)
     elif not isinstance(outputs, (list, tuple)) or not all(isinstance(o, str) for o in outputs):
         raise InputError(f"{source}: study.outputs ({outputs!r}) must be a list of output names")
     for o in outputs:

@@ -62,7 +62,7 @@ class InputPath:
     path : str
         ``geometry.clearance_radial``, ``load_cases.radial.F_x`` …
     dimension : str
-        A key of :data:`bearingkit.units.SI_UNITS`, ``"count"`` or ``"text"``.
+        A key of :data:`bearingkit.units.SI_UNITS`, ``"count"``, ``"text"`` or ``"flag"`` (true/false).
     nominal : object
         The value in the input (SI), or None where the builder's default applies.
     kind : {"file", "case", "analysis"}
@@ -82,7 +82,7 @@ class InputPath:
     @property
     def unit(self) -> str:
         """The SI unit of the path's values (``-`` dimensionless, ``count``, ``text``)."""
-        if self.dimension in ("count", "text"):
+        if self.dimension in ("count", "text", "flag"):
             return self.dimension
         return SI_UNITS[self.dimension] or "-"
 
@@ -105,6 +105,8 @@ def _scalar(prop: dict, defs: dict):
         return o["x-dimension"], (), None
     if o.get("type") == "string":
         return "text", tuple(o.get("enum", ())), None
+    if o.get("type") == "boolean":
+        return "flag", (), None
     return None
 
 
@@ -248,6 +250,8 @@ def value_text(value, dimension: str):
     """
     if dimension == "text":
         return str(value)
+    if dimension == "flag":
+        return bool(value)
     if dimension == "count":
         return int(value)
     if dimension == "dimensionless":

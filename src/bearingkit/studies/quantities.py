@@ -51,7 +51,14 @@ class _Context:
 
     @property
     def statics(self):
-        return self.analysis.statics
+        """The solve the outputs read: the coupled flexible-ring solve where the input has one."""
+        flex = self.analysis.flexible
+        return self.analysis.statics if flex is None else flex.result
+
+    @property
+    def converged(self):
+        flex = self.analysis.flexible
+        return self.statics.converged if flex is None else flex.converged
 
 
 def _first(values, n):
@@ -72,6 +79,37 @@ def _stiffness_name(i: int, j: int) -> str:
     key = f"k_{a}{b}" if i < 3 and j < 3 else f"k_{a}_{b}"
     suffix = {"N/m": "N_per_m", "N/rad": "N_per_rad", "N·m/rad": "Nm_per_rad"}[_stiffness_unit(i, j)]
     return f"{key}_{suffix}"
+
+
+def _element(kind: str) -> str:
+    return "ball" if kind == "ball" else "roller"
+
+
+def _group_share(c: _Context, members: Sequence[str], rows: Sequence[str], what: str) -> np.ndarray:
+    return sum(_share(c, r, rows, what) for r in members)
+
+
+def _groups(model_rows) -> list[Quantity]:
+    """Shares of the ball rows and of the roller rows, for bearings that have both."""
+    rows = tuple(r.name for r in model_rows)
+    groups: dict[str, list[str]] = {}
+    for r in model_rows:
+        groups.setdefault(_element(r.kind), []).append(r.name)
+    if len(groups) < 2:
+        return []
+    out = []
+    for element, members in groups.items():
+        for what in ("radial", "axial"):
+            out.append(
+                Quantity(
+                    f"{element}_rows_{what}_share",
+                    "-",
+                    f"share of the rows' {what} forces the {element} rows ({', '.join(members)}) carry",
+                    "statics",
+                    lambda c, m=tuple(members), w=what: _group_share(c, m, rows, w),
+                )
+            )
+    return out
 
 
 def _statics(rows: Sequence[str]) -> list[Quantity]:
@@ -115,7 +153,7 @@ def _statics(rows: Sequence[str]) -> list[Quantity]:
             )
     out += [
         Quantity(
-            "converged", "bool", "the case converged", "statics", lambda c: _first(c.statics.converged, c.n)
+            "converged", "bool", "the case converged", "statics", lambda c: _first(c.converged, c.n)
         ),
         Quantity(
             "iterations", "count", "Newton iterations", "statics", lambda c: _first(c.statics.iterations, c.n)
@@ -469,7 +507,8 @@ def catalogue(bearing) -> dict[str, Quantity]:
         for r in bearing.model.rows
         if r.kind in ("cylindrical", "tapered") and int(getattr(r, "n_slices", 1)) > 1
     ]
-    items = _statics(rows) + _rows(rows) + _edges(sliced) + _ratings(rows) + _flags(bearing.model.rows)
+    items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
+    items += _flags(bearing.model.rows)
     items += _warnings()
     if bearing.lubricant is not None:
         items += _friction()
