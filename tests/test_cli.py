@@ -262,7 +262,10 @@ def test_friction_options_speed_temperature_rotating():
         (["rating", DGBB, "--contamination", "0.5"], "lubricant: none given"),
         (["rating", DGBB, "--load-rating", "foo=3kN"], "['foo'] not in the bearing"),
         (["rating", DGBB, "--load-rating", "balls"], "--load-rating ('balls')"),
-        (["friction", str(EXAMPLES / "trb_32008.toml"), "--speed", "5rpm"], "no friction model"),
+        (
+            ["friction", str(EXAMPLES / "trb_32008.toml"), "--speed", "5rpm", "--model", "trb2"],
+            "--model ('trb2')",
+        ),
         (["rating", str(EXAMPLES / "trb_32008.toml"), "--load", "Fa=-1kN"], "must be positive"),
     ],
 )

@@ -69,6 +69,9 @@ class Material:
         Tensile yield strength [Pa], > 0, optional (informative, used by stress checks).
     hardness_hv : float or None
         Vickers hardness [HV], > 0, optional (informative, ISO 76/281 hardness factors).
+    thermal_expansion : float or None
+        Linear thermal expansion coefficient α [1/K], ≥ 0, optional (fits and temperatures: operating
+        clearance, :mod:`bearingkit.physics.structure.fits`).
     source : str
         Where the values come from (citation text or a reference key).
     """
@@ -80,6 +83,7 @@ class Material:
     yield_strength: float | None = None
     hardness_hv: float | None = None
     source: str = ""
+    thermal_expansion: float | None = None
 
     def __post_init__(self):
         if not isinstance(self.name, str) or not self.name:
@@ -93,6 +97,8 @@ class Material:
             checks.positive("yield_strength", self.yield_strength, "Pa")
         if self.hardness_hv is not None:
             checks.positive("hardness_hv", self.hardness_hv, "HV")
+        if self.thermal_expansion is not None:
+            checks.non_negative("thermal_expansion", self.thermal_expansion, "1/K")
 
     @property
     def plane_strain_compliance(self) -> float:
@@ -170,6 +176,17 @@ SI3N4_E = 310.0e9  # [Pa] (Callister 2007 Table B.2: 304 GPa for hot-pressed / s
 SI3N4_POISSON = 0.26  # [-]
 SI3N4_DENSITY = 3200.0  # [kg/m³]
 SI3N4_HARDNESS_HV = 1550.0  # [HV] typical bearing grade (1400-1700)
+# Thermal expansion [1/K]: Carter Bearings, "Coefficient of thermal expansion" table (52100 chrome steel
+# 11.9e-6, silicon nitride 2.8e-6 per K). Used for GCr15 (the same grade: 100Cr6 / SUJ2 / 52100).
+BEARING_STEEL_THERMAL_EXPANSION = 11.9e-6  # [1/K]
+SI3N4_THERMAL_EXPANSION = 2.8e-6  # [1/K]
+# Housing and shaft materials (typical handbook values, [from memory]: not confirmed with the search tool).
+GREY_CAST_IRON_E, GREY_CAST_IRON_POISSON = 110.0e9, 0.26  # [Pa], [-] EN-GJL-250 range 103-118 GPa
+GREY_CAST_IRON_DENSITY, GREY_CAST_IRON_ALPHA = 7200.0, 10.5e-6  # [kg/m³], [1/K]
+ALUMINIUM_E, ALUMINIUM_POISSON = 70.0e9, 0.33  # [Pa], [-] wrought/cast Al alloys 68-72 GPa
+ALUMINIUM_DENSITY, ALUMINIUM_ALPHA = 2700.0, 23.0e-6  # [kg/m³], [1/K]
+STRUCTURAL_STEEL_E, STRUCTURAL_STEEL_POISSON = 210.0e9, 0.3  # [Pa], [-]
+STRUCTURAL_STEEL_DENSITY, STRUCTURAL_STEEL_ALPHA = 7850.0, 12.0e-6  # [kg/m³], [1/K]
 # Seed papers.
 SEED001_E_N_MM2 = 2.1e5  # [N/mm²] Liu et al. (2022) Lubricants 10:154, Table 1
 SEED001_POISSON = 0.278  # [-] same table
@@ -184,6 +201,7 @@ _AISI52100 = Material(
     yield_strength=AISI52100_YIELD_PSI * PSI_TO_PA,
     hardness_hv=GCR15_HARDNESS_HV,
     source="AISI 52100 chrome steel specification sheet (E 29.5e6 psi, 0.283 lb/in^3); nu handbook 0.3",
+    thermal_expansion=BEARING_STEEL_THERMAL_EXPANSION,
 )
 _GCR15 = Material(
     name="GCr15",
@@ -192,6 +210,7 @@ _GCR15 = Material(
     density=GCR15_DENSITY,
     hardness_hv=GCR15_HARDNESS_HV,
     source="GCr15 (GB/T 18254), Chinese design-handbook values; bearingkit default for seed 000/002",
+    thermal_expansion=BEARING_STEEL_THERMAL_EXPANSION,
 )
 
 MATERIALS: dict[str, Material] = {
@@ -204,6 +223,31 @@ MATERIALS: dict[str, Material] = {
         density=SI3N4_DENSITY,
         hardness_hv=SI3N4_HARDNESS_HV,
         source="bearing-grade HIP silicon nitride, typical catalogue values (ASTM F2094 class)",
+        thermal_expansion=SI3N4_THERMAL_EXPANSION,
+    ),
+    "grey_cast_iron": Material(
+        name="grey_cast_iron",
+        youngs_modulus=GREY_CAST_IRON_E,
+        poisson_ratio=GREY_CAST_IRON_POISSON,
+        density=GREY_CAST_IRON_DENSITY,
+        source="EN-GJL-250 grey cast iron, typical handbook values (housings) [from memory]",
+        thermal_expansion=GREY_CAST_IRON_ALPHA,
+    ),
+    "aluminium_alloy": Material(
+        name="aluminium_alloy",
+        youngs_modulus=ALUMINIUM_E,
+        poisson_ratio=ALUMINIUM_POISSON,
+        density=ALUMINIUM_DENSITY,
+        source="aluminium alloy, typical handbook values (light housings) [from memory]",
+        thermal_expansion=ALUMINIUM_ALPHA,
+    ),
+    "structural_steel": Material(
+        name="structural_steel",
+        youngs_modulus=STRUCTURAL_STEEL_E,
+        poisson_ratio=STRUCTURAL_STEEL_POISSON,
+        density=STRUCTURAL_STEEL_DENSITY,
+        source="unalloyed structural / shaft steel, typical handbook values [from memory]",
+        thermal_expansion=STRUCTURAL_STEEL_ALPHA,
     ),
     "seed001_steel": Material(
         name="seed001_steel",

@@ -34,6 +34,9 @@ SI_UNITS: dict[str, str] = {
     "line_load": "N/m",
     "stiffness": "N/m",
     "rotational_stiffness": "N*m/rad",
+    "power": "W",
+    "thermal_conductance": "W/K",
+    "volume_flow": "m^3/s",
     "dimensionless": "",
 }
 

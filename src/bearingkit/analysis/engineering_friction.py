@@ -177,6 +177,8 @@ def bearing_type_of(bearing) -> str:
         return "angular_contact_ball"
     if kind == "cylindrical":
         return "cylindrical_roller" if row.orientation == "radial" else "cylindrical_roller_thrust"
+    if kind == "four_point":  # QJ bearings: SKF Table 2a, four-point contact ball bearings
+        return "four_point_contact_ball"
     raise InputError(
         f"row kind ({kind!r}) has no engineering friction model; supported: ball, cylindrical (single row)"
     )

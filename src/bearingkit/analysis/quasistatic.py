@@ -468,6 +468,7 @@ def solve(
     options: SolverOptions | None = None,
     raise_on_failure: bool = False,
     raceway_offsets: dict | None = None,
+    speed=None,
 ) -> QuasiStaticResult:
     """Solve the quasi-static equilibrium of a batch of load cases.
 
@@ -488,12 +489,20 @@ def solve(
     raceway_offsets : dict of str to RacewayOffset, optional
         Imposed outer-raceway deflections per row name (flexible rings; see
         :mod:`bearingkit.analysis.flexible`). Rows not named are rigid.
+    speed : float, array (C,) [rad/s] or OperatingSpeed, optional
+        Inner-ring speed per case (or an :class:`~bearingkit.analysis.speed.OperatingSpeed`): the
+        rows then include their elements' centrifugal force and gyroscopic moment
+        (:mod:`bearingkit.analysis.speed`). None or all zero: the zero-speed model, unchanged.
 
     Returns
     -------
     QuasiStaticResult
     """
     options = options or SolverOptions()
+    if speed is not None:  # speed hook: rows at speed (the model itself when nothing turns)
+        from bearingkit.analysis.speed import model_at_speed
+
+        model = model_at_speed(model, speed)
     load = np.atleast_2d(np.asarray(load, dtype=float))
     if load.shape[-1] != N_DOF:
         raise InputError(f"load (shape {load.shape}) must have 5 components (F_x, F_y, F_z, M_x, M_y)")
@@ -554,6 +563,11 @@ def solve(
         references=tuple(model.references),
         offsets=offsets,
     )
+    if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
+        from bearingkit.analysis.speed import flag_beyond_model
+
+        flag_beyond_model(result)
+        converged = result.converged
     if raise_on_failure and not converged.all():
         bad = int(np.flatnonzero(~converged)[0])
         raise ConvergenceError(f"case {bad} did not converge: {reasons[bad]}", result)

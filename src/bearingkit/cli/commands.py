@@ -119,7 +119,10 @@ _ROTATING_OPTION = typer.Option(
 )
 _LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
 _CONTAMINATION_OPTION = typer.Option(
-    None, "--contamination", help="ISO 281 e_C (0 … 1); with lubricant, speed and temperature gives a_ISO."
+    None,
+    "--contamination",
+    help="ISO 281 e_C (0 … 1) or a level (normal_cleanliness, slight_contamination, …); with lubricant, "
+    "speed and temperature gives a_ISO.",
 )
 
 
@@ -127,7 +130,6 @@ _CONTAMINATION_OPTION = typer.Option(
 _OPTION_UNITS = {
     "speed": ("angular_velocity", "--speed"),
     "temperature": ("temperature", "--temperature"),
-    "contamination": ("dimensionless", "--contamination"),
     "reliability": ("dimensionless", "--reliability"),
 }
 
@@ -205,8 +207,11 @@ def analyze(
         _print_json(file, data)
     else:
         _header(a, file)
+        from bearingkit.cli.operating_tables import operating_text
+
         for c in data["cases"]:
             console.print(case_table(c))
+            console.print(operating_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
@@ -219,6 +224,7 @@ def analyze(
 @app.command()
 def schema():
     """Print the JSON Schema of the input file."""
+    from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
     from bearingkit.io.schema import json_schema
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
@@ -269,20 +275,23 @@ def rating(
         reliability=reliability,
         load_ratings=_load_ratings(load_rating),
     )
-    if contamination is not None and a.operating.lubricant is None:
+    if a.operating.contamination is not None and a.operating.lubricant is None:
         raise InputError(
             f'{file}: lubricant: none given; add [lubricant] name = "ISO_VG100" (a preset of '
             "bearingkit.lubricants.LUBRICANTS) to the file or use --lubricant"
         )
-    if contamination is not None and not a.operating.temperature_given.all():
+    if a.operating.contamination is not None and not a.operating.temperature_given.all():
         raise InputError(f"{file}: --contamination needs a temperature: give --temperature 60degC")
     data = a.rating_dict()
     if as_json:
         _print_json(file, data)
     else:
         _header(a, file)
+        from bearingkit.cli.operating_tables import lubrication_table
+
         for c in data["cases"]:
             console.print(rating_table(c))
+            console.print(lubrication_table(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
         if "duty_cycle" in data:
@@ -314,7 +323,13 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings).",
+        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+    ),
+    compare: bool = typer.Option(
+        False, "--compare", help="Every model that applies side by side, with when each applies."
+    ),
+    heat: bool = typer.Option(
+        False, "--heat", help="Heat balance (operating temperature) and thermal reference speed (ISO 15312)."
     ),
     as_json: bool = _JSON_OPTION,
 ):
@@ -334,6 +349,21 @@ def friction(
         )
     if model == "components":
         _fail_unconverged(file, a)
+    if compare or heat:
+        from bearingkit.cli.operating_tables import comparison_text, heat_text
+
+        data = a.friction_comparison() if compare else a.heat_dict(model)
+        if compare and heat:
+            data["heat"] = a.heat_dict(model)
+        if as_json:
+            _print_json(file, data)
+            return
+        _header(a, file)
+        if compare:
+            console.print(comparison_text(data))
+        if heat:
+            console.print(heat_text(data["heat"] if compare else data))
+        return
     data = a.friction_dict(model)
     if as_json:
         _print_json(file, data)
@@ -555,6 +585,21 @@ def shaft(
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)
+
+
+@app.command()
+@one_line_errors
+def serve(
+    port: int = typer.Option(8765, "--port", help="Port to listen on."),
+    open_browser: bool = typer.Option(False, "--open", help="Open the page in the default browser."),
+    host: str = typer.Option(
+        "127.0.0.1", "--host", help="Address to bind; anything but loopback exposes the app (no login)."
+    ),
+):
+    """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    from bearingkit.app import serve as run_server
+
+    run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
 
 
 def main() -> None:

@@ -24,7 +24,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.io import schema, schema_cycle
+from bearingkit.io import kinds, schema, schema_cycle
 
 #: Inner-ring DOF names, in the solver's order.
 DOF_NAMES = schema.DOF_CHOICES
@@ -186,6 +186,7 @@ BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
     "ptrb": _ptrb,
     "ball_column": _ball_column,
 }
+kinds.register(BUILDERS, schema.GEOMETRY_MODELS)  # four-point, slewing, spherical, self-aligning, needle
 assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
 
 
@@ -256,6 +257,8 @@ class BearingInput:
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
     options : bearingkit.analysis.quasistatic.SolverOptions
+    sections : bearingkit.io.schema_operating.OperatingSections
+        The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
         The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
     tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
@@ -271,6 +274,7 @@ class BearingInput:
     cases: tuple
     free: np.ndarray
     options: object
+    sections: object = None
     duty_cycle: object = None
     tolerances: tuple = ()
 
@@ -370,6 +374,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     opts = {
         k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
     }
+    from bearingkit.io.schema_operating import validate_sections
+
+    sections = validate_sections(spec, source, _one_line)
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
@@ -387,6 +394,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         cases=cases,
         free=free,
         options=SolverOptions(**opts),
+        sections=sections,
         duty_cycle=duty,
         tolerances=schema_cycle.tolerances_of(source, spec.tolerances, _one_line),
     )

@@ -14,6 +14,9 @@ File layout (see docs/input-format.md)::
     [lubricant]    name = "ISO_VG100"                     (optional)
     [[load_cases]] name, F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature
     [solver]       free, rtol, max_iterations             (optional)
+    [operating]    speed effects, tilt, preload, temperatures (optional)
+    [fits]         shaft / housing tolerance fields      (optional)
+    [lubrication]  contamination, roughness, grease      (optional)
     [[duty_cycle]] load-case fields + time_fraction | revolution_fraction   (optional, schema_cycle)
     [[tolerances]] path, distribution, mean/std/low/high | clearance_class (optional, schema_cycle)
 
@@ -265,6 +268,15 @@ class BearingFile(_Strict):
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(default_factory=list)
     solver: SolverSpec = Field(default_factory=SolverSpec)
+    operating: dict[str, Any] | None = Field(
+        None, description="Speed effects, tilt, preload, temperatures (io.schema_operating.OperatingSpec)."
+    )
+    fits: dict[str, Any] | None = Field(
+        None, description="Shaft/housing fits (io.schema_operating.FitsSpec)."
+    )
+    lubrication: dict[str, Any] | None = Field(
+        None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
+    )
     duty_cycle: list[dict[str, Any]] = Field(
         default_factory=list, description="Bins of a load spectrum (io.schema_cycle.DutyBinSpec)."
     )

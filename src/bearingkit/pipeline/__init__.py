@@ -4,9 +4,11 @@ SI units inside. The faces (CLI, HTML report, flagship, studies, web app) call :
 the parts of the returned :class:`Analysis`; none of them orchestrates by itself.
 """
 
+from bearingkit.pipeline import friction_extra  # noqa: F401  (registers the "trb" model)
 from bearingkit.pipeline.analysis import RENDERERS, Analysis, analyze
 from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
-from bearingkit.pipeline.inputs import load_cases_from, load_input
+from bearingkit.pipeline.inputs import ModelInput, load_cases_from, load_input
+from bearingkit.pipeline.kinds import slewing_friction  # registers friction model "slewing"
 from bearingkit.pipeline.operating import DEFAULT_TEMPERATURE, Operating
 
 __all__ = [
@@ -15,9 +17,11 @@ __all__ = [
     "RENDERERS",
     "Analysis",
     "FrictionOutcome",
+    "ModelInput",
     "Operating",
     "analyze",
     "load_cases_from",
     "load_input",
     "register_friction_model",
+    "slewing_friction",
 ]

@@ -28,7 +28,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
-from bearingkit.pipeline.inputs import load_input
+from bearingkit.pipeline.inputs import ModelInput, load_input
 from bearingkit.pipeline.operating import Operating
 
 __all__ = ["FREE_TILT_LIMIT", "RENDERERS", "Analysis", "analyze"]
@@ -88,6 +88,8 @@ class Analysis:
         self.friction_options = dict(friction_options or {})
         self._friction: dict[str, FrictionOutcome] = {}
         self._friction_errors: dict[str, str] = {}
+        #: ISO 281 level name the contamination factor came from (None: a number or not given).
+        self.contamination_level: str | None = None
 
     # ------------------------------------------------------------------------------- parts
     @property
@@ -99,9 +101,69 @@ class Analysis:
         return [c.name for c in self.input.cases]
 
     @functools.cached_property
+    def setup(self):
+        """What the statics are solved with: speed, fits and temperatures, tilt, preload
+        (:func:`bearingkit.pipeline.conditions.statics_setup`)."""
+        from bearingkit.pipeline.conditions import statics_setup
+
+        return self._in_file(statics_setup, self)
+
+    @functools.cached_property
     def statics(self):
-        """QuasiStaticResult of every load case (one batched solve)."""
-        return self.input.solve()
+        """QuasiStaticResult of every load case (one batched solve, with the rows at speed, the
+        operating clearance, the imposed tilt and the preload of :attr:`setup`)."""
+        setup = self.setup
+        same = np.array_equal(setup.free, self.input.free) and np.array_equal(
+            setup.load, self.input.load_matrix()
+        )
+        if setup.plain and same:
+            return self.input.solve()
+        from bearingkit.analysis.quasistatic import solve
+
+        b = self.input
+        return self._in_file(
+            solve,
+            b.model,
+            setup.load,
+            free=setup.free,
+            displacement=setup.displacement,
+            options=b.options,
+            raceway_offsets=setup.offsets,
+            speed=setup.speed,
+        )
+
+    def _in_file(self, fn, *args, **kwargs):
+        """Call ``fn``; an InputError is prefixed with the input's name (one line)."""
+        try:
+            return fn(*args, **kwargs)
+        except InputError as exc:
+            if str(exc).startswith(f"{self.input.source}:"):
+                raise
+            raise InputError(f"{self.input.source}: {exc}") from None
+
+    @property
+    def clearance(self):
+        """ClearanceChain of the radial rows (fits and temperatures), or None when none were given."""
+        return self.setup.clearance
+
+    @functools.cached_property
+    def preload(self):
+        """Axial force [N] each row carries at rest without external load, or None when not preloaded.
+
+        Solved once, for the bearing as mounted (fits at the reference temperature are included when
+        given; speed is not: a preload is set at rest).
+        """
+        from bearingkit.pipeline.operating_output import preload_state
+
+        return preload_state(self)
+
+    @functools.cached_property
+    def lubrication(self):
+        """LubricationResult: film thickness and Λ per contact, ν, ν1, κ, e_C, a_ISO, L_nm, grease life
+        (:mod:`bearingkit.analysis.lubrication`); None without a lubricant or a speed."""
+        from bearingkit.pipeline.operating_output import lubrication
+
+        return lubrication(self)
 
     @functools.cached_property
     def flexible(self):
@@ -203,6 +265,13 @@ class Analysis:
             out.append("ratings: no contamination factor e_C given, so no a_ISO and no L_nm")
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
+        out.extend(self.setup.notes)
+        from bearingkit.analysis.speed import speed_notes
+
+        out.extend(speed_notes(self.statics.model))
+        lub = self.lubrication
+        if lub is not None:
+            out.extend(f"lubrication: {n}" for n in lub.notes)
         for model, why in self._friction_errors.items():
             out.append(f"friction ({model}) not computed: {why}")
         for outcome in self._friction.values():
@@ -244,7 +313,10 @@ class Analysis:
                 notes.append("the flexible-ring coupling did not converge")
             if rating is not None:
                 notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
-            out.append(notes)
+            from bearingkit.pipeline.operating_output import operating_warnings
+
+            notes.extend(operating_warnings(self, c))
+            out.append(list(dict.fromkeys(notes)))
         return out
 
     @property
@@ -273,8 +345,17 @@ class Analysis:
 
         b, res = self.input, self.statics
         cases = []
+        from bearingkit.pipeline.operating_output import row_speed_dicts
+
+        preload = self.preload
         for i in range(self.n_cases):
             d = case_dict(b, res, i)
+            for row, state in zip(d["rows"], res.rows, strict=True):
+                row.update(row_speed_dicts(state, i))
+                if preload is not None:
+                    row["preload_N"] = preload[row["name"]]
+            if self.clearance is not None:
+                d["clearance"] = self.clearance.to_dict(i)
             if self.flexible is not None:
                 d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
             d["warnings"] = self.warnings[i]
@@ -293,6 +374,8 @@ class Analysis:
         cases = []
         for i, c in enumerate(self.input.cases):
             d = {"case": c.name, **self.rating.to_dict(i)}
+            if self.lubrication is not None:
+                d["lubrication"] = self.lubrication.to_dict(i)
             d["warnings"] = list(dict.fromkeys([*self.warnings[i], *d.get("warnings", [])]))
             cases.append(d)
         out = {**self._header(), "cases": cases, "notes": self.notes}
@@ -311,6 +394,34 @@ class Analysis:
             cases.append(d)
         return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
 
+    def friction_comparison(self) -> dict:
+        """Every friction model that applies, side by side, with when each applies
+        (:func:`bearingkit.pipeline.friction_extra.compare`)."""
+        from bearingkit.pipeline.friction_extra import compare
+
+        return {**self._header(), **compare(self), "notes_run": self.notes}
+
+    def heat_dict(self, model: str | None = None) -> dict:
+        """Heat balance (operating temperature) and the model's thermal reference speed (ISO 15312
+        method), JSON-ready (:mod:`bearingkit.pipeline.thermal`)."""
+        from bearingkit.pipeline import thermal
+
+        model = model or self.friction_model
+        balance = self._in_file(thermal.heat_balance, self, model)
+        try:
+            n_ref = self._in_file(
+                thermal.thermal_reference_speed, self, "skf" if model == "components" else model
+            )
+            why = None
+        except InputError as exc:
+            n_ref, why = None, str(exc)
+        return {
+            **self._header(),
+            "thermal_reference_speed_rad_s": None if n_ref is None or np.isnan(n_ref) else float(n_ref),
+            "thermal_reference_speed_note": why,
+            "cases": [{"case": c, **balance.to_dict(i)} for i, c in enumerate(self.case_names)],
+        }
+
     def to_dict(self) -> dict:
         """Everything computed for every case, JSON-ready (SI values, units in keys)."""
         out = self.statics_dict()
@@ -318,6 +429,8 @@ class Analysis:
             d["operating"] = self.operating.to_dict(i)
             if self.rating is not None:
                 d["rating"] = self.rating.to_dict(i)
+            if self.lubrication is not None:
+                d["lubrication"] = self.lubrication.to_dict(i)
             friction = self.friction
             if friction is not None:
                 d["friction"] = {
@@ -361,6 +474,22 @@ class Analysis:
         return RENDERERS["html"](self, path, **options)
 
 
+def _check_lubricant_range(bearing, operating) -> None:
+    """One line for a temperature outside the lubricant's viscosity–temperature range."""
+    from bearingkit.lubricants import WALTHER_TEMPERATURE_MAX_C, WALTHER_TEMPERATURE_MIN_C
+
+    if operating.lubricant is None:
+        return
+    for i, t in enumerate(operating.temperature):
+        if not WALTHER_TEMPERATURE_MIN_C <= t <= WALTHER_TEMPERATURE_MAX_C:
+            side = "below" if t < WALTHER_TEMPERATURE_MIN_C else "above"
+            raise InputError(
+                f"{bearing.source}: load case {bearing.cases[i].name!r}: temperature ({t:g} °C) is {side} "
+                f"the range of lubricant {operating.lubricant.name!r} ({WALTHER_TEMPERATURE_MIN_C:g} … "
+                f"{WALTHER_TEMPERATURE_MAX_C:g} °C, its viscosity–temperature law); expected one in it"
+            )
+
+
 def analyze(
     source,
     *,
@@ -380,8 +509,9 @@ def analyze(
 
     Parameters
     ----------
-    source : str, Path, dict or BearingInput
-        Input file (docs/input-format.md), parsed file or loaded input.
+    source : str, Path, dict, BearingInput or ModelInput
+        Input file (docs/input-format.md), a designation, a parsed file, a loaded input, or a model and
+        its loads built in code (:class:`~bearingkit.pipeline.inputs.ModelInput`).
     load : Mapping or list, optional
         Load case(s) replacing the file's, values with units: ``{"F_x": "5 kN", "F_z": "1 kN"}``.
     cases : list of str, optional
@@ -410,20 +540,26 @@ def analyze(
     Analysis
         Nothing is computed until a part is asked for.
     """
-    bearing = load_input(source, load=load, cases=cases)
+    from bearingkit.pipeline.operating_output import resolve_contamination
+
+    bearing = source if isinstance(source, ModelInput) else load_input(source, load=load, cases=cases)
+    e_c, level = resolve_contamination(bearing, contamination)
     operating = Operating.of(
         bearing,
         speed=speed,
         temperature=temperature,
         rotating=rotating,
         lubricant=lubricant,
-        contamination=contamination,
+        contamination=e_c,
         reliability=reliability,
     )
-    return Analysis(
+    _check_lubricant_range(bearing, operating)
+    out = Analysis(
         bearing,
         operating,
         friction_model=friction_model,
         load_ratings=load_ratings,
         friction_options=friction_options,
     )
+    out.contamination_level = level
+    return out

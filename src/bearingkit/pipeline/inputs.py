@@ -8,8 +8,12 @@ studies and the app use to turn "what the user named" into a
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
+
+import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.io import loader
@@ -86,3 +90,107 @@ def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> load
             raise InputError("cases select the file's load cases; they cannot be combined with load")
         return bearing.with_cases(load_cases_from(load))
     return bearing.select(cases)
+
+
+@dataclass(frozen=True)
+class _ModelHeader:
+    type: str
+    source: str | None = None
+    designation: str | None = None
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class _ModelSolver:
+    free: tuple | None = None
+
+
+@dataclass(frozen=True)
+class _ModelSpec:
+    bearing: _ModelHeader
+    solver: _ModelSolver
+    geometry: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class ModelInput:
+    """A bearing model and its loads as an analysis input: what studies and papers build in code.
+
+    It has the attributes of a loaded file the pipeline reads (``cases``, ``model``, ``free``,
+    ``solve()`` …), so :class:`~bearingkit.pipeline.Analysis` runs on it unchanged; the model may carry
+    per-case geometry (e.g. a clearance per case), which a file cannot.
+
+    Parameters
+    ----------
+    model : BearingModel
+    load : ndarray (C, 5) [N, N, N, N·m, N·m]
+        (F_x, F_y, F_z, M_x, M_y) on the inner ring per case.
+    free : ndarray (5,) of bool, optional
+        Free DOFs (default all).
+    lubricant : Lubricant or str, optional
+    source : str
+        Name used in messages.
+    options : SolverOptions, optional
+    material : Material, optional
+        Element material (densities for speed effects); default GCr15 bearing steel.
+    """
+
+    model: object
+    load: np.ndarray
+    free: np.ndarray | None = None
+    lubricant: object = None
+    source: str = "<model>"
+    options: object = None
+    material: object = None
+
+    def __post_init__(self):
+        from bearingkit.analysis.quasistatic import SolverOptions
+        from bearingkit.lubricants import as_lubricant
+
+        load = np.atleast_2d(np.asarray(self.load, dtype=float))
+        if load.ndim != 2 or load.shape[1] != 5:
+            raise InputError(f"load (shape {load.shape}) must be (cases, 5): F_x, F_y, F_z, M_x, M_y")
+        object.__setattr__(self, "load", load)
+        free = np.ones(5, bool) if self.free is None else np.asarray(self.free, bool).reshape(5)
+        object.__setattr__(self, "free", free)
+        if self.lubricant is not None:
+            object.__setattr__(self, "lubricant", as_lubricant(self.lubricant))
+        if self.options is None:
+            object.__setattr__(self, "options", SolverOptions())
+        if self.material is None:  # the bearing steel the builders assume by default
+            from bearingkit.materials import get_material
+
+            object.__setattr__(self, "material", get_material("GCr15"))
+
+    @functools.cached_property
+    def cases(self) -> tuple:
+        """One load case per row of ``load`` (named ``case 0`` …)."""
+        return tuple(loader.LoadCase(f"case {i}", self.load[i]) for i in range(self.load.shape[0]))
+
+    @property
+    def bearing_type(self) -> str:
+        return str(self.model.metadata.get("bearing_type", "model"))
+
+    @property
+    def sections(self):
+        """No [operating]/[fits]/[lubrication] sections: a model built in code has no file."""
+        return None
+
+    @property
+    def spec(self) -> _ModelSpec:
+        free = tuple(n for n, f in zip(loader.DOF_NAMES, self.free, strict=True) if f)
+        # the code that built the model chose its free DOFs: no file defaults (such as fixed tilts) apply
+        return _ModelSpec(_ModelHeader(self.bearing_type, name=self.model.name), _ModelSolver(free))
+
+    @property
+    def geometry(self):
+        raise InputError(f"{self.source}: a model built in code has no [geometry] section (needs a file)")
+
+    def load_matrix(self) -> np.ndarray:
+        return self.load
+
+    def solve(self):
+        """All cases in one batched solve (QuasiStaticResult)."""
+        from bearingkit.analysis.quasistatic import solve
+
+        return solve(self.model, self.load, free=self.free, options=self.options)

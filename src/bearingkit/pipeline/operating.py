@@ -30,12 +30,24 @@ DEFAULT_TEMPERATURE = 25.0
 ROTATING_RINGS = ("inner", "outer")
 
 
-def _value(value, dimension: str, field: str) -> float | None:
+def _value(value, dimension: str, field: str):
+    """None, a text with its unit, a number, or one number per case (array) — in SI."""
     if value is None:
         return None
     if isinstance(value, str):
         return parse(value, dimension, field)
-    return float(checks.finite(field, value))
+    arr = np.asarray(checks.finite(field, value), dtype=float)
+    return float(arr) if arr.ndim == 0 else arr
+
+
+def _per_case(value, n: int, field: str):
+    """A per-case array (n,) of ``value`` when it is one; None stays None, scalars stay scalars."""
+    if value is None or np.ndim(value) == 0:
+        return value
+    arr = np.asarray(value, dtype=float).ravel()
+    if arr.shape != (n,):
+        raise InputError(f"{field} ({arr.shape[0]} values) must give one value per load case ({n})")
+    return arr
 
 
 @dataclass(frozen=True)
@@ -99,10 +111,12 @@ class Operating:
         Parameters
         ----------
         bearing : BearingInput
-        speed : float [rad/s] or str with unit, optional
-            Speed of the rotating ring for every case (else each case's ``speed``, else 0).
-        temperature : float [°C] or str with unit, optional
-            For every case (else each case's ``temperature``, else :data:`DEFAULT_TEMPERATURE`).
+        speed : float [rad/s], str with unit, or array (C,), optional
+            Speed of the rotating ring for every case, or one per case (else each case's ``speed``,
+            else 0).
+        temperature : float [°C], str with unit, or array (C,), optional
+            For every case or one per case (else each case's ``temperature``, else
+            :data:`DEFAULT_TEMPERATURE`).
         rotating : {"inner", "outer"}
         lubricant : str or Lubricant, optional
             A preset name (:data:`bearingkit.lubricants.LUBRICANTS`); default: the file's ``[lubricant]``.
@@ -113,20 +127,15 @@ class Operating:
         """
         from bearingkit.lubricants import as_lubricant
 
-        n = len(bearing.cases)
-        s_all = _value(speed, "angular_velocity", "speed")
-        t_all = _value(temperature, "temperature", "temperature")
-        speeds = np.array([s_all if s_all is not None else (c.speed or 0.0) for c in bearing.cases], float)
-        given = np.array([t_all is not None or c.temperature is not None for c in bearing.cases], bool)
-        temps = np.array(
-            [
-                t_all
-                if t_all is not None
-                else (DEFAULT_TEMPERATURE if c.temperature is None else c.temperature)
-                for c in bearing.cases
-            ],
-            float,
-        ).reshape(n)
+        cases = bearing.cases
+        n = len(cases)
+        s_all = _per_case(_value(speed, "angular_velocity", "speed"), n, "speed")
+        t_all = _per_case(_value(temperature, "temperature", "temperature"), n, "temperature")
+        own_speed = np.array([c.speed or 0.0 for c in cases], float)
+        speeds = own_speed if s_all is None else np.broadcast_to(s_all, (n,)).astype(float)
+        own_temp = np.array([DEFAULT_TEMPERATURE if c.temperature is None else c.temperature for c in cases])
+        temps = own_temp.astype(float) if t_all is None else np.broadcast_to(t_all, (n,)).astype(float)
+        given = np.array([t_all is not None or c.temperature is not None for c in cases], bool)
         lube = bearing.lubricant if lubricant is None else as_lubricant(lubricant)
         e_c = _value(contamination, "dimensionless", "contamination")
         rel = _value(reliability, "dimensionless", "reliability")

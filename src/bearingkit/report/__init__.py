@@ -83,6 +83,14 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
             for i, c in enumerate(analysis.input.cases)
         ]
     )
+    from bearingkit.report.html_operating import operating_html
+
+    statics = analysis.statics_dict()["cases"]
+    lub = analysis.lubrication
+    extras = [
+        (lambda number, c=c, i=i: operating_html(c, None if lub is None else lub.to_dict(i), number))
+        for i, c in enumerate(statics)
+    ]
     html = build_report(
         shown,
         analysis.statics,
@@ -91,6 +99,7 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         title=title,
         notes=[*notes, describe_operating_point(analysis), *analysis.notes],
         warnings=analysis.warnings,
+        case_extras=extras,
         duty_cycle=None if analysis.duty_cycle is None else analysis.duty_cycle.to_dict(),
     )
     return write_report(path, html)

@@ -36,6 +36,7 @@ from bearingkit.report.html_format import (
     fmt,
 )
 from bearingkit.report.html_inputs import _inputs_html
+from bearingkit.report.slewing import slewing_section_html
 
 _CSS = """
 body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:0;background:#f4f6f8;color:#1c2833;
@@ -163,7 +164,7 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
+def _case_html(bearing, result, friction, rating, case: int, warnings, extra=None) -> str:
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
@@ -223,6 +224,9 @@ def _case_html(bearing, result, friction, rating, case: int, warnings) -> str:
         k += 1
     if rating is not None:
         parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
+        k += 1
+    if extra:
+        parts.append(extra(f"{case + 2}.{k}"))
         k += 1
     parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
@@ -304,6 +308,7 @@ def build_report(
     title=None,
     notes=(),
     warnings=None,
+    case_extras=None,
     duty_cycle=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
@@ -325,6 +330,8 @@ def build_report(
     warnings : list of list of str, optional
         Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
+    case_extras : list of callables, optional
+        Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
     duty_cycle : dict, optional
         The duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): a section with
         every bin's life and the combined life, after the load cases.
@@ -369,7 +376,11 @@ def build_report(
     if notes:
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
-    body.extend(_case_html(bearing_input, result, friction, rating, c, warnings) for c in range(n_cases))
+    body.append(slewing_section_html(bearing_input))  # slewing rings: static load diagram ("" otherwise)
+    extras = case_extras or [None] * n_cases
+    body.extend(
+        _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)
+    )
     k = n_cases + 2  # the number of the next section
     if duty_cycle is not None:
         body.append(duty_cycle_html(duty_cycle, k))

@@ -46,11 +46,12 @@ TURNTABLE_ROWS = ("roller_upper", "ball_upper", "roller_lower", "ball_lower", "r
 DEFAULT_SPEED = 5.0 * 2.0 * np.pi / 60.0
 
 
-def _solve_turntable(cases, factors):
-    """Yield (idx, QuasiStaticResult, group key) for every group of cases (one batched solve each)."""
-    from bearingkit.analysis.quasistatic import solve
+def _analyses(cases, factors, **operating):
+    """Yield (idx, Analysis, group key) for every group of cases: one pipeline analysis (one batched
+    solve) per group; ``operating(sub, key) -> dict`` gives each group's operating conditions."""
     from bearingkit.bearings.common import eccentric_axial_load
     from bearingkit.bearings.turntable import CompositeTurntableGeometry, composite_turntable
+    from bearingkit.pipeline import ModelInput, analyze
 
     geom = {f.name for f in dataclasses.fields(CompositeTurntableGeometry)}
     for idx, key in group_cases(cases, factors):
@@ -64,7 +65,8 @@ def _solve_turntable(cases, factors):
             sub["eccentricity"].to_numpy(float),
             sub["radial_load"].to_numpy(float),
         )
-        yield idx, solve(model, load), key
+        conditions = operating["conditions"](sub, key) if operating else {}
+        yield idx, analyze(ModelInput(model, load, source="seed000 study"), **conditions), key
 
 
 def _statics_table(res) -> dict:
@@ -101,7 +103,7 @@ def seed000_statics(cases):
     Geometry factors are the fields of :class:`~bearingkit.bearings.turntable.CompositeTurntableGeometry`.
     Clearances and groove curvature batch along the case axis; other geometry groups the cases.
     """
-    parts = [(idx, _statics_table(res)) for idx, res, _ in _solve_turntable(cases, SEED000_FACTORS)]
+    parts = [(idx, _statics_table(a.statics)) for idx, a, _ in _analyses(cases, SEED000_FACTORS)]
     return assemble_columns(len(cases), parts)
 
 
@@ -139,20 +141,22 @@ def seed000_friction(cases):
     Operating point: inner ring at ``speed`` [rad/s], outer ring fixed, ``lubricant`` at ``temperature``
     [°C], ``viscosity_factor`` and ``cage_mass`` [kg] as :class:`bearingkit.analysis.friction.OperatingPoint`.
     """
-    from bearingkit.analysis.friction import OperatingPoint, friction_torque
+
+    def conditions(sub, key) -> dict:
+        return {
+            "speed": sub["speed"].to_numpy(float),
+            "lubricant": str(key["lubricant"]),
+            "temperature": float(key["temperature"]),
+            "friction_options": {
+                "viscosity_factor": float(key["viscosity_factor"]),
+                "cage_mass": float(key["cage_mass"]),
+            },
+        }
 
     parts = []
-    for idx, res, key in _solve_turntable(cases, FRICTION_FACTORS):
-        sub = cases.iloc[idx]
-        op = OperatingPoint(
-            speed_inner=sub["speed"].to_numpy(float),
-            lubricant=str(key["lubricant"]),
-            temperature=float(key["temperature"]),
-            viscosity_factor=float(key["viscosity_factor"]),
-            cage_mass=float(key["cage_mass"]),
-        )
-        fr = friction_torque(res, op)
-        table = _statics_table(res)
+    for idx, a, _ in _analyses(cases, FRICTION_FACTORS, conditions=conditions):
+        fr = a.friction_by("components").native
+        table = _statics_table(a.statics)
         table["friction_torque_Nm"] = fr.total
         for name, v in fr.components.items():
             table[f"torque_{name}_Nm"] = v

@@ -1,0 +1,308 @@
+"""What the page sends, as data: the bearing it opened and the edits of its form, turned into an input file.
+
+SI inside; the form's values are text with units (``"5 kN"``, ``"3000 rpm"``) and stay text here: they
+are written into the input document (the dict a TOML file parses to) and parsed by the loader and its
+schema, exactly as if they had been typed into a file. So the page's errors are the loader's one-line
+messages, and the document is also what "download TOML" writes.
+
+An uploaded file is parsed by :mod:`tomllib` (data only, never executed) and validated by
+:func:`bearingkit.io.loader.from_dict`; its size is capped (:data:`MAX_TOML_BYTES`).
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+import tomllib
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from bearingkit.errors import InputError
+from bearingkit.io import loader, schema
+
+__all__ = [
+    "EXAMPLES_DIR",
+    "LOAD_FIELDS",
+    "MAX_TOML_BYTES",
+    "AnalyzeRequest",
+    "OpenRequest",
+    "Opened",
+    "Source",
+    "StrictModel",
+    "TooLarge",
+    "bearing_type_of",
+    "build_document",
+    "clearance_fields",
+    "examples",
+    "field_of",
+    "open_source",
+]
+
+#: The repository's example files (present in a source checkout; an installed wheel lists none).
+EXAMPLES_DIR = Path(__file__).resolve().parents[3] / "examples"
+#: Largest input file [bytes] the app reads or accepts as an upload. The largest example is ~5 kB; a
+#: hand-written bearing file with many load cases stays far below 256 kB.
+MAX_TOML_BYTES = 256 * 1024
+#: Longest designation [characters] (the longest real ones, e.g. "7209 BECBM/P4 DB", have < 30).
+MAX_DESIGNATION = 64
+#: Load-case fields the form edits (the rest of the chosen case, e.g. eccentricity, is kept).
+LOAD_FIELDS = ("F_x", "F_y", "F_z", "M_x", "M_y")
+#: Friction models the page offers (:data:`bearingkit.pipeline.FRICTION_MODELS`).
+FRICTION_CHOICES = ("components", "skf", "palmgren")
+#: Name of the one load case the page analyses when the file has none (a designation).
+PAGE_CASE = "page"
+
+
+class TooLarge(InputError):
+    """An input file above :data:`MAX_TOML_BYTES` (the server answers 413)."""
+
+
+class StrictModel(BaseModel):
+    """Request models: unknown fields are errors (a typo in a client is not silently ignored)."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Source(StrictModel):
+    """Where the bearing comes from: an example by file name, a designation, or an uploaded file's text."""
+
+    kind: Literal["example", "designation", "upload"]
+    name: str = Field(min_length=1, max_length=256)
+    text: str | None = None  # its size is checked with the file's name in the message (TooLarge)
+
+
+#: One value of the form (a number with its unit, a preset name): short text.
+FormText = Annotated[str, Field(max_length=64)]
+
+
+class OpenRequest(StrictModel):
+    """Open a bearing."""
+
+    source: Source
+
+
+class AnalyzeRequest(StrictModel):
+    """The page's state: a source plus the edits of the form (values as text with units; "" = not given)."""
+
+    source: Source
+    case: str | None = Field(None, max_length=256, description="The file's load case the form started from.")
+    loads: dict[Literal["F_x", "F_y", "F_z", "M_x", "M_y", "eccentricity"], FormText] = Field(
+        default_factory=dict
+    )
+    speed: FormText = ""
+    temperature: FormText = ""
+    geometry: dict[Annotated[str, Field(max_length=64)], FormText] = Field(default_factory=dict, max_length=8)
+    lubricant: FormText = ""
+    contamination: FormText = ""
+    friction_model: Literal["components", "skf", "palmgren"] = "components"
+
+
+def _is_bearing_file(path: Path) -> bool:
+    """A bearing input file (a ``[bearing]`` table), not a shaft or study file of the same folder."""
+    try:
+        return path.stat().st_size <= MAX_TOML_BYTES and "bearing" in tomllib.loads(path.read_text("utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return False
+
+
+def examples() -> list[str]:
+    """File names of the example bearings (``dgbb_6209.toml`` …), sorted."""
+    if not EXAMPLES_DIR.is_dir():
+        return []
+    return sorted(p.name for p in EXAMPLES_DIR.glob("*.toml") if p.is_file() and _is_bearing_file(p))
+
+
+def _parse_toml(text: str, source: str) -> dict:
+    size = len(text.encode("utf-8"))
+    if size > MAX_TOML_BYTES:
+        raise TooLarge(f"{source}: file too large ({size} bytes); at most {MAX_TOML_BYTES} bytes")
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError:
+        loader.loads(text, source)  # raises the loader's own one-line message
+        raise  # pragma: no cover - loads raised already
+
+
+def _source_document(source: Source) -> tuple[dict, str]:
+    """(raw input document, name used in messages) of ``source``."""
+    if source.kind == "example":
+        if source.name not in examples():  # a name from the list, never a path
+            raise InputError(f"example ({source.name!r}) is not one of {', '.join(examples()) or 'none'}")
+        path = EXAMPLES_DIR / source.name
+        if path.stat().st_size > MAX_TOML_BYTES:
+            raise TooLarge(f"{source.name}: file too large; at most {MAX_TOML_BYTES} bytes")
+        return _parse_toml(path.read_text(encoding="utf-8"), source.name), source.name
+    if source.kind == "designation":
+        name = " ".join(source.name.split())
+        if not name or len(name) > MAX_DESIGNATION or not name.isprintable():
+            raise InputError(
+                f"designation ({source.name[:MAX_DESIGNATION]!r}) must be a bearing designation such as "
+                "6205-2RS C3"
+            )
+        return {"bearing": {"designation": name}}, name
+    name = Path(source.name).name or "upload.toml"  # only the base name, for messages and downloads
+    if source.text is None:
+        raise InputError(f"{name}: no file content received")
+    return _parse_toml(source.text, name), name
+
+
+def _case_of(document: dict, name: str | None, source: str) -> dict:
+    """The raw ``[[load_cases]]`` table called ``name`` (the first when None; {} when there is none)."""
+    cases = document.get("load_cases") or []
+    if not isinstance(cases, list) or not all(isinstance(c, dict) for c in cases):
+        raise InputError(f"{source}: load_cases must be an array of tables [[load_cases]]")
+    if name is None:
+        return dict(cases[0]) if cases else {}
+    for c in cases:
+        if c.get("name") == name:
+            return dict(c)
+    names = [c.get("name") for c in cases]
+    raise InputError(f"{source}: case ({name!r}) not in the file; cases are {names}")
+
+
+def clearance_fields(bearing_type: str | None) -> list[str]:
+    """Geometry fields of ``bearing_type`` that are clearances (what the page lets the user override)."""
+    model = schema.GEOMETRY_MODELS.get(bearing_type or "")
+    if model is None:
+        return []
+    return [k for k in model.model_fields if k.startswith("clearance")]
+
+
+def build_document(request: AnalyzeRequest) -> tuple[dict, str]:
+    """The input document of the page's state and the source name for messages.
+
+    One load case: the chosen case of the file (or a new one) with the form's loads, speed and
+    temperature; the form's clearances in ``[geometry]``; the chosen lubricant in ``[lubricant]``.
+    Empty form values leave the file's value (loads: an empty field is 0, as in a file).
+    """
+    document, source = _source_document(request.source)
+    document = copy.deepcopy(document)
+    base = _case_of(document, request.case, source)
+    case = {k: v for k, v in base.items() if k not in (*LOAD_FIELDS, "eccentricity", "speed", "temperature")}
+    case.setdefault("name", PAGE_CASE)
+    for key in (*LOAD_FIELDS, "eccentricity"):
+        value = request.loads.get(key, "").strip() if request.loads else base.get(key, "")
+        if value:
+            case[key] = value
+    for key in ("speed", "temperature"):
+        value = getattr(request, key).strip()
+        if value:
+            case[key] = value
+    edited = any(case.get(k) != base.get(k) for k in (*LOAD_FIELDS, "eccentricity", "speed", "temperature"))
+    if edited and base:  # the file's name would now describe another load (e.g. "radial_8.9kN" at 6 kN)
+        case["name"] = f"{base.get('name', PAGE_CASE)} (edited)"
+    document["load_cases"] = [case]
+    if request.geometry:
+        header = document.get("bearing") if isinstance(document.get("bearing"), dict) else {}
+        allowed = clearance_fields(bearing_type_of(header))
+        geometry = document.setdefault("geometry", {})
+        if not isinstance(geometry, dict):
+            raise InputError(f"{source}: geometry must be a table [geometry]")
+        for key, value in request.geometry.items():
+            if key not in allowed:
+                raise InputError(
+                    f"{source}: geometry.{key}: the page edits only clearances "
+                    f"({', '.join(allowed) or 'none for this bearing type'})"
+                )
+            if value.strip():
+                geometry[key] = value.strip()
+    if request.lubricant.strip():
+        document["lubricant"] = {"name": request.lubricant.strip()}
+    return document, source
+
+
+def bearing_type_of(header: dict) -> str | None:
+    """The bearing type of a header, resolving a designation through the catalogue."""
+    if header.get("type"):
+        return header["type"]
+    if header.get("designation"):
+        from bearingkit.catalogue import resolve
+
+        try:
+            return resolve(str(header["designation"])).bearing_type
+        except InputError:
+            return None
+    return None
+
+
+class Opened(BaseModel):
+    """What the page needs to show a freshly opened bearing (and fill its form)."""
+
+    source: str
+    bearing_name: str
+    bearing_type: str
+    description: str
+    cases: list[dict]
+    clearances: dict[str, str]
+    lubricant: str | None
+    free_dofs: list[str]
+
+
+def _text(value) -> str:
+    """A document value as the form shows it: the file's own text (a valid file gives units as text)."""
+    return "" if value is None else str(value)
+
+
+def open_source(source: Source) -> Opened:
+    """Load ``source`` (validating it whole) and describe it for the form."""
+    document, name = _source_document(source)
+    bearing = loader.from_dict(copy.deepcopy(document), source=name)
+    raw_cases = document.get("load_cases") or []
+    cases = []
+    for raw in raw_cases:
+        entry = {"name": raw.get("name", "")}
+        for key in (*LOAD_FIELDS, "eccentricity", "speed", "temperature"):
+            entry[key] = _text(raw.get(key))
+        cases.append(entry)
+    given = document.get("geometry") or {}
+    clearances = {}
+    for key in clearance_fields(bearing.bearing_type):
+        if key in given:
+            clearances[key] = _text(given[key])
+        else:  # estimated (designation) or the builder's default: shown in µm, not sent back unless edited
+            value = getattr(bearing.geometry, key, None)
+            clearances[key] = "" if value is None else f"{value * 1e6:.6g} um"
+    free = [n for n, f in zip(loader.DOF_NAMES, bearing.free, strict=True) if f]
+    return Opened(
+        source=name,
+        bearing_name=bearing.model.name,
+        bearing_type=bearing.bearing_type,
+        description=bearing.spec.bearing.source or "",
+        cases=cases,
+        clearances=clearances,
+        lubricant=None if bearing.lubricant is None else bearing.lubricant.name,
+        free_dofs=free,
+    )
+
+
+#: A loader message's field: ``SOURCE: load_cases[0].F_x (…)`` or ``load case 'x': M_x (…) acts on …``.
+_PATH = re.compile(r"^(?:load_cases\[\d+\]\.)?([A-Za-z_][\w.]*)")
+_CASE_FIELD = re.compile(r"load case '[^']*': (\w+) \(")
+
+
+def field_of(message: str, source: str) -> str:
+    """The form field an error message is about (``load.F_x``, ``speed``, ``geometry.clearance_radial``,
+    ``lubricant``, ``contamination``), or ``source`` for the bearing itself."""
+    text = message[len(source) + 2 :] if message.startswith(f"{source}: ") else message
+    m = _CASE_FIELD.search(text)
+    if m and m.group(1) in LOAD_FIELDS:
+        return f"load.{m.group(1)}"
+    if text.startswith("load_cases"):
+        m = _PATH.match(text)
+        key = m.group(1) if m else ""
+        if key in (*LOAD_FIELDS, "eccentricity"):
+            return f"load.{key}"
+        if key in ("speed", "temperature"):
+            return key
+        return "source"
+    m = _PATH.match(text)
+    head = m.group(1) if m else ""
+    if head.startswith("geometry.clearance"):
+        return head
+    if head.startswith("lubricant"):
+        return "lubricant"
+    if head in ("speed", "temperature", "contamination"):
+        return head
+    return "source"
