@@ -17,8 +17,7 @@ File layout (see docs/input-format.md)::
     [operating]    speed effects, tilt, preload, temperatures (optional)
     [fits]         shaft / housing tolerance fields      (optional)
     [lubrication]  contamination, roughness, grease      (optional)
-    [[duty_cycle]] load-case fields + time_fraction | revolution_fraction   (optional, schema_cycle)
-    [[tolerances]] path, distribution, mean/std/low/high | clearance_class (optional, schema_cycle)
+    [[duty_cycle]] [[tolerances]]  load spectrum, scatter of values (optional, io.schema_cycle)
 
 The geometry table depends on ``bearing.type``; :data:`GEOMETRY_MODELS` maps each type to its
 model, and :func:`json_schema` writes the dependency as JSON Schema ``if``/``then`` clauses.
@@ -277,12 +276,8 @@ class BearingFile(_Strict):
     lubrication: dict[str, Any] | None = Field(
         None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
     )
-    duty_cycle: list[dict[str, Any]] = Field(
-        default_factory=list, description="Bins of a load spectrum (io.schema_cycle.DutyBinSpec)."
-    )
-    tolerances: list[dict[str, Any]] = Field(
-        default_factory=list, description="Scatter of input values (io.schema_cycle.ToleranceSpec)."
-    )
+    duty_cycle: list[dict[str, Any]] = Field(default_factory=list, description="Load bins (schema_cycle).")
+    tolerances: list[dict[str, Any]] = Field(default_factory=list, description="Scatter (schema_cycle).")
 
     @field_validator("load_cases")
     @classmethod

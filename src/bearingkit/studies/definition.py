@@ -444,6 +444,10 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         raise InputError(_pydantic_message(exc, source, head)) from None
     _check(definition)
     _check_plots(definition, ev)
+    if not ev.fill_defaults:  # the generic evaluator: every level built into the input once
+        from bearingkit.studies.generic import check_values
+
+        check_values(ev, definition)
     return definition
 
 

@@ -38,7 +38,7 @@ __all__ = ["GENERIC", "GenericModel", "is_designation", "load_bearing", "study_e
 GENERIC = "generic"
 #: Analysis parts whose outputs a study gets when it lists no ``outputs`` (friction and the duty cycle
 #: cost another model or more solves: they are computed when the study names one of their outputs).
-DEFAULT_PARTS = ("statics", "rows", "rating")
+DEFAULT_PARTS = ("statics", "rows", "rating", "lubrication")
 #: Name of the load case a study adds when the input has none (a designation, or a duty cycle only).
 DEFAULT_CASE = "load"
 
@@ -169,25 +169,24 @@ class GenericModel:
 
     def evaluate_group(self, sub, key: dict) -> dict:
         """Outputs (name → (G,)) of the G cases of ``sub`` sharing the non-batched values ``key``."""
-        from bearingkit.pipeline import Analysis, Operating
+        from bearingkit.pipeline import analyze
 
         bearing = self.build(key)
         g = len(sub)
         quantities = [self.catalogue[n] for n in self.outputs]
         parts = qmod.parts_of(quantities)
         cases = self._load_cases(bearing, sub, g)
-        bins = self._bin_cases(bearing, sub, g) if "duty" in parts else []
-        run = bearing.with_cases(cases + bins)
         settings = {k.split(".", 1)[1]: v for k, v in key.items() if self.paths[k].kind == "analysis"}
         settings = {k: v for k, v in settings.items() if not _missing(v)}
-        operating = Operating.of(
-            run,
-            rotating=settings.get("rotating", "inner"),
-            contamination=settings.get("contamination"),
-            reliability=settings.get("reliability", 0.9),
-        )
-        analysis = Analysis(run, operating, friction_model=settings.get("friction_model", "components"))
-        duty = self._duty(analysis, bearing, g) if bins else None
+        options = {
+            "rotating": settings.get("rotating", "inner"),
+            "contamination": settings.get("contamination"),
+            "reliability": settings.get("reliability", 0.9),
+            "friction_model": settings.get("friction_model", "components"),
+        }
+        # the pipeline's one entry: the same contamination and lubricant checks as the command line
+        analysis = analyze(bearing.with_cases(cases), **options)
+        duty = self._duty(bearing, sub, g, options) if "duty" in parts else None
         table = qmod.extract(analysis, g, quantities, duty)
         table["error"] = np.full(g, "", dtype=object)
         return table
@@ -242,24 +241,33 @@ class GenericModel:
             out += _cases(lc.name, self._columns(sub, f"duty_cycle.{lc.name}", spec, g), g, LoadCase)
         return out
 
-    def _duty(self, analysis, bearing, g: int) -> dict:
-        """Bin lives (G, B) and the combined lives (G,) of every case's duty cycle."""
+    def _duty(self, bearing, sub, g: int, options: dict) -> dict:
+        """Bin lives (G, B) and the combined lives (G,) of every case's duty cycle.
+
+        The G·B bins of the group are ONE batched Analysis of their own (not mixed with the study's
+        load cases: a case without speed would take the speed, hence a_ISO and hours, from the bins'
+        rating). Bins at rest in a time-fraction cycle turn no revolutions and are left out.
+        """
+        from bearingkit.pipeline import analyze
         from bearingkit.pipeline.duty_cycle import bin_lives, combine
 
         cycle = bearing.duty_cycle
         b = len(cycle.bins)
-        rating = analysis.rating
-        if rating is None:
-            life = modified = np.full((g, b), np.nan)
-        else:
-            life = bin_lives(rating, "life")[g:].reshape(b, g).T
-            modified = bin_lives(rating, "modified_life")[g:].reshape(b, g).T
-        speeds = analysis.operating.speed[g:].reshape(b, g).T
-        if cycle.kind == "time":  # bins at rest turn no revolutions: no damage (and no a_ISO needed)
-            rest = speeds == 0.0
-            life, modified = np.where(rest, np.inf, life), np.where(rest, np.inf, modified)
+        bins = self._bin_cases(bearing, sub, g)  # bin-major: bin j of case k at j·g + k
+        speeds = np.array([c.speed or 0.0 for c in bins]).reshape(b, g).T
+        turning = (speeds != 0.0).T.ravel() if cycle.kind == "time" else np.ones(g * b, bool)
+        life = np.full(g * b, np.inf)  # a bin at rest does no damage
+        modified = np.full(g * b, np.inf)
+        if turning.any():
+            run = analyze(bearing.with_cases([c for c, t in zip(bins, turning, strict=True) if t]), **options)
+            if run.rating is None:
+                life[turning] = modified[turning] = np.nan
+            else:
+                life[turning] = bin_lives(run.rating, "life")
+                modified[turning] = bin_lives(run.rating, "modified_life")
+        life, modified = life.reshape(b, g).T, modified.reshape(b, g).T
         out = combine({"L10r": life, "Lnmr": modified}, cycle.fractions, cycle.kind, speeds)
-        out["bin_L10r"] = life
+        out["bin_L10r"] = np.where(speeds == 0.0, np.nan, life) if cycle.kind == "time" else life
         return out
 
 
@@ -396,6 +404,42 @@ def study_evaluator(bearing_source: str, head: dict, names=(), source: str = "<s
             factor_noun=f"a path of {Path(bearing_source).name} (bearingkit study --list-factors lists them)",
         )
     return _EVALUATORS[key]
+
+
+def check_values(ev: Evaluator, definition) -> None:
+    """Refuse, before anything runs, a value of the study the input cannot take (one line naming it).
+
+    Text values are checked against the choices the schema lists; every distinct level of a ``file``
+    path is built into the input once (with the study's fixed values), so a level the loader refuses
+    (a negative diameter, a row outside the envelope) stops the study here, not in a worker.
+    """
+    model = _model_of(ev, "check_values")
+    src = definition.source
+    groups = [("fixed", [(k, v) for k, v in definition.fixed.items()])]
+    groups += [
+        (f"factors[{i}] ({f.name}).levels", [(f.name, v) for v in (f.levels or ())])
+        for i, f in enumerate(definition.factors)
+    ]
+    for where, items in groups:
+        for path, value in items:
+            p = model.paths[path]
+            if p.choices and value not in p.choices:
+                raise InputError(
+                    f"{src}: {where} ({value!r}) must be one of {', '.join(p.choices)} for {path}"
+                )
+    fixed = {k: v for k, v in definition.fixed.items() if model.paths[k].kind == "file"}
+    try:
+        model.build(fixed)
+    except InputError as exc:
+        raise InputError(f"{src}: fixed: the bearing with these values is refused: {exc}") from None
+    for where, items in groups[1:]:
+        for path, value in dict.fromkeys(items):
+            if model.paths[path].kind != "file":
+                continue
+            try:
+                model.build({**fixed, path: value})
+            except InputError as exc:
+                raise InputError(f"{src}: {where} ({value!r}) is refused by the bearing: {exc}") from None
 
 
 # ------------------------------------------------------------------------------ tolerances

@@ -24,7 +24,7 @@ DOFS = ("x", "y", "z", "thx", "thy")
 _DOF_LONG = ("u_x", "u_y", "u_z", "theta_x", "theta_y")
 
 #: The parts of an Analysis, in the order they are computed (a later part may need an earlier one).
-PARTS = ("statics", "rows", "rating", "friction", "duty")
+PARTS = ("statics", "rows", "rating", "lubrication", "friction", "duty")
 
 
 @dataclass(frozen=True)
@@ -432,6 +432,65 @@ def _friction() -> list[Quantity]:
     ]
 
 
+def _lubrication_of(c: _Context):
+    outcome = c.analysis.lubrication
+    return None if outcome is None else outcome.result
+
+
+def _kappa(c: _Context, rows: Sequence[str]) -> np.ndarray:
+    res = _lubrication_of(c)
+    if res is None:
+        return np.full(c.n, np.nan)
+    values = [np.asarray(res.kappa[r], float)[: c.n] for r in rows if r in res.kappa]
+    return np.min(values, axis=0) if values else np.full(c.n, np.nan)
+
+
+def _film(c: _Context, row: str) -> np.ndarray:
+    res = _lubrication_of(c)
+    if res is None:
+        return np.full(c.n, np.nan)
+    for f in res.films:
+        if f.row == row:
+            hi = np.where(f.loaded_inner, f.film_minimum_inner, np.inf).min(-1)
+            ho = np.where(f.loaded_outer, f.film_minimum_outer, np.inf).min(-1)
+            h = np.minimum(hi, ho)[: c.n]
+            return np.where(np.isfinite(h), h, np.nan)
+    return np.full(c.n, np.nan)
+
+
+def _lubrication(rows: Sequence[str]) -> list[Quantity]:
+    out = [
+        Quantity(
+            "kappa",
+            "-",
+            "viscosity ratio κ = ν/ν1 (ISO 281 9.3.3; the smallest over the rows; NaN at rest)",
+            "lubrication",
+            lambda c: _kappa(c, rows),
+        )
+    ]
+    for name in rows:
+        if len(rows) > 1:
+            out.append(
+                Quantity(
+                    f"{name}_kappa",
+                    "-",
+                    f"viscosity ratio κ of row {name!r}",
+                    "lubrication",
+                    lambda c, r=name: _kappa(c, (r,)),
+                )
+            )
+        out.append(
+            Quantity(
+                f"{name}_film_min_m",
+                "m",
+                f"smallest minimum film thickness over the loaded contacts of row {name!r} (EHL)",
+                "lubrication",
+                lambda c, r=name: _film(c, r),
+            )
+        )
+    return out
+
+
 def _duty(bins: Sequence[str]) -> list[Quantity]:
     out = [
         Quantity(
@@ -511,7 +570,7 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items += _flags(bearing.model.rows)
     items += _warnings()
     if bearing.lubricant is not None:
-        items += _friction()
+        items += _lubrication(rows) + _friction()
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
         items += _duty(cycle.names)
