@@ -557,8 +557,8 @@ def _warnings() -> list[Quantity]:
 def catalogue(bearing) -> dict[str, Quantity]:
     """Every output the generic evaluator offers for ``bearing`` (a BearingInput), by name.
 
-    Friction outputs are offered when the input names a lubricant (the friction models need its
-    viscosity); duty-cycle outputs when it has a ``[[duty_cycle]]``.
+    Lubrication and friction outputs need a lubricant (the file's, or ``lubricant.name`` set by the
+    study; NaN without one); duty-cycle outputs are offered when the input has a ``[[duty_cycle]]``.
     """
     rows = [r.name for r in bearing.model.rows]
     sliced = [
@@ -569,8 +569,7 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
     items += _flags(bearing.model.rows)
     items += _warnings()
-    if bearing.lubricant is not None:
-        items += _lubrication(rows) + _friction()
+    items += _lubrication(rows) + _friction()  # NaN without a lubricant (a study may set lubricant.name)
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
         items += _duty(cycle.names)

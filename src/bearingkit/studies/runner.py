@@ -204,4 +204,5 @@ def _select(frame, outputs):
         raise InputError(
             f"study.outputs {missing} are not outputs of the evaluator; it gives {list(frame.columns)}"
         )
-    return frame[["case", *outputs]]
+    keep = ["error"] if "error" in frame.columns and "error" not in outputs else []  # why a group failed
+    return frame[["case", *outputs, *keep]]
