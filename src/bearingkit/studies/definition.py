@@ -142,7 +142,11 @@ class PlotDef(_Strict):
     y: tuple[str, ...]
     series: str | None = None
     title: str | None = None
-    log_y: bool = False
+    log_y: bool | tuple[str, ...] = False
+
+    def logarithmic(self, y: str) -> bool:
+        """True when the panel of output ``y`` has a logarithmic axis (``log_y`` true, or naming ``y``)."""
+        return self.log_y is True or (isinstance(self.log_y, tuple) and y in self.log_y)
 
     @field_validator("y", mode="before")
     @classmethod

@@ -88,9 +88,13 @@ def scale_for(unit: str | None, values) -> tuple[str, float]:
 
 
 def display(name: str, values, dimension: str | None = None) -> tuple[np.ndarray, str]:
-    """``values`` in display units and the axis label ``name [unit]``."""
-    label, factor = scale_for(column_unit(name, dimension), values)
+    """``values`` in display units and the axis label ``name [unit]`` (an output's SI suffix dropped:
+    ``k_zz_N_per_m`` → ``k_zz [N/µm]``)."""
+    unit = column_unit(name, dimension)
+    label, factor = scale_for(unit, values)
     shown = np.asarray(values, dtype=float) * factor
+    if dimension is None and unit is not None:
+        name = next(name[: -len(s)] for s, u in _SUFFIXES if name.endswith(s))
     return shown, axis_label(name, label)
 
 

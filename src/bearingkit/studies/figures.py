@@ -7,7 +7,8 @@ Kinds (``kind``):
 
 - ``lines`` — ``y`` against ``x``, one line per value of ``series`` (e.g. max load vs radial load, a
   line per clearance): one panel per ``y``;
-- ``map`` — filled contours of ``y`` over the grid of ``x`` × ``series`` (a factorial of two factors);
+- ``map`` — ``y`` over the grid of ``x`` × ``series`` (a factorial of two factors), one cell per
+  design point, with contour lines of continuous outputs;
 - ``scatter`` — ``y`` against ``x`` point by point (e.g. life against a sampled clearance);
 - ``histogram`` — the distribution of ``y`` over the cases (Monte Carlo), with its quantiles marked.
 """
@@ -54,7 +55,8 @@ def plot(
     Parameters
     ----------
     spec : PlotDef
-        ``kind``, ``x``, ``y`` (tuple), ``series``, ``title``, ``log_y``.
+        ``kind``, ``x``, ``y`` (tuple), ``series``, ``title``, ``log_y`` (true, or the outputs whose
+        panels have a logarithmic axis).
     results : DataFrame
         The study's results (factors and outputs, SI).
     path : path
@@ -92,7 +94,7 @@ def plot(
                 ax.set_title(ylabel, fontsize=9)
             else:
                 ax.set(xlabel=xlabel, ylabel=ylabel)
-        if spec.log_y and spec.kind in ("lines", "scatter"):
+        if spec.logarithmic(y) and spec.kind in ("lines", "scatter"):
             ax.set_yscale("log")
         ax.grid(True, alpha=0.3)
     if spec.title:
@@ -125,7 +127,11 @@ def _map(fig, ax, results, xv, yv, series, dims, ylabel) -> None:
         return
     grid = np.full((ss.size, xs.size), np.nan)
     grid[np.searchsorted(ss, sv), np.searchsorted(xs, xv)] = yv
-    filled = ax.contourf(xs, ss, grid, levels=14, cmap="viridis")
-    lines = ax.contour(xs, ss, grid, levels=7, colors="k", linewidths=0.5)
-    ax.clabel(lines, fontsize=6, fmt="%.3g")
-    fig.colorbar(filled, ax=ax, label=ylabel)
+    # one cell per design point (the values computed, nothing interpolated); contour lines on top of
+    # continuous outputs only (counts and flags change in steps)
+    cells = ax.pcolormesh(xs, ss, grid, shading="nearest", cmap="viridis")
+    finite = grid[np.isfinite(grid)]
+    if finite.size and not np.allclose(finite, np.round(finite)) and np.ptp(finite) > 0:
+        lines = ax.contour(xs, ss, grid, levels=7, colors="k", linewidths=0.5)
+        ax.clabel(lines, fontsize=6, fmt="%.3g")
+    fig.colorbar(cells, ax=ax, label=ylabel)
