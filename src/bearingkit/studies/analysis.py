@@ -186,6 +186,7 @@ def plot_main_effects(
     Panels are titled by the factor NAME (its short label, if any, in parentheses); level values and
     the response are shown in display units (:mod:`bearingkit.studies.display`): ``dimensions`` maps a
     factor to its physical dimension; the response's unit comes from its name (``…_N``, ``…_m``).
+    Returns (title, x label, tick labels) of every panel.
     """
     from bearingkit.studies import display
 
@@ -216,7 +217,11 @@ def plot_main_effects(
     axes[0][0].set_ylabel(f"mean {ylabel}")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+    shown = [
+        (ax.get_title(), ax.get_xlabel(), [t.get_text() for t in ax.get_xticklabels()]) for ax in axes[0]
+    ]
     plt.close(fig)
+    return shown
 
 
 def plot_range(ranges, path, response: str = "response"):

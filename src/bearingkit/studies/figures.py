@@ -49,7 +49,7 @@ def plot(
     path,
     dimensions: Mapping[str, str] | None = None,
     quantiles: Sequence[float] = (0.05, 0.5, 0.95),
-) -> None:
+) -> list[tuple[str, str]]:
     """Draw one ``[[plots]]`` entry of a study into a PNG file.
 
     Parameters
@@ -65,6 +65,11 @@ def plot(
         Factor name → physical dimension (outputs carry their unit in their name).
     quantiles : sequence of float
         Marked on histograms.
+
+    Returns
+    -------
+    list of (str, str)
+        The x and y axis labels of every panel.
     """
     plt = _plt()
     dims = dict(dimensions or {})
@@ -101,7 +106,9 @@ def plot(
         fig.suptitle(spec.title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+    labels = [(ax.get_xlabel(), ax.get_ylabel()) for ax in axes[0]]
     plt.close(fig)
+    return labels
 
 
 def _lines(ax, results, xv, yv, series, dims) -> None:
