@@ -505,13 +505,18 @@ def _check_single_tapered(source: str, model, cases, free) -> None:
 
 
 def _check_fixed_loads(source: str, cases, free) -> None:
-    for c in cases:
-        for i in np.flatnonzero(~np.asarray(free)):
-            if c.load[i] != 0.0:
-                raise InputError(
-                    f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
-                    f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
-                )
+    fixed = np.flatnonzero(~np.asarray(free))
+    if not len(cases) or not fixed.size:
+        return
+    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
+    bad = np.argwhere(loads != 0.0)
+    if bad.size:
+        k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find
+        c, i = cases[k], fixed[j]
+        raise InputError(
+            f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
+            f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
+        )
 
 
 def _material(source: str, spec: schema.MaterialSpec | None):
