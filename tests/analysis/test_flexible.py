@@ -153,6 +153,43 @@ def test_to_dict_is_json_with_shares_and_ring_shape():
     assert rigid["ring"]["flexural_rigidity_Nm2"] is None  # ∞ is not JSON
 
 
+def test_ring_moment_is_the_curvature_change_of_the_coupled_deflection():
+    """The reported ring bending moment is −EI (w″ + w)/R² of the bending deflection the coupled solve
+    used (finite differences between elements), and the fibre stresses are N/A ∓ M c/I."""
+    ring = outer_ring(G, bending=True)
+    flex = solve_flexible(MODEL, CONDITIONS[:1], ring)
+    theta, h = np.array([0.9, 2.0, 3.3, 4.6]) + 0.013, 1e-4  # off the element azimuths
+    w = [flex.deflection_shape(theta + d)[0] for d in (-h, 0.0, h)]
+    ei, r = ring.flexural_rigidity, ring.section.centroid_radius
+    m_fd = -ei * ((w[0] - 2 * w[1] + w[2]) / h**2 + w[1]) / r**2
+    forces = flex.ring_forces(theta)
+    assert forces.moment[0] == pytest.approx(m_fd, rel=1e-4, abs=1e-6 * np.abs(m_fd).max())
+    d = flex.to_dict(0)["ring"]
+    assert len(d["bending_moment_Nm"]) == flex_mod.SHAPE_POINTS
+    m, n = np.array(d["bending_moment_Nm"]), np.array(d["hoop_force_N"])
+    sec = ring.section
+    outer = np.array(d["fibre_stress_outer_Pa"])
+    assert outer == pytest.approx(
+        n / sec.area + m * (sec.outer_radius - sec.centroid_radius) / sec.area_moment
+    )
+    assert d["max_fibre_stress_Pa"] >= np.abs(outer).max()
+
+
+def test_ring_moment_figure_draws_moment_and_stresses(tmp_path):
+    from bearingkit.report.ring_plots import ring_moment_figure, write_ring_moment
+
+    flex = solve_flexible(MODEL, CONDITIONS[:1], outer_ring(G, bending=True))
+    fig = ring_moment_figure({"beam + ovalisation": flex})
+    ax_m, ax_s = fig.axes
+    m = ax_m.lines[0].get_ydata()
+    assert np.max(np.abs(m)) == pytest.approx(
+        np.max(np.abs(flex.ring_forces(ax_m.lines[0].get_xdata() * np.pi / 180).moment[0]))
+    )
+    assert len(ax_s.lines) == 2  # outer and inner fibre
+    path = write_ring_moment(tmp_path / "m.png", {"beam + ovalisation": flex})
+    assert path.stat().st_size > 10000
+
+
 def test_rigid_housing_equals_beam_only_through_the_coupled_solve():
     """k_h → ∞ removes the ovalisation: beam + ovalisation in a rigid housing is the beam model (1e-9)."""
     beam = solve_flexible(MODEL, CONDITIONS, outer_ring(G, bending=False))

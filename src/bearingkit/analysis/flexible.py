@@ -157,7 +157,10 @@ class FlexibleResult:
         The engine's dict at the coupled solution (:meth:`QuasiStaticResult.to_dict`: loads, loaded
         counts, max contact load and pressure per row), with per row the radial and axial share and
         the outer-raceway radial offset at each element, the coupling diagnostics, and the ring:
-        its model and the bending deflection shape on :data:`SHAPE_POINTS` azimuths.
+        its model and the bending deflection shape on :data:`SHAPE_POINTS` azimuths, with the ring's
+        bending moment ``bending_moment_Nm`` (outer fibre in tension > 0), hoop force ``hoop_force_N``
+        (housing model: the uniform part of the element loads is the housing's) and, when the section
+        knows its radii, the hoop stress at the inner and outer fibre and its largest magnitude.
         """
         if case is None:
             return [self.to_dict(c) for c in range(self.n_cases)]
@@ -196,7 +199,21 @@ class FlexibleResult:
             "shape_azimuth_rad": theta.tolist(),
             "bending_deflection_m": self.deflection_shape(theta)[case].tolist(),
         }
+        forces = self.ring_forces(theta)
+        out["ring"]["bending_moment_Nm"] = forces.moment[case].tolist()
+        out["ring"]["hoop_force_N"] = forces.normal_force[case].tolist()
+        stress = ring.fibre_stress(forces)
+        if stress is not None:
+            inner, outer = (s[case] for s in stress)
+            out["ring"]["fibre_stress_inner_Pa"] = inner.tolist()
+            out["ring"]["fibre_stress_outer_Pa"] = outer.tolist()
+            out["ring"]["max_fibre_stress_Pa"] = float(max(np.abs(inner).max(), np.abs(outer).max()))
         return out
+
+    def ring_forces(self, theta):
+        """Ring bending moment M (outer fibre in tension > 0), hoop force and shear (C, M) at θ
+        (:meth:`~bearingkit.rings.flexible.FlexibleOuterRing.ring_forces`)."""
+        return self.ring.ring_forces(self.result.model, self.result, theta)
 
 
 def _layout(ring, model) -> tuple[list, list, tuple]:

@@ -8,6 +8,8 @@ SI inside (m, N, rad); only the axis labels convert (µm, N, degrees). The funct
   outer raceway at each element of the chosen rows (thin-ring bending + beam opening) for every
   flexible solution (the rigid ring is the zero line); bottom, the element loads of the same rows,
   rigid against flexible.
+- :func:`ring_moment_figure` — the ring's bending moment (outer fibre in tension > 0) and, when the
+  section knows its radii, the hoop stress at the inner and outer fibre against azimuth.
 """
 
 from __future__ import annotations
@@ -101,5 +103,64 @@ def write_ring_shape(path, rigid, flexible: dict, **kwargs) -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig = ring_shape_figure(rigid, flexible, **kwargs)
+    fig.savefig(path, dpi=DPI, metadata={"Software": None})
+    return path
+
+
+#: Azimuths of the moment figure [–] (one point per degree).
+MOMENT_POINTS = 360
+
+
+def ring_moment_figure(flexible: dict, case: int = 0, title: str = "") -> Figure:
+    """Ring bending moment and fibre stresses against azimuth for one or more flexible solutions.
+
+    Parameters
+    ----------
+    flexible : dict of str to FlexibleResult
+        Label → flexible solution.
+    case : int
+        Load case to draw.
+    title : str
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Top: M [N·m] (outer fibre in tension > 0); bottom: hoop stress at the inner (dashed) and outer
+        (solid) fibre [MPa], for the solutions whose ring section knows its radii.
+    """
+    fig = Figure(figsize=(8.0, 6.4), dpi=DPI)
+    FigureCanvasAgg(fig)
+    ax_m, ax_s = fig.subplots(2, 1, sharex=True)
+    theta = np.linspace(-np.pi, np.pi, MOMENT_POINTS, endpoint=False)
+    deg = np.rad2deg(theta)
+    for i, (label, flex) in enumerate(flexible.items()):
+        colour = f"C{i + 1}"
+        forces = flex.ring_forces(theta)
+        ax_m.plot(deg, forces.moment[case], color=colour, label=label)
+        stress = flex.ring.fibre_stress(forces)
+        if stress is not None:
+            ax_s.plot(deg, stress[1][case] / 1e6, color=colour, label=f"{label}, outer fibre")
+            ax_s.plot(deg, stress[0][case] / 1e6, "--", color=colour, label=f"{label}, inner fibre")
+    ax_m.axhline(0.0, color="0.5", lw=0.8)
+    ax_m.set_ylabel("ring bending moment M [N·m]\n(outer fibre in tension +)")
+    ax_s.set_ylabel("hoop stress [MPa]")
+    ax_s.set_xlabel("azimuth ψ [deg] (radial load along ψ = 0)")
+    ax_s.set_xlim(-180, 180)
+    ax_s.set_xticks(np.arange(-180, 181, 45))
+    for ax in (ax_m, ax_s):
+        ax.grid(alpha=0.3)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7, ncol=2)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def write_ring_moment(path, flexible: dict, **kwargs) -> Path:
+    """Draw :func:`ring_moment_figure` and write it as PNG (parent folders created); returns the path."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig = ring_moment_figure(flexible, **kwargs)
     fig.savefig(path, dpi=DPI, metadata={"Software": None})
     return path

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.physics.structure import ring_beam, thin_ring
+from bearingkit.physics.structure import ring_beam, thin_ring, thin_ring_forces
 from bearingkit.rings.section import RingSection
 from bearingkit.rows.base import RacewayOffset
 
@@ -259,6 +259,34 @@ class FlexibleOuterRing:
             self.section.centroid_radius,
             self.flexural_rigidity,
             housing_stiffness=self.housing_stiffness,
+        )
+
+    def ring_forces(self, model, result, theta) -> thin_ring_forces.RingForces:
+        """Bending moment, hoop force and shear of the ring (C, M) at angles θ under the element loads.
+
+        The housing model of the deflection (:mod:`bearingkit.physics.structure.thin_ring_forces`,
+        ``support="housing"``): the n = 0, 1 harmonics of the element loads go to the housing, the
+        housing wall (k_h) holds the ovalisation. The hoop force therefore excludes the uniform part
+        that the housing takes. Computed whether or not the ring's bending enters the contacts
+        (``bending``), since a ring carries these moments even when its deflection is neglected.
+        """
+        loads = self.ring_loads(model, result)
+        theta = np.asarray(theta, dtype=float)
+        return thin_ring_forces.ring_forces(
+            theta,
+            self.section.centroid_radius,
+            radial=(loads.azimuth, loads.radial),
+            flexural_rigidity=self.flexural_rigidity,
+            housing_stiffness=self.housing_stiffness,
+        )
+
+    def fibre_stress(self, forces: thin_ring_forces.RingForces):
+        """Hoop stress (inner, outer fibre) [Pa] of ``forces``; None if the section's radii are unknown."""
+        sec = self.section
+        if sec.inner_fibre is None or sec.outer_fibre is None:
+            return None
+        return thin_ring_forces.fibre_stress(
+            forces.moment, forces.normal_force, sec.area, sec.area_moment, sec.inner_fibre, sec.outer_fibre
         )
 
 

@@ -38,6 +38,10 @@ class RingSection:
         Radius of the section centroid (the thin ring's R).
     beam_area_moment : float or None [m⁴]
         Second moment of the axial beam strip (None: no beam deflection).
+    bore_radius : float or None [m]
+        Radius of the inner surface (None: unknown; fibre stresses are then not available).
+    outer_radius : float or None [m]
+        Largest radius of the outer surface (None: unknown).
     """
 
     area_moment: float
@@ -45,6 +49,8 @@ class RingSection:
     width: float
     centroid_radius: float
     beam_area_moment: float | None = None
+    bore_radius: float | None = None
+    outer_radius: float | None = None
 
     def __post_init__(self):
         checks.positive("area_moment", self.area_moment, "m^4")
@@ -53,6 +59,26 @@ class RingSection:
         checks.positive("centroid_radius", self.centroid_radius, "m")
         if self.beam_area_moment is not None:
             checks.positive("beam_area_moment", self.beam_area_moment, "m^4")
+        if self.bore_radius is not None and not 0 < self.bore_radius < self.centroid_radius:
+            raise checks.InputError(
+                f"bore_radius ({self.bore_radius:.6g} m) must lie between 0 and the centroid radius "
+                f"({self.centroid_radius:.6g} m)"
+            )
+        if self.outer_radius is not None and not self.outer_radius > self.centroid_radius:
+            raise checks.InputError(
+                f"outer_radius ({self.outer_radius:.6g} m) must exceed the centroid radius "
+                f"({self.centroid_radius:.6g} m)"
+            )
+
+    @property
+    def inner_fibre(self) -> float | None:
+        """Distance of the inner surface from the centroid, r_c − r_b [m] (None if unknown)."""
+        return None if self.bore_radius is None else self.centroid_radius - self.bore_radius
+
+    @property
+    def outer_fibre(self) -> float | None:
+        """Distance of the outermost fibre from the centroid, r_o − r_c [m] (None if unknown)."""
+        return None if self.outer_radius is None else self.outer_radius - self.centroid_radius
 
     @property
     def mean_thickness(self) -> float:
@@ -83,7 +109,15 @@ class RingSection:
         checks.positive("bore_radius", bore_radius, "m")
         r_c = bore_radius + thickness / 2
         w = _beam_width(beam_width, r_c)
-        return cls(width * thickness**3 / 12, width * thickness, width, r_c, w * thickness**3 / 12)
+        return cls(
+            width * thickness**3 / 12,
+            width * thickness,
+            width,
+            r_c,
+            w * thickness**3 / 12,
+            bore_radius=bore_radius,
+            outer_radius=bore_radius + thickness,
+        )
 
     @classmethod
     def arc_backed(cls, width, bore_radius, sphere_radius, beam_width=None) -> RingSection:
@@ -126,7 +160,15 @@ class RingSection:
         r_c = float(np.sum(h * mid * dz) / area)
         inertia = float(np.sum((h**3 / 12 + h * (mid - r_c) ** 2) * dz))
         w = _beam_width(beam_width, r_c)
-        return cls(inertia, area, width, r_c, w * (area / width) ** 3 / 12)
+        return cls(
+            inertia,
+            area,
+            width,
+            r_c,
+            w * (area / width) ** 3 / 12,
+            bore_radius=bore_radius,
+            outer_radius=float(sphere_radius),  # the crown of the arc back, at mid-width
+        )
 
 
 def _beam_width(beam_width, r_c) -> float:

@@ -149,3 +149,39 @@ def test_main_writes_every_table_and_figure(tmp_path):
     ):
         assert (tmp_path / f"seed000_friction_{key}.csv").exists()
         assert (tmp_path / f"seed000_friction_{key}.png").exists()
+
+
+def test_sliding_reading_replaces_only_the_differential_sliding():
+    """A μ_ij reading (SLIDING_READINGS) changes E2 and nothing else; 'boundary' is Coulomb sliding at
+    μ_bl = 0.12 (E2 = 0.12 × its value at μ = 1); the row breakdown still adds up."""
+    import dataclasses
+
+    from bearingkit.analysis.friction import friction_torque
+    from bearingkit.analysis.quasistatic import solve
+
+    v = sf.FrictionVariant("t", sliding="boundary", viscosity_factor=v000.VISCOSITY_FACTOR)
+    model, load = sf._combined_case(v)
+    alt = sf.evaluate(model, load, v)
+    base = sf.evaluate(model, load, dataclasses.replace(v, sliding="mixed"))
+    op = dataclasses.replace(sf.operating_point(v), mu_boundary=1.0, mu_ehl=1.0)
+    unit = friction_torque(solve(model, load), op).components["differential_sliding"]
+    assert alt["differential_sliding_Nm"].iloc[0] == pytest.approx(0.12 * unit[0], rel=1e-12)
+    for k in COMPONENT_NAMES:
+        if k != "differential_sliding":
+            assert alt[f"{k}_Nm"].iloc[0] == pytest.approx(base[f"{k}_Nm"].iloc[0], rel=1e-12)
+    rows = alt[[c for c in alt.columns if c.startswith("row_")]].sum(axis=1).iloc[0]
+    assert rows == pytest.approx(alt["total_Nm"].iloc[0], rel=1e-12)
+    with pytest.raises(InputError, match="sliding"):
+        sf.FrictionVariant("bad", sliding="dry")
+
+
+def test_table3_wants_about_four_times_the_sliding_term():
+    """sliding_scan: with E2 × 4 (viscosity recalibrated on run 1) Table 3 is met to rms < 5 %, with
+    today's E2 it is 26 %; the documented boundary readings stay below 3 × today's E2."""
+    from bearingkit.papers.tian2025 import sliding_scan
+
+    scan = sliding_scan.multiplier_scan((1.0, 4.0)).set_index("k")
+    assert scan.loc[1.0, "rms_error"] > 0.25 and scan.loc[4.0, "rms_error"] < 0.05
+    assert scan.loc[4.0, "mu_effective"] > 0.25  # beyond boundary friction of lubricated steel
+    readings = sliding_scan.reading_table(("mixed", "boundary_unrun")).set_index("reading")
+    assert 1.0 < readings.loc["boundary_unrun", "e2_factor"] < 3.0

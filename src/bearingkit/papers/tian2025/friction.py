@@ -83,6 +83,17 @@ RATIOS = ((31, 31), (42, 21), (48, 16))
 RPM = v000.RPM
 #: Spin-coefficient readings of Tian's M4 = (3/8) f_s E(e) a Q sin α0 (see :func:`_friction`).
 SPIN_READINGS = ("mixed", "boundary", "ehl")
+#: Readings of the traction coefficient μ_ij of E2 (differential sliding of the axial rollers), name →
+#: (μ_bl, μ_EHL) of the Λ-interpolation (None: the operating point's, SKF μ_bl 0.12 / cylindrical-roller
+#: μ_EHL 0.02). Sources: SKF catalogue constants of :mod:`bearingkit.physics.lubrication.traction`
+#: (μ_EHL = 0.05 for mineral oils; μ_bl = 0.12 run-in, 0.15 not run-in); "boundary…" holds μ at μ_bl
+#: for every Λ (a grease at 5 r/min read as boundary-lubricated). docs/seed000-friction.md.
+SLIDING_READINGS = {
+    "mixed": None,
+    "mixed_mineral": (0.12, 0.05),
+    "boundary": (0.12, 0.12),
+    "boundary_unrun": (0.15, 0.15),
+}
 
 
 @dataclass(frozen=True)
@@ -98,6 +109,8 @@ class FrictionVariant:
         Crowning of the base bearing (seed-000 letter a–e); the paper does not state it for §6.1.1–6.1.4.
     spin : str
         f_s of M4: ``"mixed"`` (interpolated by Λ, as E2), ``"boundary"`` (μ_bl) or ``"ehl"`` (μ_EHL).
+    sliding : str
+        μ_ij of E2, a key of :data:`SLIDING_READINGS` (``"mixed"``: the operating point's).
     viscous_line_model, viscous_point_model, raceway_control : str
         Registry keys of :mod:`bearingkit.analysis.friction`.
     yrt_clearance : float [m]
@@ -111,6 +124,7 @@ class FrictionVariant:
     pairing: str = "total_approach"
     crowning: str = "a"
     spin: str = "mixed"
+    sliding: str = "mixed"
     viscous_line_model: str = "matsuyama"
     viscous_point_model: str = "fujiwara"
     raceway_control: str = "tangent"
@@ -122,6 +136,7 @@ class FrictionVariant:
         checks.one_of("pairing", self.pairing, ("total_approach", "series"))
         checks.one_of("crowning", self.crowning, SEED000_CROWNING)
         checks.one_of("spin", self.spin, SPIN_READINGS)
+        checks.one_of("sliding", self.sliding, SLIDING_READINGS)
         checks.one_of("viscous_line_model", self.viscous_line_model, VISCOUS_LINE_MODELS)
         checks.one_of("viscous_point_model", self.viscous_point_model, VISCOUS_POINT_MODELS)
         checks.one_of("raceway_control", self.raceway_control, RACEWAY_CONTROLS)
@@ -145,6 +160,17 @@ VARIANTS: dict[str, FrictionVariant] = {
         ),
         FrictionVariant("spin_ehl", spin="ehl", description="f_s = mu_EHL (full-film traction in the spin)"),
         FrictionVariant("spin_boundary", spin="boundary", description="f_s = mu_bl (Harris: Coulomb)"),
+        FrictionVariant(
+            "sliding_mineral", sliding="mixed_mineral", description="E2 with mu_EHL = 0.05 (SKF, mineral oil)"
+        ),
+        FrictionVariant(
+            "sliding_boundary", sliding="boundary", description="E2 at mu_bl = 0.12 at any film (SKF run-in)"
+        ),
+        FrictionVariant(
+            "sliding_boundary_unrun",
+            sliding="boundary_unrun",
+            description="E2 at mu_bl = 0.15 for every film (SKF, not run-in)",
+        ),
         FrictionVariant("series", pairing="series", description="raceway contacts of a slice in series"),
         FrictionVariant("straight_base", crowning="e", description="base bearing with straight rollers"),
         FrictionVariant("houpert", viscous_point_model="houpert", description="Houpert ball EHL resistance"),
@@ -179,12 +205,14 @@ def operating_point(variant="seed000", rpm=RPM, viscosity_factor=None) -> Operat
     )
 
 
-def _friction(res, op: OperatingPoint, spin: str):
+def _friction(res, op: OperatingPoint, spin: str, sliding: str = "mixed"):
     """Friction of a solved batch with the spin coefficient read as ``spin`` → (components, by_row).
 
     ``"mixed"`` is :func:`friction_torque` as is (f_s interpolated by Λ like E2). For ``"boundary"``
     / ``"ehl"`` a second evaluation with μ_bl = μ_EHL = f_s gives the spin of the ball rows (spin is
     linear in μ and the only μ-dependent ball-row term); the roller rows keep the first evaluation.
+    ``sliding`` (:data:`SLIDING_READINGS`) likewise re-evaluates E2, the only μ-dependent term of the
+    roller rows, with that reading's (μ_bl, μ_EHL); the ball rows keep theirs.
     """
     base = friction_torque(res, op)
     comps, rows = dict(base.components), dict(base.by_row)
@@ -194,6 +222,13 @@ def _friction(res, op: OperatingPoint, spin: str):
         comps["spin_ball"] = alt.components["spin_ball"]
         for row in res.model.rows:
             if row.kind == "ball":
+                rows[row.name] = alt.by_row[row.name]
+    if SLIDING_READINGS[sliding] is not None:
+        mu_bl, mu_ehl = SLIDING_READINGS[sliding]
+        alt = friction_torque(res, dataclasses.replace(op, mu_boundary=mu_bl, mu_ehl=mu_ehl))
+        comps["differential_sliding"] = alt.components["differential_sliding"]
+        for row in res.model.rows:
+            if row.kind == "cylindrical":
                 rows[row.name] = alt.by_row[row.name]
     return comps, rows
 
@@ -222,7 +257,7 @@ def evaluate(model, load, variant="seed000", rpm=RPM, viscosity_factor=None, ext
     v = _variant(variant)
     res = solve(model, np.atleast_2d(load))
     op = operating_point(v, rpm, viscosity_factor)
-    comps, rows = _friction(res, op, v.spin)
+    comps, rows = _friction(res, op, v.spin, v.sliding)
     out = dict(extra or {})
     out["total_Nm"] = sum(comps.values())
     out.update({f"{k}_Nm": comps[k] for k in COMPONENT_NAMES})
@@ -285,7 +320,7 @@ def calibrated_factor(variant: FrictionVariant) -> float:
     res = solve(model, np.atleast_2d(load))
 
     def err(x):
-        comps, _ = _friction(res, operating_point(v, RPM, x), v.spin)
+        comps, _ = _friction(res, operating_point(v, RPM, x), v.spin, v.sliding)
         return float(sum(comps.values())[0]) - t[4] / 1e3
 
     return float(brentq(err, 0.05, 200.0, xtol=1e-4))

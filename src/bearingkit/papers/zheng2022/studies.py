@@ -27,6 +27,7 @@ __all__ = [
     "SWEEP_PARAMETERS",
     "TABLE6",
     "TABLE6_OBJECTIVES",
+    "TABLE6_ROLLER_COUNT",
     "nearest_table6",
     "table3_comparison",
     "table4_sweep",
@@ -53,6 +54,15 @@ TABLE6 = {
     "xr2": {"P_mm": 0.92, "d_R_mm": 6.37, "R_rr_mm": 4.54, "alpha_deg": 39.3, "n": 13},
     "prototype": {"P_mm": 1.2, "d_R_mm": 6.0, "R_rr_mm": 5.1, "alpha_deg": 45.0, "n": 10},
 }
+#: Number of rollers Z at each Table 6 point. NOT printed: §5 (5) and §6 say "the maximum number of
+#: threaded rollers was always taken", set by the installation method (Zheng et al. 2020/2021, rule not
+#: given), and the roller set shares the fixed D_pw, so fewer rollers fit as d_R grows. Inferred from
+#: Table 6 itself, one integer per point: C_r (eq. 12) contains no calibrated coefficient, and at the
+#: published xa1 design it is reproduced to 0.1 % with Z = 10 (6.6 % high with 11), after which C_0r
+#: (eq. 5, f_rmax ∝ 1/Z) follows to −0.9 % without any change. xr1 has the larger d_R (7.06 mm), so it
+#: cannot take more rollers than xa1 (6.96 mm): Z = 10 (its C_0r then +1.3 %). d_R ≤ 6.37 mm keeps the
+#: prototype's 11 (xa2, xr2: C_r within 0.2 %, C_0r within 3.5 %).
+TABLE6_ROLLER_COUNT = {"xa1": 10, "xa2": 11, "xr1": 10, "xr2": 11, "prototype": 11}
 #: Table 6: published performance of those points (kN, μ in units of 1e-3 as printed).
 TABLE6_OBJECTIVES = {
     "xa1": {"C0a_kN": 97.4, "Ca_kN": 78.9, "mu_a_1e3": 2.4, "C0r_kN": 40.4, "Cr_kN": 59.0, "mu_r_1e3": 3.6},
@@ -295,28 +305,43 @@ def nearest_table6(objectives: dict, case: str = "axial") -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def table6_at_published_designs(parameters=None) -> pd.DataFrame:
+def table6_at_published_designs(parameters=None, roller_count=None) -> pd.DataFrame:
     """Table 6 recomputed at the PUBLISHED design variables of each point (no optimiser involved).
 
-    The friction model's own check of §6: α, n, R_rr, d_R of xa1, xa2, xr1, xr2 and the prototype (D_pw,
-    n·P = 12 mm and Z = 11 held, as :func:`bearingkit.papers.zheng2022.design.ptrb_objectives`), at the §6
-    operating point (20 kN, 4000 rpm). Columns: ``point``, computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N,
-    mu_r``, the published values (``*_pub``) and relative errors (``*_err``). ``parameters``: a
+    The rating and friction models' own check of §6: α, n, R_rr, d_R of xa1, xa2, xr1, xr2 and the
+    prototype (D_pw and n·P = 12 mm held, as :func:`bearingkit.papers.zheng2022.design.ptrb_objectives`),
+    at the §6 operating point (20 kN, 4000 rpm), with Z rollers from ``roller_count`` (point → Z;
+    None: :data:`TABLE6_ROLLER_COUNT`; an int: that Z everywhere). Columns: ``point``, ``n_elements``,
+    computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N, mu_r``, the published values (``*_pub``) and relative
+    errors (``*_err``). ``parameters``: a
     :class:`~bearingkit.analysis.ptrb_friction.PTRBFrictionParameters` (None: the defaults).
     """
     from bearingkit.papers.zheng2022.design import ptrb_objectives
 
+    if roller_count is None:
+        roller_count = TABLE6_ROLLER_COUNT
+    if isinstance(roller_count, int | np.integer):
+        roller_count = dict.fromkeys(TABLE6, int(roller_count))
     names = list(TABLE6)
     x = [TABLE6[k] for k in names]
     design = (
         np.radians([p["alpha_deg"] for p in x]),
-        [p["n"] for p in x],
-        [p["R_rr_mm"] * MM for p in x],
-        [p["d_R_mm"] * MM for p in x],
+        np.array([p["n"] for p in x], float),
+        np.array([p["R_rr_mm"] * MM for p in x]),
+        np.array([p["d_R_mm"] * MM for p in x]),
     )
-    ax = ptrb_objectives(*design, case="axial", parameters=parameters)
-    ra = ptrb_objectives(*design, case="radial", parameters=parameters)
-    out = pd.DataFrame({"point": names})
+    z = np.array([roller_count[k] for k in names])
+    res = {"axial": {}, "radial": {}}
+    for zk in np.unique(z):  # the roller count is a scalar of ptrb_objectives: one call per count
+        sel = z == zk
+        for case in res:
+            o = ptrb_objectives(
+                *(d[sel] for d in design), case=case, parameters=parameters, n_elements=int(zk)
+            )
+            for key, val in o.items():
+                res[case].setdefault(key, np.empty(len(names), np.asarray(val).dtype))[sel] = val
+    ax, ra = res["axial"], res["radial"]
+    out = pd.DataFrame({"point": names, "n_elements": z})
     cols = {
         "C0a_N": (ax["C0a"], "C0a_kN", KN),
         "Ca_N": (ax["Ca"], "Ca_kN", KN),

@@ -1,0 +1,258 @@
+"""Seed 004 (Zheng et al. 2022, PTRB) §7 rig results as validation cases: Tables 7/8 TEST rows, §7.2.
+
+SI values (N·m, N, 1). The test rows are compared with bearingkit's SIMULATION of the prototype
+(:func:`bearingkit.analysis.ptrb_friction.ptrb_friction`, defaults: the model validated against the
+simulation rows in :mod:`bearingkit.papers.zheng2022.validation_friction`). The paper's own accuracy
+claim is absolute: "the test data were slightly greater than the simulation data, with a deviation of
+no more than 0.1 Nm" (Table 7, §7.2.2 and §8) and "no more than 0.05 Nm" (Table 8). A test row's case
+therefore uses that bound as its tolerance, relative to the printed test value: tolerance =
+0.1 N·m / M_test (Table 7) or 0.05 N·m / M_test (Table 8).
+
+Cases:
+
+* ``seed004/table7-test/<case>/<load>kN`` (600 rpm) and ``seed004/table8-test/<case>/<load>kN/<speed>rpm``;
+* ``seed004/table7-test/<case>/above-simulation-within-0.1Nm`` (``table8-test/…-0.05Nm``): indicator, 1 if
+  0 ≤ M_test − M_bearingkit ≤ bound at every load (and speed) of the table, else 0;
+* ``seed004/section7/friction/<case>/5kN/800rpm``: §7.2.2 "0.146 Nm and 0.167 Nm" (bound 0.05 N·m: the
+  point is in Table 8's range);
+* ``seed004/section7/impact/<before|after>/<case>``: §7.2.4, 10 kN, 600 rpm, before and after 100,000
+  impacts of 20 kN (bound 0.1 N·m);
+* ``seed004/section7/mu/<case>/20kN/600rpm``: μ_PTRBa = 0.0019, μ_PTRBr = 0.0025 (test), against
+  μ = 2M/(d_0 F) of the simulation; tolerance = the 0.1 N·m bound in μ, 2·0.1/(d_0 F), plus half a
+  unit of the printed second digit (0.5e-4);
+* ``seed004/section7/mu/<case>/inside-theoretical-range``: indicator, 1 if the test μ lies inside the
+  range of the simulated μ over 10–30 kN and 100–4000 rpm (§4), "both falling into the range of
+  theoretical calculation";
+* ``seed004/section7/static-test/{C0a,C0r}``: §7.2.3 / §8 "C0a ≮ 38 kN and C0r ≮ 20 kN": indicator, 1
+  if the computed rating, rounded to the printed precision of the test load (whole kN), is at least
+  the test load.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+
+from bearingkit.validation.registry import Case, register
+
+SOURCE = "Zheng et al. (2022) Machines 10:1051, doi:10.3390/machines10111051"
+KN = 1.0e3
+#: |test − simulation| bound of Table 7 (load sweep) and Table 8 (speed sweep) [N·m] (§7.2.2).
+BOUND_TABLE7 = 0.1
+BOUND_TABLE8 = 0.05
+#: Table 7, test data, 600 rpm: case → load [kN] → M [N·m].
+TABLE7_TEST = {
+    "axial": {1: 0.058, 5: 0.143, 10: 0.257, 15: 0.408, 20: 0.573, 25: 0.723, 30: 0.885},
+    "radial": {1: 0.061, 5: 0.163, 10: 0.339, 15: 0.536, 20: 0.738, 25: 0.977, 30: 1.196},
+}
+TABLE8_SPEEDS = (600, 800, 1000, 1200, 1400, 1600, 1800, 2000)
+#: Table 8, test data: case → load [kN] → M [N·m] at TABLE8_SPEEDS [rpm].
+TABLE8_TEST = {
+    "axial": {
+        2: (0.076, 0.081, 0.083, 0.086, 0.091, 0.094, 0.098, 0.101),
+        5: (0.143, 0.146, 0.154, 0.159, 0.166, 0.170, 0.175, 0.182),
+        8: (0.215, 0.224, 0.233, 0.238, 0.250, 0.256, 0.264, 0.273),
+    },
+    "radial": {
+        2: (0.078, 0.082, 0.087, 0.091, 0.095, 0.100, 0.103, 0.108),
+        5: (0.161, 0.167, 0.176, 0.182, 0.187, 0.194, 0.202, 0.208),
+        8: (0.249, 0.255, 0.266, 0.275, 0.282, 0.288, 0.300, 0.308),
+    },
+}
+#: §7.2.2: 5 kN, 800 rpm, test [N·m].
+SECTION7_FRICTION = {"axial": 0.146, "radial": 0.167}
+#: §7.2.4: 10 kN, 600 rpm, test before / after the impact life test [N·m].
+SECTION7_IMPACT = {"before": {"axial": 0.257, "radial": 0.339}, "after": {"axial": 0.329, "radial": 0.416}}
+#: §7.2.2: friction coefficient at 20 kN, 600 rpm (test, printed to 2 digits).
+SECTION7_MU = {"axial": 0.0019, "radial": 0.0025}
+MU_PRINT_HALF_UNIT = 0.5e-4
+#: §7.2.3: static loads held 3 h without damage [N] → the basic static ratings are at least these.
+STATIC_TEST = {"C0a": 38.0 * KN, "C0r": 20.0 * KN}
+
+_HIGH_LOAD = (
+    "bearingkit's simulation grows with the load as F^1.21 (axial) / F^1.24 (radial) between 20 and 30 kN, "
+    "the paper's as F^1.24 / F^1.28: at 25-30 kN it is 0.6-1.1 % (axial) and 4.1-4.9 % (radial) below the "
+    "paper's simulation (within the 15 % of the Table 7 simulation cases), and the paper's simulation "
+    "already sits 0.075-0.099 N*m below the test there, so test - bearingkit reaches 0.101-0.107 N*m "
+    "(axial) and 0.128-0.130 N*m (radial), beyond the paper's 0.1 N*m"
+)
+_DAMAGED = (
+    "after 100,000 impacts of 20 kN the prototype has early damage (shock pulse ~27 dB, §7.2.4) and its "
+    "measured torque rose by 28 % (axial) / 23 % (radial); bearingkit models the undamaged bearing "
+    "(no wear or raceway damage state), so the post-impact test is 0.115 / 0.135 N*m above it"
+)
+
+
+@cache
+def _prototype():
+    from bearingkit.bearings.ptrb import ptrb_prototype
+
+    return ptrb_prototype()
+
+
+def simulated_torque(case: str, load_kn: float, speed_rpm: float) -> float:
+    """bearingkit's friction torque of the prototype [N·m] (``case`` "axial"/"radial", F [kN], n [rpm])."""
+    from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
+
+    return float(ptrb_friction(_prototype(), load_kn * KN, speed_rpm * RPM, case).torque)
+
+
+def simulated_mu(case: str, load_kn: float, speed_rpm: float) -> float:
+    """μ = 2M/(d_0 F) of the simulation [1]."""
+    from bearingkit.physics.friction import ptrb as pf
+
+    m = simulated_torque(case, load_kn, speed_rpm)
+    return float(pf.friction_coefficient(m, load_kn * KN, _prototype().bore_diameter))
+
+
+def _margins(case: str, table: str) -> np.ndarray:
+    """M_test − M_bearingkit over every row of Table 7 or 8 [N·m]."""
+    if table == "table7":
+        pts = [(load, 600.0, m) for load, m in TABLE7_TEST[case].items()]
+    else:
+        pts = [
+            (load, float(n), m)
+            for load, vals in TABLE8_TEST[case].items()
+            for n, m in zip(TABLE8_SPEEDS, vals, strict=True)
+        ]
+    return np.array([m - simulated_torque(case, load, n) for load, n, m in pts])
+
+
+def _within(case: str, table: str, bound: float):
+    def compute() -> float:
+        d = _margins(case, table)
+        return float(np.all((d >= 0.0) & (d <= bound)))
+
+    return compute
+
+
+def _static_test(rating: str):
+    def compute() -> float:
+        from bearingkit.bearings.ptrb import ptrb_ratings
+
+        r = ptrb_ratings(_prototype())
+        value = r.static_axial if rating == "C0a" else r.static_radial
+        return float(round(value / KN) * KN >= STATIC_TEST[rating])
+
+    return compute
+
+
+def _reg(case_id, source, quantity, published, compute, tolerance, unit="N*m", deviation=None):
+    register(Case(case_id, source, quantity, unit, published, compute, tolerance, deviation))
+
+
+def _register() -> None:
+    for case, rows in TABLE7_TEST.items():
+        for load, m in rows.items():
+            _reg(
+                f"seed004/table7-test/{case}/{load}kN",
+                f"{SOURCE}, Table 7 (test data); bound |test - simulation| <= 0.1 N*m (§7.2.2)",
+                f"measured friction torque of the prototype, {case} {load} kN, 600 rpm, vs bearingkit's "
+                "simulation (tolerance = 0.1 N*m / test value)",
+                m,
+                lambda c=case, f=load: simulated_torque(c, f, 600.0),
+                BOUND_TABLE7 / m,
+                deviation=_HIGH_LOAD if load >= 25 else None,
+            )
+        _reg(
+            f"seed004/table7-test/{case}/above-simulation-within-0.1Nm",
+            f"{SOURCE}, §7.2.2 ('the test data were slightly greater than the simulation data, with a "
+            "deviation of no more than 0.1 Nm')",
+            f"indicator: 1 if 0 <= M_test - M_bearingkit <= 0.1 N*m at every load of Table 7 "
+            f"({case}, 600 rpm)",
+            1.0,
+            _within(case, "table7", BOUND_TABLE7),
+            0.0,
+            unit="1",
+            deviation=_HIGH_LOAD,
+        )
+    for case, rows in TABLE8_TEST.items():
+        for load, vals in rows.items():
+            for n, m in zip(TABLE8_SPEEDS, vals, strict=True):
+                _reg(
+                    f"seed004/table8-test/{case}/{load}kN/{n}rpm",
+                    f"{SOURCE}, Table 8 (test data); bound |test - simulation| <= 0.05 N*m (§7.2.2)",
+                    f"measured friction torque, {case} {load} kN, {n} rpm, vs bearingkit's simulation "
+                    "(tolerance = 0.05 N*m / test value)",
+                    m,
+                    lambda c=case, f=load, s=n: simulated_torque(c, f, float(s)),
+                    BOUND_TABLE8 / m,
+                )
+        _reg(
+            f"seed004/table8-test/{case}/above-simulation-within-0.05Nm",
+            f"{SOURCE}, §7.2.2 ('slightly greater than the simulation data, with a deviation of no more "
+            "than 0.05 Nm')",
+            f"indicator: 1 if 0 <= M_test - M_bearingkit <= 0.05 N*m at every load and speed of Table 8 "
+            f"({case})",
+            1.0,
+            _within(case, "table8", BOUND_TABLE8),
+            0.0,
+            unit="1",
+        )
+    for case, m in SECTION7_FRICTION.items():
+        _reg(
+            f"seed004/section7/friction/{case}/5kN/800rpm",
+            f"{SOURCE}, §7.2.2 (test: 'M_PTRBa and M_PTRBr ... 0.146 Nm and 0.167 Nm'); bound 0.05 N*m",
+            f"measured friction torque, {case} 5 kN, 800 rpm, 40 °C, vs bearingkit's simulation",
+            m,
+            lambda c=case: simulated_torque(c, 5.0, 800.0),
+            BOUND_TABLE8 / m,
+        )
+    for stage, values in SECTION7_IMPACT.items():
+        for case, m in values.items():
+            _reg(
+                f"seed004/section7/impact/{stage}/{case}",
+                f"{SOURCE}, §7.2.4 ({stage} the impact life test); bound 0.1 N*m",
+                f"measured friction torque {stage} 100,000 impacts of 20 kN, {case} 10 kN, 600 rpm, vs "
+                "bearingkit's simulation of the undamaged prototype",
+                m,
+                lambda c=case: simulated_torque(c, 10.0, 600.0),
+                BOUND_TABLE7 / m,
+                deviation=_DAMAGED if stage == "after" else None,
+            )
+    f_mu = 20.0
+    for case, mu in SECTION7_MU.items():
+        bound = 2.0 * BOUND_TABLE7 / (_prototype().bore_diameter * f_mu * KN) + MU_PRINT_HALF_UNIT
+        _reg(
+            f"seed004/section7/mu/{case}/20kN/600rpm",
+            f"{SOURCE}, §7.2.2 (test: 'mu_PTRBa and mu_PTRBr were 0.0019 and 0.0025')",
+            f"measured friction coefficient, {case} 20 kN, 600 rpm, vs 2M/(d_0 F) of bearingkit's "
+            "simulation (tolerance: the 0.1 N*m bound in mu plus half a printed unit, 0.5e-4)",
+            mu,
+            lambda c=case: simulated_mu(c, f_mu, 600.0),
+            bound / mu,
+            unit="1",
+        )
+        _reg(
+            f"seed004/section7/mu/{case}/inside-theoretical-range",
+            f"{SOURCE}, §7.2.2 ('both falling into the range of theoretical calculation', §4)",
+            f"indicator: 1 if the measured mu = {mu} lies inside bearingkit's mu range of the prototype "
+            "over 10-30 kN and 100-4000 rpm",
+            1.0,
+            lambda c=case, m=mu: _inside_range(c, m),
+            0.0,
+            unit="1",
+        )
+    for rating, load in STATIC_TEST.items():
+        _reg(
+            f"seed004/section7/static-test/{rating}",
+            f"{SOURCE}, §7.2.3 and §8 ('C0a ≮ 38 kN and C0r ≮ 20 kN': {load / KN:g} kN held 3 h "
+            "without damage)",
+            f"indicator: 1 if bearingkit's {rating} of the prototype, rounded to whole kN (the printed "
+            f"precision of the test load), is at least {load / KN:g} kN",
+            1.0,
+            _static_test(rating),
+            0.0,
+            unit="1",
+        )
+
+
+def _inside_range(case: str, mu: float) -> float:
+    from bearingkit.papers.zheng2022.validation_friction import mu_range
+
+    lo, hi = mu_range(case)
+    return float(lo <= mu <= hi)
+
+
+_register()
