@@ -347,8 +347,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
+    cycle = {k: data[k] for k in schema_cycle.SECTIONS if k in data}  # validated by schema_cycle
     try:
-        spec = schema.BearingFile.model_validate(data)
+        spec = schema.BearingFile.model_validate({k: v for k, v in data.items() if k not in cycle})
     except ValidationError as exc:
         raise _one_line(source, exc, (), _section_models(None)) from None
     if spec.bearing.designation is not None:
@@ -380,7 +381,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     cases = tuple(_load_case(c) for c in spec.load_cases)
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
-    duty = schema_cycle.duty_cycle_of(source, spec.duty_cycle, _load_case, _one_line)
+    duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), _load_case, _one_line)
     if duty is not None:
         _check_fixed_loads(source, duty.bins, free)
         _check_single_tapered(source, model, duty.bins, free)
@@ -396,7 +397,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         options=SolverOptions(**opts),
         sections=sections,
         duty_cycle=duty,
-        tolerances=schema_cycle.tolerances_of(source, spec.tolerances, _one_line),
+        tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances"), _one_line),
     )
 
 

@@ -17,7 +17,6 @@ File layout (see docs/input-format.md)::
     [operating]    speed effects, tilt, preload, temperatures (optional)
     [fits]         shaft / housing tolerance fields      (optional)
     [lubrication]  contamination, roughness, grease      (optional)
-    [[duty_cycle]] [[tolerances]]  load spectrum, scatter of values (optional, io.schema_cycle)
 
 The geometry table depends on ``bearing.type``; :data:`GEOMETRY_MODELS` maps each type to its
 model, and :func:`json_schema` writes the dependency as JSON Schema ``if``/``then`` clauses.
@@ -276,8 +275,6 @@ class BearingFile(_Strict):
     lubrication: dict[str, Any] | None = Field(
         None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
     )
-    duty_cycle: list[dict[str, Any]] = Field(default_factory=list, description="Load bins (schema_cycle).")
-    tolerances: list[dict[str, Any]] = Field(default_factory=list, description="Scatter (schema_cycle).")
 
     @field_validator("load_cases")
     @classmethod
@@ -697,7 +694,6 @@ def json_schema() -> dict:
             }
         )
     defs["BearingHeader"]["properties"]["type"]["enum"] = list(GEOMETRY_MODELS)
-
     schema["allOf"] = branches
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema["title"] = "bearingkit input file"

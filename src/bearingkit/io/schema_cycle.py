@@ -2,8 +2,9 @@
 ``[[tolerances]]``.
 
 SI after validation, as the rest of the schema (:mod:`bearingkit.io.schema`, whose unit-carrying
-types these models use). The sections are kept as tables in :class:`~bearingkit.io.schema.BearingFile`
-and validated here, the way the geometry is validated by its own model.
+types these models use). The loader takes these two sections out of the file before
+:class:`~bearingkit.io.schema.BearingFile` validates the rest and validates them here;
+:func:`json_schema` is the file's JSON Schema with them (what ``bearingkit schema`` prints).
 
 ``[[duty_cycle]]`` — the bins of a load spectrum: each a load case (F_x … M_y, eccentricity, speed,
 temperature) with the share of the operation it takes, ``time_fraction`` or ``revolution_fraction``
@@ -29,7 +30,28 @@ from bearingkit.errors import InputError
 from bearingkit.io.schema import Dimensionless, LoadCaseSpec, _Strict
 from bearingkit.physics.life.duty_cycle import FRACTION_SUM_TOLERANCE
 
-__all__ = ["DutyBinSpec", "DutyCycle", "ToleranceSpec", "duty_cycle_of", "tolerances_of"]
+__all__ = [
+    "SECTIONS",
+    "DutyBinSpec",
+    "DutyCycle",
+    "ToleranceSpec",
+    "duty_cycle_of",
+    "json_schema",
+    "tolerances_of",
+]
+
+#: The sections validated here (arrays of tables).
+SECTIONS = ("duty_cycle", "tolerances")
+
+
+def _tables(source: str, value, name: str) -> list:
+    if value is None:
+        return []
+    if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
+        raise InputError(
+            f"{source}: {name} must be an array of tables ([[{name}]] …), got {type(value).__name__}"
+        )
+    return value
 
 
 class DutyBinSpec(LoadCaseSpec):
@@ -89,6 +111,7 @@ def duty_cycle_of(source: str, tables: list, make_case, one_line) -> DutyCycle |
     ``make_case(spec) -> LoadCase`` turns a validated load-case spec into the loader's load case;
     ``one_line(source, exc, prefix, models)`` turns a validation error into the one-line InputError.
     """
+    tables = _tables(source, tables, "duty_cycle")
     if not tables:
         return None
     specs = []
@@ -163,7 +186,7 @@ class ToleranceSpec(_Strict):
 def tolerances_of(source: str, tables: list, one_line) -> tuple:
     """Validate the ``[[tolerances]]`` tables of a file → tuple of :class:`ToleranceSpec`."""
     out = []
-    for i, raw in enumerate(tables or ()):
+    for i, raw in enumerate(_tables(source, tables, "tolerances")):
         try:
             out.append(ToleranceSpec.model_validate(raw))
         except ValidationError as exc:
@@ -173,3 +196,18 @@ def tolerances_of(source: str, tables: list, one_line) -> tuple:
     if dup:
         raise InputError(f"{source}: tolerances paths ({dup!r}) must be unique: one distribution per value")
     return tuple(out)
+
+
+def json_schema() -> dict:
+    """The JSON Schema of an input file (:func:`bearingkit.io.schema.json_schema`) with the
+    ``duty_cycle`` and ``tolerances`` arrays."""
+    from bearingkit.io.schema import json_schema as file_schema
+
+    out = file_schema()
+    defs = out.setdefault("$defs", {})
+    for key, model in (("duty_cycle", DutyBinSpec), ("tolerances", ToleranceSpec)):
+        sub = model.model_json_schema(ref_template="#/$defs/{model}")
+        defs.update(sub.pop("$defs", {}))
+        defs[model.__name__] = sub
+        out["properties"][key] = {"type": "array", "items": {"$ref": f"#/$defs/{model.__name__}"}}
+    return out
