@@ -189,7 +189,7 @@ def test_a_refused_group_gives_nan_and_its_reason_and_the_study_goes_on():
         ),
         (
             {"factors": [{"name": "geometry.clearance_radial", "levels": ["1 kN"]}]},
-            r"factors\[0\] \(geometry.clearance_radial\).levels \('1 kN'\) has dimension .*; expected length",
+            r"factors\[0\] \(geometry.clearance_radial\).levels \('1 kN'\) has dimension .*; expected a len",
         ),
         (
             {"factors": [{"name": "geometry.clearance_radial", "levels": []}]},

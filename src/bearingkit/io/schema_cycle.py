@@ -1,8 +1,8 @@
 """Input sections of a bearing's operation over time and of its tolerances: ``[[duty_cycle]]``,
 ``[[tolerances]]``.
 
-SI after validation, as the rest of the schema (:mod:`bearingkit.io.schema`, whose unit-carrying
-types these models use). The loader takes these two sections out of the file before
+SI after validation, as the rest of the schema (the unit-carrying types of :mod:`bearingkit.io.fields`,
+messages of :mod:`bearingkit.io.messages`). The loader takes these two sections out of the file before
 :class:`~bearingkit.io.schema.BearingFile` validates the rest and validates them here;
 :func:`json_schema` is the file's JSON Schema with them (what ``bearingkit schema`` prints).
 
@@ -26,11 +26,15 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, ValidationError, ValidationInfo, field_validator, model_validator
 
-from bearingkit.errors import InputError
-from bearingkit.io.schema import Dimensionless, LoadCaseSpec, _Strict
+from bearingkit.errors import InputError, quote
+from bearingkit.io.fields import Dimensionless, Strict
+from bearingkit.io.messages import one_line
+from bearingkit.io.sections import MAX_LOAD_CASES, LoadCaseSpec
 from bearingkit.physics.life.duty_cycle import FRACTION_SUM_TOLERANCE
 
 __all__ = [
+    "MAX_DUTY_BINS",
+    "MAX_TOLERANCES",
     "SECTIONS",
     "DutyBinSpec",
     "DutyCycle",
@@ -42,15 +46,25 @@ __all__ = [
 
 #: The sections validated here (arrays of tables).
 SECTIONS = ("duty_cycle", "tolerances")
+#: Most duty-cycle bins: the bins are solved as one batch, like the load cases, under the same cap
+#: (:data:`bearingkit.io.sections.MAX_LOAD_CASES`; the contact-point cap of the loader applies too).
+#: Published load spectra have a handful to a few dozen bins.
+MAX_DUTY_BINS = MAX_LOAD_CASES
+#: Most tolerance entries: one per input value, and a bearing file has well under a hundred scalar
+#: values a tolerance study could scatter; the cap bounds the validation work on untrusted input.
+MAX_TOLERANCES = 100
 
 
-def _tables(source: str, value, name: str) -> list:
+def _tables(source: str, value, name: str, most: int) -> list:
     if value is None:
         return []
-    if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-        raise InputError(
-            f"{source}: {name} must be an array of tables ([[{name}]] …), got {type(value).__name__}"
-        )
+    if not isinstance(value, list):
+        raise InputError(f"{source}: {name} ({quote(value)}) must be an array of tables ([[{name}]] …)")
+    if len(value) > most:  # counted before anything is validated
+        raise InputError(f"{source}: {name} ({len(value)} entries) must have at most {most} entries")
+    for i, v in enumerate(value):
+        if not isinstance(v, dict):
+            raise InputError(f"{source}: {name}[{i}] ({quote(v)}) must be a table (a [[{name}]] entry)")
     return value
 
 
@@ -105,13 +119,12 @@ class DutyCycle:
         return [b.name for b in self.bins]
 
 
-def duty_cycle_of(source: str, tables: list, make_case, one_line) -> DutyCycle | None:
+def duty_cycle_of(source: str, tables: list, make_case) -> DutyCycle | None:
     """Validate the ``[[duty_cycle]]`` tables of a file → :class:`DutyCycle` (None when there are none).
 
-    ``make_case(spec) -> LoadCase`` turns a validated load-case spec into the loader's load case;
-    ``one_line(source, exc, prefix, models)`` turns a validation error into the one-line InputError.
+    ``make_case(spec) -> LoadCase`` turns a validated load-case spec into the loader's load case.
     """
-    tables = _tables(source, tables, "duty_cycle")
+    tables = _tables(source, tables, "duty_cycle", MAX_DUTY_BINS)
     if not tables:
         return None
     specs = []
@@ -121,8 +134,7 @@ def duty_cycle_of(source: str, tables: list, make_case, one_line) -> DutyCycle |
         except ValidationError as exc:
             raise one_line(source, exc, ("duty_cycle", i), {"duty_cycle": DutyBinSpec}) from None
         specs.append(spec if spec.name else spec.model_copy(update={"name": f"bin_{i + 1}"}))
-    names = [s.name for s in specs]
-    dup = sorted({n for n in names if names.count(n) > 1})
+    dup = _repeated(s.name for s in specs)
     if dup:
         raise InputError(f"{source}: duty_cycle names ({dup!r}) must be unique")
     kinds = {"time" if s.time_fraction is not None else "revolutions" for s in specs}
@@ -155,7 +167,7 @@ def duty_cycle_of(source: str, tables: list, make_case, one_line) -> DutyCycle |
     return DutyCycle(bins, fractions, kind)
 
 
-class ToleranceSpec(_Strict):
+class ToleranceSpec(Strict):
     """``[[tolerances]]``: the scatter of one input value (values keep their units until a study reads
     them)."""
 
@@ -183,19 +195,26 @@ class ToleranceSpec(_Strict):
         return self
 
 
-def tolerances_of(source: str, tables: list, one_line) -> tuple:
+def tolerances_of(source: str, tables: list) -> tuple:
     """Validate the ``[[tolerances]]`` tables of a file → tuple of :class:`ToleranceSpec`."""
     out = []
-    for i, raw in enumerate(_tables(source, tables, "tolerances")):
+    for i, raw in enumerate(_tables(source, tables, "tolerances", MAX_TOLERANCES)):
         try:
             out.append(ToleranceSpec.model_validate(raw))
         except ValidationError as exc:
             raise one_line(source, exc, ("tolerances", i), {"tolerances": ToleranceSpec}) from None
-    paths = [t.path for t in out]
-    dup = sorted({p for p in paths if paths.count(p) > 1})
+    dup = _repeated(t.path for t in out)
     if dup:
         raise InputError(f"{source}: tolerances paths ({dup!r}) must be unique: one distribution per value")
     return tuple(out)
+
+
+def _repeated(names) -> list:
+    """The names that occur more than once, sorted (linear: a file may hold up to the caps above)."""
+    seen, twice = set(), set()
+    for n in names:
+        (twice if n in seen else seen).add(n)
+    return sorted(twice)
 
 
 def json_schema() -> dict:

@@ -21,7 +21,6 @@ after them (G + G·B load cases, one batched solve). A group whose input is refu
 from __future__ import annotations
 
 import hashlib
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -56,16 +55,11 @@ def load_bearing(source: str) -> tuple[dict, str]:
     if is_designation(source):
         data = {"bearing": {"designation": source}}
         return data, hashlib.sha256(f"designation:{source}".encode()).hexdigest()
-    path = Path(source)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise InputError(f"{source}: cannot read the bearing file ({exc.strerror or exc})") from None
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise InputError(f"{source}: not valid TOML ({exc})".replace("\n", " ")) from None
-    return data, hashlib.sha256(raw).hexdigest()
+    from bearingkit.io.reading import parse_toml, read_text
+
+    # bounded like every input file: a regular file of at most 1 MiB, UTF-8, nesting checked
+    text = read_text(source)
+    return parse_toml(text, source), hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 class GenericModel:
