@@ -151,3 +151,29 @@ def test_report_has_a_duty_cycle_section(tmp_path):
     html = path.read_text()
     assert 'id="duty-cycle"' in html and "Palmgren–Miner" in html
     assert "palmgren1924" in html and "miner1945" in html
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        (3.0, r"^x.toml: duty_cycle \(3.0\) must be an array of tables \(\[\[duty_cycle\]\] …\)$"),
+        ([{"F_x": "1 kN"}, 7], r"^x.toml: duty_cycle\[1\] \(7\) must be a table"),
+        ([{}] * 1001, r"^x.toml: duty_cycle \(1001 entries\) must have at most 1000 entries$"),
+    ],
+)  # fmt: skip
+def test_duty_cycle_shape_and_count_are_checked_before_the_bins(value, message):
+    """The cap of the load cases holds for the bins (one batched run, same memory); counted first."""
+    data = _data()
+    data["duty_cycle"] = value
+    with pytest.raises(InputError, match=message):
+        from_dict(data, "x.toml")
+
+
+def test_duty_cycle_bins_obey_the_contact_point_cap(monkeypatch):
+    from bearingkit.io import loader
+
+    monkeypatch.setattr(loader, "MAX_CASE_POINTS", 30)  # 4 bins × the 6209's 9 balls = 36 points
+    data = _data()
+    del data["load_cases"]
+    with pytest.raises(InputError, match=r"^x.toml: duty_cycle \(4 cases × 9 contact points\) must stay"):
+        from_dict(data, "x.toml")

@@ -3,6 +3,7 @@ reproducible from the seed, and the bearing file's [[tolerances]] become the sam
 
 from __future__ import annotations
 
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -132,3 +133,18 @@ def test_bad_tolerances_are_one_line(tmp_path):
                        'distribution = "uniform"\nlow = "-1 kN"\nhigh = "1 um"\n')  # fmt: skip
     with pytest.raises(InputError, match=r"tolerances\[0\] \(geometry.clearance_radial\).low \('-1 kN'\)"):
         sd.from_dict(data, source="t.toml")
+
+
+def test_tolerances_shape_and_count_are_one_line():
+    from bearingkit.io.loader import from_dict
+
+    data = tomllib.loads(DGBB.read_text())
+    entry = {"path": "geometry.clearance_radial", "clearance_class": "C3"}
+    for value, message in (
+        ("C3", r"^x.toml: tolerances \('C3'\) must be an array of tables"),
+        ([entry, "C3"], r"^x.toml: tolerances\[1\] \('C3'\) must be a table"),
+        ([entry] * 101, r"^x.toml: tolerances \(101 entries\) must have at most 100 entries$"),
+        ([entry] * 2, r"^x.toml: tolerances paths \(\['geometry.clearance_radial'\]\) must be unique"),
+    ):
+        with pytest.raises(InputError, match=message):
+            from_dict({**data, "tolerances": value}, "x.toml")
