@@ -121,6 +121,32 @@ def test_cases_sharing_geometry_are_one_analysis(monkeypatch):
     assert len(res.results) == 12
 
 
+def test_a_group_beyond_the_run_caps_streams_in_runs_with_the_same_results(monkeypatch):
+    """The loader caps one run (1,000 cases, 2e6 contact points); a larger group is solved in runs of
+    at most that many: 9 balls × 4 = 36 points → runs of 4 cases, the results those of one batch."""
+    from bearingkit import pipeline
+    from bearingkit.io import loader
+
+    factors = [{"name": "load_cases.design_point.F_x", "levels": [f"{f} kN" for f in range(1, 11)]}]
+    outputs, path = [*OUTPUTS, "duty_L10r_rev"], EXAMPLES / "dgbb_6209_duty_cycle.toml"
+    whole = _run(_study(factors, outputs=outputs, bearing=path))
+    calls = []
+    real = pipeline.analyze
+
+    def counting(source, **kw):
+        calls.append(len(source.cases))
+        return real(source, **kw)
+
+    monkeypatch.setattr(pipeline, "analyze", counting)
+    monkeypatch.setattr(loader, "MAX_CASE_POINTS", 36)
+    runs = _run(_study(factors, outputs=outputs, bearing=path))
+    # 4 bins per case: runs of 36 // 9 // 4 = 1 case, each with its 4 bins (one more analysis)
+    assert calls == [1, 4] * 10
+    assert (runs.results["error"] == "").all()
+    for name in outputs:
+        np.testing.assert_allclose(runs.results[name], whole.results[name], rtol=1e-9, err_msg=name)
+
+
 def test_text_levels_group_the_cases_and_change_the_result():
     res = _run(
         _study(

@@ -524,6 +524,15 @@ def _check_single_tapered(source: str, model, cases, free) -> None:
             )
 
 
+def max_cases(model) -> int:
+    """Most load cases one run of ``model`` may take under the caps above (a study of more cases
+    solves them in runs of at most this many: :mod:`bearingkit.studies.generic`)."""
+    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
+    points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
+    most = MAX_FLEXIBLE_LOAD_CASES if flexible else schema.MAX_LOAD_CASES
+    return max(1, min(most, MAX_CASE_POINTS // max(points, 1)))
+
+
 def _check_case_count(source: str, model, n_cases: int, section: str = "load_cases") -> None:
     """Refuse more load cases (or duty-cycle bins: one batch as well) than the solver can take in
     bounded time and memory (caps above)."""

@@ -12,9 +12,11 @@ input → :func:`bearingkit.io.loader.from_dict` → :class:`bearingkit.pipeline
 One study case is the bearing with the study's values set, under ONE load case of the file (``study
 .load_case``, or the one the factor paths name, or the file's only one). Cases are grouped by the
 values of their ``file`` and ``analysis`` paths (geometry, material, lubricant, settings); every group
-is ONE Analysis whose load cases are all the group's study cases (loads, speeds and temperatures are
-per case: no Python loop over cases) and, when duty-cycle outputs are asked for, every case's bins
-after them (G + G·B load cases, one batched solve). A group whose input is refused gives NaN outputs,
+is ONE batched Analysis whose load cases are the group's study cases (loads, speeds and temperatures
+are per case: no Python loop over cases) and, when duty-cycle outputs are asked for, one more of every
+case's bins (G·B load cases). A group larger than one run may hold (the loader's caps, at most 1,000
+cases and 2·10⁶ contact points: :func:`bearingkit.io.loader.max_cases`) is solved in consecutive runs
+of that size, so any chunk size streams through in bounded memory. A group whose input is refused gives NaN outputs,
 ``converged = False`` and the one-line reason in the ``error`` column; the study goes on.
 """
 
@@ -162,14 +164,18 @@ class GenericModel:
         return table
 
     def evaluate_group(self, sub, key: dict) -> dict:
-        """Outputs (name → (G,)) of the G cases of ``sub`` sharing the non-batched values ``key``."""
-        from bearingkit.pipeline import analyze
+        """Outputs (name → (G,)) of the G cases of ``sub`` sharing the non-batched values ``key``.
+
+        The G cases are solved in runs of at most :func:`bearingkit.io.loader.max_cases` (the caps of
+        one run: load cases, flexible rings, contact points; divided by the duty-cycle bins when those
+        are solved too), so a chunk of any size streams through in bounded memory.
+        """
+        from bearingkit.io.loader import max_cases
 
         bearing = self.build(key)
         g = len(sub)
         quantities = [self.catalogue[n] for n in self.outputs]
-        parts = qmod.parts_of(quantities)
-        cases = self._load_cases(bearing, sub, g)
+        duty = "duty" in qmod.parts_of(quantities)
         settings = {k.split(".", 1)[1]: v for k, v in key.items() if self.paths[k].kind == "analysis"}
         settings = {k: v for k, v in settings.items() if not _missing(v)}
         options = {
@@ -178,12 +184,27 @@ class GenericModel:
             "reliability": settings.get("reliability", 0.9),
             "friction_model": settings.get("friction_model", "components"),
         }
-        # the pipeline's one entry: the same contamination and lubricant checks as the command line
-        analysis = analyze(bearing.with_cases(cases), **options)
-        duty = self._duty(bearing, sub, g, options) if "duty" in parts else None
-        table = qmod.extract(analysis, g, quantities, duty)
+        step = max_cases(bearing.model)
+        if duty:
+            step = max(1, step // len(bearing.duty_cycle.bins))
+        parts = [
+            self._run(bearing, sub.iloc[i : i + step].reset_index(drop=True), quantities, options, duty)
+            for i in range(0, g, step)
+        ]
+        table = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]} if len(parts) > 1 else parts[0]
         table["error"] = np.full(g, "", dtype=object)
         return table
+
+    def _run(self, bearing, sub, quantities, options: dict, duty: bool) -> dict:
+        """Outputs of the cases of ``sub`` (one run within the caps): one batched Analysis."""
+        from bearingkit.pipeline import analyze
+
+        g = len(sub)
+        cases = self._load_cases(bearing, sub, g)
+        # the pipeline's one entry: the same contamination and lubricant checks as the command line
+        analysis = analyze(bearing.with_cases(cases), **options)
+        lives = self._duty(bearing, sub, g, options) if duty else None
+        return qmod.extract(analysis, g, quantities, lives)
 
     def _columns(self, sub, prefix: str, spec: dict, g: int, extra: dict | None = None) -> dict:
         """Per-case arrays (G,) of the load-case fields: the column where the study sets it, else ``spec``."""
