@@ -110,16 +110,17 @@ def test_a_file_with_only_a_duty_cycle_is_rated():
     [
         (
             {0: {"time_fraction": 0.5}},
-            r"x.toml: duty_cycle time_fraction values sum to 0.95; they must sum to 1",
+            r"^x.toml: duty_cycle.time_fraction \(sum of the bins 0.95\) must sum to 1",
         ),
         (
             {1: {"time_fraction": None, "revolution_fraction": 0.25}},
-            r"mixes time_fraction and revolution_fraction",
+            r"^x.toml: duty_cycle: mixes time_fraction and revolution_fraction",
         ),
         ({2: {"time_fraction": 1.5}}, r"duty_cycle\[2\]\.time_fraction \(1.5\) must lie in \[0, 1\]"),
         ({0: {"speed": None}}, r"duty_cycle\[0\] \(cruise\)\.speed: missing; time fractions need"),
         ({0: {"F_x": "3 kg"}}, r"duty_cycle\[0\]\.F_x \('3 kg'\)"),
         ({1: {"time_fraction": None}}, r"give exactly one of them"),
+        ({1: {"name": "cruise"}}, r"^x.toml: duty_cycle.name \(\['cruise'\]\) must be unique$"),
     ],
 )
 def test_bad_duty_cycles_are_one_line_naming_the_field(change, message):

@@ -144,7 +144,7 @@ def test_tolerances_shape_and_count_are_one_line():
         ("C3", r"^x.toml: tolerances \('C3'\) must be an array of tables"),
         ([entry, "C3"], r"^x.toml: tolerances\[1\] \('C3'\) must be a table"),
         ([entry] * 101, r"^x.toml: tolerances \(101 entries\) must have at most 100 entries$"),
-        ([entry] * 2, r"^x.toml: tolerances paths \(\['geometry.clearance_radial'\]\) must be unique"),
+        ([entry] * 2, r"^x.toml: tolerances.path \(\['geometry.clearance_radial'\]\) must be unique"),
     ):
         with pytest.raises(InputError, match=message):
             from_dict({**data, "tolerances": value}, "x.toml")

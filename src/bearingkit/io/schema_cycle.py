@@ -136,19 +136,19 @@ def duty_cycle_of(source: str, tables: list, make_case) -> DutyCycle | None:
         specs.append(spec if spec.name else spec.model_copy(update={"name": f"bin_{i + 1}"}))
     dup = _repeated(s.name for s in specs)
     if dup:
-        raise InputError(f"{source}: duty_cycle names ({dup!r}) must be unique")
+        raise InputError(f"{source}: duty_cycle.name ({dup!r}) must be unique")
     kinds = {"time" if s.time_fraction is not None else "revolutions" for s in specs}
     if len(kinds) > 1:
         raise InputError(
-            f"{source}: duty_cycle mixes time_fraction and revolution_fraction; give every bin the same kind"
+            f"{source}: duty_cycle: mixes time_fraction and revolution_fraction; give every bin the same kind"
         )
     kind = kinds.pop()
     fractions = np.array([s.time_fraction if kind == "time" else s.revolution_fraction for s in specs])
     key = "time_fraction" if kind == "time" else "revolution_fraction"
     if abs(fractions.sum() - 1.0) > FRACTION_SUM_TOLERANCE:
         raise InputError(
-            f"{source}: duty_cycle {key} values sum to {fractions.sum():.9g}; they must sum to 1 "
-            "(shares of the whole operation)"
+            f"{source}: duty_cycle.{key} (sum of the bins {fractions.sum():.9g}) must sum to 1 (the "
+            "bins' shares of the whole operation)"
         )
     if kind == "time":
         for i, s in enumerate(specs):
@@ -205,7 +205,7 @@ def tolerances_of(source: str, tables: list) -> tuple:
             raise one_line(source, exc, ("tolerances", i), {"tolerances": ToleranceSpec}) from None
     dup = _repeated(t.path for t in out)
     if dup:
-        raise InputError(f"{source}: tolerances paths ({dup!r}) must be unique: one distribution per value")
+        raise InputError(f"{source}: tolerances.path ({dup!r}) must be unique: one distribution per value")
     return tuple(out)
 
 

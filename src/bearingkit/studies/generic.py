@@ -16,8 +16,9 @@ is ONE batched Analysis whose load cases are the group's study cases (loads, spe
 are per case: no Python loop over cases) and, when duty-cycle outputs are asked for, one more of every
 case's bins (G·B load cases). A group larger than one run may hold (the loader's caps, at most 1,000
 cases and 2·10⁶ contact points: :func:`bearingkit.io.loader.max_cases`) is solved in consecutive runs
-of that size, so any chunk size streams through in bounded memory. A group whose input is refused gives NaN outputs,
-``converged = False`` and the one-line reason in the ``error`` column; the study goes on.
+of that size, so any chunk size streams through in bounded memory. A group whose input is refused
+gives NaN outputs, ``converged = False`` and the one-line reason in the ``error`` column; the study
+goes on.
 """
 
 from __future__ import annotations
