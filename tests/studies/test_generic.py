@@ -280,7 +280,8 @@ def test_list_outputs_and_factors_name_units():
     res = CliRunner().invoke(app, ["study", str(DGBB), "--list-factors"])
     assert res.exit_code == 0, res.stderr
     rows = {ln.split()[0]: ln.split()[1:] for ln in res.stdout.splitlines()[1:] if ln.strip()}
-    assert rows["geometry.clearance_radial"][:2] == ["m", "file"]
+    assert rows["geometry.clearance_radial"] == ["m", "file", "1.5e-05"]  # the file's "15 um", 6 digits
+    assert rows["lubricant.name"][:2] == ["text", "file"] and "ISO_VG68" in rows["lubricant.name"][-1]
     assert rows["load_cases.radial_4kN.F_x"][:2] == ["N", "case"]
     assert rows["operating.speed"][:2] == ["rad/s", "case"]
 

@@ -408,15 +408,15 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
+    from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
     from bearingkit.studies.__main__ import list_factors as factors_of
     from bearingkit.studies.__main__ import list_outputs as outputs_of
-    from bearingkit.studies.__main__ import print_table, run_cli
 
     if list_outputs or list_factors:
         if list_outputs:
             print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
         if list_factors:
-            print_table(factors_of(file), ("path", "unit", "kind", "value in the file (SI)"), echo=typer.echo)
+            print_table(factors_of(file), FACTOR_COLUMNS, echo=typer.echo)
         return
 
     run_cli(

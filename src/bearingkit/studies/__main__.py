@@ -143,8 +143,13 @@ def list_outputs(file) -> list[tuple[str, str, str]]:
     return [(q.name, q.unit, q.description) for q in quantities.catalogue(bearing).values()]
 
 
-def list_factors(file) -> list[tuple[str, str, str, str]]:
-    """(path, SI unit, kind, nominal value) of every factor path of FILE (as :func:`list_outputs`)."""
+#: Column heads of :func:`list_factors`.
+FACTOR_COLUMNS = ("path", "unit", "kind", "value in the file (SI)", "text levels")
+
+
+def list_factors(file) -> list[tuple[str, str, str, str, str]]:
+    """(path, SI unit, kind, nominal value, the names a text path takes) of every factor path of FILE
+    (as :func:`list_outputs`)."""
     from bearingkit.io.loader import from_dict
     from bearingkit.studies.generic import _paths as paths_of
     from bearingkit.studies.generic import load_bearing
@@ -153,9 +158,13 @@ def list_factors(file) -> list[tuple[str, str, str, str]]:
     bearing = from_dict(load_bearing(source)[0], source)
     out = []
     for p in paths_of(bearing).values():
-        nominal = "" if p.nominal is None else f"{p.nominal!r}"
-        kind = p.kind + (f" ({'|'.join(p.choices)})" if p.choices else "")
-        out.append((p.path, p.unit, kind, nominal))
+        if p.nominal is None:
+            nominal = ""
+        elif isinstance(p.nominal, float):
+            nominal = f"{p.nominal:.6g}"  # 1.5e-05, not 1.4999999999999999e-05
+        else:
+            nominal = repr(p.nominal)
+        out.append((p.path, p.unit, p.kind, nominal, "|".join(p.choices or ())))
     return out
 
 
@@ -268,7 +277,7 @@ def main(argv=None) -> int:
             if a.list_outputs:
                 print_table(list_outputs(a.file), ("output", "unit", "meaning"))
             if a.list_factors:
-                print_table(list_factors(a.file), ("path", "unit", "kind", "value in the file (SI)"))
+                print_table(list_factors(a.file), FACTOR_COLUMNS)
             return 0
         run_cli(
             a.file,
