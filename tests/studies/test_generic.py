@@ -145,6 +145,10 @@ def test_a_group_beyond_the_run_caps_streams_in_runs_with_the_same_results(monke
     assert (runs.results["error"] == "").all()
     for name in outputs:
         np.testing.assert_allclose(runs.results[name], whole.results[name], rtol=1e-9, err_msg=name)
+    calls.clear()
+    monkeypatch.setattr(loader, "MAX_CASE_POINTS", 108)  # 3 cases and their bins: 10 cases in 4 runs
+    _run(_study(factors, outputs=outputs, bearing=path))
+    assert calls == [2, 8, 3, 12, 2, 8, 3, 12]  # of equal sizes, not 3 + 3 + 3 + 1
 
 
 def test_text_levels_group_the_cases_and_change_the_result():
