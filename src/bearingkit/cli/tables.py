@@ -114,6 +114,38 @@ def rating_table(c: dict) -> Table:
     return table
 
 
+def duty_cycle_table(d: dict) -> Table:
+    """A rich table of a duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`)."""
+    kind = d["fraction_kind"]
+    title = f"duty cycle: {len(d['bins'])} bins, {kind} fractions, Palmgren–Miner"
+    caption = (
+        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev, L10r = {_compact(d['L10r_h'])} h, "
+        f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_compact(d['Lnmr_h'])} h"
+    )
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in (
+        "bin", f"{kind} %", "rev %", "speed r/min", "F_r kN", "F_a kN", "L10r 10⁶rev", "L_nmr 10⁶rev",
+        "s0", "damage %",
+    ):
+        table.add_column(col, justify="left" if col == "bin" else "right", no_wrap=True)
+    for b in d["bins"]:
+        load = b["load"]
+        life = "no load" if b["no_load"] else _compact(b["L10r_rev"], 1e-6)
+        table.add_row(
+            escape(b["bin"]),
+            _num(b[f"{kind}_fraction"], 100.0, ".3g"),
+            _num(b["revolution_fraction"], 100.0, ".3g"),
+            _num(b["speed_rad_s"], 30 / math.pi),
+            _num(math.hypot(load["F_x_N"], load["F_y_N"]), 1e-3),
+            _num(load["F_z_N"], 1e-3),
+            life,
+            _compact(b["Lnmr_rev"], 1e-6),
+            _num(b["static_safety"], fmt=".3g"),
+            _num(b["damage_share"], 100.0, ".3g"),
+        )
+    return table
+
+
 def warnings_text(warnings, notes=()) -> Group:
     """Warnings (yellow) and notes (dim) of one case, one line each, for the console."""
     lines = [Text(f"  warning: {w}", style="yellow") for w in warnings]

@@ -104,6 +104,7 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         warnings=analysis.warnings,
         load_diagram=analysis.load_diagram,
         case_extras=extras,
+        duty_cycle=None if analysis.duty_cycle is None else analysis.duty_cycle.to_dict(),
     )
     return write_report(path, html)
 
