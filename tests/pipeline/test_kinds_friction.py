@@ -46,7 +46,10 @@ def test_cli_palmgren_on_needle_and_spherical_roller():
     needle = _json(["friction", NEEDLE, "--model", "palmgren", "--temperature", "60degC", "--json"])
     nu = as_lubricant("ISO_VG68").kinematic_viscosity(60.0)
     expected = palmgren.palmgren_friction_moment(
-        "needle_roller", pitch_diameter=0.061, speed=2000 * 2 * np.pi / 60, kinematic_viscosity=nu,
+        "needle_roller",
+        pitch_diameter=0.061,
+        speed=2000 * 2 * np.pi / 60,
+        kinematic_viscosity=nu,
         load_radial=10e3,
     )["total_Nm"]
     assert needle["cases"][0]["friction"]["total_Nm"] == pytest.approx(float(expected), rel=1e-12)

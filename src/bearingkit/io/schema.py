@@ -143,6 +143,55 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
+def _shoulder(value, info: ValidationInfo) -> dict:
+    """A groove shoulder height: a length with its unit, or a bare number = a fraction of D_w."""
+    name = info.field_name
+    plain = value
+    if isinstance(value, str):
+        try:
+            plain = float(value)
+        except ValueError:
+            plain = None
+    if isinstance(plain, (int, float)) and not isinstance(plain, bool):
+        x = units.parse(float(plain), "dimensionless", name)
+        if not 0 < x < 1:
+            raise InputError(
+                f"{name} ({value!r}) must be a fraction of the ball diameter in (0, 1), or a length "
+                "such as '2 mm'"
+            )
+        return {"fraction": x}
+    x = units.parse(value, "length", name)
+    if not x > 0:
+        raise InputError(f"{name} ({value!r}) must be positive")
+    return {"length": x}
+
+
+#: Groove shoulder height above the groove bottom (truncation of the contact ellipse, docs/ratings.md): a
+#: length (``"2.5 mm"``) or a number, the fraction of the ball diameter (``0.35``). Stored as
+#: ``{"length": m}`` or ``{"fraction": h/D_w}``.
+ShoulderHeight = Annotated[
+    dict,
+    BeforeValidator(_shoulder),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "string", "description": "a positive length with its unit, e.g. '2.5 mm'"},
+                {"type": "number", "exclusiveMinimum": 0, "exclusiveMaximum": 1},
+            ],
+            "description": "Groove shoulder height above the groove bottom: a length, or a number = "
+            "fraction of the ball diameter D_w.",
+            "x-dimension": "length",
+        }
+    ),
+]
+#: Names of the shoulder-height fields of the ball-bearing geometries (not passed to the builders).
+SHOULDER_FIELDS = ("shoulder_height_inner", "shoulder_height_outer")
+_SHOULDER_NOTE = (
+    "Shoulder height above the groove bottom on the side the contact runs to (angular contact: the high "
+    "shoulder): a length, or a number = fraction of D_w. Default by kind (docs/ratings.md)."
+)
+
+
 # ---------------------------------------------------------------------------------------------
 # Sections shared by every bearing type.
 # ---------------------------------------------------------------------------------------------
@@ -313,20 +362,27 @@ class _BallBase(_Envelope):
     pitch_diameter: PositiveLength
 
 
-class DeepGrooveBallGeometry(_BallBase):
+class _Shoulders(_Strict):
+    """Groove shoulder heights of a ball bearing's rings (truncation of the contact ellipse)."""
+
+    shoulder_height_inner: ShoulderHeight | None = Field(None, description=_SHOULDER_NOTE)
+    shoulder_height_outer: ShoulderHeight | None = Field(None, description=_SHOULDER_NOTE)
+
+
+class DeepGrooveBallGeometry(_BallBase, _Shoulders):
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance_radial: Length | None = Field(None, description="Diametral clearance P_d (negative: preload).")
 
 
-class AngularContactBallGeometry(_BallBase):
+class AngularContactBallGeometry(_BallBase, _Shoulders):
     contact_angle: Angle
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance: Length | None = Field(None, description="Clearance along the contact line, counted twice.")
 
 
-class AngularContactPairGeometry(_BallBase):
+class AngularContactPairGeometry(_BallBase, _Shoulders):
     arrangement: Literal["DB", "DF", "DT"]
     contact_angle: Angle
     row_spacing: PositiveLength
@@ -335,7 +391,7 @@ class AngularContactPairGeometry(_BallBase):
     conformity_outer: Dimensionless | None = None
 
 
-class ThrustBallGeometry(_BallBase):
+class ThrustBallGeometry(_BallBase, _Shoulders):
     conformity: Dimensionless | None = None
 
 
