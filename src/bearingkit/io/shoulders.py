@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.io.schema import SHOULDER_FIELDS
+from bearingkit.io.geometries import SHOULDER_FIELDS
 
 __all__ = ["shoulder_fractions"]
 
