@@ -167,6 +167,9 @@ def test_four_point_arcs_flag_the_seam_and_the_shoulder():
         ({"shoulder_height_inner": "6 mm"}, ("geometry.shoulder_height_inner", "groove depth", "0.52 D_w")),
         ({"shoulder_height_outer": 1.2}, ("geometry.shoulder_height_outer", "(0, 1)")),
         ({"shoulder_height_outer": "abc"}, ("geometry.shoulder_height_outer",)),
+        # a number in quotes is neither a length nor, silently, a fraction (strict numbers, io.fields)
+        ({"shoulder_height_inner": "0.35"}, ("geometry.shoulder_height_inner", "in quotes", "= 0.35")),
+        ({"shoulder_height_inner": True}, ("geometry.shoulder_height_inner", "fraction of D_w")),
         (
             {"shoulder_height_inner": 0.5, "shoulder_height_outer": 0.5},
             ("shoulder_height_inner + shoulder_height_outer", "overlap"),
