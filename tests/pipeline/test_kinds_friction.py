@@ -93,3 +93,11 @@ def test_skf_near_the_catalogue_constant_friction_coefficient(path, mu, bore):
     a = bk.analyze(path, load={"F_x": f"{p} N"}, speed="1000 rpm", temperature="70 degC")
     ratio = float(a.friction_by("skf").total[0]) / (0.5 * mu * p * bore)
     assert 0.5 < ratio < 2.0
+
+
+def test_default_friction_on_a_new_kind_points_to_the_models_that_cover_it():
+    """The component model has no spherical roller rows: the one-line refusal names the catalogue models."""
+    res = runner.invoke(app, ["friction", SRB])
+    assert res.exit_code == 2 and res.stdout == ""
+    line = res.stderr.strip()
+    assert "\n" not in line and "spherical_roller" in line and "'skf'" in line and "--compare" in line
