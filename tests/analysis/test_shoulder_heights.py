@@ -99,6 +99,10 @@ def test_file_heights_reach_the_rating_as_lengths_or_fractions():
     low = bk.analyze(_pair(shoulder_height_inner=hi_mm, shoulder_height_outer=0.45))
     assert low.rating.row("balls_A").flags["truncated_ellipse"][0]
     assert any("inner" in w and "given" in w for w in low.rating.warnings[0])
+    # the warning names the height that would hold the ellipses: the closed-form edge h_i (inner only:
+    # the outer shoulder 0.45 D_w holds)
+    text = next(w for w in low.rating.warnings[0] if "truncated" in w)
+    assert f"the loaded ellipses need inner {h_i:.3g} D_w)" in text, text
     high = bk.analyze(_pair(shoulder_height_inner=h_i * (1 + 1e-6), shoulder_height_outer=h_o * (1 + 1e-6)))
     assert not high.rating.row("balls_A").flags["truncated_ellipse"][0]
     # only the outer ring given: the inner ring keeps the angular contact default (0.35 > h_i)

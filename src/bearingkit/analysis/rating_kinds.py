@@ -44,6 +44,7 @@ from bearingkit.analysis.rating_rows import (
     _truncation_text,
     check_shoulders,
     groove_truncation,
+    truncation_texts,
 )
 from bearingkit.physics.life import iso76, iso281, iso16281
 from bearingkit.physics.life import kinds as life_kinds
@@ -300,7 +301,8 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
 
     heights = shoulder_heights(ctx.options, row.name, "self_aligning_ball")
     check_shoulders(row.name, heights, (fi, None))
-    truncated = groove_truncation(state, d, (fi, None), heights)
+    need = {}
+    truncated = groove_truncation(state, d, (fi, None), heights, need=need)
     rating = _assemble(
         row,
         state,
@@ -313,6 +315,7 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
         flags={"truncated_ellipse": ctx.converged & truncated},
         notes=notes,
         aiso_kind="radial_ball",
+        truncation_text=truncation_texts(ctx.options, row.name, "self_aligning_ball", need),
     )
     # ISO 76 sets the self-aligning limit at 4600 MPa (not 4200): s0 = (4600/p_max)^3.
     p = rating.max_pressure

@@ -165,8 +165,9 @@ def _assemble(
 ):
     """Everything that is common to the row kinds: masks, s0, a_ISO, warnings.
 
-    ``pitch_diameter`` [m] defaults to ``row.pitch_diameter`` (κ and C_u); ``truncation_text`` replaces the
-    ball-groove wording of the truncation warning; ``extra_references`` are added to the row's references.
+    ``pitch_diameter`` [m] defaults to ``row.pitch_diameter`` (κ and C_u); ``truncation_text`` (a string, or
+    a function of the case index) replaces the ball-groove wording of the truncation warning;
+    ``extra_references`` are added to the row's references.
     """
     n, opts = ctx.n_cases, ctx.options
     valid = ctx.converged
@@ -221,7 +222,10 @@ def _assemble(
                 f"exceeds the ISO 76 limit {p_lim / 1e6:.0f} MPa"
             )
         if flags.get("truncated_ellipse", np.zeros(n, bool))[k]:
-            w.append(truncation_text or _truncation_text(opts, row.name, bearing_type))
+            if callable(truncation_text):  # per case: names the height the ellipses need
+                w.append(truncation_text(k))
+            else:
+                w.append(truncation_text or _truncation_text(opts, row.name, bearing_type))
         if flags.get("edge_loading", np.zeros(n, bool))[k]:
             w.append(
                 f"edge loading: a roller end slice reaches {opts.edge_pressure_ratio:.0%} of the row's "
@@ -254,20 +258,41 @@ def _assemble(
     )
 
 
-def _truncation_text(opts: RatingOptions, name: str, bearing_type: str) -> str:
+def _truncation_text(opts: RatingOptions, name: str, bearing_type: str, need=None) -> str:
+    """The truncation warning; ``need`` = (h*_i, h*_o) / D_w of one case adds the heights that hold it."""
     h_i, h_o = shoulder_heights(opts, name, bearing_type)
     given = opts.shoulder_height is not None and (
         not isinstance(opts.shoulder_height, Mapping) or name in opts.shoulder_height
     )
     heights = f"inner {h_i:.3g} D_w" + ("" if h_o is None else f", outer {h_o:.3g} D_w")
+    needed = ""
+    if need is not None:
+        parts = [
+            f"{side} {x:.3g} D_w"
+            for side, x, h in zip(("inner", "outer"), need, (h_i, h_o), strict=True)
+            if x is not None and h is not None and x > h
+        ]
+        needed = f"; the loaded ellipses need {', '.join(parts)}" if parts else ""
     return (
         f"contact ellipse truncated by the groove shoulder (shoulder heights {heights}, "
-        f"{'given' if given else 'default of the kind, not from the input'}): Hertz pressure and life are "
-        "optimistic"
+        f"{'given' if given else 'default of the kind, not from the input'}{needed}): Hertz pressure and "
+        "life are optimistic"
     )
 
 
-def groove_truncation(state, dw, conformities, heights, *, bottom=0.0, angle=None, semi_major=None):
+def truncation_texts(opts: RatingOptions, name: str, bearing_type: str, need: dict):
+    """Per-case truncation warning (a function of the case index) from :func:`groove_truncation`'s need."""
+
+    def text(k: int) -> str:
+        pick = tuple(None if need.get(side) is None else float(need[side][k]) for side in ("inner", "outer"))
+        return _truncation_text(opts, name, bearing_type, pick)
+
+    return text
+
+
+def groove_truncation(
+    state, dw, conformities, heights, *, bottom=0.0, angle=None, semi_major=None, need=None
+):
     """Per case: is any loaded contact ellipse truncated by its groove shoulder (single-arc grooves)?
 
     Parameters
@@ -285,6 +310,9 @@ def groove_truncation(state, dw, conformities, heights, *, bottom=0.0, angle=Non
         Angle of the groove bottom from the radial plane [rad] (±π/2 for thrust rows).
     angle, semi_major : optional
         Override ``state.contact_angle`` and the semi-axes (dict side → array).
+    need : dict, optional
+        Filled with side → (C,) the shoulder height / D_w that would hold every loaded ellipse of that
+        ring (:func:`bearingkit.physics.contact.truncation.required_shoulder_height`; 0 when none loaded).
     """
     from bearingkit.physics.contact import truncation
 
@@ -298,7 +326,11 @@ def groove_truncation(state, dw, conformities, heights, *, bottom=0.0, angle=Non
         off = np.abs(own - bottom)
         a = state.extras[f"semi_major_{side}"] if semi_major is None else semi_major[side]
         r = np.asarray(f, float).reshape(-1, 1) * dw
-        out |= (state.load > 0) & truncation.truncated(off, a, r, h * dw)
+        loaded = (state.load > 0) & (a > 0)
+        out |= loaded & truncation.truncated(off, a, r, h * dw)
+        if need is not None:
+            h_star = truncation.required_shoulder_height(off, a, r) / dw
+            need[side] = np.where(loaded, h_star, 0.0).max(axis=-1, initial=0.0)
     return out.any(axis=-1)
 
 
@@ -376,7 +408,8 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
     heights = shoulder_heights(ctx.options, row.name, btype)
     check_shoulders(row.name, heights, (fi, fo))
     bottom = np.where(thrust, np.sign(alpha0) * np.pi / 2, 0.0).reshape(-1, 1)
-    truncated = groove_truncation(state, d, (fi, fo), heights, bottom=bottom)
+    need = {}
+    truncated = groove_truncation(state, d, (fi, fo), heights, bottom=bottom, need=need)
     flags = {"truncated_ellipse": ctx.converged & truncated}
     aiso_kind = "thrust_ball" if thrust else "radial_ball"
     return _assemble(
@@ -391,6 +424,7 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
         flags=flags,
         notes=notes,
         aiso_kind=aiso_kind,
+        truncation_text=truncation_texts(ctx.options, row.name, btype, need),
     )
 
 

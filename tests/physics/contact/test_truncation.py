@@ -41,3 +41,16 @@ def test_gothic_arch_seam():
     assert tr.truncated(low - 1e-9, a, r, 0.4, seam=seam)
     assert not tr.truncated(low + 1e-9, a, r, 0.4, seam=seam)
     assert not tr.truncated(low - 1e-9, a, r, 0.4)  # a single-arc groove has no seam
+
+
+def test_required_height_is_the_edge_of_the_flag():
+    # α = 40°, a = 0.10, r = 0.52 (units of D_w): h* = r (1 - cos(40° + 11.088°)) = 0.52 (1 - 0.628383)
+    r, a, alpha = 0.52, 0.10, np.radians(40.0)
+    h_star = tr.required_shoulder_height(alpha, a, r)
+    # θ_a written to 1e-4° here (arcsin(0.1/0.52) = 11.0880°): tolerance 1e-4 relative
+    assert h_star == pytest.approx(0.52 * (1 - np.cos(np.radians(40.0 + 11.0880))), rel=1e-4)
+    assert tr.truncated(alpha, a, r, h_star * (1 - 1e-9))
+    assert not tr.truncated(alpha, a, r, h_star * (1 + 1e-9))
+    seam = tr.seam_angle(0.53, np.radians(45.0))  # measured from a gothic arch's seam
+    h_seam = tr.required_shoulder_height(alpha, a, 0.53, seam)
+    assert np.cos(tr.shoulder_angle(h_seam, 0.53, seam)) == pytest.approx(np.cos(alpha + np.arcsin(a / 0.53)))

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["ellipse_half_angle", "seam_angle", "shoulder_angle", "truncated"]
+__all__ = ["ellipse_half_angle", "required_shoulder_height", "seam_angle", "shoulder_angle", "truncated"]
 
 
 def shoulder_angle(shoulder_height, groove_radius, seam=0.0):
@@ -103,3 +103,28 @@ def truncated(contact_angle, semi_major, groove_radius, shoulder_height, seam=No
     if seam is not None:
         out = out | (alpha - theta_a < np.asarray(seam, float))
     return out & (a > 0)
+
+
+def required_shoulder_height(contact_angle, semi_major, groove_radius, seam=0.0):
+    """Smallest shoulder height h* [m] above the groove bottom that still holds the whole contact ellipse.
+
+    The inverse of :func:`shoulder_angle` at the ellipse's far end θ_s = α + θ_a:
+
+    .. math:: h^* = r\\,(\\cos\\theta_b - \\cos(\\alpha + \\theta_a))
+
+    A value at or above the groove depth r cos θ_b means no shoulder of that groove can hold the ellipse.
+
+    Parameters
+    ----------
+    contact_angle : array_like
+        Angle α of the contact from the groove bottom direction [rad] (magnitude used).
+    semi_major : array_like
+        Semi-major axis a [m].
+    groove_radius : array_like
+        Groove radius r [m].
+    seam : array_like
+        θ_b of a gothic arch [rad]; 0 for a single-arc groove.
+    """
+    r = np.asarray(groove_radius, float)
+    edge = np.abs(np.asarray(contact_angle, float)) + ellipse_half_angle(semi_major, r)
+    return r * (np.cos(np.asarray(seam, float)) - np.cos(edge))
