@@ -326,7 +326,8 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+        help="components (physics, per contact) | skf | palmgren (standard and self-aligning bearings) | trb "
+        "(tapered rows) | slewing (slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."

@@ -166,16 +166,18 @@ def friction_table(c: dict):
         f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
         f"{c['temperature_C']:g} °C"
     )
-    parts = Table(title=escape(title))
+    # the title as its own line: a table title wraps to the (narrow) table's width
+    parts = Table()
     for col in ("component", "N·m", "share"):
         parts.add_column(col, justify="left" if col == "component" else "right", no_wrap=True)
     for name, value in f["components_Nm"].items():
         parts.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    if "rows_Nm" not in f:
-        return Group(parts, *(Text(f"  note: {n}", style="dim") for n in f["notes"]))
+    heading = Text(title, style="italic")
+    if "rows_Nm" not in f:  # the model's notes follow once, with the run's notes (not per case)
+        return Group(heading, parts)
     rows = Table(title="by row")
     for col in ("row", "N·m", "share"):
         rows.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
     for name, value in f["rows_Nm"].items():
         rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    return Group(parts, rows)
+    return Group(heading, parts, rows)

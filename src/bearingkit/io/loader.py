@@ -77,7 +77,8 @@ def _standard(builder_name: str, renames: dict | None = None):
     def build(geometry: dict, material, name: str) -> BearingModel:
         from bearingkit.bearings import standard
 
-        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in ("bore", "outer_diameter")}
+        skip = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
+        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
         for old, new in (renames or {}).items():
             if old in kwargs:
                 kwargs[new] = kwargs.pop(old)
@@ -386,6 +387,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     except InputError as exc:
         raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
     _check_envelope(source, model, gdict)
+    _check_shoulders(source, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -418,6 +420,16 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         duty_cycle=duty,
         tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
     )
+
+
+def _check_shoulders(source: str, model, gdict: dict) -> None:
+    """Refuse shoulder heights above the groove depth (one line; :mod:`bearingkit.io.shoulders`)."""
+    from bearingkit.io.shoulders import shoulder_fractions
+
+    try:
+        shoulder_fractions(gdict, model)
+    except InputError as exc:
+        raise InputError(f"{source}: {exc}") from None
 
 
 #: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)

@@ -217,10 +217,19 @@ class Analysis:
                 rotating=op.rotating,
                 reliability=op.reliability,
                 load_ratings=self.load_ratings,
+                shoulder_height=self._shoulder_heights(),
                 **life,
             ), None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
+
+    def _shoulder_heights(self):
+        """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""
+        if isinstance(self.input, ModelInput):
+            return None
+        from bearingkit.io.shoulders import shoulder_fractions
+
+        return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
     @functools.cached_property
     def load_diagram(self):

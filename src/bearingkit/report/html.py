@@ -88,11 +88,16 @@ def _friction_html(friction, case: int, n: int) -> str:
         [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
+    if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
+        split = f" ({_e(friction.model)} catalogue model of the whole bearing; no split between the rings)."
+    else:
+        split = (
+            f"; on the inner ring {fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
+            f"{fmt(friction.torque_outer[case], 5)} N·m (about +z)."
+        )
     return (
         f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>; on the inner ring "
-        f"{fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
-        f"{fmt(friction.torque_outer[case], 5)} N·m (about +z).</p>"
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{split}</p>"
         + _table(["component", "M [N·m]", "share [%]"], comp)
         + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
