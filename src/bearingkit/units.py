@@ -159,10 +159,13 @@ def parse(value, dimension: str, field: str) -> float:
         )
     if not isinstance(value, str):
         raise InputError(f"{field} ({quote(value)}) must be a string with a unit, e.g. '1 {target or '1'}'")
+    known = _PARSED.get((value, dimension))
+    if known is not None:  # studies rebuild inputs from the same texts thousands of times
+        return known
     number, unit_text = _split(value, field, dimension)
     if not unit_text:
         if dimension == "dimensionless":
-            return _finite(number, field, value)
+            return _remember(value, dimension, _finite(number, field, value))
         raise InputError(
             f"{field} ({quote(value)}) has no unit; expected a {words} such as '{value.strip()} {target}'"
         )
@@ -185,7 +188,20 @@ def parse(value, dimension: str, field: str) -> float:
         ) from None
     except OverflowError:
         raise InputError(f"{field} ({quote(value)}) must be finite (it overflows in {target})") from None
-    return _finite(out, field, value)
+    return _remember(value, dimension, _finite(out, field, value))
+
+
+#: Texts already parsed, (text, dimension) → SI value (successful parses only; errors name their field).
+_PARSED: dict[tuple[str, str], float] = {}
+#: Most remembered texts (a bound on the memory an untrusted input can take: at most
+#: 65,536 × (MAX_VALUE_CHARS + ~100 B) ≈ 11 MB).
+_PARSED_MAX = 65536
+
+
+def _remember(text: str, dimension: str, value: float) -> float:
+    if len(_PARSED) < _PARSED_MAX:
+        _PARSED[(text, dimension)] = value
+    return value
 
 
 def is_number(text: str) -> bool:

@@ -19,7 +19,7 @@ from rich.console import Console
 from rich.table import Table
 
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
-from bearingkit.cli.tables import case_table, friction_table, rating_table, warnings_text
+from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
@@ -228,7 +228,7 @@ def analyze(
 def schema():
     """Print the JSON Schema of the input file."""
     from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
-    from bearingkit.io.schema import json_schema
+    from bearingkit.io.schema_cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
 
@@ -297,7 +297,14 @@ def rating(
             console.print(lubrication_table(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
-    _fail_unconverged(file, a)
+        if "duty_cycle" in data:
+            cycle = data["duty_cycle"]
+            console.print(duty_cycle_table(cycle))
+            for b in cycle["bins"]:
+                console.print(warnings_text([f"{b['bin']}: {w}" for w in b["warnings"]]))
+            console.print(warnings_text([], cycle["notes"]))
+    if a.n_cases:
+        _fail_unconverged(file, a)
 
 
 #: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).
@@ -319,7 +326,8 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+        help="components (physics, per contact) | skf | palmgren (standard and self-aligning bearings) | trb "
+        "(tapered rows) | slewing (slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
@@ -385,7 +393,13 @@ def run_flagship(
 @app.command()
 @one_line_errors
 def study(
-    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/."),
+    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/; or a bearing file."),
+    list_outputs: bool = typer.Option(
+        False, "--list-outputs", help="List the outputs of FILE's bearing (generic evaluator) with units."
+    ),
+    list_factors: bool = typer.Option(
+        False, "--list-factors", help="List the factor paths of FILE's bearing with units and values."
+    ),
     scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
     workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
     resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
@@ -395,7 +409,16 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
-    from bearingkit.studies.__main__ import run_cli
+    from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
+    from bearingkit.studies.__main__ import list_factors as factors_of
+    from bearingkit.studies.__main__ import list_outputs as outputs_of
+
+    if list_outputs or list_factors:
+        if list_outputs:
+            print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
+        if list_factors:
+            print_table(factors_of(file), FACTOR_COLUMNS, echo=typer.echo)
+        return
 
     run_cli(
         file,

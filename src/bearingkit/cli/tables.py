@@ -114,6 +114,38 @@ def rating_table(c: dict) -> Table:
     return table
 
 
+def duty_cycle_table(d: dict) -> Table:
+    """A rich table of a duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`)."""
+    kind = d["fraction_kind"]
+    title = f"duty cycle: {len(d['bins'])} bins, {kind} fractions, Palmgren–Miner"
+    caption = (
+        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev, L10r = {_compact(d['L10r_h'])} h, "
+        f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_compact(d['Lnmr_h'])} h"
+    )
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in (
+        "bin", f"{kind} %", "rev %", "speed r/min", "F_r kN", "F_a kN", "L10r 10⁶rev", "L_nmr 10⁶rev",
+        "s0", "damage %",
+    ):
+        table.add_column(col, justify="left" if col == "bin" else "right", no_wrap=True)
+    for b in d["bins"]:
+        load = b["load"]
+        life = "no load" if b["no_load"] else _compact(b["L10r_rev"], 1e-6)
+        table.add_row(
+            escape(b["bin"]),
+            _num(b[f"{kind}_fraction"], 100.0, ".3g"),
+            _num(b["revolution_fraction"], 100.0, ".3g"),
+            _num(b["speed_rad_s"], 30 / math.pi),
+            _num(math.hypot(load["F_x_N"], load["F_y_N"]), 1e-3),
+            _num(load["F_z_N"], 1e-3),
+            life,
+            _compact(b["Lnmr_rev"], 1e-6),
+            _num(b["static_safety"], fmt=".3g"),
+            _num(b["damage_share"], 100.0, ".3g"),
+        )
+    return table
+
+
 def warnings_text(warnings, notes=()) -> Group:
     """Warnings (yellow) and notes (dim) of one case, one line each, for the console."""
     lines = [Text(f"  warning: {w}", style="yellow") for w in warnings]
@@ -134,16 +166,18 @@ def friction_table(c: dict):
         f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
         f"{c['temperature_C']:g} °C"
     )
-    parts = Table(title=escape(title))
+    # the title as its own line: a table title wraps to the (narrow) table's width
+    parts = Table()
     for col in ("component", "N·m", "share"):
         parts.add_column(col, justify="left" if col == "component" else "right", no_wrap=True)
     for name, value in f["components_Nm"].items():
         parts.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    if "rows_Nm" not in f:
-        return Group(parts, *(Text(f"  note: {n}", style="dim") for n in f["notes"]))
+    heading = Text(title, style="italic")
+    if "rows_Nm" not in f:  # the model's notes follow once, with the run's notes (not per case)
+        return Group(heading, parts)
     rows = Table(title="by row")
     for col in ("row", "N·m", "share"):
         rows.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
     for name, value in f["rows_Nm"].items():
         rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    return Group(parts, rows)
+    return Group(heading, parts, rows)

@@ -137,3 +137,52 @@ Dimensionless = Annotated[
 Count = _count_type(MAX_ELEMENTS)
 SliceCount = _count_type(MAX_SLICES)
 IterationCount = _count_type(MAX_ITERATIONS)
+
+
+def _shoulder(value, info: ValidationInfo) -> dict:
+    """A groove shoulder height: a length with its unit (``"2.5 mm"``), or a TOML number = fraction of D_w.
+
+    A number written as a string (``"0.35"``) is refused like every other strict number: it would be
+    neither a length (no unit) nor, silently, a fraction.
+    """
+    name = info.field_name
+    if isinstance(value, str) and units.is_number(value.strip()):
+        raise InputError(
+            f"{name} ({quote(value)}) is a number in quotes: write {name} = {value.strip()} for a fraction "
+            "of the ball diameter, or a length with its unit such as '2.5 mm'"
+        )
+    if isinstance(value, bool):
+        raise InputError(f"{name} ({value!r}) must be a length such as '2.5 mm' or a fraction of D_w")
+    if isinstance(value, (int, float)):
+        x = units.parse(value, "dimensionless", name)
+        if not 0 < x < 1:
+            raise InputError(
+                f"{name} ({quote(value)}) must be a fraction of the ball diameter in (0, 1), or a length "
+                "such as '2.5 mm'"
+            )
+        return {"fraction": x}
+    x = units.parse(value, "length", name)
+    if not x > 0:
+        raise InputError(f"{name} ({quote(value)}) must be positive")
+    return {"length": x}
+
+
+#: Groove shoulder height above the groove bottom (truncation of the contact ellipse, docs/ratings.md): a
+#: length (``"2.5 mm"``) or a TOML number, the fraction of the ball diameter (``0.35``). Stored as
+#: ``{"length": m}`` or ``{"fraction": h/D_w}``; :mod:`bearingkit.io.shoulders` turns it into per-row
+#: fractions checked against each groove.
+ShoulderHeight = Annotated[
+    dict,
+    BeforeValidator(_shoulder),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "string", "description": "a positive length with its unit, e.g. '2.5 mm'"},
+                {"type": "number", "exclusiveMinimum": 0, "exclusiveMaximum": 1},
+            ],
+            "description": "Groove shoulder height above the groove bottom: a length, or a number = "
+            "fraction of the ball diameter D_w.",
+            "x-dimension": "length",
+        }
+    ),
+]

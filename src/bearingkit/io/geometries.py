@@ -27,6 +27,7 @@ from bearingkit.io.fields import (
     PositiveForce,
     PositiveLength,
     PositivePressure,
+    ShoulderHeight,
     SliceCount,
     Strict,
 )
@@ -64,20 +65,35 @@ class BallBase(Envelope):
     )
 
 
-class DeepGrooveBallGeometry(BallBase):
+#: Names of the shoulder-height fields of the ball-bearing geometries (not builder arguments).
+SHOULDER_FIELDS = ("shoulder_height_inner", "shoulder_height_outer")
+_SHOULDER_NOTE = (
+    "Shoulder height above the groove bottom on the side the contact runs to (angular contact: the high "
+    "shoulder): a length, or a number = fraction of D_w. Default by kind (docs/ratings.md)."
+)
+
+
+class Shoulders(Strict):
+    """Groove shoulder heights of a ball bearing's rings (truncation of the contact ellipse, #23)."""
+
+    shoulder_height_inner: ShoulderHeight | None = Field(None, description=_SHOULDER_NOTE)
+    shoulder_height_outer: ShoulderHeight | None = Field(None, description=_SHOULDER_NOTE)
+
+
+class DeepGrooveBallGeometry(BallBase, Shoulders):
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance_radial: Length | None = Field(None, description="Diametral clearance P_d (negative: preload).")
 
 
-class AngularContactBallGeometry(BallBase):
+class AngularContactBallGeometry(BallBase, Shoulders):
     contact_angle: Angle
     conformity_inner: Dimensionless | None = None
     conformity_outer: Dimensionless | None = None
     clearance: Length | None = Field(None, description="Clearance along the contact line, counted twice.")
 
 
-class AngularContactPairGeometry(BallBase):
+class AngularContactPairGeometry(BallBase, Shoulders):
     arrangement: Literal["DB", "DF", "DT"]
     contact_angle: Angle
     row_spacing: PositiveLength
@@ -86,7 +102,7 @@ class AngularContactPairGeometry(BallBase):
     conformity_outer: Dimensionless | None = None
 
 
-class ThrustBallGeometry(BallBase):
+class ThrustBallGeometry(BallBase, Shoulders):
     conformity: Dimensionless | None = None
 
 

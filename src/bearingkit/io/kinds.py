@@ -17,10 +17,10 @@ from pydantic import Field
 
 from bearingkit.io import schema
 
-_ENVELOPE_ONLY = ("bore", "outer_diameter")
+_ENVELOPE_ONLY = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
 
 
-class FourPointContactBallGeometry(schema.BallBase):
+class FourPointContactBallGeometry(schema.BallBase, schema.Shoulders):
     """Single-row four-point contact ball bearing (QJ) — bearings.slewing.four_point_contact_ball."""
 
     contact_angle: schema.Angle | None = Field(
@@ -89,6 +89,9 @@ class SelfAligningBallGeometry(schema.BallBase):
         None, description="Radial internal clearance (negative: preload). Default 0."
     )
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
+    shoulder_height_inner: schema.ShoulderHeight | None = Field(
+        None, description="Inner groove shoulder height: a length or a fraction of D_w. Default 0.20 D_w."
+    )
 
 
 class NeedleRollerGeometry(schema.RollerBase):

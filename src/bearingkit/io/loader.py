@@ -22,7 +22,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError, did_you_mean, quote
-from bearingkit.io import kinds, schema
+from bearingkit.io import kinds, schema, schema_cycle
 from bearingkit.io.messages import one_line, prefix_field, section_models
 from bearingkit.io.reading import parse_toml, read_text
 
@@ -77,7 +77,8 @@ def _standard(builder_name: str, renames: dict | None = None):
     def build(geometry: dict, material, name: str) -> BearingModel:
         from bearingkit.bearings import standard
 
-        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in ("bore", "outer_diameter")}
+        skip = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
+        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
         for old, new in (renames or {}).items():
             if old in kwargs:
                 kwargs[new] = kwargs.pop(old)
@@ -270,6 +271,10 @@ class BearingInput:
     options : bearingkit.analysis.quasistatic.SolverOptions
     sections : bearingkit.io.schema_operating.OperatingSections
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
+    duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
+        The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
+    tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
+        The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     """
 
     source: str
@@ -282,6 +287,8 @@ class BearingInput:
     free: np.ndarray
     options: object
     sections: object = None
+    duty_cycle: object = None
+    tolerances: tuple = ()
 
     @property
     def bearing_type(self) -> str:
@@ -358,8 +365,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
+    cycle = {k: data[k] for k in schema_cycle.SECTIONS if k in data}  # validated by schema_cycle
     try:
-        spec = schema.BearingFile.model_validate(data)
+        spec = schema.BearingFile.model_validate({k: v for k, v in data.items() if k not in cycle})
     except ValidationError as exc:
         raise one_line(source, exc, (), section_models(None)) from None
     if spec.bearing.designation is not None:
@@ -379,6 +387,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     except InputError as exc:
         raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
     _check_envelope(source, model, gdict)
+    _check_shoulders(source, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -392,6 +401,11 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     _check_case_count(source, model, len(cases))
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
+    duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), _load_case)
+    if duty is not None:
+        _check_case_count(source, model, len(duty.bins), "duty_cycle")
+        _check_fixed_loads(source, duty.bins, free)
+        _check_single_tapered(source, model, duty.bins, free)
     return BearingInput(
         source=source,
         spec=spec,
@@ -403,7 +417,19 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         free=free,
         options=SolverOptions(**opts),
         sections=sections,
+        duty_cycle=duty,
+        tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
     )
+
+
+def _check_shoulders(source: str, model, gdict: dict) -> None:
+    """Refuse shoulder heights above the groove depth (one line; :mod:`bearingkit.io.shoulders`)."""
+    from bearingkit.io.shoulders import shoulder_fractions
+
+    try:
+        shoulder_fractions(gdict, model)
+    except InputError as exc:
+        raise InputError(f"{source}: {exc}") from None
 
 
 #: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)
@@ -510,33 +536,48 @@ def _check_single_tapered(source: str, model, cases, free) -> None:
             )
 
 
-def _check_case_count(source: str, model, n_cases: int) -> None:
-    """Refuse more load cases than the solver can take in bounded time and memory (caps above)."""
+def max_cases(model) -> int:
+    """Most load cases one run of ``model`` may take under the caps above (a study of more cases
+    solves them in runs of at most this many: :mod:`bearingkit.studies.generic`)."""
+    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
+    points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
+    most = MAX_FLEXIBLE_LOAD_CASES if flexible else schema.MAX_LOAD_CASES
+    return max(1, min(most, MAX_CASE_POINTS // max(points, 1)))
+
+
+def _check_case_count(source: str, model, n_cases: int, section: str = "load_cases") -> None:
+    """Refuse more load cases (or duty-cycle bins: one batch as well) than the solver can take in
+    bounded time and memory (caps above)."""
     if n_cases > schema.MAX_LOAD_CASES:
-        raise InputError(f"{source}: load_cases ({n_cases} cases) must be at most {schema.MAX_LOAD_CASES}")
+        raise InputError(f"{source}: {section} ({n_cases} cases) must be at most {schema.MAX_LOAD_CASES}")
     # a ball–column model carries its RingOptions (flexible by default, [geometry.ring] or not)
     flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
     if flexible and n_cases > MAX_FLEXIBLE_LOAD_CASES:
         raise InputError(
-            f"{source}: load_cases ({n_cases} cases) must be at most {MAX_FLEXIBLE_LOAD_CASES} with a "
+            f"{source}: {section} ({n_cases} cases) must be at most {MAX_FLEXIBLE_LOAD_CASES} with a "
             "flexible ring ([geometry.ring] flexible = true); split the file or set flexible = false"
         )
     points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
     if n_cases * points > MAX_CASE_POINTS:
         raise InputError(
-            f"{source}: load_cases ({n_cases} cases × {points} contact points) must stay within "
+            f"{source}: {section} ({n_cases} cases × {points} contact points) must stay within "
             f"{MAX_CASE_POINTS:.0e} contact points per run; use fewer cases, elements or n_slices"
         )
 
 
 def _check_fixed_loads(source: str, cases, free) -> None:
-    for c in cases:
-        for i in np.flatnonzero(~np.asarray(free)):
-            if c.load[i] != 0.0:
-                raise InputError(
-                    f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
-                    f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
-                )
+    fixed = np.flatnonzero(~np.asarray(free))
+    if not len(cases) or not fixed.size:
+        return
+    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
+    bad = np.argwhere(loads != 0.0)
+    if bad.size:
+        k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find
+        c, i = cases[k], fixed[j]
+        raise InputError(
+            f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
+            f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
+        )
 
 
 def _material(source: str, spec: schema.MaterialSpec | None):

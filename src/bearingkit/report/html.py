@@ -22,6 +22,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.report import plots
+from bearingkit.report.html_duty import duty_cycle_html
 from bearingkit.report.html_format import (
     DISPLACEMENT_DISPLAY,
     FORCE_NOISE,
@@ -87,11 +88,16 @@ def _friction_html(friction, case: int, n: int) -> str:
         [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
+    if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
+        split = f" ({_e(friction.model)} catalogue model of the whole bearing; no split between the rings)."
+    else:
+        split = (
+            f"; on the inner ring {fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
+            f"{fmt(friction.torque_outer[case], 5)} N·m (about +z)."
+        )
     return (
         f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>; on the inner ring "
-        f"{fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
-        f"{fmt(friction.torque_outer[case], 5)} N·m (about +z).</p>"
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{split}</p>"
         + _table(["component", "M [N·m]", "share [%]"], comp)
         + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
@@ -315,6 +321,7 @@ def build_report(
     warnings=None,
     case_extras=None,
     load_diagram=None,
+    duty_cycle=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -339,6 +346,9 @@ def build_report(
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
     case_extras : list of callables, optional
         Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
+    duty_cycle : dict, optional
+        The duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): a section with
+        every bin's life and the combined life, after the load cases.
 
     Returns
     -------
@@ -360,6 +370,7 @@ def build_report(
             f'<li><a href="#case-{c}">Load case “{_e(lc.name)}”</a></li>'
             for c, lc in enumerate(bearing_input.cases)
         ]
+        + (['<li><a href="#duty-cycle">Duty cycle</a></li>'] if duty_cycle is not None else [])
         + ['<li><a href="#warnings">Warnings</a></li>', '<li><a href="#references">References</a></li>']
     )
     missing = []
@@ -384,13 +395,20 @@ def build_report(
     body.extend(
         _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)
     )
-    body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
+    k = n_cases + 2  # the number of the next section
+    if duty_cycle is not None:
+        body.append(duty_cycle_html(duty_cycle, k))
+        k += 1
+    body.append(f'<section id="warnings" data-section="warnings"><h2>{k}. Warnings</h2>')
     body.append(
         "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "
         "per load case.</p>"
     )
     body.append(_warning_list([f"[{case}] {w}" for case, w in all_warnings]) + "</section>")
-    body.append(_references_html(used_references(result, friction, rating), n_cases + 3))
+    refs = used_references(result, friction, rating)
+    if duty_cycle is not None:
+        refs = list(dict.fromkeys([*refs, *duty_cycle["references"]]))
+    body.append(_references_html(refs, k + 1))
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
