@@ -1,8 +1,9 @@
 """Internal-geometry estimate per family: envelope fit, fill angle, cage pitch, and the ISO 281 C /
 ISO 76 C0 of the estimated geometry against published catalogue ratings.
 
-Published ratings: NSK *Rolling Bearings*, CAT. No. E1102 (bearing tables B8–B223; the page of each row
-is in the data file's ``source`` column). Tolerance 10 % (the issue's): the estimate uses textbook
+Published ratings: NSK *Rolling Bearings*, CAT. No. E1102e (bearing tables B8–B269; the page of each row
+is in the data file's ``source`` column); series 64 from SKF *General Catalogue* 6000 (Russian edition,
+2006), tests/catalogue/test_estimate_kinds.py. Tolerance 10 % (the issue's): the estimate uses textbook
 proportions, not the manufacturer's drawings, and NSK's ratings carry NSK's own material and design
 factors on top of ISO 281's b_m (the ISO formulas themselves are exact, tests/physics). The sizes listed
 per family are the ones checked here; docs/catalogue.md lists every tabulated size with its error.
@@ -38,7 +39,15 @@ RATED_SIZES = {
     "cylindrical_roller": ["NU207E", "NU209E", "NU306E", "NU2306E", "NU2207E", "NU1006", "NU1008"],
     "tapered_roller": ["30206", "30207", "30208", "30210", "32206", "32207", "30306", "30307", "32306"],
     "thrust_cylindrical_roller": ["81115", "81118", "81132", "81213", "81217", "81226", "81228"],
+    # four-point: NSK prints AXIAL ratings; ``ratings`` gives C_r/Y, C_0r/Y0 (iso_ratings docstring)
+    "four_point_contact_ball": ["QJ208", "QJ209", "QJ210", "QJ211", "QJ212", "QJ214", "QJ309", "QJ310"],
+    # self-aligning: f_c and f0 derived in physics.life.kinds (not transcribed), test_estimate_kinds.py
+    "self_aligning_ball": ["1206", "1208", "1209", "1210", "2207", "2208", "2209", "2210", "2216"],
+    "spherical_roller": ["22209", "22210", "22213", "22216", "22220", "22308", "22310", "22313", "22316"],
+    "needle_roller": ["NA4901", "NA4904", "NA49/22", "NA4908", "NA4910", "NA4914", "NA4822", "NA4824"],
 }
+#: Tapered sizes added with the bores below 30 mm and 55–65 mm (NSK B112, B118).
+RATED_SIZES["tapered_roller"] += ["30204", "32204", "30304", "30211", "32211", "30311", "32212", "30213"]
 
 
 @pytest.mark.parametrize("family", FAMILIES)
@@ -46,6 +55,10 @@ def test_every_size_fits_its_envelope(family):
     for e in entries(family).values():
         est = estimate(e)
         gaps = envelope_margins(est)
+        if e.extra.get("inner_ring") == "no":
+            # needles without inner ring run on the shaft: inscribed circle = the table's bore (F_w)
+            assert gaps[0] == pytest.approx(0.0, abs=1e-12) and gaps[1] > 0, e.designation
+            continue
         assert (gaps > 0).all(), (e.designation, gaps)
         assert est.n_elements >= 3
         # cage pitch feasible: neighbouring elements do not overlap on the pitch circle
@@ -123,11 +136,3 @@ def test_tapered_32008_against_seed001_internal_geometry():
     est = estimate(entries("tapered_roller")["32008X"])
     assert est.n_elements == 23
     assert est.element_diameter == pytest.approx(0.5 * (6.131 + 6.846) * 1e-3, rel=0.02)
-
-
-@pytest.mark.parametrize("family", ["four_point_contact_ball", "self_aligning_ball"])
-def test_families_without_row_kind_deliver_geometry_not_ratings(family):
-    for e in entries(family).values():
-        est = estimate(e)
-        assert (envelope_margins(est) > 0).all()
-        assert ratings(est) == (None, None)

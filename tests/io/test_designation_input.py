@@ -43,7 +43,6 @@ def test_catalogue_c_calibrates():
         ('[bearing]\ndesignation = "6z05"\n', r"^f\.toml: bearing\.designation \('6z05'\).*nearest: "),
         ('[bearing]\ndesignation = "6205"\ntype = "thrust_ball"\n', "does not match designation"),
         ('[bearing]\ntype = "deep_groove_ball"\nC = "14 kN"\n', "give it together with designation"),
-        ('[bearing]\ndesignation = "QJ208"\n', "no row kind in the engine yet"),
         ("[bearing]\n", "type: missing required field"),
     ],
 )
@@ -51,3 +50,24 @@ def test_errors_are_one_line(text, match):
     with pytest.raises(InputError, match=match) as exc:
         loads(text + CASE, source="f.toml")
     assert "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    ("designation", "bearing_type", "load"),
+    [
+        ("QJ208", "four_point_contact_ball", 'F_z = "5 kN"'),
+        ("1209", "self_aligning_ball", 'F_x = "2 kN"\nF_z = "0.2 kN"'),
+        ("2209 K", "self_aligning_ball", 'F_x = "2 kN"'),
+        ("22208 E C3", "spherical_roller", 'F_x = "10 kN"\nF_z = "1 kN"'),
+        ("NA4906", "needle_roller", 'F_x = "5 kN"'),
+        ("RNA4906", "needle_roller", 'F_x = "5 kN"'),
+    ],
+)
+def test_designations_of_the_new_kinds_build_and_carry_the_load(designation, bearing_type, load):
+    """Each kind's estimate goes through its io.kinds builder and the solved rows carry the applied load."""
+    b = loads(f'[bearing]\ndesignation = "{designation}"\n[[load_cases]]\nname = "c"\n{load}\n')
+    assert b.bearing_type == bearing_type and "ESTIMATED" in b.spec.bearing.source
+    r = resolve(designation)
+    assert sum(row.n_elements for row in b.model.rows) == r.geometry["n_elements"] * r.estimate.rows
+    sol = b.solve()
+    assert sol.converged.all()
