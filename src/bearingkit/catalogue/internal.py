@@ -97,13 +97,17 @@ RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
     "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
     "double_row_angular_contact_ball": Rule(k_w=0.25, pitch=1.35, rows=2),
+    # QJ: the angular contact rule unchanged (nothing chosen for four-point bearings)
     "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    # ball size mostly set by the width and centre-plane limits (estimate()); pitch = angular contact's
     "self_aligning_ball": Rule(k_w=0.30, pitch=1.20, rows=2),
     "cylindrical_roller": Rule(k_w=0.27, pitch=1.15, length=0.60),
     "tapered_roller": Rule(k_w=0.23, pitch=1.14, length=0.72),
     "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
     "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
     "spherical_roller": Rule(k_w=0.24, pitch=1.15, length=0.80, rows=2),
+    # needle pitch and length ratio from NSK's cage & needle assemblies with published D_w (docs), the
+    # needle share of the section k_w chosen by C over the NA table
     "needle_roller": Rule(k_w=0.65, pitch=1.80, length=0.80),
 }
 #: Series whose proportions differ from their family's (light, narrow sections).
