@@ -90,7 +90,9 @@ def test_displacement_control_reports_reactions(composite):
     q = np.array([1e-6, 0.0, 2e-6, 0.0, -1e-5])
     res = solve(composite, np.zeros(5), free=[False] * 5, displacement=q)
     force = sum(k.response(q[None]).force for k in composite.kernels)
-    np.testing.assert_allclose(res.load[0], -force[0])
+    # F_y and M_x are zero up to round-off (q in the x-z plane); the compiled core sums in another
+    # order than numpy's BLAS, so compare those at round-off of the load scale.
+    np.testing.assert_allclose(res.load[0], -force[0], atol=1e-12 * np.abs(force).max())
     # and solving with that load recovers the displacement
     back = solve(composite, res.load[0])
     np.testing.assert_allclose(back.displacement[0], q, atol=1e-12)

@@ -28,3 +28,21 @@ def test_slewing_report_draws_the_load_diagram_with_every_case(tmp_path):
 def test_other_bearings_have_no_load_diagram(tmp_path):
     html = report_file(EXAMPLES / "srb_22220.toml", tmp_path / "r.html").read_text()
     assert 'id="load-diagram"' not in html
+
+
+def test_the_report_draws_the_analysis_diagram_without_recomputing_it(tmp_path, monkeypatch):
+    """The diagram is a part of the Analysis (computed once); the report only reads it."""
+    from bearingkit.analysis import slewing
+    from bearingkit.pipeline import analyze
+
+    a = analyze(EXAMPLES / "slewing_four_point.toml")
+    diagram = a.load_diagram
+    assert diagram is not None and a.to_dict()["load_diagram"]["axial_capacity_N"] > 0
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("the report recomputed the load diagram")
+
+    monkeypatch.setattr(slewing, "static_load_diagram", forbidden)
+    html = a.report(tmp_path / "r.html").read_text()
+    assert 'id="load-diagram"' in html
+    assert analyze(EXAMPLES / "dgbb_6209.toml").load_diagram is None

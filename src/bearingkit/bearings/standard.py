@@ -25,6 +25,7 @@ def deep_groove_ball(
     conformity_outer: float = 0.53,
     clearance_radial: float = 0.0,
     material=None,
+    tilt_arm: str = "groove_centre",
     name: str = "deep groove ball bearing",
 ) -> BearingModel:
     """Single-row deep groove ball bearing (free contact angle from the radial clearance)."""
@@ -37,6 +38,7 @@ def deep_groove_ball(
         conformity_outer=conformity_outer,
         clearance=clearance_radial,
         e_reduced=e_reduced_of(material),
+        tilt_arm=tilt_arm,
         name="balls",
     )
     return BearingModel((row,), name=name, references=("harris2007",))
@@ -52,6 +54,7 @@ def angular_contact_ball(
     conformity_outer: float = 0.53,
     clearance: float = 0.0,
     material=None,
+    tilt_arm: str = "groove_centre",
     name: str = "angular contact ball bearing",
 ) -> BearingModel:
     """Single-row angular contact ball bearing; carries +F_z (contact_angle > 0) and radial load."""
@@ -65,6 +68,7 @@ def angular_contact_ball(
         conformity_outer=conformity_outer,
         clearance=clearance,
         e_reduced=e_reduced_of(material),
+        tilt_arm=tilt_arm,
         name="balls",
     )
     return BearingModel((row,), name=name, references=("harris2007",))
@@ -88,6 +92,7 @@ def angular_contact_pair(
     conformity_inner: float = 0.52,
     conformity_outer: float = 0.53,
     material=None,
+    tilt_arm: str = "groove_centre",
     name: str | None = None,
 ) -> BearingModel:
     """A pair of identical angular contact ball bearings, DB, DF or DT.
@@ -120,6 +125,7 @@ def angular_contact_pair(
             clearance=clearance,
             axial_position=z,
             e_reduced=e_red,
+            tilt_arm=tilt_arm,
             name=f"balls_{label}",
         )
         for sign, z, label in zip(signs, (-row_spacing / 2, row_spacing / 2), ("A", "B"), strict=True)
@@ -136,6 +142,7 @@ def thrust_ball(
     pitch_diameter: float,
     conformity: float = 0.54,
     material=None,
+    tilt_arm: str = "groove_centre",
     name: str = "thrust ball bearing",
 ) -> BearingModel:
     """Single-direction thrust ball bearing (α = 90°) carrying +F_z and moments with it."""
@@ -147,6 +154,7 @@ def thrust_ball(
         conformity_inner=conformity,
         conformity_outer=conformity,
         e_reduced=e_reduced_of(material),
+        tilt_arm=tilt_arm,
         name="balls",
     )
     return BearingModel((row,), name=name, references=("harris2007",))

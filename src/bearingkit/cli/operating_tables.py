@@ -17,8 +17,9 @@ RPM = 30.0 / math.pi
 
 
 def _deg_range(values) -> str:
-    lo, hi = math.degrees(min(values)), math.degrees(max(values))
-    return f"{lo:.2f}" if abs(hi - lo) < 0.005 else f"{lo:.2f}–{hi:.2f}"
+    """Range of angles in degrees, two decimals, without "-0.00" (a round-off below 0.005°)."""
+    lo, hi = (round(math.degrees(v), 2) + 0.0 for v in (min(values), max(values)))
+    return f"{lo:.2f}" if hi == lo else f"{lo:.2f}–{hi:.2f}"
 
 
 def operating_text(c: dict) -> Group:

@@ -311,6 +311,11 @@ class _BallBase(_Envelope):
     n_elements: Count
     element_diameter: PositiveLength
     pitch_diameter: PositiveLength
+    tilt_arm: Literal["groove_centre", "pitch_radius"] | None = Field(
+        None,
+        description="Lever arm of a ring tilt: inner groove curvature centre (Harris, default) or pitch "
+        "radius (ISO/TS 16281); see docs/engine.md.",
+    )
 
 
 class DeepGrooveBallGeometry(_BallBase):

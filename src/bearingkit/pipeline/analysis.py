@@ -222,6 +222,18 @@ class Analysis:
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
 
+    @functools.cached_property
+    def load_diagram(self):
+        """Static load diagram of a slewing ring (allowable axial force vs tilting moment,
+        :class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`), None for other bearings."""
+        from bearingkit.analysis.slewing import static_load_diagram
+        from bearingkit.bearings.slewing import SLEWING_KEY
+
+        model = self.input.model
+        if not getattr(model, "metadata", {}).get(SLEWING_KEY):
+            return None
+        return static_load_diagram(model)
+
     @property
     def rating(self):
         """RatingResult, or None when the bearing cannot be rated (:attr:`notes` say why)."""
@@ -405,6 +417,8 @@ class Analysis:
                     **friction.case_dicts[i]["friction"],
                     "power_loss_W": float(friction.power_loss[i]),
                 }
+        if self.load_diagram is not None:
+            out["load_diagram"] = self.load_diagram.to_dict()
         out["notes"] = self.notes
         out["references"] = self.references
         return out

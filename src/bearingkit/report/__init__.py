@@ -99,6 +99,7 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         title=title,
         notes=[*notes, describe_operating_point(analysis), *analysis.notes],
         warnings=analysis.warnings,
+        load_diagram=analysis.load_diagram,
         case_extras=extras,
     )
     return write_report(path, html)

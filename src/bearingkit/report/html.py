@@ -308,6 +308,7 @@ def build_report(
     notes=(),
     warnings=None,
     case_extras=None,
+    load_diagram=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -325,6 +326,8 @@ def build_report(
         Page title (default: "bearingkit report — <bearing name>").
     notes : sequence of str
         Assumptions of the run shown under "Run notes" (e.g. the friction operating point).
+    load_diagram : SlewingLoadDiagram, optional
+        The static load diagram of a slewing ring (:attr:`bearingkit.pipeline.Analysis.load_diagram`).
     warnings : list of list of str, optional
         Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
@@ -370,7 +373,7 @@ def build_report(
     if notes:
         body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(n)}</li>" for n in notes) + "</ul>")
     body.append(_inputs_html(bearing_input))
-    body.append(slewing_section_html(bearing_input))  # slewing rings: static load diagram ("" otherwise)
+    body.append(slewing_section_html(bearing_input, load_diagram))  # slewing rings only
     extras = case_extras or [None] * n_cases
     body.extend(
         _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)

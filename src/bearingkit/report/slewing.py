@@ -1,9 +1,8 @@
 """Report section of slewing rings: the static load diagram (allowable axial force vs tilting moment).
 
-SI inside (N, N·m, Pa); axis labels in kN and kN·m. The figure reads a
-:class:`~bearingkit.analysis.slewing.SlewingLoadDiagram` and the load cases; the section asks
-:func:`bearingkit.analysis.slewing.static_load_diagram` for the diagram of a model whose metadata names it
-a slewing ring (:data:`bearingkit.bearings.slewing.SLEWING_KEY`).
+SI inside (N, N·m, Pa); axis labels in kN and kN·m. The figure reads the analysis's
+:class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`
+(:attr:`bearingkit.pipeline.Analysis.load_diagram`) and the load cases.
 
 - :func:`load_diagram_figure` — the engine's static limiting load curve, the makers' straight line, and
   each load case as its Rothe Erde reference loads (combinations I and II with f_stat);
@@ -15,20 +14,12 @@ from __future__ import annotations
 from matplotlib.figure import Figure
 
 from bearingkit.report import plots
-from bearingkit.report.html_format import _e, _figure_html, _table, fmt
+from bearingkit.report.html_format import _figure_html, _table, fmt
 
-#: Metadata key of a slewing-ring model (bearings.slewing.SLEWING_KEY; repeated, the report does not
-#: import builders).
-SLEWING_KEY = "slewing_ring"
 #: Application factor f_stat used for the plotted load points [-]. Rothe Erde tabulates 1.0 … 1.45 and
 #: more by application; 1.25 is a mid value (e.g. slewing cranes) — the report says which it used.
 DEFAULT_F_STAT = 1.25
 _MARKERS = {"I": "o", "II": "s"}
-
-
-def is_slewing(model) -> bool:
-    """True for models built as slewing rings (their metadata says so)."""
-    return bool(getattr(model, "metadata", {}).get(SLEWING_KEY))
 
 
 def load_diagram_figure(diagram, loads, case_names, f_stat: float = DEFAULT_F_STAT) -> Figure:
@@ -87,20 +78,16 @@ def load_diagram_figure(diagram, loads, case_names, f_stat: float = DEFAULT_F_ST
     return fig
 
 
-def slewing_section_html(bearing_input, f_stat: float = DEFAULT_F_STAT) -> str:
-    """The "Static load diagram" section of a slewing ring's report ("" for other bearings)."""
-    from bearingkit.analysis.slewing import reference_loads, static_load_diagram
-    from bearingkit.errors import InputError
+def slewing_section_html(bearing_input, diagram, f_stat: float = DEFAULT_F_STAT) -> str:
+    """The "Static load diagram" section of a slewing ring's report ("" when ``diagram`` is None).
 
-    model = bearing_input.model
-    if not is_slewing(model) or not bearing_input.cases:
+    ``diagram`` is the analysis's own (:attr:`bearingkit.pipeline.Analysis.load_diagram`): the report
+    draws it and never recomputes it.
+    """
+    from bearingkit.analysis.slewing import reference_loads
+
+    if diagram is None or not bearing_input.cases:
         return ""
-    try:
-        diagram = static_load_diagram(model)
-    except InputError as exc:  # pragma: no cover - slewing builders only make supported rows
-        return (
-            f'<section id="load-diagram"><h3>Static load diagram</h3><p>Not computed: {_e(exc)}</p></section>'
-        )
     loads = bearing_input.load_matrix()
     names = [c.name for c in bearing_input.cases]
     rows = []

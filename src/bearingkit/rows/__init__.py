@@ -1,7 +1,5 @@
 """Row kinds of the quasi-static engine: ball, cylindrical, tapered, threaded rows. SI units.
 
-Importing the package registers the tapered row's solver kernel (:mod:`bearingkit.rows.tapered_kernel`
-needs :mod:`bearingkit.rows.tapered`, so the row cannot import its kernel itself).
+The tapered row imports its solver kernel directly: the meridian geometry and constants both need
+live in :mod:`bearingkit.rows.tapered_geometry`, so there is no import circle.
 """
-
-from bearingkit.rows import tapered_kernel  # noqa: F401 - registers TaperedRow.kernel's constructor

@@ -28,6 +28,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    case_column,
     radial_row,
     relative_displacement,
     validate_common,
@@ -38,6 +39,29 @@ from bearingkit.rows.base import (
 MAX_CONFORMITY = 10.0
 #: Hertz point-contact load exponent (Q = K δ^n), Hertz 1881 / Harris & Kotzalas 2007 eq. 6.43.
 POINT_EXPONENT = 1.5
+
+
+def _arm_groove_centre(pitch_radius, axial_position, offset):
+    """Inner groove curvature centre: R_i = d_m/2 + (f_i − ½) D_w cos α₀ (Harris & Kotzalas 2007, §8.1)."""
+    return pitch_radius + offset[..., 0], axial_position + offset[..., 1]
+
+
+def _arm_pitch_radius(pitch_radius, axial_position, offset):
+    """Ball centre on the pitch circle: the tilt acts at d_m/2 (ISO/TS 16281:2008 moment equation)."""
+    return pitch_radius + 0.0 * offset[..., 0], axial_position + 0.0 * offset[..., 1]
+
+
+#: Tilt lever arm of ball rows: the inner-ring point whose displacement moves the inner groove
+#: centre under a ring tilt θ, as (radius, axial position) from (d_m/2, z, groove-centre offset).
+#: ``"groove_centre"`` (default): the inner groove curvature centre, at (f_i − ½) D_w from the ball
+#: centre along the contact line — the rigid-ring kinematics of Jones and Harris (Harris & Kotzalas
+#: 2007, Rolling Bearing Analysis, §8.1, eq. 8.8 with R_i). ``"pitch_radius"``: the ball centre on
+#: the pitch circle, as ISO/TS 16281:2008 writes the axial approach under a tilt
+#: (δ_a + θ d_m/2 cos ψ) and commercial tools apply it. Both give the same contacts when the ring
+#: does not tilt; under a tilt the groove-centre arm moves each inner groove centre by θ R_i axially
+#: and θ (f_i − ½) D_w sin α₀ radially, the pitch arm by θ d_m/2 axially only, so ball loads and the
+#: tilt stiffness differ under a moment (see docs/engine.md).
+TILT_ARMS = {"groove_centre": _arm_groove_centre, "pitch_radius": _arm_pitch_radius}
 
 
 @dataclass(frozen=True)
@@ -74,6 +98,9 @@ class BallRow:
         The grooves have a shoulder on the loaded side only (angular contact and thrust rows): a
         contact whose operating angle changes sign would run over the relieved shoulder, so it does
         not exist. Default: True when α₀ ≠ 0, False for a radial (deep groove) row.
+    tilt_arm : str
+        Lever arm of a ring tilt, :data:`TILT_ARMS`: ``"groove_centre"`` (Harris, default) or
+        ``"pitch_radius"`` (ISO/TS 16281).
     name : str
         The row's name in its bearing.
 
@@ -94,6 +121,7 @@ class BallRow:
     e_reduced: float | None = None
     hertz_method: str = "exact"
     one_sided: bool | None = None
+    tilt_arm: str = "groove_centre"
     name: str = "ball"
 
     def __post_init__(self):
@@ -116,6 +144,7 @@ class BallRow:
         from bearingkit.physics.contact.hertz import POINT_METHODS
 
         checks.one_of("hertz_method", self.hertz_method, POINT_METHODS)
+        checks.one_of("tilt_arm", self.tilt_arm, TILT_ARMS)
         spare = (np.asarray(self.conformity_inner) + np.asarray(self.conformity_outer) - 1.0) * np.asarray(
             self.element_diameter
         ) - np.asarray(self.clearance) / 2
@@ -159,22 +188,21 @@ class BallKernel(KernelBase):
 
         self.row = row
 
-        def col(v):  # (C,)|() -> (C|1, 1), broadcast over the elements
-            return np.asarray(v, dtype=float).reshape(-1, 1)
+        col = case_column  # (C,)|() -> (C|1, 1), broadcast over the elements; constant fields shared
 
         d, dm = col(row.element_diameter), col(row.pitch_diameter)
         alpha0 = col(row.contact_angle)
         fi, fo = col(row.conformity_inner), col(row.conformity_outer)
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
-        self.psi = azimuths(row.n_elements, row.azimuth_phase)  # (C|1, Z)
+        self.psi = azimuths(row.n_elements, case_column(row.azimuth_phase)[:, 0])  # (C|1, Z)
         self.a0 = (fi + fo - 1.0) * d  # groove-centre distance at first touch
         gap = col(row.clearance) / 2.0
         unit0 = np.stack([np.cos(alpha0), np.sin(alpha0)], axis=-1)  # (C|1, 1, 2) from outer to inner centre
         self.s0 = (self.a0 - gap)[..., None] * unit0  # unloaded centre separation (C|1, 1, 2)
-        # The inner groove centre sits (f_i − ½)D_w from the ball centre along the contact line.
+        # The inner groove centre sits (f_i − ½)D_w from the ball centre along the contact line; the
+        # tilt acts at the point TILT_ARMS names (that centre, or the ball centre on the pitch circle).
         offset = ((fi - 0.5) * d)[..., None] * unit0
-        r_c = dm / 2 + offset[..., 0]
-        z_c = col(row.axial_position) + offset[..., 1]
+        r_c, z_c = TILT_ARMS[row.tilt_arm](dm / 2, col(row.axial_position), offset)
         self.B = np.stack([radial_row(self.psi, z_c), axial_row(self.psi, r_c)], axis=-2)  # (C|1, Z, 2, 5)
         # Series stiffness of the two contacts, at the free contact angle.
         k = []

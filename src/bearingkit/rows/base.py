@@ -57,6 +57,19 @@ def tilt_row(psi):
     return np.stack([zeros, zeros, zeros, s, -c], axis=-1)
 
 
+def case_column(value) -> np.ndarray:
+    """A row field that may vary per case, as (C|1, 1) floats; a field equal in every case is (1, 1).
+
+    Studies pass geometry factors as per-case arrays even when a factor is held constant; keeping
+    one copy then saves the per-case copies of constant geometry (memory O(C·elements) and the
+    slower per-case products) without changing any value.
+    """
+    a = np.asarray(value, dtype=float).reshape(-1, 1)
+    if a.shape[0] > 1 and np.all(a == a[0]):
+        return a[:1]
+    return a
+
+
 @dataclass(frozen=True)
 class RacewayOffset:
     """Deflection of a row's outer raceway, imposed on the contact geometry (flexible rings).

@@ -32,6 +32,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    case_column,
     radial_row,
     relative_displacement,
     tilt_row,
@@ -161,15 +162,16 @@ class CylindricalKernel(KernelBase):
 
         self.row = row
         z_el, n_s = row.n_elements, row.n_slices
-        length = np.asarray(row.effective_length, dtype=float)
+        length = case_column(row.effective_length)[:, 0]  # (C|1,): constant fields shared
+        length = length[0] if length.shape[0] == 1 else length
         x, width = line.slice_grid(length, n_s)  # (C|…, n_s)
         x = np.asarray(x, dtype=float).reshape(-1, n_s)  # (C|1, n_s)
         self.x = x
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
-        psi = azimuths(z_el, row.azimuth_phase)  # (C|1, Z)
+        psi = azimuths(z_el, case_column(row.azimuth_phase)[:, 0])  # (C|1, Z)
         self.psi = psi
-        r = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1) / 2
-        z = np.asarray(row.axial_position, dtype=float).reshape(-1, 1)
+        r = case_column(row.pitch_diameter) / 2
+        z = case_column(row.axial_position)
         sigma = row.direction
         if sigma == 0:  # radial: u_r at axial position z + x_k = B_r(z) − x_k B_θ
             self.Ga = radial_row(psi, z)
@@ -191,7 +193,7 @@ class CylindricalKernel(KernelBase):
         self.GG = (self.G[0][:, :, None] * self.G[0][:, None, :]).reshape(-1, 25) if g.shape[0] == 1 else None
         self.tilt_B = tilt_row(psi)
         drop = np.zeros_like(x) if row.profile is None else np.asarray(row.profile.crown_drop(x), dtype=float)
-        gap = np.asarray(row.clearance, dtype=float).reshape(-1, 1) / 2
+        gap = case_column(row.clearance) / 2
         self.delta0 = -gap - 2.0 * drop  # (C|1, n_s), the same for every roller
         # (C|1, M) in the slice order of G; per case, so the small-batch path of a subset of cases keeps
         # each case's clearance.

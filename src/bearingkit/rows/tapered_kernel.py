@@ -23,13 +23,8 @@ from bearingkit.rows.base import (
     radial_row,
     relative_displacement,
 )
-from bearingkit.rows.tapered import (
-    DEFAULT_END_RADIUS_RATIO,
-    LINE_EXPONENT,
-    TaperedRow,
-    TapGeometry,
-    register_kernel,
-)
+from bearingkit.rows.tapered_geometry import DEFAULT_END_RADIUS_RATIO, LINE_EXPONENT, TapGeometry
+from bearingkit.rows.tapered_laws import kunert_law, rib_law, taylor_law
 
 #: Inner Newton iteration of the roller equilibrium: iteration cap, relative tolerance on each roller's
 #: force balance (of its summed contact loads), step halvings per line search, the largest step as a
@@ -45,8 +40,6 @@ ROLLER_NOISE_EPS = 4.0 * np.finfo(float).eps
 #: Approach at which the stiffness floor of the roller sub-problem is set, as a fraction of the mean
 #: roller diameter [-] (1e-4 D: a typical working approach); the floor is 1e-12 of that stiffness.
 STIFFNESS_FLOOR_APPROACH = 1e-4
-#: Floor of the approach in the Taylor-law stiffness (its δ^(−8/9) term is singular at 0) [m].
-TAYLOR_DELTA_FLOOR = 1e-12
 
 
 class InnerStats:
@@ -93,7 +86,7 @@ class TaperedKernel(KernelBase):
 
     _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
 
-    def __init__(self, row: TaperedRow):
+    def __init__(self, row):
         from bearingkit.physics.contact import hertz, line
         from bearingkit.rows.ball import _steel_e_reduced
 
@@ -203,27 +196,12 @@ class TaperedKernel(KernelBase):
     # -- contact laws ------------------------------------------------------------------------------
     def _line_law(self, delta):
         """Slice load, stiffness and energy of the raceway slices (C, Z, n_s)."""
-        c = self.c_s
-        if not self.taylor:
-            d = np.maximum(delta, 0.0)
-            t = d ** (1.0 / 9.0)
-            return c * d * t, (10.0 / 9.0) * c * t, c * d * d * t / (1.0 + LINE_EXPONENT)
-        n = LINE_EXPONENT
-        dv = self.delta_dev[..., None]
-        d = np.maximum(delta, 0.0)
-        q = c * d ** (n - 1.0) * (d + n * dv)
-        on = (d > 0) & (q > 0)
-        q = np.where(on, q, 0.0)
-        df = np.maximum(d, TAYLOR_DELTA_FLOOR)
-        k = np.where(on, c * (n * df ** (n - 1.0) + n * (n - 1.0) * dv * df ** (n - 2.0)), 0.0)
-        ds = np.maximum(-n * dv, 0.0)
-        e = c * ((d ** (n + 1) - ds ** (n + 1)) / (n + 1) + dv * (d**n - ds**n))
-        return q, k, np.where(on, e, 0.0)
+        if self.taylor:
+            return taylor_law(delta, self.delta_dev[..., None], self.c_s)
+        return kunert_law(delta, self.c_s)
 
     def _point_law(self, delta):
-        d = np.maximum(delta, 0.0)
-        r = np.sqrt(d)
-        return self.k_f * d * r, 1.5 * self.k_f * r, self.k_f * d * d * r / 2.5
+        return rib_law(delta, self.k_f)
 
     # -- roller equilibrium ------------------------------------------------------------------------
     def _ring_parts(self, q, offset=None):
@@ -493,4 +471,3 @@ def _solve2(h, b):
     return np.stack([x0, x1], axis=-1)
 
 
-register_kernel(TaperedKernel)

@@ -1,0 +1,501 @@
+"""The compiled solver core: the whole Newton solve of one case in numba, ``prange`` over the cases.
+
+SI units, scaled DOFs as in :mod:`bearingkit.analysis.quasistatic`. The algorithm is the numpy
+reference's (:mod:`bearingkit.analysis.newton` and the driver in :mod:`~bearingkit.analysis.
+quasistatic`), case by case and step by step: the starting point (fixed-point sizing with the rows'
+start matrices, idle mechanisms removed, capped), damped Newton with the vanishing Levenberg term,
+idle-mechanism removal, the step cap, Armijo backtracking, the contact-cone check at
+:data:`~bearingkit.analysis.newton.CONE_CHECK_ITERATION`, the divergence limit, load continuation
+and the non-finite check. Rows are evaluated by the compiled row functions
+(:mod:`bearingkit.rows.compiled_contacts`, :mod:`bearingkit.rows.compiled_tapered`); a case
+allocates only a few small arrays, so memory is O(cases) for the outputs alone. Compilation is
+cached on disk (``cache=True``): the first call on a machine compiles (tens of seconds), later
+processes load the cache.
+"""
+
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+from numba import njit, prange
+
+from bearingkit.analysis.cone import CONE_MISS_RTOL
+from bearingkit.analysis.newton import CONE_CHECK_ITERATION, MAX_HALVINGS, MECHANISM_RTOL
+from bearingkit.rows.ball import BallKernel
+from bearingkit.rows.compiled_contacts import (
+    BallPack,
+    PointPack,
+    RollerPack,
+    ball_response,
+    pack_balls,
+    pack_points,
+    pack_rollers,
+    point_response,
+    roller_response,
+)
+from bearingkit.rows.compiled_tapered import TaperedPack, pack_tapered, tapered_response
+from bearingkit.rows.cylindrical import CylindricalKernel
+from bearingkit.rows.tapered_kernel import TaperedKernel
+from bearingkit.rows.threaded import ThreadedKernel
+
+#: A bearing in compiled form: the packed rows of each kind, the rows' start matrices (R, 5, 5) and
+#: exponents (R,), the row count and the kinds present.
+ModelPack = namedtuple("ModelPack", "balls rollers points tapered start_mats start_exps n_rows")
+#: Kernel classes the compiled core can evaluate, by their ``row.kind``.
+SUPPORTED_KINDS = ("ball", "cylindrical", "tapered", "threaded")
+#: The numpy kernel class each compiled group mirrors. Matched by exact class: a subclass (a kernel at
+#: speed, :mod:`bearingkit.rows.ball_speed`, :mod:`bearingkit.rows.cylindrical_speed`) adds physics the
+#: compiled group does not have, so its bearing runs the numpy path.
+KERNEL_GROUPS = {
+    BallKernel: "ball",
+    CylindricalKernel: "cylindrical",
+    TaperedKernel: "tapered",
+    ThreadedKernel: "threaded",
+}
+
+
+def pack_model(kernels) -> ModelPack | None:
+    """The compiled form of a bearing's row kernels, or None if a row kind has no compiled core."""
+    groups = {kind: ([], []) for kind in SUPPORTED_KINDS}
+    for r, k in enumerate(kernels):
+        kind = KERNEL_GROUPS.get(type(k))
+        if kind is None:
+            return None
+        groups[kind][0].append(k)
+        groups[kind][1].append(r)
+    if groups["threaded"][0] and any(np.shape(k.G)[0] != 1 for k in groups["threaded"][0]):
+        return None
+    return ModelPack(
+        pack_balls(*groups["ball"]),
+        pack_rollers(*groups["cylindrical"]),
+        pack_points(*groups["threaded"]),
+        pack_tapered(*groups["tapered"]),
+        np.ascontiguousarray(np.stack([np.asarray(k.start_matrix, float) for k in kernels])),
+        np.array([float(k.start_exponent) for k in kernels]),
+        len(kernels),
+    )
+
+
+# -- one evaluation ---------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def _evaluate(c, q, mp, ws, inner, force, jac, rowf):
+    """Contact force, Jacobian and per-row force of case c at q; returns the energy.
+
+    ``ws`` is the case's workspace (:func:`_workspace`): its first four arrays hold the tapered
+    rows' warm start.
+    """
+    force[:] = 0.0
+    jac[:, :] = 0.0
+    rowf[:, :] = 0.0
+    energy = ball_response(c, q, mp.balls, force, jac, rowf)
+    energy += roller_response(c, q, mp.rollers, force, jac, rowf)
+    energy += point_response(q, mp.points, force, jac, rowf)
+    if mp.tapered.gf.shape[0] > 0:
+        e, used, unconv = tapered_response(c, q, mp.tapered, ws[0], ws[1], ws[2], ws[3], force, jac, rowf)
+        energy += e
+        inner[0] += 1.0
+        inner[1] = max(inner[1], used)
+        inner[2] += unconv
+    return energy
+
+
+@njit(cache=True, error_model="numpy")
+def _state(c, q, load, mp, ws, inner, scale, idx, force, jac, rowf, residual):
+    """Evaluate case c at q under ``load``: fills force, jac, residual; returns (potential, norm)."""
+    energy = _evaluate(c, q, mp, ws, inner, force, jac, rowf)
+    pot = energy
+    for i in idx:
+        pot -= load[i] * q[i]
+    lscale = 0.0
+    for i in range(5):
+        residual[i] = load[i] + force[i]
+        lscale = max(lscale, abs(load[i] * scale[i]))
+    for i in range(5):
+        rmax = 0.0
+        for r in range(rowf.shape[0]):
+            rmax = max(rmax, abs(rowf[r, i]))
+        lscale = max(lscale, rmax * scale[i])
+    lscale = max(lscale, 1e-12)
+    norm = 0.0
+    for i in idx:
+        norm = max(norm, abs(residual[i] * scale[i]))
+    return pot, norm / lscale if idx.shape[0] > 0 else 0.0
+
+
+# -- linear algebra helpers --------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def _without_idle(h, g, step, tol):
+    """``step`` without its components along mechanisms of h the gradient does not load (in place)."""
+    lam, vec = np.linalg.eigh(h)
+    n = h.shape[0]
+    top = 0.0
+    for i in range(n):
+        top = max(top, abs(lam[i]))
+    top = max(top, 1e-300)
+    any_idle = False
+    idle = np.zeros(n, np.bool_)
+    for j in range(n):
+        if lam[j] <= MECHANISM_RTOL * top:
+            cg = 0.0
+            for i in range(n):
+                cg += vec[i, j] * g[i]
+            if abs(cg) <= tol:
+                idle[j] = True
+                any_idle = True
+    if not any_idle:
+        return
+    comp = np.zeros(n)
+    for j in range(n):
+        if not idle[j]:
+            for i in range(n):
+                comp[j] += vec[i, j] * step[i]
+    for i in range(n):
+        s = 0.0
+        for j in range(n):
+            s += vec[i, j] * comp[j]
+        step[i] = s
+
+
+@njit(cache=True, error_model="numpy")
+def _nnls_misfit(a, b):
+    """‖a x − b‖ at the non-negative least-squares solution (Lawson–Hanson; as cone.nnls)."""
+    m, n = a.shape
+    x = np.zeros(n)
+    passive = np.zeros(n, np.bool_)
+    colsum = 0.0
+    for j in range(n):
+        s = 0.0
+        for i in range(m):
+            s += abs(a[i, j])
+        colsum = max(colsum, s)
+    tol = 10.0 * np.finfo(np.float64).eps * colsum * max(m, n)
+    w = a.T @ b
+    s_vec = np.zeros(n)
+    for _ in range(3 * n + 10):
+        best = -np.inf
+        jbest = -1
+        for j in range(n):
+            if not passive[j] and w[j] > best:
+                best = w[j]
+                jbest = j
+        if jbest < 0 or best <= tol:
+            break
+        passive[jbest] = True
+        for _inner in range(3 * n + 10):
+            cols = np.flatnonzero(passive)
+            sub = np.empty((m, cols.shape[0]))
+            for k in range(cols.shape[0]):
+                sub[:, k] = a[:, cols[k]]
+            sol = np.linalg.lstsq(sub, b, -1.0)[0]
+            s_vec[:] = 0.0
+            smin = np.inf
+            for k in range(cols.shape[0]):
+                s_vec[cols[k]] = sol[k]
+                smin = min(smin, sol[k])
+            if smin > 0.0:
+                break
+            alpha = np.inf
+            for j in range(n):
+                if passive[j] and s_vec[j] <= 0.0:
+                    alpha = min(alpha, x[j] / (x[j] - s_vec[j]))
+            for j in range(n):
+                x[j] = x[j] + alpha * (s_vec[j] - x[j])
+                if passive[j] and not x[j] > tol:
+                    passive[j] = False
+        x[:] = s_vec
+        w = a.T @ (b - a @ x)
+    r = a @ x - b
+    return np.sqrt(np.sum(r * r))
+
+
+# -- the starting point --------------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def _start(q, load, mp, scale, idx, max_step):
+    """As :func:`bearingkit.analysis.newton.starting_point` for one case; returns the start (5,)."""
+    n = idx.shape[0]
+    out = q.copy()
+    if n == 0:
+        return out
+    f = np.empty(n)
+    fmax = 0.0
+    for a in range(n):
+        f[a] = load[idx[a]] * scale[idx[a]]
+        fmax = max(fmax, abs(f[a]))
+    delta = 1e-4 * max_step / 0.02
+    k = np.zeros((n, n))
+    qt = np.zeros(n)
+    for _ in range(6):
+        k[:, :] = 0.0
+        for r in range(mp.start_mats.shape[0]):
+            ex = mp.start_exps[r]
+            fac = ex * delta ** (ex - 1.0)
+            for a in range(n):
+                for b in range(n):
+                    i, j = idx[a], idx[b]
+                    k[a, b] += fac * (mp.start_mats[r, i, j] * scale[i] * scale[j])
+        kmax = 0.0
+        for a in range(n):
+            for b in range(n):
+                kmax = max(kmax, abs(k[a, b]))
+        for a in range(n):
+            k[a, a] += 1e-12 * kmax
+        for a in range(n):
+            for b in range(n):
+                if not np.isfinite(k[a, b]):
+                    k[a, b] = 0.0
+            k[a, a] += 1e-300
+        try:
+            qt = np.linalg.solve(k, f)
+        except Exception:  # degenerate stiffness: start from the given point
+            return out
+        approach = 0.0
+        for a in range(n):
+            approach = max(approach, abs(qt[a]))
+        delta = np.sqrt(delta * max(approach, 1e-3 * delta))
+    _without_idle(k, -f, qt, 1e-10 * fmax)
+    big = 0.0
+    for a in range(n):
+        big = max(big, abs(qt[a]))
+    if np.isfinite(big):
+        fac = min(1.0, max_step / max(big, 1e-300))
+        for a in range(n):
+            qt[a] *= fac
+    for a in range(n):
+        out[idx[a]] = q[idx[a]] + qt[a] * scale[idx[a]]
+    for i in range(5):
+        if not np.isfinite(out[i]):
+            return q.copy()
+    return out
+
+
+# -- Newton for one case -----------------------------------------------------------------------------
+@njit(cache=True, error_model="numpy")
+def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
+    """Damped Newton from q (updated in place) under ``load``; returns (converged, diverged, refused).
+
+    ``p`` = (rtol, max_iterations, max_step, limit, cone check on), ``cone`` the scaled contact
+    directions (n, M) on the free DOFs; ``stats`` (iterations, evaluations) are accumulated. The
+    last state is left in ws[4:] (force, jac, residual) and ws[8] (norm).
+    """
+    force, jac, rowf, residual, tmp = ws[4], ws[5], ws[6], ws[7], ws[8]
+    rtol, max_it, max_step, limit, cone_on = p[0], int(p[1]), p[2], p[3], p[4]
+    n = idx.shape[0]
+    pot, norm = _state(c, q, load, mp, ws, inner, scale, idx, force, jac, rowf, residual)
+    stats[1] += 1.0
+    converged = norm <= rtol
+    diverged = False
+    refused = False
+    g = np.empty(n)
+    h = np.empty((n, n))
+    cand = np.empty(5)
+    t_force = np.empty(5)
+    t_jac = np.empty((5, 5))
+    t_rowf = np.empty_like(rowf)
+    t_res = np.empty(5)
+    for it in range(max_it):
+        if converged or diverged:
+            break
+        if it == CONE_CHECK_ITERATION and cone_on > 0.0:
+            f = np.empty(n)
+            size = 0.0
+            for a in range(n):
+                f[a] = load[idx[a]] * scale[idx[a]]
+                size += f[a] * f[a]
+            size = np.sqrt(size)
+            if size > 0.0 and _nnls_misfit(cone, f) > CONE_MISS_RTOL * size:
+                refused = True
+                diverged = True
+                break
+        stats[0] += 1.0
+        gmax = 0.0
+        diag = 0.0
+        for a in range(n):
+            g[a] = -(residual[idx[a]] * scale[idx[a]])
+            gmax = max(gmax, abs(g[a]))
+            for b in range(n):
+                h[a, b] = -(jac[idx[a], idx[b]] * scale[idx[a]] * scale[idx[b]])
+            diag = max(diag, abs(h[a, a]))
+        mu = 1e-12 * diag + gmax / (1e6 * max_step) + 1e-300
+        hm = h.copy()
+        for a in range(n):
+            hm[a, a] += mu
+        step = np.linalg.solve(hm, -g)
+        noise = rtol * gmax / max(norm, 1e-300)
+        _without_idle(h, g, step, noise)
+        big = 0.0
+        for a in range(n):
+            big = max(big, abs(step[a]))
+        fac = min(1.0, max_step / max(big, 1e-300))
+        slope = 0.0
+        for a in range(n):
+            step[a] *= fac
+            slope += g[a] * step[a]
+        t = 1.0
+        for _ls in range(MAX_HALVINGS):
+            cand[:] = q
+            for a in range(n):
+                cand[idx[a]] += (t * step[a]) * scale[idx[a]]
+            t_pot, t_norm = _state(c, cand, load, mp, ws, inner, scale, idx, t_force, t_jac, t_rowf, t_res)
+            stats[1] += 1.0
+            slack = 1e-12 * (abs(pot) + 1e-30)
+            if (t_pot <= pot + 1e-4 * t * slope + slack) or (t_norm < 0.5 * norm):
+                q[:] = cand
+                pot, norm = t_pot, t_norm
+                force[:] = t_force
+                jac[:, :] = t_jac
+                rowf[:, :] = t_rowf
+                residual[:] = t_res
+                break
+            t *= 0.5
+        converged = norm <= rtol
+        qmax = 0.0
+        for i in range(5):
+            qmax = max(qmax, abs(q[i] / scale[i]))
+        diverged = qmax > limit
+    tmp[0] = norm
+    return converged, diverged, refused
+
+
+@njit(cache=True, error_model="numpy")
+def _workspace(mp):
+    t = mp.tapered.gf.shape[0]
+    return (
+        np.zeros((t, 2)),
+        np.zeros((t, 5, 2)),
+        np.zeros(5),
+        np.zeros(1),
+        np.zeros(5),
+        np.zeros((5, 5)),
+        np.zeros((mp.n_rows, 5)),
+        np.zeros(5),
+        np.zeros(1),
+    )
+
+
+@njit(cache=True, error_model="numpy")
+def _solve_case(c, q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+    """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
+
+    out_i[c] = (converged, diverged, refused, broken, iterations, evaluations, norm).
+    """
+    ws = _workspace(mp)
+    stats = np.zeros(2)
+    q = q0.copy() if given else _start(q0, load, mp, scale, idx, p[2])
+    conv, div, ref = _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
+    if fracs.shape[0] > 0 and not conv and not ref:
+        qc = q0.copy()
+        ramp = np.empty(5)
+        for frac in fracs:
+            for i in range(5):
+                ramp[i] = load[i] * frac if free[i] else load[i]
+            conv, div, _ = _newton_case(c, qc, ramp, mp, ws, inner, scale, idx, p, cone, stats)
+        q[:] = qc
+    norm = ws[8][0]
+    broken = not (np.all(np.isfinite(q)) and np.isfinite(norm))
+    if broken:
+        q[:] = q0
+        conv = False
+    out_q[c] = q
+    out_f[c] = ws[4]
+    out_j[c] = ws[5]
+    out_i[c, 0] = conv
+    out_i[c, 1] = div
+    out_i[c, 2] = ref
+    out_i[c, 3] = broken
+    out_i[c, 4] = stats[0]
+    out_i[c, 5] = stats[1]
+    out_i[c, 6] = norm
+
+
+# The parfor wrapper of ``prange`` takes arrays and scalars only, not namedtuples of arrays: the
+# parallel driver receives the packed rows flattened (order of :func:`_flat`) and rebuilds the pack
+# inside the loop body.
+@njit(cache=True, parallel=True, error_model="numpy")
+def _solve_batch(
+    q0, load, free,
+    b_B, b_s0, b_a0, b_kn, b_side, b_row,
+    r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row,
+    p_G, p_d0, p_k, p_row,
+    t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
+    t_taylor, t_row,
+    start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
+):  # fmt: skip
+    for i in prange(load.shape[0]):
+        c = np.int64(i)  # the parfor index may be unsigned: int64 keeps `c if … else 0` an integer
+        balls = BallPack(b_B, b_s0, b_a0, b_kn, b_side, b_row)
+        rollers = RollerPack(r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row)
+        points = PointPack(p_G, p_d0, p_k, p_row)
+        tapered = TaperedPack(
+            t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor,
+            t_ffloor, t_cap, t_taylor, t_row
+        )  # fmt: skip
+        mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows)
+        _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
+                    out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
+
+
+def _flat(mp: ModelPack) -> tuple:
+    """The pack's arrays in the parallel driver's argument order."""
+    return (*mp.balls, *mp.rollers, *mp.points, *mp.tapered, mp.start_mats, mp.start_exps, mp.n_rows)
+
+
+@njit(cache=True, error_model="numpy")
+def _solve_serial(q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+    for c in range(load.shape[0]):
+        _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
+                    out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
+
+
+def solve_packed(mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel):
+    """Run the compiled solve of every case (C, 5 arrays in SI); returns the raw per-case outputs.
+
+    Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
+    ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations`` (C,) int, ``norm`` (C,),
+    ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers.
+    """
+    n = load.shape[0]
+    idx = np.flatnonzero(free).astype(np.int64)
+    cone_on = 0.0 if cone is None else 1.0
+    p = np.array([options.rtol, options.max_iterations, max_step, limit, cone_on], dtype=np.float64)
+    steps = options.continuation_steps
+    fracs = np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0)
+    cone_arr = np.zeros((len(idx), 0)) if cone is None else np.ascontiguousarray(cone)
+    out_q = np.empty((n, 5))
+    out_f = np.empty((n, 5))
+    out_j = np.empty((n, 5, 5))
+    out_i = np.empty((n, 7))
+    inner = np.zeros((n, 3))
+    head = (np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64),
+            np.asarray(free, np.bool_))  # fmt: skip
+    tail = (np.asarray(scale, np.float64), idx, p, fracs, cone_arr, bool(given))
+    tail += (out_q, out_f, out_j, out_i, inner)
+    if parallel:
+        _solve_batch(*head, *_flat(mp), *tail)
+    else:
+        _solve_serial(*head, mp, *tail)
+    return {
+        "q": out_q,
+        "force": out_f,
+        "jac": out_j,
+        "converged": out_i[:, 0] > 0.5,
+        "diverged": out_i[:, 1] > 0.5,
+        "refused": out_i[:, 2] > 0.5,
+        "broken": out_i[:, 3] > 0.5,
+        "iterations": out_i[:, 4].astype(int),
+        "evaluations": out_i[:, 5].astype(int),
+        "norm": out_i[:, 6],
+        "inner": inner,
+    }
+
+
+__all__ = [
+    "SUPPORTED_KINDS",
+    "BallPack",
+    "ModelPack",
+    "PointPack",
+    "RollerPack",
+    "TaperedPack",
+    "pack_model",
+    "solve_packed",
+]

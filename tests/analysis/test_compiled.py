@@ -1,0 +1,121 @@
+"""The compiled solver core agrees with the numpy reference (design.md §7.4), and falls back without numba.
+
+Every example file and the validation bearings are solved by both backends; the displacement,
+stiffness and reactions must agree to 1e-12 relative (both follow the same algorithm step by step;
+what remains is the order of floating-point sums). Tapered rows under light loads agree to their
+roller sub-problem's tolerance instead (ROLLER_RTOL = 1e-12 of the roller load plus an absolute
+floor of ~2e-10 N per roller, reached from different warm starts).
+"""
+
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.bearings.tapered import seed001_pair, seed001_row
+from bearingkit.bearings.turntable import composite_turntable
+from bearingkit.io.loader import load_file
+from bearingkit.physics.deviations import seed001_series
+
+#: Every example file of one bearing (shaft-system files hold several and are solved by systems/).
+EXAMPLES = [
+    p
+    for p in sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
+    if "bearing" in tomllib.loads(p.read_text(encoding="utf-8"))
+]
+COMPILED = SolverOptions(backend="compiled")
+NUMPY = SolverOptions(backend="numpy")
+
+
+def _agree(model, load, free=None, rtol=1e-12):
+    a = solve(model, load, free=free, options=COMPILED)
+    b = solve(model, load, free=free, options=NUMPY)
+    np.testing.assert_array_equal(a.converged, b.converged)
+    np.testing.assert_array_equal(a.iterations, b.iterations)
+    for x, y in ((a.displacement, b.displacement), (a.stiffness, b.stiffness), (a.load, b.load)):
+        scale = np.abs(y).reshape(len(y), -1).max(axis=1)
+        err = np.abs(x - y).reshape(len(y), -1).max(axis=1)
+        np.testing.assert_array_less(err, rtol * scale + 1e-300)
+    return a
+
+
+def _compiled(model) -> bool:
+    from bearingkit.analysis import compiled_newton
+
+    return compiled_newton.pack_model(model.kernels) is not None
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_every_example_agrees_with_the_numpy_reference(path):
+    """Every example whose kernels the compiled core covers; the others run the numpy path (auto)."""
+    inp = load_file(path)
+    if not _compiled(inp.model):
+        auto = solve(inp.model, inp.load_matrix(), free=inp.free, options=SolverOptions(backend="auto"))
+        ref = solve(inp.model, inp.load_matrix(), free=inp.free, options=NUMPY)
+        np.testing.assert_array_equal(auto.displacement, ref.displacement)  # auto fell back to numpy
+        return
+    res = _agree(inp.model, inp.load_matrix(), free=inp.free)
+    assert res.converged.all()
+
+
+def test_seed000_composite_batch_agrees():
+    loads = load_vector(
+        F_z=np.linspace(1000.0, 8000.0, 12), F_x=np.linspace(0.0, 3000.0, 12), M_y=-np.linspace(0, 1800.0, 12)
+    )
+    _agree(composite_turntable(), loads)
+    _agree(composite_turntable(), loads, free=[True, False, True, False, True])
+
+
+def test_seed001_deviation_batch_and_pairs_agree():
+    dev = np.stack([seed001_series(k) for k in range(1, 7)])
+    from bearingkit.analysis.model import BearingModel
+
+    model = BearingModel((seed001_row(diameter_deviation=dev),))
+    _agree(model, load_vector(F_z=np.full(6, 10_000.0)), free=[True, True, True, False, False])
+    pair = seed001_pair(arrangement="DB", spacing=0.04, clearance=-10e-6)
+    _agree(pair, load_vector(F_x=[3000.0, -500.0], F_z=[5000.0, 200.0], M_y=[-60.0, 5.0]), rtol=1e-10)
+
+
+def test_without_numba_the_numpy_reference_runs_with_one_warning():
+    code = (
+        "import sys, warnings; sys.modules['numba'] = None\n"
+        "from bearingkit.analysis.quasistatic import solve, load_vector\n"
+        "from bearingkit.bearings.turntable import composite_turntable\n"
+        "m = composite_turntable()\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    a = solve(m, load_vector(F_z=3000.0)); b = solve(m, load_vector(F_z=4000.0))\n"
+        "print(sum('compiled solver core is unavailable' in str(x.message) for x in w), a.converged[0])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["1", "True"]
+
+
+def test_compiled_backend_refuses_what_it_cannot_take():
+    from bearingkit.errors import InputError
+    from bearingkit.rows.base import RacewayOffset
+
+    model = composite_turntable()
+    offset = {"ball_upper": RacewayOffset(shift=np.zeros((1, 5)))}
+    with pytest.raises(InputError, match="raceway offsets"):
+        solve(model, load_vector(F_z=3000.0), options=COMPILED, raceway_offsets=offset)
+    # "auto" runs the numpy reference for it instead.
+    assert solve(model, load_vector(F_z=3000.0), raceway_offsets=offset).converged.all()
+
+
+def test_kernels_at_speed_run_the_numpy_path():
+    """A ball row at speed is a subclass of the ball kernel with more physics: never packed as a plain one."""
+    from bearingkit.analysis import compiled_newton
+    from bearingkit.analysis.speed import model_at_speed
+
+    inp = load_file(Path(__file__).resolve().parents[2] / "examples" / "acbb_7209.toml")
+    assert compiled_newton.pack_model(inp.model.kernels) is not None
+    fast = model_at_speed(inp.model, np.full(len(inp.cases), 2000.0))
+    assert compiled_newton.pack_model(fast.kernels) is None
+    auto = solve(inp.model, inp.load_matrix(), free=inp.free, speed=2000.0)
+    ref = solve(inp.model, inp.load_matrix(), free=inp.free, speed=2000.0, options=NUMPY)
+    np.testing.assert_array_equal(auto.displacement, ref.displacement)
