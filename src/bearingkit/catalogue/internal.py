@@ -13,7 +13,9 @@ The rules are the bearing-design rules of the textbooks, with their constants in
   other families: the per-family constant of :data:`RULES`);
 - ball count of Conrad-assembled deep groove bearings from the assembly (fill) angle of Harris
   (2006, ch. 2 [M]): φ = 2(Z − 1) D_w/d_m ≤ φ_max; φ_max = 186° is the value that the 6205 with its
-  9 balls of 7.938 mm on d_m = 39.04 mm reaches (2·8·7.938/39.04 rad = 186.4°) [M];
+  9 balls of 7.938 mm on d_m = 39.04 mm reaches (2·8·7.938/39.04 rad = 186.4°) [M]; the same rule per
+  row for the double-row angular contact series 32/33 (no filling slots; NSK's C and C0 together imply
+  that count, tests/catalogue/test_estimate.py);
 - other rows: the cage pitch, Z = floor(π d_m / (s D_w)) with a pitch ratio s > 1 (cage bars between
   the elements), s per family in :data:`RULES`;
 - conformities f_i = 0.52, f_o = 0.53 (radial, angular contact), 0.54 (thrust) (Harris 2006 ch. 2:
@@ -96,7 +98,9 @@ class Rule:
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
     "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
-    "double_row_angular_contact_ball": Rule(k_w=0.25, pitch=1.35, rows=2),
+    # no filling slots: each row Conrad-assembled like a deep groove row, the deep groove ball rule with
+    # the angular contact width cap per row (docs/catalogue.md: NSK's C and C0 together imply it)
+    "double_row_angular_contact_ball": Rule(k_w=0.31, rows=2, k_b=0.80),
     # QJ: the angular contact rule unchanged (nothing chosen for four-point bearings)
     "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
     # ball size mostly set by the width and centre-plane limits (estimate()); pitch = angular contact's
@@ -242,12 +246,14 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         d_w = min(rule.k_w * (big_d - d), cap)
         if rule.k_w * (big_d - d) > d_w:
             notes.append(f"D_w capped at {cap_text} by the width")
-        if fam == "deep_groove_ball":
+        if rule.pitch == 0.0:
+            # Conrad-assembled rows (deep groove; double row 32/33 without filling slots, one row at a time)
             z = _conrad_count(d_m, d_w)
-            alpha = 0.0
+            alpha = _nominal_angle(entry, contact_angle)
+            per_row = " per row" if rule.rows > 1 else ""
             notes.append(
-                f"D_w = {rule.k_w} (D - d), d_m = (d + D)/2, Z = largest with Conrad fill angle "
-                f"2(Z-1) D_w/d_m <= {math.degrees(CONRAD_FILL_ANGLE):.0f} deg (Harris)"
+                f"D_w = {rule.k_w} (D - d), d_m = (d + D)/2, Z{per_row} = largest "
+                f"with Conrad fill angle 2(Z-1) D_w/d_m <= {math.degrees(CONRAD_FILL_ANGLE):.0f} deg (Harris)"
             )
         else:
             if fam == "cylindrical_roller":
