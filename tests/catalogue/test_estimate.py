@@ -176,3 +176,12 @@ def test_tapered_32008_against_seed001_internal_geometry():
     est = estimate(entries("tapered_roller")["32008X"])
     assert est.n_elements == 23
     assert est.element_diameter == pytest.approx(0.5 * (6.131 + 6.846) * 1e-3, rel=0.02)
+
+
+def test_notes_read_cleanly():
+    """Every note of every estimate is a clause list without empty items (NU…E with a published F_w
+    printed ', ,' before)."""
+    for fam in FAMILIES:
+        for e in entries(fam).values():
+            for note in estimate(e).notes:
+                assert ", ," not in note and not note.rstrip().endswith(","), (e.designation, note)

@@ -267,15 +267,12 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             z = _pitch_count(d_m, d_w, rule.pitch)
             alpha = _nominal_angle(entry, contact_angle)
             what = "D_we" if length is not None else "D_w"
-            notes.append(
-                f"{what} = {rule.k_w} (D - d), Z from cage pitch {rule.pitch} {what}, "
-                + ("d_m = (d + D)/2" if "F_w" not in notes[-1] else "")
-                + (
-                    f", L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}"
-                    if length
-                    else ""
-                )
-            )
+            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {rule.pitch} {what}"]
+            if "F_w" not in notes[-1]:
+                parts.append("d_m = (d + D)/2")
+            if length:
+                parts.append(f"L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}")
+            notes.append(", ".join(parts))
     if fam in (
         "deep_groove_ball",
         "angular_contact_ball",
