@@ -37,9 +37,20 @@ def test_catalogue_c_calibrates():
     )
 
 
+@pytest.mark.parametrize(("position", "fraction"), [('"min"', 0.0), ('"max"', 1.0), ("90", 0.9), ("50", 0.5)])
+def test_clearance_position_picks_a_point_of_the_class(position, fraction):
+    """ISO 5753-1 C3 of a 25 mm bore deep groove ball bearing is 13-28 um (NSK E1102 Table 9.9)."""
+    b = loads(f'[bearing]\ndesignation = "6205 C3"\nclearance_position = {position}\n' + CASE)
+    expected = (13 + fraction * (28 - 13)) * 1e-6
+    assert float(b.model.rows[0].clearance) == pytest.approx(expected, rel=1e-9)
+
+
 @pytest.mark.parametrize(
     ("text", "match"),
     [
+        ('[bearing]\ndesignation = "6205"\nclearance_position = 120\n', "percentile 0 … 100"),
+        ('[bearing]\ndesignation = "6205"\nclearance_position = "median"\n', "clearance_position"),
+        ('[bearing]\ntype = "deep_groove_ball"\nclearance_position = 90\n', "give designation"),
         ('[bearing]\ndesignation = "6z05"\n', r"^f\.toml: bearing\.designation \('6z05'\).*nearest: "),
         ('[bearing]\ndesignation = "6205"\ntype = "thrust_ball"\n', "does not match designation"),
         ('[bearing]\ntype = "deep_groove_ball"\nC = "14 kN"\n', "give it together with designation"),

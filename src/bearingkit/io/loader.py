@@ -426,7 +426,7 @@ def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFi
 
     header = spec.bearing
     try:
-        found = resolve(header.designation, C=header.C)
+        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
     except InputError as exc:
         field = "bearing." if str(exc).startswith("designation") else ""
         raise InputError(f"{source}: {field}{exc}") from None
