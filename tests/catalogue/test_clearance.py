@@ -56,6 +56,8 @@ def test_classes_grow_from_c2_to_c5():
         (("deep_groove_ball", 0.025, "C7"), "must be one of C2"),
         (("deep_groove_ball", 0.9, "CN"), "outside the deep_groove_ball clearance table"),
         (("needle", 0.025, "CN"), "clearance group"),
+        # SKF 6000 p. 477 lists no C5 for tapered-bore self-aligning ball bearings: say which classes exist
+        (("self_aligning_ball_tapered_bore", 0.05, "C5"), r"not defined .* classes there: C2, CN, C3, C4$"),
     ],
 )
 def test_bad_requests(args, match):

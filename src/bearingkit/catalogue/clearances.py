@@ -74,7 +74,10 @@ def clearance_range(group: str, bore: float, cls: str = "CN") -> tuple[float, fl
         lo, hi = r.bore_over * 1e3, r.bore_incl * 1e3
         if lo - 1e-9 <= d_mm <= hi + 1e-9 and (d_mm > lo + 1e-9 or lo == 0.0 or r is rows[0]):
             if cls not in r.groups:
-                raise InputError(f"clearance class {cls} is not defined for {group} with bore {d_mm:g} mm")
+                raise InputError(
+                    f"clearance class {cls} is not defined for {group.replace('_', ' ')} "
+                    f"with bore {d_mm:g} mm; classes there: {', '.join(r.groups)}"
+                )
             return r.groups[cls]
     raise InputError(
         f"bore ({d_mm:g} mm) lies outside the {group} clearance table "
