@@ -464,7 +464,7 @@ def catalogue(
     as_json: bool = _JSON_OPTION,
 ):
     """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
-    from bearingkit.catalogue import estimate, find, ratings
+    from bearingkit.catalogue import basis, estimate, find, ratings
     from bearingkit.cli.tables import _num
 
     rows = find(pattern)
@@ -487,6 +487,7 @@ def catalogue(
                 "C0_catalogue_N": e.C0,
                 "C_estimate_N": c,
                 "C0_estimate_N": c0,
+                "rating_basis": basis(e.family),
                 "source": e.source,
             }
         )
@@ -510,6 +511,9 @@ def catalogue(
         )
     console.print(table)
     console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
+    for fam in dict.fromkeys(r["family"] for r in out):
+        if basis(fam) != "radial":
+            console.print(f"{fam.replace('_', ' ')}: C, C0 are {basis(fam)}")
 
 
 @app.command()
