@@ -213,12 +213,12 @@ def analyze(
         from bearingkit.cli.operating_tables import operating_text
 
         for c in data["cases"]:
-            console.print(case_table(c))
+            console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
-                console.print(case_table(c["flexible"]))
+                console.print(case_table(c["flexible"], data["free_dofs"]))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
     _fail_unconverged(file, a)
