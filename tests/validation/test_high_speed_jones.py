@@ -328,3 +328,22 @@ def test_hertz_constants_at_the_operating_angles_change_little():
             assert abs(a[key] - b[key]) < np.radians(0.02)
         for key in ("load_inner", "load_outer", "centrifugal_force"):
             assert abs(a[key] - b[key]) < 5e-4 * b[key]
+
+
+def test_example_file_at_harris_conditions_matches_jones():
+    """examples/acbb_218.toml through the pipeline (units, GCr15 defaults, a case's own speed, the
+    default outer-raceway control) gives the independent solution at 10,000 rpm."""
+    from pathlib import Path
+
+    from bearingkit import materials
+    from bearingkit.pipeline import analyze
+
+    steel = materials.MATERIALS["GCr15"]
+    assert (steel.youngs_modulus, steel.poisson_ratio, steel.density) == (E_STEEL, NU_STEEL, RHO)
+    example = Path(__file__).resolve().parents[2] / "examples" / "acbb_218.toml"
+    res = analyze(example, cases=["thrust_22kN_10000rpm"]).statics
+    assert res.converged.all()
+    (ref,), _ = _jones_path([10000.0 * RPM])
+    ex = res.rows[0].extras
+    for key in KEYS:
+        np.testing.assert_allclose(ex[key][0], ref[key], rtol=1e-8, err_msg=key)
