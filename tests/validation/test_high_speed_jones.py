@@ -331,7 +331,7 @@ def test_hertz_constants_at_the_operating_angles_change_little():
 
 
 def test_example_file_at_harris_conditions_matches_jones():
-    """examples/acbb_218.toml through the pipeline (units, GCr15 defaults, a case's own speed, the
+    """examples/acbb_7218_harris.toml through the pipeline (units, GCr15 defaults, a case's own speed, the
     default outer-raceway control) gives the independent solution at 10,000 rpm."""
     from pathlib import Path
 
@@ -340,7 +340,7 @@ def test_example_file_at_harris_conditions_matches_jones():
 
     steel = materials.MATERIALS["GCr15"]
     assert (steel.youngs_modulus, steel.poisson_ratio, steel.density) == (E_STEEL, NU_STEEL, RHO)
-    example = Path(__file__).resolve().parents[2] / "examples" / "acbb_218.toml"
+    example = Path(__file__).resolve().parents[2] / "examples" / "acbb_7218_harris.toml"
     res = analyze(example, cases=["thrust_22kN_10000rpm"]).statics
     assert res.converged.all()
     (ref,), _ = _jones_path([10000.0 * RPM])
