@@ -51,7 +51,7 @@ RPM = np.pi / 30.0
 # Harris's 218 angular contact ball bearing [from memory, as quoted by Ricci 2009]: D, d_m, Z, f_i = f_o.
 D, DM, Z, F_I, F_O = 0.02223, 0.1253, 16, 0.5232, 0.5232
 ALPHA0 = np.radians(40.0)
-THRUST = 22250.0  # [N] Harris's 218 example load (5000 lbf)
+THRUST = 22250.0  # [N] Harris's 218 example thrust, 5000 lbf [from memory]
 E_STEEL, NU_STEEL, RHO = 208e9, 0.3, 7810.0  # bearingkit's GCr15 defaults
 E_REDUCED = E_STEEL / (1.0 - NU_STEEL**2)  # E' = 2 / (2 (1 − ν²)/E) for two steel bodies
 MASS = RHO * np.pi * D**3 / 6.0
