@@ -42,7 +42,10 @@ def one_line_errors(fn):
         try:
             return fn(*args, **kwargs)
         except InputError as exc:
-            _fail(str(exc))
+            message, file = str(exc), kwargs.get("file")
+            if file is not None and not message.startswith(f"{file}:"):  # every error names the file
+                message = f"{file}: {message}"
+            _fail(message)
 
     return wrapper
 

@@ -20,7 +20,7 @@ from bearingkit.io import schema
 _ENVELOPE_ONLY = ("bore", "outer_diameter")
 
 
-class FourPointContactBallGeometry(schema._BallBase):
+class FourPointContactBallGeometry(schema.BallBase):
     """Single-row four-point contact ball bearing (QJ) — bearings.slewing.four_point_contact_ball."""
 
     contact_angle: schema.Angle | None = Field(
@@ -47,7 +47,7 @@ class SlewingEightPointGeometry(SlewingFourPointGeometry):
     row_spacing: schema.PositiveLength = Field(description="Axial distance of the two ball rows.")
 
 
-class SlewingCrossedRollerGeometry(schema._RollerBase):
+class SlewingCrossedRollerGeometry(schema.RollerBase):
     """Crossed roller slewing ring — bearings.slewing.slewing_ring_crossed_roller."""
 
     contact_angle: schema.Angle | None = Field(None, description="Contact normals ±α. Default 45 deg.")
@@ -56,7 +56,7 @@ class SlewingCrossedRollerGeometry(schema._RollerBase):
     )
 
 
-class SphericalRollerGeometry(schema._Envelope):
+class SphericalRollerGeometry(schema.Envelope):
     """Double-row spherical roller bearing — bearings.self_aligning.spherical_roller."""
 
     n_elements: schema.Count = Field(description="Rollers per row.")
@@ -78,7 +78,7 @@ class SphericalRollerGeometry(schema._Envelope):
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
 
 
-class SelfAligningBallGeometry(schema._BallBase):
+class SelfAligningBallGeometry(schema.BallBase):
     """Double-row self-aligning ball bearing — bearings.self_aligning.self_aligning_ball."""
 
     contact_angle: schema.Angle = Field(description="Contact angle α of the rows (0 < α < 45 deg).")
@@ -91,7 +91,7 @@ class SelfAligningBallGeometry(schema._BallBase):
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
 
 
-class NeedleRollerGeometry(schema._RollerBase):
+class NeedleRollerGeometry(schema.RollerBase):
     """Needle roller bearing — bearings.self_aligning.needle_roller."""
 
     clearance_radial: schema.Length | None = Field(

@@ -70,6 +70,9 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     notes : sequence of str
         Extra run notes shown before the analysis's own.
     """
+    from bearingkit.io.loader import MAX_REPORT_CASES
+
+    analysis.input.check_cases(MAX_REPORT_CASES, "a report")  # before anything is computed
     friction = analysis.friction
     native = friction.native if friction is not None and hasattr(friction.native, "by_row") else None
     op = analysis.operating

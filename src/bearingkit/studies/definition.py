@@ -57,7 +57,6 @@ import hashlib
 import json
 import math
 import re
-import tomllib
 from pathlib import Path
 from typing import Literal
 
@@ -198,13 +197,10 @@ class StudyDefinition(_Strict):
 
 def load_study(path) -> StudyDefinition:
     """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder)."""
+    from bearingkit.io.reading import load_toml
+
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc})".replace("\n", " ")) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
     return from_dict(data, source=str(path), base_dir=path.parent)
 
 
