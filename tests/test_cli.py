@@ -339,3 +339,15 @@ def test_reaction_at_the_default_fixed_tilt_is_marked_and_free_dofs_say_so():
     assert "* reaction holding a fixed DOF" in text
     free = _json(runner.invoke(app, [*args, "--load", "My=0.1Nm", "--json"]))  # a moment frees the tilt
     assert free["free_dofs"] == ["u_x", "u_y", "u_z", "theta_x", "theta_y"]
+
+
+def test_uncarriable_loads_say_what_to_do():
+    """Too little axial load for a single tapered row, and a load on a DOF no row carries: the one-line
+    message names the remedy, not only the failure."""
+    r = runner.invoke(app, ["analyze", "32210", "--load", "Fx=5kN", "--load", "Fz=1kN"])
+    assert r.exit_code == 1
+    assert "unbalanced mainly in F_z" in r.stderr and "paired bearing (DB/DF)" in r.stderr
+    assert "F_r tan(alpha)" in r.stderr
+    r = runner.invoke(app, ["analyze", "NU210", "--load", "Fz=1kN"])
+    assert r.exit_code == 2
+    assert "remove the load" in r.stderr and len(r.stderr.strip().splitlines()) == 1
