@@ -100,7 +100,7 @@ def test_nonsense_unit_names_within_the_syntax_are_one_line_errors():
     [
         ("2 kn", "force", "'2 kN'"),  # knots (issue 23)
         ("2 KN", "force", "'2 kN'"),  # not a unit
-        ("600 Nm", "moment", "'600 N*m'"),  # pint: number·metre, [length]/[mass]
+        ("600 nM", "moment", "'600 N*m'"),  # nanomolar is no moment
         ("5 MM", "length", "'5 mm'"),
         ("208 gpa", "pressure", "'208 GPa'"),
         ("5 RPM", "angular_velocity", "'5 rpm'"),
@@ -154,3 +154,13 @@ def test_overflow_is_a_one_line_finite_error(value):
     dimension = "dimensionless" if not isinstance(value, str) or "N" not in value else "force"
     with pytest.raises(InputError, match="must be finite"):
         parse(value, dimension, "x")
+
+
+def test_newton_metre_written_as_engineers_do():
+    """'Nm' is the newton-metre (pint alone reads it as 'number metre', [length]/[mass])."""
+    assert parse("5 Nm", "moment", "M_y") == 5.0
+    assert parse("2 kNm", "moment", "M_y") == 2000.0
+    assert parse("300 Nmm", "moment", "M_y") == pytest.approx(0.3, rel=1e-15)
+    assert parse("1 nm", "length", "u") == pytest.approx(1e-9, rel=1e-15)  # nanometre unchanged
+    with pytest.raises(InputError, match="M_y"):
+        parse("5 Nm", "force", "M_y")

@@ -106,8 +106,15 @@ SYNTAX = "a number and a unit such as '5 kN'"
 
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The one pint registry (built lazily; pint is slow to import)."""
-    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    """The one pint registry (built lazily; pint is slow to import).
+
+    ``Nm`` and ``Nmm`` are the engineer's newton-metre and newton-millimetre (torque, moment); pint's
+    own ``Nm`` is the obscure "number metre" ([length]/[mass]), which made ``M_y = "5 Nm"`` an error.
+    """
+    reg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, on_redefinition="ignore")
+    reg.define("newton_metre = newton * meter = Nm")
+    reg.define("newton_millimetre = newton * millimeter = Nmm")
+    return reg
 
 
 @lru_cache(maxsize=1024)

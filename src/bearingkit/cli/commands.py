@@ -213,12 +213,12 @@ def analyze(
         from bearingkit.cli.operating_tables import operating_text
 
         for c in data["cases"]:
-            console.print(case_table(c))
+            console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
-                console.print(case_table(c["flexible"]))
+                console.print(case_table(c["flexible"], data["free_dofs"]))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
     _fail_unconverged(file, a)
@@ -482,7 +482,7 @@ def catalogue(
     as_json: bool = _JSON_OPTION,
 ):
     """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
-    from bearingkit.catalogue import estimate, find, ratings
+    from bearingkit.catalogue import basis, estimate, find, ratings
     from bearingkit.cli.tables import _num
 
     rows = find(pattern)
@@ -505,6 +505,7 @@ def catalogue(
                 "C0_catalogue_N": e.C0,
                 "C_estimate_N": c,
                 "C0_estimate_N": c0,
+                "rating_basis": basis(e.family),
                 "source": e.source,
             }
         )
@@ -528,6 +529,9 @@ def catalogue(
         )
     console.print(table)
     console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
+    for fam in dict.fromkeys(r["family"] for r in out):
+        if basis(fam) != "radial":
+            console.print(f"{fam.replace('_', ' ')}: C, C0 are {basis(fam)}")
 
 
 @app.command()

@@ -33,19 +33,40 @@ def _g(x: float) -> str:
     return f"{(x if abs(x) > 1e-9 else 0.0) + 0.0:.6g}"
 
 
-def case_table(c: dict) -> Table:
-    """A rich table of one case dict (from :func:`bearingkit.io.export.case_dict`)."""
+#: Load component held by each DOF, in the solver's order.
+_DOF_OF_LOAD = {"F_x": "u_x", "F_y": "u_y", "F_z": "u_z", "M_x": "theta_x", "M_y": "theta_y"}
+
+
+def _load_text(ld: dict, free_dofs: list[str] | None) -> str:
+    """``F = (…) N, M = (…) N·m``; a component at a fixed DOF is the reaction holding it: marked ``*``."""
+
+    def one(name: str, unit: str) -> str:
+        value = _g(ld[f"{name}_{unit}"])
+        fixed = free_dofs is not None and _DOF_OF_LOAD[name] not in free_dofs
+        return f"{value}*" if fixed and value != "0" else value
+
+    f = ", ".join(one(n, "N") for n in ("F_x", "F_y", "F_z"))
+    m = ", ".join(one(n, "Nm") for n in ("M_x", "M_y"))
+    return f"F = ({f}) N, M = ({m}) N·m"
+
+
+def case_table(c: dict, free_dofs: list[str] | None = None) -> Table:
+    """A rich table of one case dict (from :func:`bearingkit.io.export.case_dict`).
+
+    ``free_dofs`` (the analysis' ``free_dofs``) marks load components that are reactions at fixed DOFs.
+    """
     d = c["displacement"]
     status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
     u = ", ".join(_shown(d[k], 1e6, DISPLACEMENT_NOISE) for k in ("u_x_m", "u_y_m", "u_z_m"))
     th = ", ".join(_shown(d[k], 1e3, DISPLACEMENT_NOISE) for k in ("theta_x_rad", "theta_y_rad"))
     caption = f"u = ({u}) µm, θ = ({th}) mrad; {status}, {c['iterations']} iterations"
     ld = c["load"]
-    title = (
-        f"case {c['case']!r}: F = ({_g(ld['F_x_N'])}, {_g(ld['F_y_N'])}, {_g(ld['F_z_N'])}) N, "
-        f"M = ({_g(ld['M_x_Nm'])}, {_g(ld['M_y_Nm'])}) N·m"
-    )
-    table = Table(title=escape(title), caption=escape(caption))
+    title = f"case {c['case']!r}: {_load_text(ld, free_dofs)}"
+    if "*" in title:
+        caption += "; * reaction holding a fixed DOF"
+    # wide enough for its title and caption on one line each (a narrow table would wrap them)
+    width = min(max(len(title), len(caption)) + 2, 110)
+    table = Table(title=escape(title), caption=escape(caption), min_width=width)
     for col in ("row", "loaded", "Q_max N", "p_max MPa", "F_axial N", "F_radial N"):
         table.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
     for r in c["rows"]:

@@ -439,9 +439,9 @@ _CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inne
 
 def _catalogue_value(key: str, value):
     """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
-    if isinstance(value, (dict, str, int)) and not isinstance(value, bool):
+    if isinstance(value, (dict, str, int, bool)):
         return value
-    if key.startswith("conformity"):
+    if key.startswith(("conformity", "osculation")):
         return float(value)
     return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
 
@@ -452,17 +452,10 @@ def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFi
 
     header = spec.bearing
     try:
-        found = resolve(header.designation, C=header.C)
+        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
     except InputError as exc:
         field = "bearing." if str(exc).startswith("designation") else ""
         raise InputError(f"{source}: {field}{exc}") from None
-    if found.bearing_type is None:
-        raise InputError(
-            f"{source}: bearing.designation ({header.designation!r}): "
-            f"{found.designation.family.replace('_', ' ')} "
-            "bearings have no row kind in the engine yet; the estimated geometry is available from "
-            "bearingkit.catalogue.resolve"
-        )
     if header.type and header.type != found.bearing_type:
         raise InputError(
             f"{source}: bearing.type ({header.type!r}) does not match designation {header.designation!r} "

@@ -48,6 +48,11 @@ class BearingHeader(Strict):
     C: PositiveForce | None = Field(
         None, description="Catalogue C the estimated element size is scaled to (with designation)."
     )
+    clearance_position: Literal["min", "mean", "max"] | Dimensionless = Field(
+        "mean",
+        description="Where in the clearance class of the designation the clearance is taken: min, mean, "
+        "max or a percentile 0 … 100 of the class range (with designation).",
+    )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
         "", description="Where the geometry comes from (paper, table, catalogue, assumption)."
@@ -63,13 +68,37 @@ class BearingHeader(Strict):
             )
         return value
 
+    @field_validator("clearance_position", mode="before")
+    @classmethod
+    def _position(cls, value):
+        named = ("min", "mean", "max")
+        number = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if value in named or (number and 0.0 <= value <= 100.0):
+            return value
+        shown = quote(value) if isinstance(value, str) else repr(value)
+        raise InputError(
+            f"clearance_position ({shown}) must be min, mean, max or a percentile 0 … 100 "
+            "of the clearance class range, e.g. clearance_position = 90"
+        )
+
     @model_validator(mode="after")
     def _type_or_designation(self):
         if not self.type and self.designation is None:
             raise InputError("type: missing required field (or give designation = '6205-2RS C3')")
         if self.C is not None and self.designation is None:
             raise InputError("C: calibrates an estimated geometry; give it together with designation")
+        if self.clearance_position != "mean" and self.designation is None:
+            raise InputError(
+                "clearance_position: picks a clearance in a designation's class; give designation"
+            )
         return self
+
+    def class_position(self) -> float:
+        """``clearance_position`` as a fraction of the class range (0 = min, 0.5 = mean, 1 = max)."""
+        named = {"min": 0.0, "mean": 0.5, "max": 1.0}
+        if isinstance(self.clearance_position, str):
+            return named[self.clearance_position]
+        return float(self.clearance_position) / 100.0
 
 
 class MaterialSpec(Strict):

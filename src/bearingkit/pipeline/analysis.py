@@ -300,7 +300,7 @@ class Analysis:
         return out
 
     def _free_tilt(self, case: int) -> str | None:
-        res, free = self.statics, self.input.free
+        res, free = self.statics, self.setup.free
         if not (free[3] or free[4]) or not _coplanar(res.model) or not res.converged[case]:
             return None
         tilt = float(np.hypot(*res.displacement[case, 3:5]))
@@ -381,7 +381,9 @@ class Analysis:
                 d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
             d["warnings"] = self.warnings[i]
             cases.append(d)
-        free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), b.free, strict=True) if f]
+        # the DOFs the statics were solved with (the default fixed tilt of a single row included)
+        free_used = self.setup.free
+        free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), free_used, strict=True) if f]
         return {**self._header(), "free_dofs": free, "cases": cases, "notes": self.notes}
 
     def rating_dict(self) -> dict:
