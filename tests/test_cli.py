@@ -323,3 +323,31 @@ def test_study_command_runs_the_seed000_statics_l9(tmp_path):
     assert res.exit_code == 0, res.output
     results = pd.read_parquet(tmp_path / "results.parquet")
     assert len(results) == 9 and results.filter(like="share").notna().all().all()
+
+
+def test_reaction_at_the_default_fixed_tilt_is_marked_and_free_dofs_say_so():
+    """A single-row bearing under Fr + Fa is solved with its tilt fixed: the moment in the case line is
+    the reaction holding it (marked), not a load the user applied, and the JSON lists the DOFs used."""
+    args = ["analyze", "6205", "--load", "Fx=5kN", "--load", "Fz=1kN"]
+    data = _json(runner.invoke(app, [*args, "--json"]))
+    assert data["free_dofs"] == ["u_x", "u_y", "u_z"]
+    reaction = data["cases"][0]["load"]["M_y_Nm"]
+    assert abs(reaction) > 1.0  # the ball set's axial force acts off-centre: a moment holds the tilt
+    text = runner.invoke(app, args, terminal_width=200).stdout
+    line = next(s for s in text.splitlines() if "case 'command line'" in s)
+    assert f"M = (0, {reaction:.6g}*) N·m" in line and "F = (5000, 0, 1000) N" in line
+    assert "* reaction holding a fixed DOF" in text
+    free = _json(runner.invoke(app, [*args, "--load", "My=0.1Nm", "--json"]))  # a moment frees the tilt
+    assert free["free_dofs"] == ["u_x", "u_y", "u_z", "theta_x", "theta_y"]
+
+
+def test_uncarriable_loads_say_what_to_do():
+    """Too little axial load for a single tapered row, and a load on a DOF no row carries: the one-line
+    message names the remedy, not only the failure."""
+    r = runner.invoke(app, ["analyze", "32210", "--load", "Fx=5kN", "--load", "Fz=1kN"])
+    assert r.exit_code == 1
+    assert "unbalanced mainly in F_z" in r.stderr and "paired bearing (DB/DF)" in r.stderr
+    assert "F_r tan(alpha)" in r.stderr
+    r = runner.invoke(app, ["analyze", "NU210", "--load", "Fz=1kN"])
+    assert r.exit_code == 2
+    assert "remove the load" in r.stderr and len(r.stderr.strip().splitlines()) == 1

@@ -60,3 +60,28 @@ def test_catalogue_lists_pattern_with_ratings():
 def test_catalogue_pattern_without_match():
     result = runner.invoke(app, ["catalogue", "9999*"])
     assert result.exit_code == 2 and "matches no designation" in result.stderr
+
+
+def test_catalogue_series_patterns_list_the_new_series():
+    """'222*' names a series: the spherical roller bearings only (not the self-aligning 2220, 2222 that
+    the glob also matches); 'NA49*' the needle bearings with inner ring; 'QJ2*' with the axial basis."""
+    rows = json.loads(runner.invoke(app, ["catalogue", "222*", "--json"]).stdout)
+    assert rows and {r["family"] for r in rows} == {"spherical_roller"}
+    assert [r["designation"] for r in rows][:2] == ["22205", "22206"] and "2220" not in [
+        r["designation"] for r in rows
+    ]
+    rows = json.loads(runner.invoke(app, ["catalogue", "NA49*", "--json"]).stdout)
+    assert len(rows) == 28 and all(r["designation"].startswith("NA49") for r in rows)
+    result = runner.invoke(app, ["catalogue", "QJ2*"])
+    assert result.exit_code == 0 and "QJ208" in result.output and "C, C0 are axial" in result.output
+    rows = json.loads(runner.invoke(app, ["catalogue", "QJ2*", "--json"]).stdout)
+    assert rows[0]["rating_basis"].startswith("axial") and rows[0]["C_estimate_N"] > 0
+
+
+def test_analyze_four_point_designation_axial_load():
+    result = runner.invoke(app, ["analyze", "QJ208", "--load", "Fa=5kN", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["bearing_type"] == "four_point_contact_ball"
+    row = data["cases"][0]["rows"][0]
+    assert abs(row["axial_load_N"] - 5000.0) < 1e-6 * 5000

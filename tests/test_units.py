@@ -33,13 +33,13 @@ def test_parse_to_si(text, dimension, expected):
 @pytest.mark.parametrize(
     ("value", "dimension", "match"),
     [
-        ("5 kg", "force", "expected force"),
+        ("5 kg", "force", "expected a force"),
         ("5", "length", "no unit"),
         (5.0, "length", "no unit"),
-        ("5 furlongs_per_fortnight", "length", "not a quantity"),
+        ("5 furlongs_per_fortnight", "length", "unknown unit"),
         ("nan mm", "length", "finite"),
         (True, "force", "must be a quantity"),
-        ("3 mm", "dimensionless", "dimensionless"),
+        ("3 mm", "dimensionless", "pure number"),
     ],
 )
 def test_bad_units_are_one_line_errors_naming_the_field(value, dimension, match):
@@ -57,3 +57,110 @@ def test_dimensionless_accepts_bare_numbers():
 @given(st.floats(-1e6, 1e6, allow_nan=False))
 def test_mm_round_trip(x):
     assert parse(f"{x!r} mm", "length", "x") == pytest.approx(x / 1000.0, rel=1e-12, abs=1e-300)
+
+
+@pytest.mark.parametrize(
+    "value",
+    [
+        "9**9**9 N",  # pint's expression evaluator: minutes (issue 24)
+        "10**400 N",  # OverflowError (issue 23)
+        "1" * 100_000 + " N",  # quadratic in pint: 48 s (issue 24)
+        "x" * 100_000,
+        "a" * 30 + " N",  # a 30-letter nonsense unit
+        "2 kN + 3 N",
+        "0x10 N",
+        "(((((N)))))",
+        "5 N^999",
+        "５ kN",  # fullwidth digit: Python's float() would read it
+    ],
+)
+def test_only_number_and_unit_syntax_reaches_pint(value, monkeypatch):
+    """Issue 24 item 5: text outside 'number [unit]' is refused before pint sees it (the syntax check
+    is a bounded regular expression on at most MAX_VALUE_CHARS characters), in one short line."""
+    import bearingkit.units as units_module
+
+    seen = []
+    real = units_module._unit.__wrapped__
+    monkeypatch.setattr(units_module, "_unit", lambda text: seen.append(text) or real(text))
+    with pytest.raises(InputError) as err:
+        parse(value, "force", "load_cases[0].F_x")
+    msg = str(err.value)
+    assert msg.startswith("load_cases[0].F_x (") and "\n" not in msg and len(msg) <= 300, msg
+    if len(value) > units_module.MAX_VALUE_CHARS or "**" in value or "+" in value or "x1" in value:
+        assert seen == []  # refused by the syntax check alone
+
+
+def test_nonsense_unit_names_within_the_syntax_are_one_line_errors():
+    with pytest.raises(InputError, match="unknown unit 'aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa'"):
+        parse("1 " + "a" * 30, "force", "F_x")
+
+
+@pytest.mark.parametrize(
+    ("text", "dimension", "suggested"),
+    [
+        ("2 kn", "force", "'2 kN'"),  # knots (issue 23)
+        ("2 KN", "force", "'2 kN'"),  # not a unit
+        ("600 nM", "moment", "'600 N*m'"),  # nanomolar is no moment
+        ("5 MM", "length", "'5 mm'"),
+        ("208 gpa", "pressure", "'208 GPa'"),
+        ("5 RPM", "angular_velocity", "'5 rpm'"),
+    ],
+)
+def test_unit_lookalikes_of_the_expected_dimension_are_suggested(text, dimension, suggested):
+    with pytest.raises(InputError) as err:
+        parse(text, dimension, "F_x")
+    assert f"did you mean {suggested}?" in str(err.value)
+
+
+def test_no_suggestion_from_another_dimension():
+    """'5 m' for a force is not a typo of 'mN': no look-alike is offered below the cutoff."""
+    with pytest.raises(InputError) as err:
+        parse("5 m", "force", "F_x")
+    assert "did you mean" not in str(err.value)
+
+
+def test_every_lookalike_converts_to_its_dimension():
+    from bearingkit.units import SI_UNITS, UNIT_LOOKALIKES
+
+    assert set(UNIT_LOOKALIKES) == set(SI_UNITS)
+    for dimension, names in UNIT_LOOKALIKES.items():
+        for name in names:
+            assert math.isfinite(parse(f"1 {name}", dimension, "x")), (dimension, name)
+
+
+@pytest.mark.parametrize(
+    ("text", "dimension", "expected"),
+    [
+        ("5kN", "force", 5000.0),
+        (".5 N", "force", 0.5),
+        ("+3E3 N", "force", 3000.0),
+        ("1e-6 m", "length", 1e-6),
+        ("2e-8 1/Pa", "pressure_viscosity", 2e-8),
+        ("0.04 W/(m*K)", "thermal_conductivity", 0.04),
+        ("600 N·m", "moment", 600.0),
+        ("600 N m", "moment", 600.0),
+        ("2 mm^2/s", "kinematic_viscosity", 2e-6),
+        ("2 mm**2/s", "kinematic_viscosity", 2e-6),
+        ("5 µm", "length", 5e-6),
+        ("5 μm", "length", 5e-6),
+    ],
+)
+def test_accepted_syntax(text, dimension, expected):
+    assert parse(text, dimension, "x") == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("value", ["1e400 N", "1e308 kN", 10**400, "-inf N", "NaN"])
+def test_overflow_is_a_one_line_finite_error(value):
+    dimension = "dimensionless" if not isinstance(value, str) or "N" not in value else "force"
+    with pytest.raises(InputError, match="must be finite"):
+        parse(value, dimension, "x")
+
+
+def test_newton_metre_written_as_engineers_do():
+    """'Nm' is the newton-metre (pint alone reads it as 'number metre', [length]/[mass])."""
+    assert parse("5 Nm", "moment", "M_y") == 5.0
+    assert parse("2 kNm", "moment", "M_y") == 2000.0
+    assert parse("300 Nmm", "moment", "M_y") == pytest.approx(0.3, rel=1e-15)
+    assert parse("1 nm", "length", "u") == pytest.approx(1e-9, rel=1e-15)  # nanometre unchanged
+    with pytest.raises(InputError, match="M_y"):
+        parse("5 Nm", "force", "M_y")

@@ -1,8 +1,92 @@
-"""Exception types shared by every layer."""
+"""Exception types shared by every layer, and the quoting of values in their messages.
+
+An :class:`InputError` message is one line a person reads: whatever builds it, the message is
+collapsed to one line and held to :data:`MAX_MESSAGE_CHARS` (a value echoed back whole once made a
+12 MB message). Values are quoted with :func:`quote`, which shortens long strings and arrays.
+"""
+
+from __future__ import annotations
+
+import difflib
+
+#: Longest InputError message [characters]; a longer one keeps its head and tail around " … ".
+MAX_MESSAGE_CHARS = 300
+#: Longest quoted string value [characters] (:func:`quote`).
+MAX_QUOTED_CHARS = 40
+#: Items of a list shown before " … N items" (:func:`quote`).
+MAX_QUOTED_ITEMS = 3
+
+
+def one_line(message: str, limit: int = MAX_MESSAGE_CHARS) -> str:
+    """``message`` on one line (runs of whitespace → one space) and at most ``limit`` characters.
+
+    A longer message keeps its first two thirds and its end (where the expectation usually is).
+    """
+    text = " ".join(str(message).split())
+    if len(text) <= limit:
+        return text
+    tail = limit // 3
+    head = limit - tail - 3
+    return f"{text[:head].rstrip()} … {text[-tail:].lstrip()}"
+
+
+def quote(value, limit: int = MAX_QUOTED_CHARS) -> str:
+    """A short, one-line representation of an input value for a message.
+
+    Strings are ``repr``'d and cut after ``limit`` characters (``'aaaa…' (100000 characters)``);
+    lists show their first :data:`MAX_QUOTED_ITEMS` items (``[13, 13, 13, … 100000 items]``);
+    tables are named by their size. Nesting is followed two levels deep only.
+
+    >>> quote([13] * 100000)
+    '[13, 13, 13, … 100000 items]'
+    """
+    return _quote(value, limit, depth=2)
+
+
+def _quote(value, limit: int, depth: int) -> str:
+    if isinstance(value, str):
+        if len(value) <= limit:
+            return repr(value)
+        return f"{value[:limit]!r}… ({len(value)} characters)"
+    if isinstance(value, dict):
+        return f"a table of {len(value)} key{'s' if len(value) != 1 else ''}"
+    if isinstance(value, (list, tuple)):
+        if depth <= 0:
+            return f"[… {len(value)} items]"
+        shown = [_quote(v, limit // 2, depth - 1) for v in value[:MAX_QUOTED_ITEMS]]
+        more = f", … {len(value)} items" if len(value) > MAX_QUOTED_ITEMS else ""
+        return f"[{', '.join(shown)}{more}]"
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 3 * limit:
+        # no repr: Python refuses to print integers of more than 4300 digits
+        return f"an integer of about {round(value.bit_length() * 0.30103)} digits"
+    if isinstance(value, (bool, int, float)) or value is None:
+        text = repr(value)
+        return text if len(text) <= limit else f"{text[:limit]}… ({len(text)} digits)"
+    return f"a {type(value).__name__}"
+
+
+def nearest(name, choices, n: int = 1) -> list[str]:
+    """The ``n`` choices closest to ``name`` (difflib ratio ≥ 0.6; case-insensitive equality first)."""
+    if not isinstance(name, str) or len(name) > 100:
+        return []
+    choices = [str(c) for c in choices]
+    same = [c for c in choices if c.lower() == name.lower() and c != name]
+    lowered = {c.lower(): c for c in choices}
+    close = [lowered[c] for c in difflib.get_close_matches(name.lower(), list(lowered), n=n, cutoff=0.6)]
+    return list(dict.fromkeys(same + close))[:n]
+
+
+def did_you_mean(name, choices) -> str:
+    """``"; did you mean 'pitch_diameter'?"`` for the nearest choice, or ``""`` when none is near."""
+    near = nearest(name, choices)
+    return f"; did you mean {near[0]!r}?" if near else ""
 
 
 class InputError(ValueError):
-    """Bad input: the message is one line naming the field, the value and what was expected."""
+    """Bad input: one line naming the field, the value and what was expected (see :func:`one_line`)."""
+
+    def __init__(self, message: str = ""):
+        super().__init__(one_line(message))
 
 
 class ConvergenceError(RuntimeError):

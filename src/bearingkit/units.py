@@ -3,15 +3,31 @@
 Everything inside bearingkit is SI (m, N, Pa, rad, s, Pa·s, 1/Pa, rad/s). This module is the only
 place that knows about pint; it is called by the input-file loader and the CLI, never by physics.
 A rotational speed such as ``"5 rpm"`` becomes an angular velocity in rad/s.
+
+**Accepted syntax** (checked before pint sees the text, so untrusted input cannot make pint's
+expression evaluator run long or overflow: ``"9**9**9 N"`` ran for minutes, ``"10**400 N"`` raised
+OverflowError): at most :data:`MAX_VALUE_CHARS` characters, made of
+
+- a decimal number (ASCII digits) with an optional exponent: ``5``, ``-2.5``, ``.5``, ``1e-6``, ``+3E4``;
+- optionally, after optional spaces, a unit expression of at most :data:`MAX_UNIT_CHARS` characters:
+  unit names (letters, ``_``, ``µ``/``μ``, ``°``, ``Ω``) joined by ``*``, ``·``, ``/`` or a space,
+  each optionally raised to a signed integer power of one or two digits (``^2``, ``**-1``), one
+  level of parentheses (``W/(m*K)``), and a leading ``1/`` (``1/Pa``).
+
+Everything else (arithmetic, hexadecimal, ``nan``, several numbers) is refused with one line. A unit
+of the wrong dimension gets look-alike suggestions of the expected one (``"2 kn"`` is knots:
+"did you mean '2 kN'?").
 """
 
 from __future__ import annotations
 
+import difflib
+import re
 from functools import lru_cache
 
 import pint
 
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, quote
 
 #: The SI unit each named dimension is converted to. Keys are what fields declare.
 SI_UNITS: dict[str, str] = {
@@ -40,13 +56,74 @@ SI_UNITS: dict[str, str] = {
     "dimensionless": "",
 }
 
+#: Units suggested when a value has the wrong dimension or an unknown unit (``"did you mean kN?"``).
+#: Every entry converts to the SI unit of its dimension (checked in the tests).
+UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
+    "length": ("m", "mm", "um", "µm", "nm", "cm", "in", "ft"),
+    "force": ("N", "kN", "MN", "mN", "lbf", "kgf"),
+    "moment": ("N*m", "kN*m", "N*mm", "mN*m", "lbf*in", "lbf*ft"),
+    "pressure": ("Pa", "kPa", "MPa", "GPa", "bar", "psi", "N/mm^2"),
+    "angle": ("rad", "mrad", "deg", "arcmin", "arcsec"),
+    "angular_velocity": ("rpm", "rad/s", "deg/s"),
+    "dynamic_viscosity": ("Pa*s", "mPa*s", "cP"),
+    "kinematic_viscosity": ("mm^2/s", "m^2/s", "cSt"),
+    "pressure_viscosity": ("1/Pa", "1/GPa", "mm^2/N", "m^2/N"),
+    "compliance": ("m^2/N", "mm^2/N"),
+    "temperature": ("degC", "K", "degF"),
+    "density": ("kg/m^3", "g/cm^3"),
+    "mass": ("kg", "g"),
+    "thermal_conductivity": ("W/(m*K)",),
+    "time": ("s", "ms", "min", "h"),
+    "acceleration": ("m/s^2", "mm/s^2"),
+    "line_load": ("N/m", "N/mm", "kN/m"),
+    "stiffness": ("N/m", "N/mm", "N/um", "kN/mm"),
+    "rotational_stiffness": ("N*m/rad", "kN*m/rad", "N*m/mrad"),
+    "power": ("W", "kW", "mW"),
+    "thermal_conductance": ("W/K", "kW/K"),
+    "volume_flow": ("m^3/s", "l/min", "mm^3/s"),
+    "dimensionless": (),
+}
+
+#: Longest accepted value text [characters] (a number and its unit; "-1.23456789e-12 kN*m" is 20).
+MAX_VALUE_CHARS = 64
+#: Longest accepted unit expression [characters] ("kg/m^3" is 6, "W/(m*K)" 7).
+MAX_UNIT_CHARS = 32
+
+_NUMBER = r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"  # ASCII digits only
+_VALUE = re.compile(rf"\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*")
+_NON_FINITE = re.compile(r"\s*[+-]?(?:nan|inf|infinity)\b.*", re.IGNORECASE)
+_NAME = r"[A-Za-z_µμ°Ω]+"
+_POWER = r"(?:\^|\*\*)[+-]?[0-9]{1,2}"
+_ATOM = rf"{_NAME}(?:{_POWER})?"
+_GROUP = rf"\(\s*{_ATOM}(?:\s*[*·/]\s*{_ATOM}|\s+{_ATOM})*\s*\)(?:{_POWER})?"
+_TERM = rf"(?:{_ATOM}|{_GROUP})"
+#: The unit-expression grammar (applied to at most MAX_UNIT_CHARS characters: linear time).
+_UNIT = re.compile(rf"(?:1\s*/\s*)?{_TERM}(?:\s*[*·/]\s*{_TERM}|\s+{_TERM})*")
+
+#: What a value must look like, for messages.
+SYNTAX = "a number and a unit such as '5 kN'"
+
 
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The one pint registry (built lazily; pint is slow to import)."""
-    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-    # pint knows 'rpm' (revolution/minute); make the revolution explicit 2π rad so rpm → rad/s.
-    return ureg
+    """The one pint registry (built lazily; pint is slow to import).
+
+    ``Nm`` and ``Nmm`` are the engineer's newton-metre and newton-millimetre (torque, moment); pint's
+    own ``Nm`` is the obscure "number metre" ([length]/[mass]), which made ``M_y = "5 Nm"`` an error.
+    """
+    reg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, on_redefinition="ignore")
+    reg.define("newton_metre = newton * meter = Nm")
+    reg.define("newton_millimetre = newton * millimeter = Nmm")
+    return reg
+
+
+@lru_cache(maxsize=1024)
+def _unit(text: str):
+    """The pint unit of a unit expression that passed :data:`_UNIT`, or the name of pint's error."""
+    try:
+        return registry().parse_units(text.replace("·", "*"))
+    except Exception as exc:  # pint raises several types; the caller words one line
+        return type(exc).__name__
 
 
 def parse(value, dimension: str, field: str) -> float:
@@ -55,7 +132,8 @@ def parse(value, dimension: str, field: str) -> float:
     Parameters
     ----------
     value : str or number
-        The text with its unit. A bare number is accepted only for ``dimension="dimensionless"``.
+        The text with its unit (syntax in the module docstring). A bare number (or a string holding
+        only a number) is accepted only for ``dimension="dimensionless"``.
     dimension : str
         A key of :data:`SI_UNITS` (``"force"``, ``"length"`` …).
     field : str
@@ -70,56 +148,124 @@ def parse(value, dimension: str, field: str) -> float:
     Raises
     ------
     InputError
-        One line naming the field, the value and the expected dimension, for a missing unit, an
-        unknown unit, a wrong dimension or a non-finite number.
+        One line naming the field, the value (shortened) and the expectation, for text outside the
+        accepted syntax, a missing or unknown unit, a wrong dimension (with look-alike units of the
+        right one) or a non-finite number.
     """
     if dimension not in SI_UNITS:
         raise InputError(f"{field}: unknown dimension {dimension!r}; expected one of {sorted(SI_UNITS)}")
     target = SI_UNITS[dimension]
-    ureg = registry()
+    words = dimension.replace("_", " ")
     if isinstance(value, bool):
-        raise InputError(f"{field} ({value!r}) must be a quantity with a unit of {dimension} (e.g. {target})")
+        raise InputError(f"{field} ({value!r}) must be a quantity with a unit of {words} (e.g. '1 {target}')")
     if isinstance(value, (int, float)):
         if dimension == "dimensionless":
-            return _finite(float(value), field, value)
+            return _finite(value, field, value)
         raise InputError(
-            f"{field} ({value!r}) has no unit; expected a {dimension.replace('_', ' ')} such as "
-            f"'{value} {target or '1'}'"
+            f"{field} ({quote(value)}) has no unit; expected a {words} such as '{quote(value)} {target}'"
         )
     if not isinstance(value, str):
-        raise InputError(f"{field} ({value!r}) must be a string with a unit, e.g. '1 {target}'")
-    text = value.strip()
-    try:
-        q = ureg.Quantity(text)
-    except Exception as exc:  # pint raises several types; one line is what the user needs
+        raise InputError(f"{field} ({quote(value)}) must be a string with a unit, e.g. '1 {target or '1'}'")
+    known = _PARSED.get((value, dimension))
+    if known is not None:  # studies rebuild inputs from the same texts thousands of times
+        return known
+    number, unit_text = _split(value, field, dimension)
+    if not unit_text:
+        if dimension == "dimensionless":
+            return _remember(value, dimension, _finite(number, field, value))
         raise InputError(
-            f"{field} ({value!r}) is not a quantity pint understands ({type(exc).__name__})"
-        ) from None
-    if not isinstance(q, pint.Quantity):  # a bare number inside a string
-        q = ureg.Quantity(float(q), "")
-    if dimension == "dimensionless":
-        if not q.dimensionless:
-            raise InputError(f"{field} ({value!r}) must be dimensionless")
-        return _finite(float(q.to("").magnitude), field, value)
-    if q.dimensionless and q.unitless:
-        raise InputError(
-            f"{field} ({value!r}) has no unit; expected a {dimension.replace('_', ' ')} "
-            f"such as '{text} {target}'"
+            f"{field} ({quote(value)}) has no unit; expected a {words} such as '{value.strip()} {target}'"
         )
-    try:
-        out = float(q.to(target).magnitude)
-    except pint.DimensionalityError:
+    unit = _unit(unit_text)
+    if isinstance(unit, str):
         raise InputError(
-            f"{field} ({value!r}) has dimension {q.dimensionality}; expected {dimension.replace('_', ' ')} "
-            f"(convertible to {target})"
+            f"{field} ({quote(value)}): unknown unit {unit_text!r}; expected a {words or 'pure number'}"
+            f"{_suggestion(value, unit_text, dimension)}"
+        )
+    ureg = registry()
+    quantity = ureg.Quantity(number, unit)
+    try:
+        out = quantity.to(target).magnitude if target else quantity.to("").magnitude
+    except pint.DimensionalityError:
+        got = "dimensionless" if quantity.dimensionless else str(quantity.dimensionality)
+        expected = f"a {words} (convertible to {target})" if target else "a pure number (no unit)"
+        raise InputError(
+            f"{field} ({quote(value)}) has dimension {got}; expected {expected}"
+            f"{_suggestion(value, unit_text, dimension)}"
         ) from None
-    return _finite(out, field, value)
+    except OverflowError:
+        raise InputError(f"{field} ({quote(value)}) must be finite (it overflows in {target})") from None
+    return _remember(value, dimension, _finite(out, field, value))
 
 
-def _finite(x: float, field: str, raw) -> float:
-    if x != x or x in (float("inf"), float("-inf")):
-        raise InputError(f"{field} ({raw!r}) must be finite")
-    return x
+#: Texts already parsed, (text, dimension) → SI value (successful parses only; errors name their field).
+_PARSED: dict[tuple[str, str], float] = {}
+#: Most remembered texts (a bound on the memory an untrusted input can take: at most
+#: 65,536 × (MAX_VALUE_CHARS + ~100 B) ≈ 11 MB).
+_PARSED_MAX = 65536
+
+
+def _remember(text: str, dimension: str, value: float) -> float:
+    if len(_PARSED) < _PARSED_MAX:
+        _PARSED[(text, dimension)] = value
+    return value
+
+
+def is_number(text: str) -> bool:
+    """Whether ``text`` is a decimal number in the accepted syntax (``"9"``, ``"-1.5e3"``), nothing more."""
+    return len(text) <= MAX_VALUE_CHARS and re.fullmatch(_NUMBER, text.strip()) is not None
+
+
+def _split(value: str, field: str, dimension: str) -> tuple[float, str]:
+    """(number, unit text) of a value string that passes the syntax check; InputError otherwise."""
+    if len(value) > MAX_VALUE_CHARS:
+        raise InputError(
+            f"{field} ({quote(value)}) is too long ({len(value)} characters, at most {MAX_VALUE_CHARS}); "
+            f"expected {SYNTAX}"
+        )
+    match = _VALUE.fullmatch(value)
+    if match is None:
+        if _NON_FINITE.fullmatch(value):
+            raise InputError(f"{field} ({quote(value)}) must be finite")
+        example = "a number such as 0.52" if dimension == "dimensionless" else SYNTAX
+        raise InputError(f"{field} ({quote(value)}) is not {example}")
+    unit_text = match["unit"]
+    if unit_text and (len(unit_text) > MAX_UNIT_CHARS or _UNIT.fullmatch(unit_text) is None):
+        raise InputError(
+            f"{field} ({quote(value)}): {quote(unit_text, 20)} is not a unit expression (unit names "
+            f"joined by *, / or a space, integer powers ^2; at most {MAX_UNIT_CHARS} characters); "
+            f"expected {SYNTAX}"
+        )
+    return float(match["number"]), unit_text
+
+
+def _suggestion(value: str, unit_text: str, dimension: str) -> str:
+    """``"; did you mean '2 kN'?"`` from the look-alike units of ``dimension`` (empty when none is near)."""
+    candidates = UNIT_LOOKALIKES.get(dimension, ())
+    key = _squash(unit_text)
+    near = [c for c in candidates if _squash(c) == key]
+    if not near:
+        squashed = {_squash(c): c for c in candidates}
+        near = [squashed[k] for k in difflib.get_close_matches(key, list(squashed), n=2, cutoff=0.75)]
+    if not near:
+        return ""
+    number = value.strip()[: len(value.strip()) - len(unit_text)].strip()
+    return "; did you mean " + " or ".join(f"'{number} {c}'" for c in near) + "?"
+
+
+def _squash(unit_text: str) -> str:
+    """Lower case without multiplication signs and spaces: 'kn' ~ 'kN', 'Nm' ~ 'N*m'."""
+    return re.sub(r"[*·\s]", "", unit_text).lower()
+
+
+def _finite(x, field: str, raw) -> float:
+    try:
+        out = float(x)
+    except OverflowError:  # an integer beyond the float range
+        raise InputError(f"{field} ({quote(raw)}) must be finite (it is beyond the float range)") from None
+    if out != out or out in (float("inf"), float("-inf")):
+        raise InputError(f"{field} ({quote(raw)}) must be finite")
+    return out
 
 
 def format_si(value: float, dimension: str) -> str:

@@ -168,8 +168,10 @@ def test_upload_is_validated_by_the_schema(client):
         client.post("/api/open", json={"source": {"kind": "upload", "name": "../../x.toml", "text": text}}),
         400,
     )
-    # the file's base name only, and the loader's message ("unknown field; expected one of …")
-    assert data["error"].startswith("x.toml: geometry.conformity_innr (0.52): unknown field; expected one of")
+    # the file's base name only, and the loader's message ("unknown field; did you mean …")
+    assert data["error"] == (
+        "x.toml: geometry.conformity_innr (0.52): unknown field; did you mean 'conformity_inner'?"
+    )
 
 
 def test_unknown_example_and_bad_designation(client):

@@ -111,10 +111,17 @@ def wait_for_analysis(driver, after: int) -> None:
     from selenium.webdriver.support.ui import WebDriverWait
 
     def done(d):
+        # settled: an answer newer than ``after`` is shown, no analysis is waiting for its debounce
+        # and none is in flight (on a loaded machine a change event from clear() can fire its own
+        # analysis before the typed value's; the page must be on the last request, not that one)
         status = d.find_element("id", "status")
-        return int(status.get_attribute("data-seq")) > after and d.find_element(
-            "tag name", "body"
-        ).get_attribute("data-state") in ("ready", "error")
+        shown_seq = int(status.get_attribute("data-seq"))
+        return (
+            shown_seq > after
+            and status.get_attribute("data-pending") is None
+            and status.get_attribute("data-requested") == str(shown_seq)
+            and d.find_element("tag name", "body").get_attribute("data-state") in ("ready", "error")
+        )
 
     WebDriverWait(driver, WAIT).until(done)
 

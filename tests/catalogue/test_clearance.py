@@ -1,4 +1,5 @@
-"""ISO 5753-1 radial internal clearance groups (as reproduced in NSK E1102, Tables 9.9 and 9.14)."""
+"""ISO 5753-1 radial internal clearance groups (as reproduced in NSK E1102, Tables 9.9, 9.14, 9.15), the
+tapered-bore groups and the QJ axial group (SKF General Catalogue 6000, Russian edition 2006)."""
 
 import itertools
 
@@ -24,6 +25,12 @@ UM = 1e-6
         ("cylindrical_roller", 45, "C4", (70, 100)),
         # Table 9.15 (spherical roller, cylindrical bore), row "40-50"
         ("spherical_roller", 45, "C3", (55, 75)),
+        # SKF 6000 p. 706 Table 4 (spherical roller, TAPERED bore), row "40-50"; p. 477 Table 5
+        # (self-aligning ball, tapered bore), row "65-80"
+        ("spherical_roller_tapered_bore", 45, "C3", (60, 80)),
+        ("self_aligning_ball_tapered_bore", 70, "C4", (69, 98)),
+        # SKF 6000 p. 453 Table 1: AXIAL clearance of QJ bearings, row "40-60"
+        ("four_point_contact_ball_axial", 50, "CN", (76, 126)),
     ],
 )
 def test_published_groups(group, bore_mm, cls, expected_um):
@@ -49,8 +56,19 @@ def test_classes_grow_from_c2_to_c5():
         (("deep_groove_ball", 0.025, "C7"), "must be one of C2"),
         (("deep_groove_ball", 0.9, "CN"), "outside the deep_groove_ball clearance table"),
         (("needle", 0.025, "CN"), "clearance group"),
+        # SKF 6000 p. 477 lists no C5 for tapered-bore self-aligning ball bearings: say which classes exist
+        (("self_aligning_ball_tapered_bore", 0.05, "C5"), r"not defined .* classes there: C2, CN, C3, C4$"),
     ],
 )
 def test_bad_requests(args, match):
     with pytest.raises(InputError, match=match):
         clearance_range(*args)
+
+
+def test_tapered_bore_groups_exceed_the_cylindrical_ones():
+    """An unmounted tapered-bore bearing has more clearance than its cylindrical-bore twin (the drive-up
+    takes it up), class by class — SKF p. 706 Table 4 against NSK Table 9.15 / SKF Table 3."""
+    for cls in ("C2", "CN", "C3", "C4", "C5"):
+        cyl = clearance("spherical_roller", 0.100, cls)
+        tap = clearance("spherical_roller_tapered_bore", 0.100, cls)
+        assert tap > cyl

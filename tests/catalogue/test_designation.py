@@ -8,7 +8,8 @@ from bearingkit.errors import InputError
 
 
 @pytest.mark.parametrize(
-    ("code", "bore"), [("00", 10), ("01", 12), ("02", 15), ("03", 17), ("04", 20), ("05", 25), ("20", 100)]
+    ("code", "bore"),
+    [("00", 10), ("01", 12), ("02", 15), ("03", 17), ("04", 20), ("05", 25), ("20", 100), ("/22", 22)],
 )
 def test_bore_codes(code, bore):
     # ISO 15 bore codes: 00-03 are 10, 12, 15, 17 mm; from 04 on code x 5
@@ -36,6 +37,22 @@ def test_bore_codes(code, bore):
         ("32008 X", "tapered_roller", "32008X", None, ()),
         ("51205", "thrust_ball", "51205", None, ()),
         ("81212", "thrust_cylindrical_roller", "81212", None, ()),
+        ("QJ 208 N2MA C3", "four_point_contact_ball", "QJ208", "C3", ("N2", "MA")),
+        ("1209 EKTN9/C3", "self_aligning_ball", "1209", "C3", ("E", "K", "TN9")),
+        ("2209", "self_aligning_ball", "2209", None, ()),
+        ("22209", "spherical_roller", "22209", None, ()),
+        ("22208 EK C3", "spherical_roller", "22208", "C3", ("E", "K")),
+        ("22308 CCK/W33", "spherical_roller", "22308", None, ("CC", "K", "W33")),
+        ("22210EAKE4", "spherical_roller", "22210", None, ("EA", "K", "E4")),
+        ("22220", "spherical_roller", "22220", None, ()),
+        ("2220", "self_aligning_ball", "2220", None, ()),
+        ("NA 4906", "needle_roller", "NA4906", None, ()),
+        ("RNA4906", "needle_roller", "RNA4906", None, ()),
+        ("NA49/22 C3", "needle_roller", "NA49/22", "C3", ()),
+        ("NA4822", "needle_roller", "NA4822", None, ()),
+        ("302/22", "tapered_roller", "302/22", None, ()),
+        ("320/28 XJ", "tapered_roller", "320/28X", None, ("J",)),
+        ("6406 ZZ", "deep_groove_ball", "6406", None, ("ZZ",)),
     ],
 )
 def test_parse(text, family, base, clearance, suffixes):
@@ -71,3 +88,10 @@ def test_angular_contact_needs_angle_suffix():
 def test_two_clearance_classes_refused():
     with pytest.raises(InputError, match="two clearance classes"):
         parse("6205 C3 C4")
+
+
+def test_needle_bore_outside_table_names_the_series_range():
+    with pytest.raises(InputError) as exc:
+        parse("NA4999")
+    msg = str(exc.value)
+    assert "bore 495 mm" in msg and "10–140 mm of series NA49" in msg and "nearest: NA4928" in msg

@@ -79,7 +79,7 @@ def test_deviation_generator_is_reproducible_and_scaled():
     "spec, fragment",
     [
         ('["1 um", "2 um"]', "one value per roller"),
-        ('["1 kg"] ', "diameter_deviation[0]"),
+        ("[" + ", ".join(['"1 kg"'] * 23) + "]", "diameter_deviation[0]"),
         ('{ magnitude = "1 um" }', "seed is required"),
         ('{ magnitude = "1 um", seed = 1, series = 2 }', "either magnitude"),
         ("{ series = 9 }", "series"),

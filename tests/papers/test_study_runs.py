@@ -16,7 +16,7 @@ from bearingkit.papers.tian2025.validation import TABLE3
 from bearingkit.papers.zheng2022 import study_runs as s004
 from bearingkit.papers.zheng2022.studies import TABLE6_OBJECTIVES
 from bearingkit.studies import evaluators
-from bearingkit.studies.definition import load_study
+from bearingkit.studies.definition import evaluator_of, load_study
 from bearingkit.validation.registry import all_cases, failures, run_cases
 
 EXAMPLES = ("seed000_l9", "seed001_monte_carlo", "seed002_clearance_map")
@@ -26,7 +26,7 @@ EXAMPLES += ("seed004_axial_nsga2", "seed004_radial_nsga2")
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_example_files_load(name):
     d = load_study(ex.example(name))
-    assert evaluators.get(d.evaluator).name == d.evaluator
+    assert evaluator_of(d).name == d.evaluator
 
 
 def test_unknown_example_is_an_input_error():

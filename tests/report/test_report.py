@@ -371,3 +371,17 @@ def test_flagship_fallback_uses_seed000_friction_data(flagship):
     assert f"viscosity_factor {seed000_friction.VISCOSITY_FACTOR:g}" in html
     assert f"cage_mass {seed000_friction.CAGE_MASS:g}" in html
     assert path.parent.name == "out"  # parent folder created
+
+
+@pytest.mark.parametrize(("name", "model"), [("srb_22220.toml", "skf"), ("needle_na4910.toml", "palmgren")])
+def test_kinds_without_a_component_model_show_a_catalogue_model(tmp_path, name, model):
+    """Spherical roller and needle rows have no component friction model: the report shows the first catalogue
+    model that applies (SKF, else Palmgren) for the whole bearing, says so, and its totals are the model's."""
+    a = analyze(EXAMPLES / name)
+    assert a.friction is None
+    html = a.report(tmp_path / "r.html").read_text(encoding="utf-8")
+    assert f"the report shows the {model} catalogue model" in html
+    assert "Not computed in this run: friction torque" not in html
+    for case in range(a.n_cases):
+        total = fmt(float(a.friction_by(model).total[case]), 5)
+        assert f"Total M = <b>{total} N·m</b> ({model} catalogue model of the whole bearing" in html

@@ -80,3 +80,72 @@ def test_kill_and_resume(tmp_path, monkeypatch):
     fresh = run_study(sd.load_study(study), progress=False)
     pd.testing.assert_frame_equal(resumed.results, fresh.results)
     assert len(resumed.results) == 4 * N_CHUNKS
+
+
+GENERIC_STUDY = """
+[study]
+name = "resume_generic"
+design = "monte_carlo"
+bearing = "{bearing}"
+load_case = "radial_4kN"
+samples = {samples}
+seed = 11
+chunk_size = 1
+outputs = ["u_x_m", "balls_max_load_N", "L10r_rev", "converged"]
+
+[[factors]]                      # every draw its own clearance: one build and solve per chunk
+name = "geometry.clearance_radial"
+distribution = "uniform"
+low = "0 um"
+high = "40 um"
+
+[[factors]]
+name = "load_cases.radial_4kN.F_x"
+distribution = "normal"
+mean = "4 kN"
+std = "0.5 kN"
+"""
+
+
+def test_kill_and_resume_the_generic_evaluator(tmp_path, monkeypatch):
+    """kill -9 of `bearingkit study` on a bearing file, then --resume: only the missing chunks run."""
+    from bearingkit.studies.generic import GenericModel
+
+    n_chunks = 100
+    study = tmp_path / "study.toml"
+    bearing = HERE.parents[1] / "examples" / "dgbb_6209.toml"
+    study.write_text(GENERIC_STUDY.format(bearing=bearing, samples=n_chunks))
+    out = tmp_path / "out"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "bearingkit.studies", str(study), "--out", str(out), "--no-progress"],
+    )
+    chunk_dir = out / "chunks"
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline:
+        if chunk_dir.exists() and len(list(chunk_dir.glob("chunk-*.parquet"))) >= 3:
+            break
+        time.sleep(0.01)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait(timeout=10)
+    assert proc.returncode == -signal.SIGKILL
+    finished = {int(p.stem.split("-")[1]) for p in chunk_dir.glob("chunk-*.parquet")}
+    assert 3 <= len(finished) < n_chunks, "the kill must land mid-run"
+    stamps = {p.name: p.stat().st_mtime_ns for p in chunk_dir.glob("chunk-*.parquet")}
+
+    calls = []
+    real = GenericModel.__call__
+
+    def counting(self, cases):
+        calls.append(len(cases))
+        return real(self, cases)
+
+    monkeypatch.setattr(GenericModel, "__call__", counting)
+    with pytest.warns(UserWarning, match="recovered the stale lock of study 'resume_generic'"):
+        resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
+    assert len(calls) == n_chunks - len(finished)  # nothing finished is recomputed
+    assert resumed.stats["computed"] == n_chunks - len(finished) and resumed.stats["reused"] == len(finished)
+    for name, stamp in stamps.items():  # the finished chunk files are the killed run's, untouched
+        assert (chunk_dir / name).stat().st_mtime_ns == stamp
+    fresh = run_study(sd.load_study(study), progress=False)
+    pd.testing.assert_frame_equal(resumed.results, fresh.results)
+    assert resumed.results["converged"].all()

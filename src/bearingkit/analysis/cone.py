@@ -82,6 +82,18 @@ def shared_directions(kernels) -> np.ndarray | None:
     return directions(kernels)
 
 
+#: What a user can do when the load lies outside the contacts' reach, by the worst component.
+_CONE_HINTS = {
+    "F_z": "; a row whose contacts all lean one way carries F_z in one direction only, and radial load "
+    "only with enough F_z (about F_r tan(alpha) or more): check the sign of F_z, raise it, or use a "
+    "paired bearing (DB/DF)",
+    "M_x": "; the rows cannot hold this moment: fix the tilt ([solver] free) or use a bearing with more "
+    "rows or a wider spread",
+    "M_y": "; the rows cannot hold this moment: fix the tilt ([solver] free) or use a bearing with more "
+    "rows or a wider spread",
+}
+
+
 def outside_cone(kernels, scale: np.ndarray, idx: np.ndarray, load: np.ndarray) -> np.ndarray:
     """Which loads (C, 5) no non-negative combination of the unloaded contact directions balances (C,).
 
@@ -109,7 +121,8 @@ def check_directions(kernels, scale: np.ndarray, idx: np.ndarray, load: np.ndarr
         if reach[i] <= 1e-12 * reach.max() and np.any(np.abs(load[:, i]) > 0):
             raise InputError(
                 f"load {LOAD_NAMES[i]} ({np.abs(load[:, i]).max():.6g}) acts on a DOF no row of this bearing "
-                f"can carry ({DOF_NAMES[i]}); fix that DOF or remove the load"
+                f"can carry ({DOF_NAMES[i]}); remove the load, or fix that DOF (leave {DOF_NAMES[i]} out "
+                "of [solver] free in a bearing file)"
             )
 
 
@@ -124,7 +137,7 @@ def diagnose(kernels, scale, idx, load: np.ndarray, diverged: bool, norm: float)
         worst = LOAD_NAMES[idx[int(np.argmax(np.abs(comp)))]]
         return (
             f"the load cannot be carried: no combination of contact forces balances it (unbalanced mainly in "
-            f"{worst})"
+            f"{worst}){_CONE_HINTS.get(worst, '')}"
         )
     if diverged:
         return (

@@ -51,6 +51,10 @@ ENGINEERING_MODELS = {
 MODEL_COMPONENTS = {"skf": ("rolling", "sliding", "seal", "drag"), "palmgren": ("viscous", "load")}
 #: Bearing types each model covers.
 BEARING_TYPES = {"skf": tuple(skf_terms.G_MODELS), "palmgren": friction_palmgren.palmgren_types()}
+#: Bearing types a model refuses, with the constants no source gave (one-line refusal).
+NOT_COVERED = {"skf": skf_terms.NOT_COVERED, "palmgren": friction_palmgren.NOT_COVERED}
+#: Row kinds of the two-row self-aligning bearings → engineering type (the whole bearing, both rows).
+_TWO_ROW_KINDS = {"spherical_roller": "spherical_roller", "self_aligning_ball": "self_aligning_ball"}
 #: Element diameter over ring section width, D_w / (D − d), so that D − d ≈ D_w / ELEMENT_TO_SECTION;
 #: typical of standard ball and roller bearings (6208: D_w = 12.7 mm, D − d = 40 mm → 0.32; NU 208:
 #: 11/40 → 0.28). [M] estimate, used only when the boundary dimensions are not given.
@@ -114,8 +118,19 @@ def _tag_notes(model: str, bearing_type: str, series: str | None) -> tuple[str, 
         notes = []
         if c["tag"] == "M" or c["kz_tag"] == "M":
             notes.append(f"SKF constants of {bearing_type} series {c['series']} are [M] (not verified)")
+        if series is None and len(skf_terms.series_keys(bearing_type)) > 1:
+            notes.append(
+                f"SKF constants of series {c['series']} used (the first of {bearing_type}'s series "
+                f"{', '.join(skf_terms.series_keys(bearing_type))}; "
+                "engineering_friction_torque(..., series=…) selects another; a file cannot yet)"
+            )
         return tuple(notes)
+    if bearing_type in ("spherical_roller", "needle_roller"):
+        return (
+            f"Palmgren f0/f1 of {bearing_type}: Schaeffler's type values via one public transcription [S1]",
+        )
     return ("Palmgren f0/f1 tables are [M] (from memory of Harris & Kotzalas 2007 ch. 11, not verified)",)
+
 
 
 def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> EngineeringFrictionResult:
@@ -137,6 +152,10 @@ def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> Engi
     EngineeringFrictionResult
     """
     checks.one_of("model", model, ENGINEERING_MODELS)
+    if bearing_type in NOT_COVERED[model]:
+        raise InputError(
+            f"bearing_type ({bearing_type!r}): {model} model refused: {NOT_COVERED[model][bearing_type]}"
+        )
     checks.one_of(f"bearing_type (of model {model!r})", bearing_type, BEARING_TYPES[model])
     raw = ENGINEERING_MODELS[model](bearing_type, **kwargs)
     comps = {k: raw[f"{k}_Nm"] for k in MODEL_COMPONENTS[model]}
@@ -158,8 +177,14 @@ def bearing_type_of(bearing) -> str:
 
     Ball row: α = 0 → ``deep_groove_ball``; 0 < α < π/2 → ``angular_contact_ball``; α = π/2 →
     ``thrust_ball``. Cylindrical row: radial → ``cylindrical_roller``; thrust → ``cylindrical_roller_thrust``.
+    Four-point row → ``four_point_contact_ball``; needle row → ``needle_roller``; the two rows of a spherical
+    roller or self-aligning ball bearing → ``spherical_roller`` / ``self_aligning_ball`` (the catalogue
+    models describe the whole two-row bearing).
     """
     rows = getattr(bearing, "rows", None)
+    kinds = {getattr(r, "kind", None) for r in rows or ()}
+    if len(kinds) == 1 and next(iter(kinds)) in _TWO_ROW_KINDS:
+        return _TWO_ROW_KINDS[next(iter(kinds))]
     if not rows or len(rows) != 1:
         n = 0 if not rows else len(rows)
         raise InputError(
@@ -179,8 +204,11 @@ def bearing_type_of(bearing) -> str:
         return "cylindrical_roller" if row.orientation == "radial" else "cylindrical_roller_thrust"
     if kind == "four_point":  # QJ bearings: SKF Table 2a, four-point contact ball bearings
         return "four_point_contact_ball"
+    if kind == "needle":
+        return "needle_roller"
     raise InputError(
-        f"row kind ({kind!r}) has no engineering friction model; supported: ball, cylindrical (single row)"
+        f"row kind ({kind!r}) has no engineering friction model; supported: ball, cylindrical, four-point, "
+        "needle (single row), spherical roller and self-aligning ball bearings"
     )
 
 
@@ -268,9 +296,13 @@ def engineering_friction_torque(
         "temperature_C": temperature,
     }
     kw = dict(model_kwargs)
+    if btype in NOT_COVERED[model]:
+        raise InputError(f"bearing_type ({btype!r}): {model} model refused: {NOT_COVERED[model][btype]}")
     if model == "skf":
         if btype == "deep_groove_ball" and "static_rating" not in kw:
             kw["static_rating"] = _static_rating(row, btype)
+        if btype == "self_aligning_ball":
+            kw.setdefault("n_rows", len(bearing.rows))  # ball drag counts both rows
         res = engineering_friction_moment(
             "skf",
             btype,
@@ -287,8 +319,8 @@ def engineering_friction_torque(
     else:
         if btype in ("deep_groove_ball", "angular_contact_ball", "thrust_ball") and "static_rating" not in kw:
             kw["static_rating"] = _static_rating(row, btype)
-        if btype == "angular_contact_ball" and "contact_angle" not in kw:
-            kw["contact_angle"] = abs(float(row.contact_angle))
+        if btype in ("angular_contact_ball", "spherical_roller") and "contact_angle" not in kw:
+            kw["contact_angle"] = abs(float(np.max(row.contact_angle)))
         res = engineering_friction_moment(
             "palmgren",
             btype,
@@ -317,6 +349,7 @@ __all__ = [
     "ELEMENT_TO_SECTION",
     "ENGINEERING_MODELS",
     "MODEL_COMPONENTS",
+    "NOT_COVERED",
     "EngineeringFrictionResult",
     "bearing_type_of",
     "engineering_friction_moment",

@@ -327,7 +327,11 @@ def friction_torque(result, operating_point: OperatingPoint) -> FrictionResult:
         elif row.kind == "cylindrical":
             parts = _roller_row(row, kernel, state, op, ctx)
         else:
-            raise checks.InputError(f"row {row.name!r} of kind {row.kind!r} has no friction model yet")
+            raise checks.InputError(  # say where to go: the catalogue models cover several such kinds
+                f"row {row.name!r} of kind {row.kind!r} has no component friction model yet; the "
+                "catalogue models may cover the bearing (friction model 'skf', 'palmgren', 'trb' or "
+                "'slewing'; `bearingkit friction FILE --compare` shows which apply)"
+            )
         elem = sum(parts.values())
         per_element[row.name] = elem
         by_row[row.name] = elem.sum(axis=-1)

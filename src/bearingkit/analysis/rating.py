@@ -322,7 +322,7 @@ def rate(
     lubricant=None,
     temperature_C=None,
     contamination_factor=None,
-    shoulder_height=DEFAULT_SHOULDER_HEIGHT,
+    shoulder_height=None,
     edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO,
     edge_stress_factor: str = "auto",
     load_ratings: Mapping | None = None,
@@ -356,8 +356,10 @@ def rate(
     lubricant : Lubricant or str, optional
         For a_ISO, with ``temperature_C`` [°C] and ``contamination_factor`` e_C [-] (all three, and speed).
     temperature_C, contamination_factor : float or array_like (C,), optional
-    shoulder_height : float or Mapping[str, float]
-        Groove shoulder height over ball diameter [-] for the truncation check.
+    shoulder_height : None, float or Mapping[str, float or (float, float)]
+        Groove shoulder height over ball diameter [-] for the truncation check: one value, or per row
+        name a value or an (inner, outer) pair; None = the kind's default
+        (:data:`~bearingkit.analysis.rating_options.DEFAULT_SHOULDER_HEIGHTS`).
     edge_pressure_ratio : float
         End-slice pressure over the row's maximum slice pressure that flags edge loading [-].
     edge_stress_factor : {"auto", "always", "never"}

@@ -10,14 +10,17 @@ SI units: loads in N, pressures in Pa, lives in revolutions. Each rater follows
   (i = 1: under axial load one diagonal carries, as for a single-row bearing), ISO 281 Table 2 f_c and
   ISO 76 Table 1 f0 for α₀ ≤ 45°, the thrust tables above (slewing rings at 50°-60°). The ISO/TS 16281
   life sums the four raceways (two arcs per ring), each with its own equivalent load from its contact
-  loads: L10r = [Σ_r (Q_cr/Q_er)^(−10/3)]^(−0.9) (Weibull slope 10/9 per raceway).
+  loads: L10r = [Σ_r (Q_cr/Q_er)^(−10/3)]^(−0.9) (Weibull slope 10/9 per raceway). Truncation: each
+  contact's ellipse must stay on its own arc, between the arch seam θ_b and the shoulder θ_s
+  (:mod:`bearingkit.physics.contact.truncation`).
 - **crossed roller** (``crossed_roller``): each direction (Z/2 rollers at +α, Z/2 at −α) is a single-row
   radial roller bearing at α = 45° (ISO 281 eq. (9), ISO 76 eq. (3), b_m of cylindrical rollers); its two
   raceway pairs' lives combine with slope 9/8.
 - **spherical roller** (``spherical_roller``): each row a single-row radial roller row of b_m 1.15
   (ISO 281 Table 1, "spherical roller"); L10r from the outer and inner slice loads separately.
 - **self-aligning ball** (``self_aligning_ball``): f_c and f0 from :mod:`bearingkit.physics.life.kinds`
-  (not shipped ISO columns, derived), C0 stress limit 4600 MPa.
+  (not shipped ISO columns, derived), C0 stress limit 4600 MPa; truncation checked at the inner grooves'
+  shoulders (the outer raceway is a sphere).
 - **needle** (``needle``): the cylindrical rater with b_m of machined (1.1) or drawn-cup (1.0) needle
   bearings (ISO 281 Table 1) and a warning when the needles run on the shaft.
 
@@ -29,6 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.analysis.rating import register_row_rater
+from bearingkit.analysis.rating_options import shoulder_heights
 from bearingkit.analysis.rating_rows import (
     RowContext,
     RowRating,
@@ -37,6 +41,10 @@ from bearingkit.analysis.rating_rows import (
     _edge_checks,
     _given_rating,
     _rate_roller_row,
+    _truncation_text,
+    check_shoulders,
+    groove_truncation,
+    truncation_texts,
 )
 from bearingkit.physics.life import iso76, iso281, iso16281
 from bearingkit.physics.life import kinds as life_kinds
@@ -101,6 +109,7 @@ def rate_four_point_row(row, state, ctx: RowContext) -> RowRating:
             "C (ISO 281)", lambda: iso281.dynamic_rating_ball(d, dm, alpha, z, bearing_type=btype), notes
         )
     m_in, m_out = _means(ctx.options.rotating)
+    flags = _four_point_truncation(row, state, ctx)
 
     def life_fn(c_arr, loaded):
         qci, qce = iso16281.ball_raceway_ratings(c_arr, d, dm, alpha, fi * d, fo * d, z, kind=kind)
@@ -119,11 +128,34 @@ def rate_four_point_row(row, state, ctx: RowContext) -> RowRating:
         c=c,
         c0=c0,
         life_fn=life_fn,
-        flags={},
+        flags=flags,
         notes=notes,
         aiso_kind="thrust_ball" if thrust else "radial_ball",
+        truncation_text=_truncation_text(ctx.options, row.name, "four_point").replace(
+            "groove shoulder", "arch (shoulder or seam)"
+        ),
         extra_references=("amasorrain2003",),
     )
+
+
+def _four_point_truncation(row, state, ctx: RowContext) -> dict:
+    """``truncated_ellipse`` of a four-point row: a loaded contact's ellipse leaves its arc (module doc)."""
+    from bearingkit.physics.contact import truncation
+
+    d = float(np.max(row.element_diameter))
+    alpha0 = float(np.max(row.contact_angle))
+    fi, fo = float(np.max(row.conformity_inner)), float(np.max(row.conformity_outer))
+    h_i, h_o = shoulder_heights(ctx.options, row.name, "four_point")
+    seams = (truncation.seam_angle(fi, alpha0), truncation.seam_angle(fo, alpha0))
+    check_shoulders(row.name, (h_i, h_o), (fi, fo), seams)
+    f = np.array([fo, fo, fi, fi])
+    h = np.array([h_o, h_o, h_i, h_i]) * d
+    seam = np.array([seams[1], seams[1], seams[0], seams[0]])
+    hit = truncation.truncated(
+        state.extras["contact_angle_all"], state.extras["semi_major"], f * d, h, seam=seam
+    )
+    hit &= state.extras["contact_load"] > 0
+    return {"truncated_ellipse": ctx.converged & hit.any(axis=(-2, -1))}
 
 
 # --- crossed rollers -------------------------------------------------------------------------------
@@ -267,6 +299,10 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
         q = np.where(loaded[:, None], state.load, 0.0)
         return raceway_life([q, q], [qci, qce], [m_in, m_out], _BALL_EXP, iso16281.BALL_LIFE_EXP)
 
+    heights = shoulder_heights(ctx.options, row.name, "self_aligning_ball")
+    check_shoulders(row.name, heights, (fi, None))
+    need = {}
+    truncated = groove_truncation(state, d, (fi, None), heights, need=need)
     rating = _assemble(
         row,
         state,
@@ -276,9 +312,10 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
         c=c,
         c0=c0,
         life_fn=life_fn,
-        flags={},
+        flags={"truncated_ellipse": ctx.converged & truncated},
         notes=notes,
         aiso_kind="radial_ball",
+        truncation_text=truncation_texts(ctx.options, row.name, "self_aligning_ball", need),
     )
     # ISO 76 sets the self-aligning limit at 4600 MPa (not 4200): s0 = (4600/p_max)^3.
     p = rating.max_pressure

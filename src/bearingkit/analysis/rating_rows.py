@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import references
-from bearingkit.analysis.rating_options import DEFAULT_SHOULDER_HEIGHT, RatingOptions
+from bearingkit.analysis.rating_options import RatingOptions, shoulder_heights
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso76, iso281, iso281_life, iso16281
 
@@ -165,8 +165,9 @@ def _assemble(
 ):
     """Everything that is common to the row kinds: masks, s0, a_ISO, warnings.
 
-    ``pitch_diameter`` [m] defaults to ``row.pitch_diameter`` (κ and C_u); ``truncation_text`` replaces the
-    ball-groove wording of the truncation warning; ``extra_references`` are added to the row's references.
+    ``pitch_diameter`` [m] defaults to ``row.pitch_diameter`` (κ and C_u); ``truncation_text`` (a string, or
+    a function of the case index) replaces the ball-groove wording of the truncation warning;
+    ``extra_references`` are added to the row's references.
     """
     n, opts = ctx.n_cases, ctx.options
     valid = ctx.converged
@@ -221,11 +222,10 @@ def _assemble(
                 f"exceeds the ISO 76 limit {p_lim / 1e6:.0f} MPa"
             )
         if flags.get("truncated_ellipse", np.zeros(n, bool))[k]:
-            w.append(
-                truncation_text
-                or "contact ellipse truncated by the groove shoulder (shoulder height "
-                f"{_shoulder(opts, row.name):g} D_w assumed): Hertz pressure and life are optimistic"
-            )
+            if callable(truncation_text):  # per case: names the height the ellipses need
+                w.append(truncation_text(k))
+            else:
+                w.append(truncation_text or _truncation_text(opts, row.name, bearing_type))
         if flags.get("edge_loading", np.zeros(n, bool))[k]:
             w.append(
                 f"edge loading: a roller end slice reaches {opts.edge_pressure_ratio:.0%} of the row's "
@@ -258,9 +258,93 @@ def _assemble(
     )
 
 
-def _shoulder(opts: RatingOptions, name: str) -> float:
-    h = opts.shoulder_height
-    return float(h.get(name, DEFAULT_SHOULDER_HEIGHT) if isinstance(h, Mapping) else h)
+def _truncation_text(opts: RatingOptions, name: str, bearing_type: str, need=None) -> str:
+    """The truncation warning; ``need`` = (h*_i, h*_o) / D_w of one case adds the heights that hold it."""
+    h_i, h_o = shoulder_heights(opts, name, bearing_type)
+    given = opts.shoulder_height is not None and (
+        not isinstance(opts.shoulder_height, Mapping) or name in opts.shoulder_height
+    )
+    heights = f"inner {h_i:.3g} D_w" + ("" if h_o is None else f", outer {h_o:.3g} D_w")
+    needed = ""
+    if need is not None:
+        parts = [
+            f"{side} {x:.3g} D_w"
+            for side, x, h in zip(("inner", "outer"), need, (h_i, h_o), strict=True)
+            if x is not None and h is not None and x > h
+        ]
+        needed = f"; the loaded ellipses need {', '.join(parts)}" if parts else ""
+    return (
+        f"contact ellipse truncated by the groove shoulder (shoulder heights {heights}, "
+        f"{'given' if given else 'default of the kind, not from the input'}{needed}): Hertz pressure and "
+        "life are optimistic"
+    )
+
+
+def truncation_texts(opts: RatingOptions, name: str, bearing_type: str, need: dict):
+    """Per-case truncation warning (a function of the case index) from :func:`groove_truncation`'s need."""
+
+    def text(k: int) -> str:
+        pick = tuple(None if need.get(side) is None else float(need[side][k]) for side in ("inner", "outer"))
+        return _truncation_text(opts, name, bearing_type, pick)
+
+    return text
+
+
+def groove_truncation(
+    state, dw, conformities, heights, *, bottom=0.0, angle=None, semi_major=None, need=None
+):
+    """Per case: is any loaded contact ellipse truncated by its groove shoulder (single-arc grooves)?
+
+    Parameters
+    ----------
+    state : RowState
+        ``contact_angle`` (C, Z) (or, at speed, ``extras['contact_angle_inner'/'_outer']``) [rad] and
+        ``extras['semi_major_inner'/'semi_major_outer']`` [m].
+    dw : array_like
+        Ball diameter(s) D_w [m], (G,) or scalar.
+    conformities : (array_like, array_like or None)
+        f_i, f_o [-] (None: no outer groove, e.g. a spherical outer raceway).
+    heights : (float, float or None)
+        Shoulder heights h_i, h_o / D_w [-].
+    bottom : array_like
+        Angle of the groove bottom from the radial plane [rad] (±π/2 for thrust rows).
+    angle, semi_major : optional
+        Override ``state.contact_angle`` and the semi-axes (dict side → array).
+    need : dict, optional
+        Filled with side → (C,) the shoulder height / D_w that would hold every loaded ellipse of that
+        ring (:func:`bearingkit.physics.contact.truncation.required_shoulder_height`; 0 when none loaded).
+    """
+    from bearingkit.physics.contact import truncation
+
+    dw = np.asarray(dw, float).reshape(-1, 1)
+    out = np.zeros(state.load.shape, bool)
+    for side, f, h in zip(("inner", "outer"), conformities, heights, strict=True):
+        if f is None or h is None:
+            continue
+        # at speed the inner and outer contact angles part (speed kernels report both)
+        own = state.extras.get(f"contact_angle_{side}", state.contact_angle) if angle is None else angle
+        off = np.abs(own - bottom)
+        a = state.extras[f"semi_major_{side}"] if semi_major is None else semi_major[side]
+        r = np.asarray(f, float).reshape(-1, 1) * dw
+        loaded = (state.load > 0) & (a > 0)
+        out |= loaded & truncation.truncated(off, a, r, h * dw)
+        if need is not None:
+            h_star = truncation.required_shoulder_height(off, a, r) / dw
+            need[side] = np.where(loaded, h_star, 0.0).max(axis=-1, initial=0.0)
+    return out.any(axis=-1)
+
+
+def check_shoulders(row_name: str, heights, conformities, seams=(0.0, 0.0)):
+    """Refuse shoulder heights / D_w at or above the groove depth f cos θ_b (one line, naming the row)."""
+    for side, h, f, seam in zip(("inner", "outer"), heights, conformities, seams, strict=True):
+        if h is None or f is None:
+            continue
+        depth = float(np.min(np.asarray(f, float) * np.cos(seam)))
+        if not h < depth:
+            raise InputError(
+                f"shoulder_height_{side} ({h:.6g} D_w) of row {row_name!r} must be below the groove depth "
+                f"{depth:.6g} D_w (the arc radius f·D_w above the groove bottom)"
+            )
 
 
 def _given_rating(ctx: RowContext, row, notes):
@@ -286,10 +370,13 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
     nominal |α₀| in the raceway ratings (the operating angle enters through the element loads only) and the
     ball normal loads, equal at both raceways (no centrifugal force in the quasi-static engine).
 
-    Truncation: the groove of radius r = f D_w ends at a shoulder h = ``shoulder_height`` · D_w above its
-    bottom (bottom at 0 for radial/angular rows, at ±90° for thrust rows), i.e. at the angle
-    θ_s = arccos(1 − h/r) from the bottom seen from the groove centre; the ellipse of semi-major axis a spans
-    θ_a = arcsin(a/r) about the contact point, so it is truncated when |α − α_bottom| + θ_a > θ_s.
+    Truncation (:mod:`bearingkit.physics.contact.truncation`): the groove of radius r = f D_w ends at a
+    shoulder h = ``shoulder_height`` · D_w above its bottom (bottom at 0 for radial/angular rows, at ±90° for
+    thrust rows), i.e. at the angle θ_s = arccos(1 − h/r) from the bottom seen from the groove centre; the
+    ellipse of semi-major axis a spans θ_a = arcsin(a/r) about the contact point, so it is truncated when
+    |α − α_bottom| + θ_a > θ_s. Inner and outer shoulders may differ (``shoulder_height`` pairs); the
+    defaults depend on the kind (deep groove / angular contact high shoulder / thrust,
+    :data:`~bearingkit.analysis.rating_options.DEFAULT_SHOULDER_HEIGHTS`).
     """
     notes: list[str] = []
     alpha0 = np.asarray(row.contact_angle, float)
@@ -318,17 +405,12 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
         loads = np.where(loaded[:, None], state.load, 1.0)
         return iso16281.ball_reference_life(loads, qci, qce, rotating=ctx.options.rotating)
 
-    dw = np.asarray(d, float).reshape(-1, 1)
-    h = _shoulder(ctx.options, row.name) * dw
+    heights = shoulder_heights(ctx.options, row.name, btype)
+    check_shoulders(row.name, heights, (fi, fo))
     bottom = np.where(thrust, np.sign(alpha0) * np.pi / 2, 0.0).reshape(-1, 1)
-    off = np.abs(state.contact_angle - bottom)
-    truncated = np.zeros(state.load.shape, bool)
-    for side, f in (("inner", fi), ("outer", fo)):
-        r = np.asarray(f, float).reshape(-1, 1) * dw
-        theta_s = np.arccos(np.clip(1.0 - h / r, -1.0, 1.0))
-        theta_a = np.arcsin(np.clip(state.extras[f"semi_major_{side}"] / r, 0.0, 1.0))
-        truncated |= (state.load > 0) & (off + theta_a > theta_s)
-    flags = {"truncated_ellipse": ctx.converged & truncated.any(axis=-1)}
+    need = {}
+    truncated = groove_truncation(state, d, (fi, fo), heights, bottom=bottom, need=need)
+    flags = {"truncated_ellipse": ctx.converged & truncated}
     aiso_kind = "thrust_ball" if thrust else "radial_ball"
     return _assemble(
         row,
@@ -342,6 +424,7 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
         flags=flags,
         notes=notes,
         aiso_kind=aiso_kind,
+        truncation_text=truncation_texts(ctx.options, row.name, btype, need),
     )
 
 

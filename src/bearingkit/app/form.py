@@ -118,11 +118,9 @@ def _parse_toml(text: str, source: str) -> dict:
     size = len(text.encode("utf-8"))
     if size > MAX_TOML_BYTES:
         raise TooLarge(f"{source}: file too large ({size} bytes); at most {MAX_TOML_BYTES} bytes")
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError:
-        loader.loads(text, source)  # raises the loader's own one-line message
-        raise  # pragma: no cover - loads raised already
+    from bearingkit.io.reading import parse_toml
+
+    return parse_toml(text, source)  # nesting bounded before tomllib; the loader's one-line messages
 
 
 def _source_document(source: Source) -> tuple[dict, str]:

@@ -17,15 +17,24 @@ import fnmatch
 from bearingkit.catalogue.clearances import CLASSES, clearance, clearance_range
 from bearingkit.catalogue.designation import Designation, nearest, parse
 from bearingkit.catalogue.internal import RULES, Estimate, estimate, fill_angle
-from bearingkit.catalogue.iso_ratings import ratings
+from bearingkit.catalogue.iso_ratings import basis, four_point_radial, ratings
 from bearingkit.catalogue.resolve import Resolved, resolve
 from bearingkit.catalogue.tables import FAMILIES, Entry, all_entries, entries
 
 
 def find(pattern: str = "*") -> list[Entry]:
-    """Catalogue rows whose base designation matches the shell pattern ``pattern`` (``"62*"``), any case."""
+    """Catalogue rows whose base designation matches the shell pattern ``pattern`` (``"62*"``), any case.
+
+    A pattern that names a dimension series followed by ``*`` lists that series only: ``"222*"`` gives the
+    spherical roller bearings 222xx, not the self-aligning 2220 and 2222 that the glob also matches;
+    ``"NA49*"`` the needle bearings with inner ring, ``"RNA49*"`` those without.
+    """
     pat = pattern.upper().replace(" ", "")
-    return [e for e in all_entries() if fnmatch.fnmatchcase(e.designation.upper(), pat)]
+    rows = [e for e in all_entries() if fnmatch.fnmatchcase(e.designation.upper(), pat)]
+    head = pat[:-1] if pat.endswith("*") else None
+    if head and any(e.series.upper() == head for e in rows):
+        rows = [e for e in rows if e.series.upper() == head]
+    return rows
 
 
 __all__ = [
@@ -37,12 +46,14 @@ __all__ = [
     "Estimate",
     "Resolved",
     "all_entries",
+    "basis",
     "clearance",
     "clearance_range",
     "entries",
     "estimate",
     "fill_angle",
     "find",
+    "four_point_radial",
     "nearest",
     "parse",
     "ratings",

@@ -2,7 +2,12 @@
 
 The groups by bore range are the ISO 5753-1 values as reproduced in NSK E1102 Tables 9.9, 9.12, 9.14
 and 9.15 (``data/radial_clearance.csv``): deep groove ball, self-aligning ball, cylindrical roller
-(interchangeable rings) and spherical roller bearings with cylindrical bore. The engine counts a radial
+(interchangeable rings; NSK E1102 B245 applies the same table to needle roller bearings with inner ring)
+and spherical roller bearings with cylindrical bore; the tapered-bore groups of self-aligning ball and
+spherical roller bearings as SKF General Catalogue 6000 (2006) pp. 477 and 706 print them (SKF: "ISO
+5753"; its cylindrical-bore rows agree with NSK's). Four-point contact (QJ) bearings are classed by
+their axial clearance (SKF General Catalogue 6000, 2006, p. 453 Table 1; group
+``four_point_contact_ball_axial``, :data:`AXIAL_GROUPS`). The engine counts a radial
 clearance twice (``clearance_radial`` = the diametral clearance P_d, each element sees P_d/2), which is
 what these tables give (the total radial play of one ring against the other).
 """
@@ -21,6 +26,26 @@ CLEARANCE_GROUP = {
     "self_aligning_ball": "self_aligning_ball",
     "cylindrical_roller": "cylindrical_roller",
     "spherical_roller": "spherical_roller",
+    "needle_roller": "cylindrical_roller",
+    "four_point_contact_ball": "four_point_contact_ball_axial",
+}
+#: Groups whose classes are axial clearances (the resolver converts them to the row's P_d).
+AXIAL_GROUPS = ("four_point_contact_ball_axial",)
+#: Family → group of its tapered-bore variant (suffix K, K30): the unmounted clearance, larger than the
+#: cylindrical bore's (the drive-up on the taper takes part of it).
+TAPERED_BORE_GROUP = {
+    "self_aligning_ball": "self_aligning_ball_tapered_bore",
+    "spherical_roller": "spherical_roller_tapered_bore",
+}
+#: Where each group's numbers come from (short, for notes).
+GROUP_SOURCES = {
+    "deep_groove_ball": "ISO 5753-1",
+    "self_aligning_ball": "ISO 5753-1",
+    "cylindrical_roller": "ISO 5753-1",
+    "spherical_roller": "ISO 5753-1",
+    "four_point_contact_ball_axial": "SKF 6000 p. 453",
+    "self_aligning_ball_tapered_bore": "tapered bore, SKF 6000 p. 477",
+    "spherical_roller_tapered_bore": "tapered bore, SKF 6000 p. 706",
 }
 
 
@@ -49,7 +74,10 @@ def clearance_range(group: str, bore: float, cls: str = "CN") -> tuple[float, fl
         lo, hi = r.bore_over * 1e3, r.bore_incl * 1e3
         if lo - 1e-9 <= d_mm <= hi + 1e-9 and (d_mm > lo + 1e-9 or lo == 0.0 or r is rows[0]):
             if cls not in r.groups:
-                raise InputError(f"clearance class {cls} is not defined for {group} with bore {d_mm:g} mm")
+                raise InputError(
+                    f"clearance class {cls} is not defined for {group.replace('_', ' ')} "
+                    f"with bore {d_mm:g} mm; classes there: {', '.join(r.groups)}"
+                )
             return r.groups[cls]
     raise InputError(
         f"bore ({d_mm:g} mm) lies outside the {group} clearance table "

@@ -1,13 +1,16 @@
-"""Parse bearing designations such as ``"6205-2RS C3"``, ``"7206 BECBP"``, ``"NU 2206 ECP"``, ``"32206 J2"``.
+"""Parse bearing designations such as ``"6205-2RS C3"``, ``"7206 BECBP"``, ``"NU 2206 ECP"``,
+``"32206 J2"``, ``"22208 EK C3"``, ``"NA 4906"``, ``"RNA 49/22"``, ``"QJ 208 N2MA"``.
 
 A designation is a *basic designation* (type and dimension series, bore code) followed by suffixes.
-Bore codes: 00 = 10 mm, 01 = 12, 02 = 15, 03 = 17, from 04 on the code × 5 (ISO 15 cl. 7 and every
-catalogue's designation system). Suffixes: seals and shields (Z, 2Z, ZZ, RS, 2RS, 2RS1, RSR, 2RSR, RZ,
-2RZ, LLU, LLB, DDU, VV), snap ring (N, NR), internal clearance (C2, CN, C3, C4, C5), design and cage
-(E, EC, ECP, ECJ, ECM, J, J2, X, XJ, TN9, M, MA, P, CBP, …), tolerance (P6, P5). Only the clearance class
-and the contact-angle suffix of angular contact bearings change the mechanics; the others are kept
-as notes. Bad designations raise :class:`~bearingkit.errors.InputError` with the nearest designations
-of the table.
+Bore codes: 00 = 10 mm, 01 = 12, 02 = 15, 03 = 17, from 04 on the code × 5, and ``/dd`` = dd mm
+(``302/22``, ``NA49/22``) (ISO 15 cl. 7 and every catalogue's designation system). Needle roller
+bearings: ``NA`` with inner ring, ``RNA`` without (the shaft is the raceway). Suffixes: seals and shields
+(Z, 2Z, ZZ, RS, 2RS, 2RS1, RSR, 2RSR, RZ, 2RZ, LLU, LLB, DDU, VV), snap ring (N, NR), internal clearance
+(C2, CN, C3, C4, C5), design and cage (E, EC, ECP, ECJ, ECM, J, J2, X, XJ, TN9, M, MA, P, CBP, …;
+spherical roller E, EA, C, CC, CD, CA, CAM, E4, W33; four-point N2), tapered bore (K 1:12, K30 1:30),
+tolerance (P6, P5). The clearance class, the contact-angle suffix of angular contact bearings and the
+tapered bore (its clearance group) change the mechanics; the others are kept as notes. Bad designations
+raise :class:`~bearingkit.errors.InputError` with the nearest designations of the table.
 """
 
 from __future__ import annotations
@@ -22,13 +25,16 @@ from bearingkit.errors import InputError
 #: Basic designation patterns, tried in order: (family, regex with groups series, bore code, rest).
 _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("four_point_contact_ball", re.compile(r"^(QJ\s?[23])(\d\d)(.*)$")),
+    ("needle_roller", re.compile(r"^(R?NA\s?4[89])(\d\d|/\d\d)(.*)$")),
     ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|22|23|2|3)(\d\d)(.*)$")),
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
-    ("tapered_roller", re.compile(r"^(30[23]|313|32[023])(\d\d)(.*)$")),
+    ("tapered_roller", re.compile(r"^(30[23]|313|32[023])(\d\d|/\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d)(.*)$")),
     ("angular_contact_ball", re.compile(r"^(7[23])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
+    # spherical 222xx/223xx before self-aligning 22xx: "22208" is a spherical roller bearing, "2208" not
+    ("spherical_roller", re.compile(r"^(22[23])(\d\d)(.*)$")),
     ("self_aligning_ball", re.compile(r"^(1[2]|2[2])(\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d)(.*)$")),
 )
@@ -89,17 +95,35 @@ DESIGN_SUFFIXES = (
     "A",
     "W64",
     "HT",
+    # spherical roller designs (NSK EA, C, CD, CA; SKF E, CC, CA, CAM), oil groove (NSK E4, SKF W33),
+    # brass cage MB, four-point locating slots N2
+    "CAM",
+    "EA",
+    "EJ",
+    "CC",
+    "CD",
+    "CA",
+    "E4",
+    "W33",
+    "MB",
+    "N2",
     "C",
 )
+#: Tapered bore (1:12, 1:30): the bore d is the small end; noted, the estimate is the cylindrical one.
+BORE_SUFFIXES = ("K30", "K")
 CLEARANCE_SUFFIXES = ("C2", "CN", "C3", "C4", "C5")
 ANGLE_SUFFIXES = ("AC", "A", "B", "C")
 _SUFFIX_RE = re.compile(
-    "|".join(sorted((*SEAL_SUFFIXES, *DESIGN_SUFFIXES, *CLEARANCE_SUFFIXES), key=len, reverse=True))
+    "|".join(
+        sorted((*SEAL_SUFFIXES, *DESIGN_SUFFIXES, *BORE_SUFFIXES, *CLEARANCE_SUFFIXES), key=len, reverse=True)
+    )
 )
 
 
 def bore_from_code(code: str) -> float:
-    """Bore d [mm] of a two-digit bore code (00 → 10, 01 → 12, 02 → 15, 03 → 17, else × 5)."""
+    """Bore d [mm] of a bore code (00 → 10, 01 → 12, 02 → 15, 03 → 17, else × 5; ``/22`` → 22 mm)."""
+    if code.startswith("/"):
+        return float(code[1:])
     return {"00": 10.0, "01": 12.0, "02": 15.0, "03": 17.0}.get(code, 5.0 * int(code))
 
 
@@ -181,7 +205,7 @@ def parse(text: str) -> Designation:
             rest = re.sub(r"^\s?E(?![CWTM])", "", rest)
         if family == "double_row_angular_contact_ball":
             rest = re.sub(r"^\s?A(?!C)", "", rest)
-        if family == "four_point_contact_ball":
+        if family in ("four_point_contact_ball", "needle_roller"):
             series = series.replace(" ", "")
         prefix = "NU" if family == "cylindrical_roller" else ""
         base = f"{prefix}{series}{code}{angle}"
@@ -209,8 +233,7 @@ def parse(text: str) -> Designation:
         others = tuple(s for s in suffixes if s not in CLEARANCE_SUFFIXES)
         return Designation(raw, family, base, clearance[0] if clearance else None, others)
     raise InputError(
-        f"designation ({raw!r}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, 63, "
-        f"72, 73, 32, 33, QJ2, QJ3, 12, 22, N/NU/NJ/NUP 10/2/22/3/23, 302, 303, 313, 320, 322, 323, "
-        "511, 512, "
-        f"513, 811, 812); nearest: {', '.join(nearest(raw))}"
+        f"designation ({raw!r}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, 63, 64, "
+        "72, 73, 32, 33, QJ2, QJ3, 12, 22, 222, 223, N/NU/NJ/NUP 10/2/22/3/23, NA48, NA49, RNA48, RNA49, "
+        f"302, 303, 313, 320, 322, 323, 511, 512, 513, 811, 812); nearest: {', '.join(nearest(raw))}"
     )

@@ -13,7 +13,9 @@ The rules are the bearing-design rules of the textbooks, with their constants in
   other families: the per-family constant of :data:`RULES`);
 - ball count of Conrad-assembled deep groove bearings from the assembly (fill) angle of Harris
   (2006, ch. 2 [M]): φ = 2(Z − 1) D_w/d_m ≤ φ_max; φ_max = 186° is the value that the 6205 with its
-  9 balls of 7.938 mm on d_m = 39.04 mm reaches (2·8·7.938/39.04 rad = 186.4°) [M];
+  9 balls of 7.938 mm on d_m = 39.04 mm reaches (2·8·7.938/39.04 rad = 186.4°) [M]; the same rule per
+  row for the double-row angular contact series 32/33 (no filling slots; NSK's C and C0 together imply
+  that count, tests/catalogue/test_estimate.py);
 - other rows: the cage pitch, Z = floor(π d_m / (s D_w)) with a pitch ratio s > 1 (cage bars between
   the elements), s per family in :data:`RULES`;
 - conformities f_i = 0.52, f_o = 0.53 (radial, angular contact), 0.54 (thrust) (Harris 2006 ch. 2:
@@ -21,7 +23,13 @@ The rules are the bearing-design rules of the textbooks, with their constants in
 - tapered rows: cup angle from the catalogue's e, α_o = atan(e/1.5) (ISO 281 cl. 7.2: e = 1.5 tan α);
   roller half angle ε = 1.5° [M] (seed 001's 32008 has 1.50°), cone angle α_i = α_o − 2ε;
 - angular contact: the nominal angle of the designation suffix (B 40°, AC 25°, A 30°, C 15°);
-  four-point 35° [M]; double-row 32/33 as printed by the source (NSK e = 0.68 → 25°).
+  four-point 35° (NSK E1102 B68 prints the load-centre spacing a0 = 0.700 d_m = d_m tan 35°; SKF 6000
+  p. 452: "contact angle 35°"); double-row 32/33 as printed by the source (NSK e = 0.68 → 25°);
+- self-aligning ball and spherical roller rows: α = atan(e/1.5) from the e the catalogue prints per
+  bearing (ISO 281 Table 3 and cl. 7.2: e = 1.5 tan α for both kinds);
+- spherical roller: two rows of barrel rollers, D_we = k_w (D − d), L_we = k_L B/2 per row, d_m = (d + D)/2;
+- needle roller: d_m = F_w + D_w with the published roller inscribed diameter F_w, D_w = k_w (D − F_w)/2
+  (the needle takes a share of the outer-ring section), L_we = k_L C (C the ring width);
 
 The family constants k_w, s and the length ratios are not given by the design texts for every
 family; where they are chosen here they are chosen once, in :data:`RULES`, and docs/catalogue.md lists
@@ -39,6 +47,7 @@ import numpy as np
 from bearingkit.catalogue.tables import Entry
 from bearingkit.errors import InputError
 from bearingkit.physics.life.iso281_load import E_TAN_FACTOR
+from bearingkit.physics.life.kinds import SELF_ALIGNING_CONFORMITY_INNER
 
 DEG = math.pi / 180.0
 
@@ -46,10 +55,14 @@ DEG = math.pi / 180.0
 CONRAD_FILL_ANGLE = 186.0 * DEG
 #: Nominal contact angles of the angular contact suffixes [rad] (NSK E1102 B50 note 2; SKF AC = 25°).
 CONTACT_ANGLES = {"B": 40.0 * DEG, "AC": 25.0 * DEG, "A": 30.0 * DEG, "C": 15.0 * DEG}
-#: Four-point contact (QJ) nominal contact angle [rad] [M].
+#: Four-point contact (QJ) nominal contact angle [rad] (NSK E1102 B68 load-centre spacing a0 = d_m tan 35°;
+#: SKF General Catalogue 6000 p. 452).
 FOUR_POINT_ANGLE = 35.0 * DEG
 #: Tapered roller half angle ε [rad] [M] (seed 001 Table 1, 32008: ε = 0.0262 rad).
 TAPER_HALF_ANGLE = 1.5 * DEG
+#: Relative margin that keeps self-aligning balls strictly on their side of the centre plane (the engine's
+#: row check is strict); a numerical margin, not a design value.
+CENTRE_PLANE_MARGIN = 1e-3
 #: Groove conformities r/D_w (Harris 2006 ch. 2 [M]).
 CONFORMITY_INNER = 0.52
 CONFORMITY_OUTER = 0.53
@@ -85,17 +98,28 @@ class Rule:
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
     "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
-    "double_row_angular_contact_ball": Rule(k_w=0.25, pitch=1.35, rows=2),
+    # no filling slots: each row Conrad-assembled like a deep groove row, the deep groove ball rule with
+    # the angular contact width cap per row (docs/catalogue.md: NSK's C and C0 together imply it)
+    "double_row_angular_contact_ball": Rule(k_w=0.31, rows=2, k_b=0.80),
+    # QJ: the angular contact rule unchanged (nothing chosen for four-point bearings)
     "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
-    "self_aligning_ball": Rule(k_w=0.22, pitch=1.30, rows=2),
+    # ball size mostly set by the width and centre-plane limits (estimate()); pitch = angular contact's
+    "self_aligning_ball": Rule(k_w=0.30, pitch=1.20, rows=2),
     "cylindrical_roller": Rule(k_w=0.27, pitch=1.15, length=0.60),
     "tapered_roller": Rule(k_w=0.23, pitch=1.14, length=0.72),
     "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
     "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
+    "spherical_roller": Rule(k_w=0.24, pitch=1.15, length=0.80, rows=2),
+    # needle pitch and length ratio from NSK's cage & needle assemblies with published D_w (docs), the
+    # needle share of the section k_w chosen by C over the NA table
+    "needle_roller": Rule(k_w=0.65, pitch=1.80, length=0.80),
 }
 #: Series whose proportions differ from their family's (light, narrow sections).
 SERIES_RULES: dict[tuple[str, str], Rule] = {
     ("cylindrical_roller", "10"): Rule(k_w=0.20, pitch=1.15, length=0.38),
+    # heavy series 64: the section is deep for its width (B ≈ 0.38 (D - d)), so the width cap decides;
+    # 0.80 B is the angular contact rule's cap (chosen over the 64 table: C -3 % median, see the docs)
+    ("deep_groove_ball", "64"): Rule(k_w=0.31, k_b=0.80),
 }
 
 
@@ -186,16 +210,50 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             f"D_we = {rule.k_w} T, L_we = {rule.length} (D - d)/2, Z from cage pitch {rule.pitch} D_we, "
             "d_m = (d + D)/2"
         )
+    elif fam == "spherical_roller":
+        d_w = rule.k_w * (big_d - d)
+        length = rule.length * 0.5 * width
+        z = _pitch_count(d_m, d_w, rule.pitch)
+        alpha = _nominal_angle(entry, contact_angle)
+        extra["row_offset"] = 0.5 * d_m * math.tan(alpha)
+        notes.append(
+            f"two rows: D_we = {rule.k_w} (D - d), L_we = {rule.length} B/2, Z per row from cage pitch "
+            f"{rule.pitch} D_we, d_m = (d + D)/2, alpha = atan(e/1.5) from the published "
+            f"e = {entry.extra['e']}"
+        )
+    elif fam == "needle_roller":
+        f_w = entry.number("F_w_mm", 1e-3)
+        d_w = rule.k_w * 0.5 * (big_d - f_w)
+        d_m = f_w + d_w
+        length = rule.length * width
+        z = _pitch_count(d_m, d_w, rule.pitch)
+        alpha = 0.0
+        extra["inner_ring"] = entry.extra.get("inner_ring") != "no"
+        notes.append(
+            f"D_w = {rule.k_w} (D - F_w)/2, d_m = F_w + D_w with the published F_w, L_we = {rule.length} C, "
+            f"Z from cage pitch {rule.pitch} D_w"
+        )
     else:
-        d_w = min(rule.k_w * (big_d - d), rule.k_b * width / rule.rows)
+        if fam == "self_aligning_ball":
+            # the rows sit on the sphere at ±α: ball centres at z = ±(d_m/2) tan α, so a ball stays within
+            # the ring width when D_w ≤ B − d_m tan α and on its side of the centre plane (the engine's
+            # rows.self_aligning refuses balls crossing it) when D_w < d_m tan α: the geometry's own limits
+            spread = d_m * math.tan(_nominal_angle(entry, contact_angle))
+            cap = min(width - spread, spread * (1.0 - CENTRE_PLANE_MARGIN))
+            cap_text = "min(B - d_m tan(alpha), d_m tan(alpha))"
+        else:
+            cap, cap_text = rule.k_b * width / rule.rows, f"{rule.k_b} B/{rule.rows}"
+        d_w = min(rule.k_w * (big_d - d), cap)
         if rule.k_w * (big_d - d) > d_w:
-            notes.append(f"D_w capped at {rule.k_b} B/{rule.rows} by the width")
-        if fam == "deep_groove_ball":
+            notes.append(f"D_w capped at {cap_text} by the width")
+        if rule.pitch == 0.0:
+            # Conrad-assembled rows (deep groove; double row 32/33 without filling slots, one row at a time)
             z = _conrad_count(d_m, d_w)
-            alpha = 0.0
+            alpha = _nominal_angle(entry, contact_angle)
+            per_row = " per row" if rule.rows > 1 else ""
             notes.append(
-                f"D_w = {rule.k_w} (D - d), d_m = (d + D)/2, Z = largest with Conrad fill angle "
-                f"2(Z-1) D_w/d_m <= {math.degrees(CONRAD_FILL_ANGLE):.0f} deg (Harris)"
+                f"D_w = {rule.k_w} (D - d), d_m = (d + D)/2, Z{per_row} = largest "
+                f"with Conrad fill angle 2(Z-1) D_w/d_m <= {math.degrees(CONRAD_FILL_ANGLE):.0f} deg (Harris)"
             )
         else:
             if fam == "cylindrical_roller":
@@ -209,15 +267,12 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             z = _pitch_count(d_m, d_w, rule.pitch)
             alpha = _nominal_angle(entry, contact_angle)
             what = "D_we" if length is not None else "D_w"
-            notes.append(
-                f"{what} = {rule.k_w} (D - d), Z from cage pitch {rule.pitch} {what}, "
-                + ("d_m = (d + D)/2" if "F_w" not in notes[-1] else "")
-                + (
-                    f", L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}"
-                    if length
-                    else ""
-                )
-            )
+            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {rule.pitch} {what}"]
+            if "F_w" not in notes[-1]:
+                parts.append("d_m = (d + D)/2")
+            if length:
+                parts.append(f"L_we = {rule.length} {'B' if fam != 'tapered_roller' else 'B (cone width)'}")
+            notes.append(", ".join(parts))
     if fam in (
         "deep_groove_ball",
         "angular_contact_ball",
@@ -225,6 +280,14 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         "four_point_contact_ball",
     ):
         extra.update(conformity_inner=CONFORMITY_INNER, conformity_outer=CONFORMITY_OUTER)
+    if fam == "self_aligning_ball":
+        # ISO 281/76 assume this inner conformity for self-aligning ball bearings (physics.life.kinds);
+        # the outer raceway is the sphere through the ball centres
+        extra["conformity_inner"] = SELF_ALIGNING_CONFORMITY_INNER
+        notes.append(
+            f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}, inner conformity "
+            f"{SELF_ALIGNING_CONFORMITY_INNER}, outer raceway a sphere"
+        )
     if fam == "tapered_roller":
         half = TAPER_HALF_ANGLE
         extra.update(
@@ -267,10 +330,9 @@ def _nominal_angle(entry: Entry, override: float | None) -> float:
         return float(entry.extra["contact_angle_deg"]) * DEG
     if fam == "four_point_contact_ball":
         return FOUR_POINT_ANGLE
-    if fam == "tapered_roller":
+    if fam in ("tapered_roller", "self_aligning_ball", "spherical_roller"):
+        # ISO 281:2007 Table 3 (self-aligning ball) and 7.2 (radial roller): e = 1.5 tan α
         return math.atan(float(entry.extra["e"]) / E_TAN_FACTOR)
-    if fam == "self_aligning_ball":
-        return 12.0 * DEG  # [M] typical of series 12/22 (NSK e ≈ 0.2-0.4 ⇒ α ≈ 8-15°)
     return 0.0
 
 
@@ -285,13 +347,33 @@ def with_element_diameter(est: Estimate, element_diameter: float, note: str) -> 
 
 
 def envelope_margins(est: Estimate) -> np.ndarray:
-    """(inner, outer) radial gaps [m] between the elements and bore/outside diameter (> 0 = fits)."""
+    """(inner, outer) radial gaps [m] between the elements and bore/outside diameter (> 0 = fits).
+
+    Needle rows without inner ring are measured against F_w (their ``bore``); spherical rollers with
+    their axes inclined by α: radial half extent (D_we cos α + L_we sin α)/2.
+    """
     e = est.entry
     if est.entry.family in ("thrust_ball",):
         half = 0.5 * est.element_diameter
     elif est.entry.family == "thrust_cylindrical_roller":
         half = 0.5 * est.effective_length
+    elif est.entry.family == "spherical_roller":
+        a = est.contact_angle
+        half = 0.5 * (est.element_diameter * math.cos(a) + est.effective_length * math.sin(a))
     else:
         half = 0.5 * est.extra.get("large_diameter", est.element_diameter)
     r = 0.5 * est.pitch_diameter
     return np.array([r - half - 0.5 * e.bore, 0.5 * e.outer_diameter - (r + half)])
+
+
+def axial_margin(est: Estimate) -> float:
+    """Axial gap [m] between the outer end of a spherical roller row and the ring face (> 0 = fits).
+
+    A row's roller centre sits at z = (d_m/2) tan α (on the line from the bearing centre at angle α);
+    the roller reaches z + (L_we cos α + D_we sin α)/2, which must stay within B/2.
+    """
+    a = est.contact_angle
+    reach = est.extra["row_offset"] + 0.5 * (
+        est.effective_length * math.cos(a) + est.element_diameter * math.sin(a)
+    )
+    return 0.5 * est.entry.width - reach

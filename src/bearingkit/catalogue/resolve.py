@@ -32,8 +32,8 @@ class Resolved:
     ----------
     designation : designation.Designation
     estimate : Estimate
-    bearing_type : str or None
-        ``[bearing] type`` of the input format; None where the row kind is not in the engine yet.
+    bearing_type : str
+        ``[bearing] type`` of the input format.
     geometry : dict
         ``[geometry]`` fields in SI (m, rad; counts and conformities as numbers).
     C, C0 : float or None [N]
@@ -43,7 +43,7 @@ class Resolved:
 
     designation: object
     estimate: Estimate
-    bearing_type: str | None
+    bearing_type: str
     geometry: dict
     C: float | None
     C0: float | None
@@ -77,8 +77,9 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) 
     notes = list(est.notes)
     bearing_type = tables.FAMILIES[des.family][1]
     geometry = _geometry(est, des, notes, clearance_position)
-    if des.suffixes:
-        notes.append(f"suffixes {' '.join(des.suffixes)} noted (no effect on the mechanics)")
+    plain = [s for s in des.suffixes if s not in designation_mod.BORE_SUFFIXES]
+    if plain:
+        notes.append(f"suffixes {' '.join(plain)} noted (no effect on the mechanics)")
     if entry.C is not None:
         notes.append(
             f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
@@ -133,20 +134,12 @@ def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
         "pitch_diameter": est.pitch_diameter,
     }
     fam = des.family
-    group = clearance_mod.CLEARANCE_GROUP.get(fam)
-    cls = des.clearance_class or "CN"
-    if des.clearance_class is not None and group is None:
-        raise InputError(
-            f"designation ({des.text!r}): clearance class {des.clearance_class} has no ISO 5753-1 radial "
-            "group for this type; give clearance explicitly in [geometry]"
-        )
-    clearance = None
-    if group is not None:
-        clearance = clearance_mod.clearance(group, e.bore, cls, position)
-        lo, hi = clearance_mod.clearance_range(group, e.bore, cls)
+    clearance = _clearance(est, des, notes, position)
+    if _tapered_bore(des):
         notes.append(
-            f"radial clearance {cls} (ISO 5753-1, {lo * 1e6:g}–{hi * 1e6:g} um): "
-            f"{clearance * 1e6:.3g} um at {position:.0%} of the class range"
+            "tapered bore (K 1:12, K30 1:30): the geometry is the cylindrical-bore estimate and the "
+            "clearance the UNMOUNTED one; the drive-up on the taper reduces it, give clearance_radial in "
+            "[geometry] for the mounted value"
         )
     if fam == "deep_groove_ball":
         g.update(element_diameter=est.element_diameter, clearance_radial=clearance)
@@ -164,6 +157,45 @@ def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
             conformity_inner=est.extra["conformity_inner"],
             conformity_outer=est.extra["conformity_outer"],
         )
+    elif fam == "four_point_contact_ball":
+        g.update(
+            element_diameter=est.element_diameter,
+            contact_angle=est.contact_angle,
+            conformity_inner=est.extra["conformity_inner"],
+            conformity_outer=est.extra["conformity_outer"],
+            clearance_radial=clearance,
+        )
+    elif fam == "self_aligning_ball":
+        g.update(
+            element_diameter=est.element_diameter,
+            contact_angle=est.contact_angle,
+            conformity_inner=est.extra["conformity_inner"],
+            clearance_radial=clearance,
+        )
+    elif fam == "spherical_roller":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            contact_angle=est.contact_angle,
+            clearance_radial=clearance,
+        )
+        notes.append("roller/raceway osculations: the builder's 0.98 (assumed; catalogues do not print them)")
+    elif fam == "needle_roller":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            clearance_radial=clearance,
+            inner_ring=est.extra["inner_ring"],
+            construction="machined",
+            profile={"name": "iso16281"},
+        )
+        notes.append("crowning: ISO/TS 16281 logarithmic profile (profile 'iso16281')")
+        if not est.extra["inner_ring"]:
+            g["bore"] = None  # no inner ring: the needles touch the shaft (F_w), nothing to fit inside
+            notes.append(
+                "no inner ring (RNA): the needles run on the shaft (F_w); the clearance then follows from "
+                "the shaft tolerance (NSK E1102 B245 Table 6: CN with a g5 shaft for F_w <= 180 mm)"
+            )
     elif fam == "thrust_ball":
         g.update(element_diameter=est.element_diameter, conformity=est.extra["conformity"])
     elif fam == "cylindrical_roller":
@@ -191,8 +223,44 @@ def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
             roller_angle=est.extra["roller_angle"],
             clearance=0.0,
         )
-    else:  # four-point, self-aligning: plain data until their row kinds exist
-        g.update(element_diameter=est.element_diameter, contact_angle=est.contact_angle, rows=est.rows)
-        g.update({k: v for k, v in est.extra.items()})
-        notes.append("no row kind for this type in the engine yet: the geometry is data only")
     return g
+
+
+def _clearance(est: Estimate, des, notes: list, position: float) -> float | None:
+    """The clearance of the designation's class (CN when none), or None where the type has no group.
+
+    Radial groups are ISO 5753-1's. Four-point (QJ) bearings are classed by their AXIAL clearance s_a; the
+    row takes the diametral P_d, and its arches give s_a = P_d / tan α0 (rows.four_point: a ball closes a
+    diagonal after P_d/2 radially or (P_d/2) cot α0 axially), so P_d = s_a tan α0.
+    """
+    e = est.entry
+    group = clearance_mod.CLEARANCE_GROUP.get(des.family)
+    if _tapered_bore(des) and des.family in clearance_mod.TAPERED_BORE_GROUP:
+        group = clearance_mod.TAPERED_BORE_GROUP[des.family]
+    cls = des.clearance_class or "CN"
+    if des.clearance_class is not None and group is None:
+        raise InputError(
+            f"designation ({des.text!r}): clearance class {des.clearance_class} has no ISO 5753-1 radial "
+            "group for this type; give clearance explicitly in [geometry]"
+        )
+    if group is None:
+        return None
+    value = clearance_mod.clearance(group, e.bore, cls, position)
+    lo, hi = clearance_mod.clearance_range(group, e.bore, cls)
+    if group in clearance_mod.AXIAL_GROUPS:
+        radial = value * math.tan(est.contact_angle)
+        notes.append(
+            f"axial clearance {cls} ({clearance_mod.GROUP_SOURCES[group]}, {lo * 1e6:g}-{hi * 1e6:g} um): "
+            f"{value * 1e6:.3g} um at {position:.0%} of the class range, i.e. P_d = s_a tan(alpha) = "
+            f"{radial * 1e6:.3g} um"
+        )
+        return radial
+    notes.append(
+        f"radial clearance {cls} ({clearance_mod.GROUP_SOURCES[group]}, {lo * 1e6:g}–{hi * 1e6:g} um): "
+        f"{value * 1e6:.3g} um at {position:.0%} of the class range"
+    )
+    return value
+
+
+def _tapered_bore(des) -> bool:
+    return any(s in designation_mod.BORE_SUFFIXES for s in des.suffixes)

@@ -17,8 +17,8 @@ from importlib import resources
 MM = 1e-3
 
 #: Family → (data file, bearing type of the input format, element kind). The bearing type is the
-#: ``[bearing] type`` the estimated geometry is written for; ``None`` where the row kind is not in the
-#: engine yet (four-point and self-aligning ball: the geometry is delivered as data only).
+#: ``[bearing] type`` the estimated geometry is written for (``io.kinds`` for four-point, self-aligning
+#: ball, spherical roller and needle roller bearings).
 FAMILIES: dict[str, tuple[str, str | None, str]] = {
     "deep_groove_ball": ("deep_groove_ball.csv", "deep_groove_ball", "ball"),
     "angular_contact_ball": ("angular_contact_ball.csv", "angular_contact_ball", "ball"),
@@ -27,13 +27,18 @@ FAMILIES: dict[str, tuple[str, str | None, str]] = {
         "angular_contact_pair",
         "ball",
     ),
-    "four_point_contact_ball": ("four_point_contact_ball.csv", None, "ball"),
-    "self_aligning_ball": ("self_aligning_ball.csv", None, "ball"),
+    "four_point_contact_ball": ("four_point_contact_ball.csv", "four_point_contact_ball", "ball"),
+    "self_aligning_ball": ("self_aligning_ball.csv", "self_aligning_ball", "ball"),
     "cylindrical_roller": ("cylindrical_roller.csv", "cylindrical_roller", "roller"),
     "tapered_roller": ("tapered_roller.csv", "tapered_roller", "roller"),
     "thrust_ball": ("thrust_ball.csv", "thrust_ball", "ball"),
     "thrust_cylindrical_roller": ("thrust_cylindrical_roller.csv", "cylindrical_roller_thrust", "roller"),
+    "spherical_roller": ("spherical_roller.csv", "spherical_roller", "roller"),
+    "needle_roller": ("needle_roller.csv", "needle_roller", "roller"),
 }
+#: Prefix of the needle roller bearings without inner ring (RNA): each NA row of the data file has an RNA
+#: twin with bore F_w (the shaft is the inner raceway) and the same ratings (NSK E1102 prints one).
+NO_INNER_RING_PREFIX = "R"
 
 #: CSV column (mm or N) → Entry attribute (SI). Other columns go to ``Entry.extra`` as text.
 _LENGTHS = {"d_mm": "bore", "D_mm": "outer_diameter", "r_min_mm": "chamfer"}
@@ -113,7 +118,43 @@ def entries(family: str) -> dict[str, Entry]:
             extra=extra,
             **kw,
         )
+    if family == "needle_roller":
+        out.update({e.designation: e for e in map(_without_inner_ring, list(out.values()))})
     return out
+
+
+def _without_inner_ring(e: Entry) -> Entry:
+    """The RNA twin of an NA row: bore = roller inscribed diameter F_w, the same outer ring and ratings."""
+    return Entry(
+        designation=NO_INNER_RING_PREFIX + e.designation,
+        family=e.family,
+        series=NO_INNER_RING_PREFIX + e.series,
+        bore=e.number("F_w_mm", MM),
+        outer_diameter=e.outer_diameter,
+        width=e.width,
+        chamfer=e.chamfer,
+        C=e.C,
+        C0=e.C0,
+        source=f"{e.source}; without inner ring: d = F_w",
+        extra={**e.extra, "inner_ring": "no"},
+    )
+
+
+@functools.cache
+def reference_table(name: str) -> tuple[dict, ...]:
+    """Rows (text) of a comparison table ``data/<name>.csv``: data of other catalogues or of related
+    products kept to check the estimate, not to resolve designations (``data/SOURCES.md``)."""
+    return tuple(_read(f"{name}.csv"))
+
+
+def reference_ratings(name: str) -> dict[str, tuple[float, float, str]]:
+    """A comparison table with ``Cr_N``, ``C0r_N`` columns: designation → (C, C0, source) [N].
+
+    ``four_point_radial_skf``: SKF's radial C, C0 of QJ bearings; ``spherical_roller_skf``: SKF's E design.
+    """
+    return {
+        r["designation"]: (float(r["Cr_N"]), float(r["C0r_N"]), r["source"]) for r in reference_table(name)
+    }
 
 
 def all_entries() -> list[Entry]:

@@ -19,7 +19,7 @@ from rich.console import Console
 from rich.table import Table
 
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
-from bearingkit.cli.tables import case_table, friction_table, rating_table, warnings_text
+from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
@@ -42,7 +42,10 @@ def one_line_errors(fn):
         try:
             return fn(*args, **kwargs)
         except InputError as exc:
-            _fail(str(exc))
+            message, file = str(exc), kwargs.get("file")
+            if file is not None and not message.startswith(f"{file}:"):  # every error names the file
+                message = f"{file}: {message}"
+            _fail(message)
 
     return wrapper
 
@@ -210,12 +213,12 @@ def analyze(
         from bearingkit.cli.operating_tables import operating_text
 
         for c in data["cases"]:
-            console.print(case_table(c))
+            console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
-                console.print(case_table(c["flexible"]))
+                console.print(case_table(c["flexible"], data["free_dofs"]))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
     _fail_unconverged(file, a)
@@ -225,7 +228,7 @@ def analyze(
 def schema():
     """Print the JSON Schema of the input file."""
     from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
-    from bearingkit.io.schema import json_schema
+    from bearingkit.io.schema_cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
 
@@ -294,7 +297,14 @@ def rating(
             console.print(lubrication_table(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
-    _fail_unconverged(file, a)
+        if "duty_cycle" in data:
+            cycle = data["duty_cycle"]
+            console.print(duty_cycle_table(cycle))
+            for b in cycle["bins"]:
+                console.print(warnings_text([f"{b['bin']}: {w}" for w in b["warnings"]]))
+            console.print(warnings_text([], cycle["notes"]))
+    if a.n_cases:
+        _fail_unconverged(file, a)
 
 
 #: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).
@@ -316,7 +326,8 @@ def friction(
     model: str = typer.Option(
         "components",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard bearings) | trb (tapered rows).",
+        help="components (physics, per contact) | skf | palmgren (standard and self-aligning bearings) | trb "
+        "(tapered rows) | slewing (slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
@@ -382,7 +393,13 @@ def run_flagship(
 @app.command()
 @one_line_errors
 def study(
-    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/."),
+    file: Path = typer.Argument(..., help="Study file (TOML), see examples/studies/; or a bearing file."),
+    list_outputs: bool = typer.Option(
+        False, "--list-outputs", help="List the outputs of FILE's bearing (generic evaluator) with units."
+    ),
+    list_factors: bool = typer.Option(
+        False, "--list-factors", help="List the factor paths of FILE's bearing with units and values."
+    ),
     scheduler: str = typer.Option(None, "--scheduler", help="Dask scheduler address, e.g. tcp://host:8786."),
     workers: int = typer.Option(None, "--workers", help="Local worker processes (> 1: process pool)."),
     resume: bool = typer.Option(False, "--resume", help="Reuse the finished chunks in --out."),
@@ -392,7 +409,16 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
-    from bearingkit.studies.__main__ import run_cli
+    from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
+    from bearingkit.studies.__main__ import list_factors as factors_of
+    from bearingkit.studies.__main__ import list_outputs as outputs_of
+
+    if list_outputs or list_factors:
+        if list_outputs:
+            print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
+        if list_factors:
+            print_table(factors_of(file), FACTOR_COLUMNS, echo=typer.echo)
+        return
 
     run_cli(
         file,
@@ -417,7 +443,25 @@ def report(
     lubricant: str = _LUBRICANT_OPTION,
     contamination: str = _CONTAMINATION_OPTION,
 ):
-    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings."""
+    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings.
+
+    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``)."""
+    from bearingkit.cli.shaft_tables import is_shaft_file
+
+    if is_shaft_file(file):
+        given = [f for f, v in (("--load", load), ("--case", case), ("--speed", speed)) if v]
+        given += [f for f, v in (("--temperature", temperature), ("--lubricant", lubricant)) if v]
+        if given:
+            raise InputError(
+                f"{file}: {', '.join(given)} apply to a bearing file; a shaft file's [[load_cases]] and "
+                "[lubricant] give them"
+            )
+        from bearingkit.systems.input import load_shaft_file
+        from bearingkit.systems.shaft_analysis import ShaftAnalysis
+
+        path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
+        console.print(f"wrote {path}")
+        return
     a = _analysis(
         file,
         load,
@@ -438,7 +482,7 @@ def catalogue(
     as_json: bool = _JSON_OPTION,
 ):
     """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
-    from bearingkit.catalogue import estimate, find, ratings
+    from bearingkit.catalogue import basis, estimate, find, ratings
     from bearingkit.cli.tables import _num
 
     rows = find(pattern)
@@ -461,6 +505,7 @@ def catalogue(
                 "C0_catalogue_N": e.C0,
                 "C_estimate_N": c,
                 "C0_estimate_N": c0,
+                "rating_basis": basis(e.family),
                 "source": e.source,
             }
         )
@@ -484,6 +529,9 @@ def catalogue(
         )
     console.print(table)
     console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
+    for fam in dict.fromkeys(r["family"] for r in out):
+        if basis(fam) != "radial":
+            console.print(f"{fam.replace('_', ' ')}: C, C0 are {basis(fam)}")
 
 
 @app.command()
@@ -491,23 +539,29 @@ def catalogue(
 def shaft(
     file: Path = typer.Argument(..., help="Shaft file (TOML with units), see docs/systems.md."),
     as_json: bool = _JSON_OPTION,
+    report: Path = typer.Option(
+        None, "--report", help="Write the HTML report (shaft lines, every bearing, system life) here."
+    ),
     plot: Path = typer.Option(None, "--plot", help="Write deflection and moment lines (PNG) per case here."),
     stiffness: Path = typer.Option(
         None, "--stiffness", help="Write every bearing's 5x5 stiffness per case to this .csv or .json."
     ),
+    contamination: str = _CONTAMINATION_OPTION,
+    model: str = typer.Option(
+        "components", "--friction-model", help="Friction model of every bearing: components | skf | palmgren."
+    ),
 ):
-    """A shaft on several bearings: reactions, seat tilts, shaft lines, lives; exit 1 if a case fails."""
-    import math
-
-    from rich.markup import escape
-
-    from bearingkit.cli.tables import _num
-    from bearingkit.systems.input import load_shaft_file, shaft_dict
+    """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and
+    friction, system life; exit 1 if a case fails."""
+    from bearingkit.cli.shaft_tables import shaft_case_tables
+    from bearingkit.systems.input import load_shaft_file
+    from bearingkit.systems.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
 
     inp = load_shaft_file(file)
-    result = inp.solve()
-    data = shaft_dict(inp, result)
+    analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
+    result = analysis.result
+    data = analysis.to_dict()
     if stiffness is not None:
         write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
     if plot is not None:
@@ -515,51 +569,19 @@ def shaft(
 
         for c, name in enumerate(result.loads.names):
             write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
+    if report is not None:
+        written = analysis.report(report)
     if as_json:
         _print_json(file, data)
     else:
         console.print(f"{inp.system.name}  ({file})", markup=False, highlight=False)
         for c in data["cases"]:
-            s, life = c["shaft"], c["rating"]["system"]
-            status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
-            caption = (
-                f"shaft: max deflection {s['max_radial_deflection_m'] * 1e6:.4g} µm at "
-                f"{s['max_radial_deflection_at_m'] * 1e3:.4g} mm, max bending moment "
-                f"{s['max_bending_moment_Nm']:.4g} N·m at {s['max_bending_moment_at_m'] * 1e3:.4g} mm; "
-                f"system L10h = {_num(life['L10h_h'], fmt='.4g')} h"
-            )
-            table = Table(title=escape(f"case {c['case']!r}: {status}"), caption=escape(caption))
-            for col in (
-                "bearing",
-                "z mm",
-                "F_r N",
-                "F_a N",
-                "tilt mrad",
-                "seat u µm",
-                "L10h h",
-                "s0",
-                "M_fr N·m",
-            ):
-                table.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
-            for b in c["bearings"]:
-                u = b["seat_displacement"]
-                r = c["rating"]["bearings"].get(b["name"], {})
-                table.add_row(
-                    b["name"],
-                    f"{b['position_m'] * 1e3:.4g}",
-                    f"{b['radial_load_N']:.1f}",
-                    f"{round(b['axial_load_N'], 1) + 0.0:.1f}",
-                    f"{b['misalignment_rad'] * 1e3:.3g}",
-                    f"{math.hypot(u['u_x_m'], u['u_y_m']) * 1e6:.3g}",
-                    _num(r.get("L10h_h"), fmt=".4g"),
-                    _num(r.get("static_safety"), fmt=".3g"),
-                    _num(c["friction_Nm"].get(b["name"]), fmt=".3g"),
-                )
-            console.print(table)
-            for w in c["warnings"]:
-                console.print(f"  warning: {w}", markup=False, highlight=False)
+            for part in shaft_case_tables(c):
+                console.print(part)
         for note in data["notes"]:
             console.print(f"  note: {note}", markup=False, highlight=False)
+        if report is not None:
+            console.print(f"wrote {written}", markup=False, highlight=False)
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)

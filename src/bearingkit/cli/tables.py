@@ -33,19 +33,40 @@ def _g(x: float) -> str:
     return f"{(x if abs(x) > 1e-9 else 0.0) + 0.0:.6g}"
 
 
-def case_table(c: dict) -> Table:
-    """A rich table of one case dict (from :func:`bearingkit.io.export.case_dict`)."""
+#: Load component held by each DOF, in the solver's order.
+_DOF_OF_LOAD = {"F_x": "u_x", "F_y": "u_y", "F_z": "u_z", "M_x": "theta_x", "M_y": "theta_y"}
+
+
+def _load_text(ld: dict, free_dofs: list[str] | None) -> str:
+    """``F = (…) N, M = (…) N·m``; a component at a fixed DOF is the reaction holding it: marked ``*``."""
+
+    def one(name: str, unit: str) -> str:
+        value = _g(ld[f"{name}_{unit}"])
+        fixed = free_dofs is not None and _DOF_OF_LOAD[name] not in free_dofs
+        return f"{value}*" if fixed and value != "0" else value
+
+    f = ", ".join(one(n, "N") for n in ("F_x", "F_y", "F_z"))
+    m = ", ".join(one(n, "Nm") for n in ("M_x", "M_y"))
+    return f"F = ({f}) N, M = ({m}) N·m"
+
+
+def case_table(c: dict, free_dofs: list[str] | None = None) -> Table:
+    """A rich table of one case dict (from :func:`bearingkit.io.export.case_dict`).
+
+    ``free_dofs`` (the analysis' ``free_dofs``) marks load components that are reactions at fixed DOFs.
+    """
     d = c["displacement"]
     status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
     u = ", ".join(_shown(d[k], 1e6, DISPLACEMENT_NOISE) for k in ("u_x_m", "u_y_m", "u_z_m"))
     th = ", ".join(_shown(d[k], 1e3, DISPLACEMENT_NOISE) for k in ("theta_x_rad", "theta_y_rad"))
     caption = f"u = ({u}) µm, θ = ({th}) mrad; {status}, {c['iterations']} iterations"
     ld = c["load"]
-    title = (
-        f"case {c['case']!r}: F = ({_g(ld['F_x_N'])}, {_g(ld['F_y_N'])}, {_g(ld['F_z_N'])}) N, "
-        f"M = ({_g(ld['M_x_Nm'])}, {_g(ld['M_y_Nm'])}) N·m"
-    )
-    table = Table(title=escape(title), caption=escape(caption))
+    title = f"case {c['case']!r}: {_load_text(ld, free_dofs)}"
+    if "*" in title:
+        caption += "; * reaction holding a fixed DOF"
+    # wide enough for its title and caption on one line each (a narrow table would wrap them)
+    width = min(max(len(title), len(caption)) + 2, 110)
+    table = Table(title=escape(title), caption=escape(caption), min_width=width)
     for col in ("row", "loaded", "Q_max N", "p_max MPa", "F_axial N", "F_radial N"):
         table.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
     for r in c["rows"]:
@@ -114,6 +135,38 @@ def rating_table(c: dict) -> Table:
     return table
 
 
+def duty_cycle_table(d: dict) -> Table:
+    """A rich table of a duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`)."""
+    kind = d["fraction_kind"]
+    title = f"duty cycle: {len(d['bins'])} bins, {kind} fractions, Palmgren–Miner"
+    caption = (
+        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev, L10r = {_compact(d['L10r_h'])} h, "
+        f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_compact(d['Lnmr_h'])} h"
+    )
+    table = Table(title=escape(title), caption=escape(caption))
+    for col in (
+        "bin", f"{kind} %", "rev %", "speed r/min", "F_r kN", "F_a kN", "L10r 10⁶rev", "L_nmr 10⁶rev",
+        "s0", "damage %",
+    ):
+        table.add_column(col, justify="left" if col == "bin" else "right", no_wrap=True)
+    for b in d["bins"]:
+        load = b["load"]
+        life = "no load" if b["no_load"] else _compact(b["L10r_rev"], 1e-6)
+        table.add_row(
+            escape(b["bin"]),
+            _num(b[f"{kind}_fraction"], 100.0, ".3g"),
+            _num(b["revolution_fraction"], 100.0, ".3g"),
+            _num(b["speed_rad_s"], 30 / math.pi),
+            _num(math.hypot(load["F_x_N"], load["F_y_N"]), 1e-3),
+            _num(load["F_z_N"], 1e-3),
+            life,
+            _compact(b["Lnmr_rev"], 1e-6),
+            _num(b["static_safety"], fmt=".3g"),
+            _num(b["damage_share"], 100.0, ".3g"),
+        )
+    return table
+
+
 def warnings_text(warnings, notes=()) -> Group:
     """Warnings (yellow) and notes (dim) of one case, one line each, for the console."""
     lines = [Text(f"  warning: {w}", style="yellow") for w in warnings]
@@ -134,16 +187,18 @@ def friction_table(c: dict):
         f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
         f"{c['temperature_C']:g} °C"
     )
-    parts = Table(title=escape(title))
+    # the title as its own line: a table title wraps to the (narrow) table's width
+    parts = Table()
     for col in ("component", "N·m", "share"):
         parts.add_column(col, justify="left" if col == "component" else "right", no_wrap=True)
     for name, value in f["components_Nm"].items():
         parts.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    if "rows_Nm" not in f:
-        return Group(parts, *(Text(f"  note: {n}", style="dim") for n in f["notes"]))
+    heading = Text(title, style="italic")
+    if "rows_Nm" not in f:  # the model's notes follow once, with the run's notes (not per case)
+        return Group(heading, parts)
     rows = Table(title="by row")
     for col in ("row", "N·m", "share"):
         rows.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
     for name, value in f["rows_Nm"].items():
         rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
-    return Group(parts, rows)
+    return Group(heading, parts, rows)

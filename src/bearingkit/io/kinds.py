@@ -17,10 +17,10 @@ from pydantic import Field
 
 from bearingkit.io import schema
 
-_ENVELOPE_ONLY = ("bore", "outer_diameter")
+_ENVELOPE_ONLY = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
 
 
-class FourPointContactBallGeometry(schema._BallBase):
+class FourPointContactBallGeometry(schema.BallBase, schema.Shoulders):
     """Single-row four-point contact ball bearing (QJ) — bearings.slewing.four_point_contact_ball."""
 
     contact_angle: schema.Angle | None = Field(
@@ -47,7 +47,7 @@ class SlewingEightPointGeometry(SlewingFourPointGeometry):
     row_spacing: schema.PositiveLength = Field(description="Axial distance of the two ball rows.")
 
 
-class SlewingCrossedRollerGeometry(schema._RollerBase):
+class SlewingCrossedRollerGeometry(schema.RollerBase):
     """Crossed roller slewing ring — bearings.slewing.slewing_ring_crossed_roller."""
 
     contact_angle: schema.Angle | None = Field(None, description="Contact normals ±α. Default 45 deg.")
@@ -56,7 +56,7 @@ class SlewingCrossedRollerGeometry(schema._RollerBase):
     )
 
 
-class SphericalRollerGeometry(schema._Envelope):
+class SphericalRollerGeometry(schema.Envelope):
     """Double-row spherical roller bearing — bearings.self_aligning.spherical_roller."""
 
     n_elements: schema.Count = Field(description="Rollers per row.")
@@ -78,7 +78,7 @@ class SphericalRollerGeometry(schema._Envelope):
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
 
 
-class SelfAligningBallGeometry(schema._BallBase):
+class SelfAligningBallGeometry(schema.BallBase):
     """Double-row self-aligning ball bearing — bearings.self_aligning.self_aligning_ball."""
 
     contact_angle: schema.Angle = Field(description="Contact angle α of the rows (0 < α < 45 deg).")
@@ -89,9 +89,12 @@ class SelfAligningBallGeometry(schema._BallBase):
         None, description="Radial internal clearance (negative: preload). Default 0."
     )
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
+    shoulder_height_inner: schema.ShoulderHeight | None = Field(
+        None, description="Inner groove shoulder height: a length or a fraction of D_w. Default 0.20 D_w."
+    )
 
 
-class NeedleRollerGeometry(schema._RollerBase):
+class NeedleRollerGeometry(schema.RollerBase):
     """Needle roller bearing — bearings.self_aligning.needle_roller."""
 
     clearance_radial: schema.Length | None = Field(

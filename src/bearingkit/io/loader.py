@@ -14,17 +14,17 @@ and forms the (C, 5) load matrix. Every malformed input raises
 from __future__ import annotations
 
 import dataclasses
-import tomllib
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
-from bearingkit.errors import InputError
-from bearingkit.io import kinds, schema
+from bearingkit.errors import InputError, did_you_mean, quote
+from bearingkit.io import kinds, schema, schema_cycle
+from bearingkit.io.messages import one_line, prefix_field, section_models
+from bearingkit.io.reading import parse_toml, read_text
 
 #: Inner-ring DOF names, in the solver's order.
 DOF_NAMES = schema.DOF_CHOICES
@@ -32,6 +32,17 @@ DOF_NAMES = schema.DOF_CHOICES
 LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
 #: SI units of the load components.
 LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+#: Most load cases of a bearing with a flexible ring ([geometry.ring] flexible, the default of a
+#: ball–column bearing): the coupled Newton solve keeps a (cases, n, n) Jacobian of the ~240 raceway
+#: offsets. Measured on the 2-core reference machine: 100 cases take 27 s and 270 MB through analyze.
+MAX_FLEXIBLE_LOAD_CASES = 100
+#: Most load cases in one HTML report: two figures per case (~1 s each) and a page a person reads.
+#: Measured: 20 cases of a deep groove ball bearing take about a minute. More: analyze --json.
+MAX_REPORT_CASES = 20
+#: Most contact points (load cases × Σ rows elements × slices) one run may ask for. Measured on a
+#: cylindrical roller bearing of 250 rollers × 200 slices: 2·10⁶ points peak at 260 MB through
+#: friction (212 MB analyze), 10⁷ at 900 MB. A seed-000 turntable (≈ 3,200 points) takes ≈ 600 cases.
+MAX_CASE_POINTS = 2_000_000
 #: Names accepted for ``--load KEY=VALUE`` on the command line → load-case field.
 LOAD_ALIASES: dict[str, str] = {
     **{k: k for k in (*LOAD_NAMES, "eccentricity", "speed", "temperature")},
@@ -66,7 +77,8 @@ def _standard(builder_name: str, renames: dict | None = None):
     def build(geometry: dict, material, name: str) -> BearingModel:
         from bearingkit.bearings import standard
 
-        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in ("bore", "outer_diameter")}
+        skip = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
+        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
         for old, new in (renames or {}).items():
             if old in kwargs:
                 kwargs[new] = kwargs.pop(old)
@@ -259,6 +271,10 @@ class BearingInput:
     options : bearingkit.analysis.quasistatic.SolverOptions
     sections : bearingkit.io.schema_operating.OperatingSections
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
+    duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
+        The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
+    tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
+        The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     """
 
     source: str
@@ -271,6 +287,8 @@ class BearingInput:
     free: np.ndarray
     options: object
     sections: object = None
+    duty_cycle: object = None
+    tolerances: tuple = ()
 
     @property
     def bearing_type(self) -> str:
@@ -284,11 +302,24 @@ class BearingInput:
         known = {c.name: c for c in self.cases}
         for n in names:
             if n not in known:
-                raise InputError(f"{self.source}: case ({n!r}) not in the file; cases are {list(known)}")
+                listed = f"cases are {quote(list(known))}" if known else "the file has no load cases"
+                raise InputError(
+                    f"{self.source}: case ({quote(n)}) not in the file; {listed}{did_you_mean(n, known)}"
+                )
         return dataclasses.replace(self, cases=tuple(known[n] for n in names))
+
+    def check_cases(self, limit: int, purpose: str) -> BearingInput:
+        """``self`` when it holds at most ``limit`` load cases, else InputError naming ``purpose``."""
+        if len(self.cases) > limit:
+            raise InputError(
+                f"{self.source}: load_cases ({len(self.cases)} cases) must be at most {limit} for "
+                f"{purpose}; select some with --case or split the file"
+            )
+        return self
 
     def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
         """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
+        _check_case_count(self.source, self.model, len(cases))
         _check_fixed_loads(self.source, cases, self.free)
         _check_single_tapered(self.source, self.model, cases, self.free)
         return dataclasses.replace(self, cases=tuple(cases))
@@ -315,24 +346,17 @@ class BearingInput:
 # Entry points.
 # ---------------------------------------------------------------------------------------------
 def load_file(path) -> BearingInput:
-    """Read and validate a TOML input file; InputError (one line naming the file) if malformed."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(
-            f"{path}: cannot read the file ({type(exc).__name__}: {exc})".replace("\n", " ")
-        ) from None
-    return loads(text, source=str(path))
+    """Read and validate a TOML input file; InputError (one line naming the file) if malformed.
+
+    Only a regular file of at most :data:`bearingkit.io.reading.MAX_INPUT_BYTES` is read
+    (:func:`bearingkit.io.reading.read_text`).
+    """
+    return loads(read_text(path), source=str(path))
 
 
 def loads(text: str, source: str = "<string>") -> BearingInput:
     """Validate TOML text (see :func:`load_file`)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{source}: not valid TOML ({exc})".replace("\n", " ")) from None
-    return from_dict(data, source)
+    return from_dict(parse_toml(text, source), source)
 
 
 def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
@@ -341,10 +365,11 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
+    cycle = {k: data[k] for k in schema_cycle.SECTIONS if k in data}  # validated by schema_cycle
     try:
-        spec = schema.BearingFile.model_validate(data)
+        spec = schema.BearingFile.model_validate({k: v for k, v in data.items() if k not in cycle})
     except ValidationError as exc:
-        raise _one_line(source, exc, (), _section_models(None)) from None
+        raise one_line(source, exc, (), section_models(None)) from None
     if spec.bearing.designation is not None:
         spec = _from_designation(source, spec)
     elif "geometry" not in data:
@@ -353,15 +378,16 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     try:
         geometry = gmodel.model_validate(_profile_as_table(spec.geometry))
     except ValidationError as exc:
-        raise _one_line(source, exc, ("geometry",), _section_models(gmodel)) from None
+        raise one_line(source, exc, ("geometry",), section_models(gmodel)) from None
     material = _material(source, spec.material)
     lubricant = _lubricant(source, spec.lubricant)
     gdict = geometry.model_dump()
     try:
         model = BUILDERS[spec.bearing.type](gdict, material, spec.bearing.name)
     except InputError as exc:
-        raise InputError(f"{source}: {_prefix_field(str(exc), 'geometry', gdict)}") from None
+        raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
     _check_envelope(source, model, gdict)
+    _check_shoulders(source, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -370,10 +396,16 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     }
     from bearingkit.io.schema_operating import validate_sections
 
-    sections = validate_sections(spec, source, _one_line)
+    sections = validate_sections(spec, source, one_line)
     cases = tuple(_load_case(c) for c in spec.load_cases)
+    _check_case_count(source, model, len(cases))
     _check_fixed_loads(source, cases, free)
     _check_single_tapered(source, model, cases, free)
+    duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), _load_case)
+    if duty is not None:
+        _check_case_count(source, model, len(duty.bins), "duty_cycle")
+        _check_fixed_loads(source, duty.bins, free)
+        _check_single_tapered(source, model, duty.bins, free)
     return BearingInput(
         source=source,
         spec=spec,
@@ -385,7 +417,19 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         free=free,
         options=SolverOptions(**opts),
         sections=sections,
+        duty_cycle=duty,
+        tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
     )
+
+
+def _check_shoulders(source: str, model, gdict: dict) -> None:
+    """Refuse shoulder heights above the groove depth (one line; :mod:`bearingkit.io.shoulders`)."""
+    from bearingkit.io.shoulders import shoulder_fractions
+
+    try:
+        shoulder_fractions(gdict, model)
+    except InputError as exc:
+        raise InputError(f"{source}: {exc}") from None
 
 
 #: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)
@@ -395,9 +439,9 @@ _CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inne
 
 def _catalogue_value(key: str, value):
     """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
-    if isinstance(value, (dict, str, int)) and not isinstance(value, bool):
+    if isinstance(value, (dict, str, int, bool)):
         return value
-    if key.startswith("conformity"):
+    if key.startswith(("conformity", "osculation")):
         return float(value)
     return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
 
@@ -408,17 +452,10 @@ def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFi
 
     header = spec.bearing
     try:
-        found = resolve(header.designation, C=header.C)
+        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
     except InputError as exc:
         field = "bearing." if str(exc).startswith("designation") else ""
         raise InputError(f"{source}: {field}{exc}") from None
-    if found.bearing_type is None:
-        raise InputError(
-            f"{source}: bearing.designation ({header.designation!r}): "
-            f"{found.designation.family.replace('_', ' ')} "
-            "bearings have no row kind in the engine yet; the estimated geometry is available from "
-            "bearingkit.catalogue.resolve"
-        )
     if header.type and header.type != found.bearing_type:
         raise InputError(
             f"{source}: bearing.type ({header.type!r}) does not match designation {header.designation!r} "
@@ -458,7 +495,7 @@ def parse_load_options(items: Sequence[str], name: str = "command line") -> Load
     try:
         spec = schema.LoadCaseSpec.model_validate({"name": name, **fields})
     except ValidationError as exc:
-        raise _one_line("--load", exc, (), {"": schema.LoadCaseSpec}) from None
+        raise one_line("--load", exc, (), {"": schema.LoadCaseSpec}) from None
     return _load_case(spec)
 
 
@@ -492,14 +529,48 @@ def _check_single_tapered(source: str, model, cases, free) -> None:
             )
 
 
+def max_cases(model) -> int:
+    """Most load cases one run of ``model`` may take under the caps above (a study of more cases
+    solves them in runs of at most this many: :mod:`bearingkit.studies.generic`)."""
+    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
+    points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
+    most = MAX_FLEXIBLE_LOAD_CASES if flexible else schema.MAX_LOAD_CASES
+    return max(1, min(most, MAX_CASE_POINTS // max(points, 1)))
+
+
+def _check_case_count(source: str, model, n_cases: int, section: str = "load_cases") -> None:
+    """Refuse more load cases (or duty-cycle bins: one batch as well) than the solver can take in
+    bounded time and memory (caps above)."""
+    if n_cases > schema.MAX_LOAD_CASES:
+        raise InputError(f"{source}: {section} ({n_cases} cases) must be at most {schema.MAX_LOAD_CASES}")
+    # a ball–column model carries its RingOptions (flexible by default, [geometry.ring] or not)
+    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
+    if flexible and n_cases > MAX_FLEXIBLE_LOAD_CASES:
+        raise InputError(
+            f"{source}: {section} ({n_cases} cases) must be at most {MAX_FLEXIBLE_LOAD_CASES} with a "
+            "flexible ring ([geometry.ring] flexible = true); split the file or set flexible = false"
+        )
+    points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
+    if n_cases * points > MAX_CASE_POINTS:
+        raise InputError(
+            f"{source}: {section} ({n_cases} cases × {points} contact points) must stay within "
+            f"{MAX_CASE_POINTS:.0e} contact points per run; use fewer cases, elements or n_slices"
+        )
+
+
 def _check_fixed_loads(source: str, cases, free) -> None:
-    for c in cases:
-        for i in np.flatnonzero(~np.asarray(free)):
-            if c.load[i] != 0.0:
-                raise InputError(
-                    f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
-                    f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
-                )
+    fixed = np.flatnonzero(~np.asarray(free))
+    if not len(cases) or not fixed.size:
+        return
+    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
+    bad = np.argwhere(loads != 0.0)
+    if bad.size:
+        k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find
+        c, i = cases[k], fixed[j]
+        raise InputError(
+            f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
+            f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
+        )
 
 
 def _material(source: str, spec: schema.MaterialSpec | None):
@@ -509,7 +580,10 @@ def _material(source: str, spec: schema.MaterialSpec | None):
         return get_material("GCr15")
     if spec.name is not None:
         if spec.name not in MATERIALS:
-            raise InputError(f"{source}: material.name ({spec.name!r}) must be one of {', '.join(MATERIALS)}")
+            raise InputError(
+                f"{source}: material.name ({quote(spec.name)}) must be one of {', '.join(MATERIALS)}"
+                f"{did_you_mean(spec.name, MATERIALS)}"
+            )
         return MATERIALS[spec.name]
     try:
         return Material(
@@ -529,7 +603,10 @@ def _lubricant(source: str, spec: schema.LubricantSpec | None):
     if spec is None:
         return None
     if spec.name not in LUBRICANTS:
-        raise InputError(f"{source}: lubricant.name ({spec.name!r}) must be one of {', '.join(LUBRICANTS)}")
+        raise InputError(
+            f"{source}: lubricant.name ({quote(spec.name)}) must be one of {', '.join(LUBRICANTS)}"
+            f"{did_you_mean(spec.name, LUBRICANTS)}"
+        )
     return LUBRICANTS[spec.name]
 
 
@@ -577,58 +654,3 @@ def _check_envelope(source: str, model: BearingModel, geometry: dict) -> None:
 
 def _mm(x) -> str:
     return "not given" if x is None else f"{x * 1e3:.6g} mm"
-
-
-def _prefix_field(message: str, section: str, fields: dict) -> str:
-    """``"conformity (0.4) …"`` → ``"geometry.conformity (0.4) …"`` when the field is in the section."""
-    head = message.split(" ", 1)[0]
-    if head in fields:
-        return f"{section}.{message}"
-    return f"{section}: {message}"
-
-
-def _section_models(geometry_model) -> dict:
-    models = {
-        "": schema.BearingFile,
-        "bearing": schema.BearingHeader,
-        "material": schema.MaterialSpec,
-        "lubricant": schema.LubricantSpec,
-        "load_cases": schema.LoadCaseSpec,
-        "solver": schema.SolverSpec,
-    }
-    if geometry_model is not None:
-        models["geometry"] = geometry_model
-        models["geometry.profile"] = schema.ProfileSpec
-    return models
-
-
-def _dotted(loc) -> str:
-    out = ""
-    for part in loc:
-        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
-    return out
-
-
-def _one_line(source: str, exc: ValidationError, prefix: tuple, models: dict) -> InputError:
-    """The first pydantic error as one line: FILE: field (value): what was expected."""
-    err = exc.errors(include_url=False)[0]
-    loc = (*prefix, *err["loc"])
-    path = _dotted(loc)
-    kind, value = err["type"], err.get("input")
-    shown = repr(value) if not isinstance(value, dict) else "a table"
-    if len(shown) > 60:
-        shown = shown[:57] + "..."
-    if kind == "value_error":
-        msg = str(err["ctx"]["error"]).replace("\n", " ")
-        field = str(err["loc"][-1]) if err["loc"] else ""
-        text = path + msg[len(field) :] if field and msg.startswith(field) else f"{path}: {msg}"
-    elif kind == "missing":
-        text = f"{path}: missing required field"
-    elif kind == "extra_forbidden":
-        section = ".".join(str(p) for p in loc[:-1] if not isinstance(p, int))
-        model = models.get(section)
-        valid = f"; expected one of {', '.join(model.model_fields)}" if model is not None else ""
-        text = f"{path} ({shown}): unknown field{valid}"
-    else:
-        text = f"{path} ({shown}): {err['msg']}"
-    return InputError(f"{source}: {text}".replace("\n", " "))

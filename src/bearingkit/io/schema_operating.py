@@ -20,13 +20,13 @@ from bearingkit.io.schema import (
     Length,
     NonNegativeLength,
     PositiveLength,
+    Strict,
     Temperature,
-    _Strict,
     quantity,
 )
 
 
-class OperatingSpec(_Strict):
+class OperatingSpec(Strict):
     """``[operating]``: speed effects, imposed misalignment, preload and temperatures (docs/operating.md)."""
 
     speed_effects: bool | None = Field(
@@ -56,7 +56,7 @@ class OperatingSpec(_Strict):
     )
 
 
-class FitsSpec(_Strict):
+class FitsSpec(Strict):
     """``[fits]``: shaft and housing seats → operating clearance (docs/operating.md)."""
 
     shaft: str | None = Field(None, description="ISO 286 field of the shaft seat, e.g. k5.")
@@ -72,7 +72,7 @@ class FitsSpec(_Strict):
     housing_material: str | None = Field(None, description="Material preset (default structural_steel).")
 
 
-class LubricationSpec(_Strict):
+class LubricationSpec(Strict):
     """``[lubrication]``: cleanliness, roughness and grease data (docs/operating.md)."""
 
     contamination: str | Dimensionless | None = Field(

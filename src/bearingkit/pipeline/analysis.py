@@ -217,10 +217,19 @@ class Analysis:
                 rotating=op.rotating,
                 reliability=op.reliability,
                 load_ratings=self.load_ratings,
+                shoulder_height=self._shoulder_heights(),
                 **life,
             ), None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
+
+    def _shoulder_heights(self):
+        """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""
+        if isinstance(self.input, ModelInput):
+            return None
+        from bearingkit.io.shoulders import shoulder_fractions
+
+        return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
     @functools.cached_property
     def load_diagram(self):
@@ -238,6 +247,31 @@ class Analysis:
     def rating(self):
         """RatingResult, or None when the bearing cannot be rated (:attr:`notes` say why)."""
         return self._rating[0]
+
+    @functools.cached_property
+    def duty_cycle(self):
+        """DutyCycleResult: every ``[[duty_cycle]]`` bin rated (one batch) and the combined life
+        (Palmgren–Miner, :mod:`bearingkit.pipeline.duty_cycle`); None when the input has no duty cycle."""
+        if getattr(self.input, "duty_cycle", None) is None:
+            return None
+        from bearingkit.pipeline.duty_cycle import at_rest, bins_input, summarise
+
+        def sub(bearing, operating):
+            return Analysis(
+                bearing,
+                operating,
+                friction_model=self.friction_model,
+                load_ratings=self.load_ratings,
+                friction_options=self.friction_options,
+            )
+
+        cycle = self.input.duty_cycle
+        bins = sub(*bins_input(self))
+        rest = at_rest(cycle)
+        turning = None
+        if rest.any() and not rest.all():  # lives of the turning bins alone: a_ISO and hours need speed
+            turning = sub(*bins_input(self, np.flatnonzero(~rest)))
+        return summarise(cycle, bins, turning)
 
     # ------------------------------------------------------------------------------- messages
     @property
@@ -266,7 +300,7 @@ class Analysis:
         return out
 
     def _free_tilt(self, case: int) -> str | None:
-        res, free = self.statics, self.input.free
+        res, free = self.statics, self.setup.free
         if not (free[3] or free[4]) or not _coplanar(res.model) or not res.converged[case]:
             return None
         tilt = float(np.hypot(*res.displacement[case, 3:5]))
@@ -347,11 +381,17 @@ class Analysis:
                 d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
             d["warnings"] = self.warnings[i]
             cases.append(d)
-        free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), b.free, strict=True) if f]
+        # the DOFs the statics were solved with (the default fixed tilt of a single row included)
+        free_used = self.setup.free
+        free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), free_used, strict=True) if f]
         return {**self._header(), "free_dofs": free, "cases": cases, "notes": self.notes}
 
     def rating_dict(self) -> dict:
-        """Ratings and lives of every case (``bearingkit rating --json``); InputError when not rateable."""
+        """Ratings and lives of every case (``bearingkit rating --json``) and of the duty cycle, when the
+        input has one; InputError when not rateable."""
+        if self.n_cases == 0 and self.duty_cycle is not None:  # a file may give only its load spectrum
+            cycle = self.duty_cycle.to_dict()
+            return {**self._header(), "cases": [], "notes": cycle["notes"], "duty_cycle": cycle}
         if self.rating is None:
             raise InputError(f"{self.input.source}: {self._rating[1]}")
         cases = []
@@ -361,7 +401,10 @@ class Analysis:
                 d["lubrication"] = self.lubrication.to_dict(i)
             d["warnings"] = list(dict.fromkeys([*self.warnings[i], *d.get("warnings", [])]))
             cases.append(d)
-        return {**self._header(), "cases": cases, "notes": self.notes}
+        out = {**self._header(), "cases": cases, "notes": self.notes}
+        if self.duty_cycle is not None:
+            out["duty_cycle"] = self.duty_cycle.to_dict()
+        return out
 
     def friction_dict(self, model: str | None = None) -> dict:
         """Friction of every case by ``model`` (``bearingkit friction --json``)."""

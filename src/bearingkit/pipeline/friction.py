@@ -133,7 +133,8 @@ def _engineering(model: str) -> Callable:
         envelope = {}
         if geometry.get("bore") is not None and geometry.get("outer_diameter") is not None:
             envelope = {"bore_diameter": geometry["bore"], "outside_diameter": geometry["outer_diameter"]}
-        res = engineering_friction_torque(
+        res = analysis._in_file(
+            engineering_friction_torque,
             bearing.model,
             load_radial=np.hypot(load[:, 0], load[:, 1]),
             load_axial=np.abs(load[:, 2]),

@@ -58,6 +58,55 @@ def describe_operating_point(analysis) -> str:
     )
 
 
+#: Row kinds the component friction model covers (tapered rows: the seed-001 model behind the same name).
+_COMPONENT_KINDS = {"ball", "cylindrical", "tapered"}
+
+
+@dataclasses.dataclass(frozen=True)
+class WholeBearingFriction:
+    """A catalogue model's friction (SKF, Palmgren …) in the shape the report draws: one "row", the whole
+    bearing, and no split between the rings (torques in N·m, arrays (C,))."""
+
+    total: np.ndarray
+    components: dict
+    by_row: dict
+    references: tuple
+    model: str = ""
+    torque_inner: None = None
+    torque_outer: None = None
+
+
+def _report_friction(analysis):
+    """The friction the report shows, and a run note: the analysis's model; when that is the component
+    model and it does not cover the bearing (a spherical roller, self-aligning ball or needle row), the
+    first catalogue model that applies, for the whole bearing."""
+    friction = analysis.friction
+    if friction is not None and hasattr(friction.native, "by_row"):
+        return friction.native, []
+    kinds = {r.kind for r in analysis.input.model.rows}
+    if friction is None and (analysis.friction_model != "components" or kinds <= _COMPONENT_KINDS):
+        return None, []  # the component model covers the rows: its note says why it was not computed
+    from bearingkit.pipeline import FRICTION_MODELS
+
+    models = [friction.model] if friction is not None else ["skf", "palmgren"]
+    if friction is None and analysis.input.bearing_type.startswith("slewing_ring"):
+        models = ["slewing"]  # the makers' formula is meant for slewing rings only
+    for model in (m for m in models if m in FRICTION_MODELS):
+        try:
+            out = analysis.friction_by(model)
+        except InputError:
+            continue
+        shown = WholeBearingFriction(
+            out.total, dict(out.components), {"whole bearing": out.total}, tuple(out.references), model
+        )
+        note = [] if friction is not None else [
+            f"friction: the component model does not apply here (its note says why); the report shows the "
+            f"{model} catalogue model of the whole bearing"
+        ]
+        return shown, note
+    return None, []
+
+
 def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     """Write the HTML report of ``analysis`` to ``path`` (atomic); returns the path.
 
@@ -70,8 +119,10 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     notes : sequence of str
         Extra run notes shown before the analysis's own.
     """
-    friction = analysis.friction
-    native = friction.native if friction is not None and hasattr(friction.native, "by_row") else None
+    from bearingkit.io.loader import MAX_REPORT_CASES
+
+    analysis.input.check_cases(MAX_REPORT_CASES, "a report")  # before anything is computed
+    native, friction_notes = _report_friction(analysis)
     op = analysis.operating
     shown = analysis.input.with_cases(  # the inputs table shows the speed and temperature analysed
         [
@@ -97,10 +148,11 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         friction=native,
         rating=analysis.rating,
         title=title,
-        notes=[*notes, describe_operating_point(analysis), *analysis.notes],
+        notes=[*notes, describe_operating_point(analysis), *friction_notes, *analysis.notes],
         warnings=analysis.warnings,
         load_diagram=analysis.load_diagram,
         case_extras=extras,
+        duty_cycle=None if analysis.duty_cycle is None else analysis.duty_cycle.to_dict(),
     )
     return write_report(path, html)
 

@@ -22,6 +22,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.report import plots
+from bearingkit.report.html_duty import duty_cycle_html
 from bearingkit.report.html_format import (
     DISPLACEMENT_DISPLAY,
     FORCE_NOISE,
@@ -87,11 +88,16 @@ def _friction_html(friction, case: int, n: int) -> str:
         [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
+    if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
+        split = f" ({_e(friction.model)} catalogue model of the whole bearing; no split between the rings)."
+    else:
+        split = (
+            f"; on the inner ring {fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
+            f"{fmt(friction.torque_outer[case], 5)} N·m (about +z)."
+        )
     return (
         f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>; on the inner ring "
-        f"{fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
-        f"{fmt(friction.torque_outer[case], 5)} N·m (about +z).</p>"
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{split}</p>"
         + _table(["component", "M [N·m]", "share [%]"], comp)
         + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
@@ -163,19 +169,25 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int, warnings, extra=None) -> str:
+def _case_html(
+    bearing, result, friction, rating, case: int, warnings, extra=None, *, number=None, anchor=None, level=2
+) -> str:
+    """One load case; ``number`` (default case + 2), ``anchor`` (``case-N``) and the heading ``level``
+    let another report (the shaft's) nest it."""
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
     disp = result.displacement[case]
-    parts = [f'<section class="case" id="case-{case}" data-section="case" data-case="{_e(lc.name)}">']
-    parts.append(f"<h2>{case + 2}. Load case “{_e(lc.name)}” {_badge(ok)}</h2>")
+    num = str(case + 2) if number is None else str(number)
+    anchor = f"case-{case}" if anchor is None else anchor
+    parts = [f'<section class="case" id="{_e(anchor)}" data-section="case" data-case="{_e(lc.name)}">']
+    parts.append(f"<h{level}>{num}. Load case “{_e(lc.name)}” {_badge(ok)}</h{level}>")
     reason = "" if ok else f"; reason: {_e(result.reason[case] or '—')}"
     parts.append(
         f'<p class="sub">{int(result.iterations[case])} iterations, residual '
         f"{float(result.residual_norm[case]):.2e} (relative to the load scale){reason}</p>"
     )
-    parts.append(f"<h4>{case + 2}.1. Load and displacement of the inner ring</h4>")
+    parts.append(f"<h4>{num}.1. Load and displacement of the inner ring</h4>")
     parts.append(
         _table(
             [f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY],
@@ -196,7 +208,7 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
             cls="displacement",
         )
     )
-    parts.append(f"<h4>{case + 2}.2. Rows</h4>")
+    parts.append(f"<h4>{num}.2. Rows</h4>")
     parts.append(_row_table(data))
     parts.append(
         _figure_html(
@@ -208,7 +220,7 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
     )
     k = 3
     if plots.roller_rows(result):
-        parts.append(f"<h4>{case + 2}.{k}. Slice pressure map of the roller rows</h4>")
+        parts.append(f"<h4>{num}.{k}. Slice pressure map of the roller rows</h4>")
         parts.append(
             _figure_html(
                 plots.slice_pressure_figure(result, case),
@@ -219,15 +231,15 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
         )
         k += 1
     if friction is not None:
-        parts.append(_friction_html(friction, case, f"{case + 2}.{k}"))
+        parts.append(_friction_html(friction, case, f"{num}.{k}"))
         k += 1
     if rating is not None:
-        parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
+        parts.append(_rating_html(rating, case, f"{num}.{k}"))
         k += 1
     if extra:
-        parts.append(extra(f"{case + 2}.{k}"))
+        parts.append(extra(f"{num}.{k}"))
         k += 1
-    parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
+    parts.append(f"<h4>{num}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
     parts.append("</section>")
     return "".join(parts)
@@ -309,6 +321,7 @@ def build_report(
     warnings=None,
     case_extras=None,
     load_diagram=None,
+    duty_cycle=None,
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -333,6 +346,9 @@ def build_report(
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
     case_extras : list of callables, optional
         Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
+    duty_cycle : dict, optional
+        The duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): a section with
+        every bin's life and the combined life, after the load cases.
 
     Returns
     -------
@@ -354,6 +370,7 @@ def build_report(
             f'<li><a href="#case-{c}">Load case “{_e(lc.name)}”</a></li>'
             for c, lc in enumerate(bearing_input.cases)
         ]
+        + (['<li><a href="#duty-cycle">Duty cycle</a></li>'] if duty_cycle is not None else [])
         + ['<li><a href="#warnings">Warnings</a></li>', '<li><a href="#references">References</a></li>']
     )
     missing = []
@@ -378,13 +395,20 @@ def build_report(
     body.extend(
         _case_html(bearing_input, result, friction, rating, c, warnings, extras[c]) for c in range(n_cases)
     )
-    body.append(f'<section id="warnings" data-section="warnings"><h2>{n_cases + 2}. Warnings</h2>')
+    k = n_cases + 2  # the number of the next section
+    if duty_cycle is not None:
+        body.append(duty_cycle_html(duty_cycle, k))
+        k += 1
+    body.append(f'<section id="warnings" data-section="warnings"><h2>{k}. Warnings</h2>')
     body.append(
         "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "
         "per load case.</p>"
     )
     body.append(_warning_list([f"[{case}] {w}" for case, w in all_warnings]) + "</section>")
-    body.append(_references_html(used_references(result, friction, rating), n_cases + 3))
+    refs = used_references(result, friction, rating)
+    if duty_cycle is not None:
+        refs = list(dict.fromkeys([*refs, *duty_cycle["references"]]))
+    body.append(_references_html(refs, k + 1))
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'

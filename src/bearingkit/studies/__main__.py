@@ -100,6 +100,93 @@ def run_cli(
     return res
 
 
+def _bearing_of(file) -> str:
+    """The bearing a ``--list-*`` request is about: FILE itself, or the ``bearing`` of a study FILE."""
+    import tomllib
+
+    from bearingkit.studies.generic import is_designation
+
+    text = str(file)
+    if is_designation(text):
+        return text
+    path = Path(text)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read the file ({exc.strerror or exc})") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    study = data.get("study")
+    if not isinstance(study, dict):
+        return str(path.resolve())
+    bearing = study.get("bearing")
+    if not isinstance(bearing, str):
+        raise InputError(
+            f"{path}: study.bearing: missing; --list-outputs needs a bearing file or a designation"
+        )
+    if is_designation(bearing, path.parent):
+        return bearing
+    return str((path.parent / bearing).resolve())
+
+
+def list_outputs(file) -> list[tuple[str, str, str]]:
+    """(name, SI unit, description) of every output the generic evaluator offers for FILE.
+
+    FILE is a bearing file, a designation, or a study file (its ``bearing`` is used).
+    """
+    from bearingkit.io.loader import from_dict
+    from bearingkit.studies import quantities
+    from bearingkit.studies.generic import load_bearing
+
+    source = _bearing_of(file)
+    bearing = from_dict(load_bearing(source)[0], source)
+    return [(q.name, q.unit, q.description) for q in quantities.catalogue(bearing).values()]
+
+
+#: Column heads of :func:`list_factors`.
+FACTOR_COLUMNS = ("path", "unit", "kind", "value in the file (SI)", "text levels")
+
+
+def list_factors(file) -> list[tuple[str, str, str, str, str]]:
+    """(path, SI unit, kind, nominal value, the names a text path takes) of every factor path of FILE
+    (as :func:`list_outputs`)."""
+    from bearingkit.io.loader import from_dict
+    from bearingkit.studies.generic import _paths as paths_of
+    from bearingkit.studies.generic import load_bearing
+
+    source = _bearing_of(file)
+    bearing = from_dict(load_bearing(source)[0], source)
+    out = []
+    for p in paths_of(bearing).values():
+        if p.nominal is None:
+            nominal = ""
+        elif isinstance(p.nominal, float):
+            nominal = f"{p.nominal:.6g}"  # 1.5e-05, not 1.4999999999999999e-05
+        else:
+            nominal = repr(p.nominal)
+        out.append((p.path, p.unit, p.kind, nominal, "|".join(p.choices or ())))
+    return out
+
+
+def print_table(rows, head, echo=print) -> None:
+    """Rows of text as aligned columns."""
+    widths = [max(len(str(r[i])) for r in [head, *rows]) for i in range(len(head))]
+    for r in [head, *rows]:
+        echo("  ".join(str(c).ljust(w) for c, w in zip(r, widths, strict=True)).rstrip())
+
+
+def _named(row) -> str:
+    """A factor of a range table by name, its short label in parentheses when it has one."""
+    return row.factor if row.label == row.factor else f"{row.factor} ({row.label})"
+
+
+def _dimensions(d) -> dict:
+    """Factor name → physical dimension (for the plots' display units)."""
+    from bearingkit.studies.definition import evaluator_of
+
+    return {name: f.dimension for name, f in evaluator_of(d).factors.items()}
+
+
 def _writers(res, fingerprint: str, echo) -> dict:
     """Output name → function writing it (summary.json last: it lists the others with their sizes)."""
     from bearingkit.studies import analysis
@@ -113,11 +200,12 @@ def _writers(res, fingerprint: str, echo) -> dict:
         labels = {f.name: f.label or f.name for f in d.factors}
         w["main_effects.csv"] = lambda p: res.analysis["main_effects"].to_csv(p, index=False)
         w["range.csv"] = lambda p: res.analysis["range"].to_csv(p, index=False)
+        dims = _dimensions(d)
         w["main_effects.png"] = lambda p: analysis.plot_main_effects(
-            res.analysis["main_effects"], p, d.response, labels
+            res.analysis["main_effects"], p, d.response, labels, dims
         )
         w["range.png"] = lambda p: analysis.plot_range(res.analysis["range"], p, d.response)
-        ranking = " > ".join(f"{r.label}" for r in res.analysis["range"].itertuples())
+        ranking = " > ".join(_named(r) for r in res.analysis["range"].itertuples())
         echo(f"sensitivity ranking of {d.response}: {ranking}")
     if "point_statistics" in res.analysis:
         table = res.analysis["point_statistics"]
@@ -128,9 +216,25 @@ def _writers(res, fingerprint: str, echo) -> dict:
             )
         if "range_std" in res.analysis:
             w["range_std.csv"] = lambda p: res.analysis["range_std"].to_csv(p, index=False)
-            ranking = " > ".join(f"{r.label}" for r in res.analysis["range_std"].itertuples())
+            ranking = " > ".join(_named(r) for r in res.analysis["range_std"].itertuples())
             echo(f"sensitivity ranking of the scatter (std) of {d.response}: {ranking}")
         echo(f"{len(table)} design points x {d.monte_carlo.per_point} draws → point_statistics.csv")
+    if "statistics" in res.analysis:
+        w["statistics.csv"] = lambda p: res.analysis["statistics"].to_csv(p, index=False)
+        echo(f"{len(res.results)} draws → statistics.csv (mean, std, min, max, quantiles of every output)")
+    if d.plots:
+        from bearingkit.studies import figures
+
+        dims = _dimensions(d)
+        quantiles = d.monte_carlo.quantiles if d.monte_carlo is not None else d.quantiles
+        for i, spec in enumerate(d.plots, 1):
+            missing = [n for n in (spec.x, spec.series, *spec.y) if n is not None and n not in res.results]
+            if missing:
+                raise InputError(
+                    f"{d.source}: plots[{i - 1}] names {missing}, which the results do not have; they have "
+                    f"{list(res.results.columns)}"
+                )
+            w[f"plot_{i}.png"] = lambda p, spec=spec: figures.plot(spec, res.results, p, dims, quantiles)
     if res.pareto is not None:
         w["pareto.csv"] = lambda p: res.pareto.to_csv(p, index=False)
         w["selections.csv"] = lambda p: res.selections.to_csv(p, index=False)
@@ -153,6 +257,8 @@ def _writers(res, fingerprint: str, echo) -> dict:
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m bearingkit.studies", description="Run a design study.")
     p.add_argument("file")
+    p.add_argument("--list-outputs", action="store_true", help="list the outputs of FILE's bearing")
+    p.add_argument("--list-factors", action="store_true", help="list the factor paths of FILE's bearing")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address, e.g. tcp://host:8786")
     p.add_argument("--workers", type=int, default=None, help="local worker processes")
     p.add_argument("--resume", action="store_true", help="continue a killed run in --out")
@@ -167,6 +273,12 @@ def main(argv=None) -> int:
     )
     a = p.parse_args(argv)
     try:
+        if a.list_outputs or a.list_factors:
+            if a.list_outputs:
+                print_table(list_outputs(a.file), ("output", "unit", "meaning"))
+            if a.list_factors:
+                print_table(list_factors(a.file), FACTOR_COLUMNS)
+            return 0
         run_cli(
             a.file,
             a.scheduler,

@@ -174,31 +174,66 @@ def _plt():
     return plt
 
 
-def plot_main_effects(effects, path, response: str = "response", labels: dict | None = None):
-    """Main-effect plot: one panel per factor, level mean vs level value (PNG)."""
+def _tick(v) -> str:
+    return f"{v:.4g}" if isinstance(v, (float, np.floating)) else str(v)
+
+
+def plot_main_effects(
+    effects, path, response: str = "response", labels: dict | None = None, dimensions: dict | None = None
+):
+    """Main-effect plot: one panel per factor, level mean vs level value (PNG).
+
+    Panels are titled by the factor NAME (its short label, if any, in parentheses); level values and
+    the response are shown in display units (:mod:`bearingkit.studies.display`): ``dimensions`` maps a
+    factor to its physical dimension; the response's unit comes from its name (``…_N``, ``…_m``).
+    Returns (title, x label, tick labels) of every panel.
+    """
+    from bearingkit.studies import display
+
     plt = _plt()
     factors = list(dict.fromkeys(effects["factor"]))
-    fig, axes = plt.subplots(1, len(factors), figsize=(3.2 * len(factors), 3.2), sharey=True, squeeze=False)
+    means, ylabel = display.display(response, effects["mean"].to_numpy(float))
+    fig, axes = plt.subplots(1, len(factors), figsize=(3.4 * len(factors), 3.4), sharey=True, squeeze=False)
     for ax, f in zip(axes[0], factors, strict=True):
-        sub = effects[effects["factor"] == f].sort_values("level")
-        ax.plot(range(1, len(sub) + 1), sub["mean"], marker="o")
-        ax.set_xticks(
-            range(1, len(sub) + 1), [f"{v:.4g}" if isinstance(v, float) else str(v) for v in sub["value"]]
+        mask = (effects["factor"] == f).to_numpy()
+        sub = effects[mask].sort_values("level")
+        order = np.argsort(effects[mask]["level"].to_numpy(), kind="stable")
+        values = sub["value"].to_numpy()
+        dim = (dimensions or {}).get(f)
+        numeric = dim not in (None, "text", "count", "flag") and np.issubdtype(
+            np.asarray(values).dtype, np.number
         )
-        ax.set_title((labels or {}).get(f, f), fontsize=9)
+        unit = ""
+        if numeric:
+            label, factor = display.scale_for(display.column_unit(f, dim), values)
+            values, unit = values.astype(float) * factor, label
+        ax.plot(range(1, len(sub) + 1), means[mask][order], marker="o")
+        ax.set_xticks(range(1, len(sub) + 1), [_tick(v) for v in values])
+        short = (labels or {}).get(f)
+        title = f if not short or short == f else f"{f} ({short})"
+        ax.set_title(title, fontsize=8)
+        ax.set_xlabel(f"level [{unit}]" if unit else "level", fontsize=8)
         ax.grid(True, alpha=0.3)
-    axes[0][0].set_ylabel(f"mean {response}")
+    axes[0][0].set_ylabel(f"mean {ylabel}")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+    shown = [
+        (ax.get_title(), ax.get_xlabel(), [t.get_text() for t in ax.get_xticklabels()]) for ax in axes[0]
+    ]
     plt.close(fig)
+    return shown
 
 
 def plot_range(ranges, path, response: str = "response"):
-    """Bar chart of the ranges R_j, factors in rank order (PNG)."""
+    """Bar chart of the ranges R_j, factors (by name) in rank order, in the response's display unit (PNG)."""
+    from bearingkit.studies import display
+
     plt = _plt()
-    fig, ax = plt.subplots(figsize=(5, 3.2))
-    ax.bar(ranges["label"].astype(str), ranges["range"])
-    ax.set(ylabel=f"range of mean {response}", title="sensitivity (range analysis)")
+    values, ylabel = display.display(response, ranges["range"].to_numpy(float))
+    fig, ax = plt.subplots(figsize=(max(5.0, 1.3 * len(ranges) + 1.5), 3.6))
+    ax.bar(range(len(ranges)), values)
+    ax.set_xticks(range(len(ranges)), ranges["factor"].astype(str), rotation=20, ha="right", fontsize=8)
+    ax.set(ylabel=f"range of mean {ylabel}", title="sensitivity (range analysis)")
     ax.grid(True, axis="y", alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -221,16 +256,23 @@ def plot_interaction(results, factor_a: str, factor_b: str, response: str, path)
 
 
 def plot_point_statistics(table, response: str, path, quantiles: Sequence[float] = (0.05, 0.95)):
-    """Mean of ``response`` per design point with a band between two quantiles (PNG)."""
+    """Mean of ``response`` per design point with a band between two quantiles, display units (PNG)."""
+    from bearingkit.studies import display
+
     plt = _plt()
     fig, ax = plt.subplots(figsize=(max(4.0, 0.45 * len(table) + 2.0), 3.4))
     x = table["point"].to_numpy()
     q_lo, q_hi = quantile_label(min(quantiles)), quantile_label(max(quantiles))
     lo, hi = f"{response}_{q_lo}", f"{response}_{q_hi}"
+    mean = table[f"{response}_mean"].to_numpy(float)
+    label, factor = display.scale_for(display.column_unit(response), mean)
     if lo in table.columns and hi in table.columns:
-        ax.fill_between(x, table[lo], table[hi], alpha=0.25, step="mid", label=f"{q_lo}–{q_hi}")
-    ax.plot(x, table[f"{response}_mean"], marker="o", label="mean")
-    ax.set(xlabel="design point", ylabel=response, title="statistics per design point")
+        ax.fill_between(
+            x, table[lo] * factor, table[hi] * factor, alpha=0.25, step="mid", label=f"{q_lo}–{q_hi}"
+        )
+    ax.plot(x, mean * factor, marker="o", label="mean")
+    ylabel = display.axis_label(response, label)
+    ax.set(xlabel="design point", ylabel=ylabel, title="statistics per design point")
     ax.set_xticks(x)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)

@@ -22,7 +22,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.studies import evaluators, generators
-from bearingkit.studies.definition import StudyDefinition
+from bearingkit.studies.definition import StudyDefinition, evaluator_of
 
 #: Index columns of a levels × samples study: design point and draw (also kept in the chunk files).
 INDEX_COLUMNS = ("point", "draw")
@@ -67,7 +67,11 @@ class StudyResult:
 
 def base_values(definition: StudyDefinition) -> dict:
     """Value of every factor not varied by the design: evaluator default < bearing file < [fixed]."""
-    ev = evaluators.get(definition.evaluator)
+    ev = evaluator_of(definition)
+    if not ev.fill_defaults:  # the evaluator reads the rest from its input: only what the study sets
+        base = {f.name: ev.factors[f.name].default for f in definition.factors}
+        base.update(definition.fixed)
+        return base
     base = {k: f.default for k, f in ev.factors.items()}
     if definition.bearing:
         from bearingkit.io.loader import load_file
@@ -164,7 +168,7 @@ def plan_study(definition: StudyDefinition) -> StudyPlan:
 
     Everything that can refuse a study happens here, before a study touches its output folder.
     """
-    ev = evaluators.get(definition.evaluator)
+    ev = evaluator_of(definition)
     base = base_values(definition)
     if definition.design == "optimize":
         return StudyPlan(definition, ev, None, base, fingerprint(definition, base=base))
@@ -195,7 +199,7 @@ def fingerprint(definition: StudyDefinition, cases=None, base: dict | None = Non
     import bearingkit
 
     h = hashlib.sha256(definition.fingerprint().encode())
-    h.update(evaluator_identity(evaluators.get(definition.evaluator)).encode())
+    h.update(evaluator_identity(evaluator_of(definition)).encode())
     h.update(f"bearingkit {bearingkit.__version__}".encode())
     if cases is not None:
         h.update(pd.util.hash_pandas_object(cases, index=False).to_numpy().tobytes())

@@ -57,7 +57,6 @@ import hashlib
 import json
 import math
 import re
-import tomllib
 from pathlib import Path
 from typing import Literal
 
@@ -79,7 +78,11 @@ SECTIONS = (
     "optimizer",
     "monte_carlo",
     "targets",
+    "plots",
 )
+
+#: Most ``[[plots]]`` a study may ask for (they are written as plot_1.png … plot_9.png).
+MAX_PLOTS = 9
 
 #: A study name: it becomes the default output folder (``study-<name>``) and is written into the
 #: store, so it is a plain file name — no separators, no ``..``, nothing absolute, no hidden name.
@@ -116,6 +119,7 @@ class FactorDef(_Strict):
     low: float | None = None
     high: float | None = None
     deviation: bool = False
+    clearance_class: str | None = None
 
 
 class MonteCarloDef(_Strict):
@@ -127,6 +131,26 @@ class MonteCarloDef(_Strict):
     common: bool = True
     quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     factors: tuple[FactorDef, ...] = ()
+
+
+class PlotDef(_Strict):
+    """A plot of the results (``[[plots]]``, :mod:`bearingkit.studies.figures`)."""
+
+    kind: Literal["lines", "map", "scatter", "histogram"] = "lines"
+    x: str | None = None
+    y: tuple[str, ...]
+    series: str | None = None
+    title: str | None = None
+    log_y: bool | tuple[str, ...] = False
+
+    def logarithmic(self, y: str) -> bool:
+        """True when the panel of output ``y`` has a logarithmic axis (``log_y`` true, or naming ``y``)."""
+        return self.log_y is True or (isinstance(self.log_y, tuple) and y in self.log_y)
+
+    @field_validator("y", mode="before")
+    @classmethod
+    def _one_or_more(cls, value):
+        return (value,) if isinstance(value, str) else value
 
 
 class VariableDef(_Strict):
@@ -167,6 +191,9 @@ class StudyDefinition(_Strict):
     evaluator: str
     array: str | None = None
     bearing: str | None = None
+    load_case: str | None = None
+    tolerances: bool = False
+    quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     response: str | None = None
     samples: int | None = Field(None, ge=1)
     sampler: Literal["random", "lhs", "sobol"] = "random"
@@ -181,6 +208,7 @@ class StudyDefinition(_Strict):
     optimizer: OptimizerDef = OptimizerDef()
     monte_carlo: MonteCarloDef | None = None
     targets: dict = Field(default_factory=dict)
+    plots: tuple[PlotDef, ...] = ()
     source: str = "<dict>"
 
     @field_validator("name")
@@ -198,13 +226,10 @@ class StudyDefinition(_Strict):
 
 def load_study(path) -> StudyDefinition:
     """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder)."""
+    from bearingkit.io.reading import load_toml
+
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc})".replace("\n", " ")) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
     return from_dict(data, source=str(path), base_dir=path.parent)
 
 
@@ -213,6 +238,10 @@ def _si(value, factor, where: str):
     if dim == "text":
         if not isinstance(value, str):
             raise InputError(f"{where} ({value!r}) must be a name (string)")
+        return value
+    if dim == "flag":
+        if not isinstance(value, bool):
+            raise InputError(f"{where} ({value!r}) must be true or false")
         return value
     if dim == "count":
         x = units.parse(value, "dimensionless", where)
@@ -268,7 +297,6 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     Every malformed value gives one line naming the file, the field, the value and what was expected;
     nothing else escapes (a study file may come from someone else).
     """
-    from bearingkit.studies import evaluators
 
     if not isinstance(data, dict) or not isinstance(data.get("study"), dict):
         raise InputError(f"{source}: a study file needs a [study] table")
@@ -290,22 +318,46 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         raise InputError(
             f"{source}: study.name ({_short(name)}) must be {NAME_RULE}; it names the output folder"
         )
+    bearing = head.get("bearing")
+    if bearing is not None and not isinstance(bearing, str):
+        raise InputError(
+            f"{source}: study.bearing ({_short(bearing)}) must be a bearing file or a designation"
+        )
+    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
+        from bearingkit.studies.generic import is_designation
+
+        if not is_designation(bearing, base_dir):
+            bearing = str((Path(base_dir) / bearing).resolve())
+    head["bearing"] = bearing
     ev_name = head.get("evaluator")
+    if ev_name is None and bearing is not None:
+        from bearingkit.studies.generic import GENERIC
+
+        ev_name = head["evaluator"] = GENERIC  # a study that names a bearing runs on its input
     if not isinstance(ev_name, str):
-        raise InputError(f"{source}: study.evaluator ({_short(ev_name)}) must name an evaluator")
+        raise InputError(
+            f"{source}: study.evaluator ({_short(ev_name)}) must name an evaluator (or give study.bearing, "
+            "a bearing file or designation, for the generic evaluator)"
+        )
     try:
-        ev = evaluators.get(ev_name)
+        ev = _evaluator(ev_name, bearing, head, data, source)
     except InputError as exc:
-        raise InputError(f"{source}: study.{exc}") from None
+        text = str(exc)
+        raise InputError(text if text.startswith(source) else f"{source}: study.{text}") from None
 
     def factor(fname, where):
         if not isinstance(fname, str) or fname not in ev.factors:
-            raise InputError(f"{source}: {where} ({_short(fname)}) is not a factor of evaluator {ev.name!r}")
+            near = ""
+            if isinstance(fname, str):
+                from bearingkit.studies.paths import nearest
+
+                near = f"; nearest: {', '.join(nearest(fname, ev.factors))}"
+            raise InputError(f"{source}: {where} ({_short(fname)}) is not {ev.noun}{near}")
         return ev.factors[fname]
 
     fixed = {
         k: _si(v, factor(k, f"fixed.{k}"), f"{source}: fixed.{k}")
-        for k, v in _table(data.get("fixed", {}), f"{source}: fixed").items()
+        for k, v in _flatten(_table(data.get("fixed", {}), f"{source}: fixed"))
     }
 
     def factor_list(items, where):
@@ -317,7 +369,14 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             if "levels" in f:
                 if not isinstance(f["levels"], list):
                     raise InputError(f"{w}.levels ({_short(f['levels'])}) must be an array of values")
+                if not f["levels"]:
+                    raise InputError(f"{w}.levels ([]) must list at least one value")
                 f["levels"] = tuple(_si(v, spec, f"{w}.levels") for v in f["levels"])
+            if f.get("clearance_class") is not None:
+                from bearingkit.studies.generic import clearance_class_range
+
+                low, high = clearance_class_range(ev, spec.name, f["clearance_class"], w)
+                f.update(distribution="uniform", low=low, high=high)
             for key in ("base", "mean", "std", "low", "high"):
                 if key in f:
                     f[key] = _si(f[key], spec, f"{w}.{key}")
@@ -332,6 +391,20 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             **monte_carlo,
             "factors": factor_list(monte_carlo.get("factors", []), "monte_carlo.factors"),
         }
+    if head.get("tolerances"):  # the bearing file's [[tolerances]] join the sampled factors
+        from bearingkit.studies.generic import tolerance_factors
+
+        design = {f["name"] for f in factors}
+        extra = factor_list(tolerance_factors(ev, design, source), "tolerances")
+        if monte_carlo is not None:
+            monte_carlo["factors"] = [*monte_carlo["factors"], *extra]
+        elif head.get("design") == "monte_carlo":
+            factors = [*factors, *extra]
+        else:
+            raise InputError(
+                f"{source}: study.tolerances (true) samples the bearing's [[tolerances]]: use design = "
+                "'monte_carlo' or add a [monte_carlo] section (levels x samples)"
+            )
     variables = []
     for i, v in enumerate(_tables(data.get("variables", []), f"{source}: variables")):
         v = dict(v)
@@ -351,9 +424,6 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
             )
             for k, v in t.items()
         }
-    bearing = head.get("bearing")
-    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
-        bearing = str((Path(base_dir) / bearing).resolve())
     raw = {
         **head,
         "bearing": bearing,
@@ -365,6 +435,7 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         "optimizer": data.get("optimizer", {}),
         "monte_carlo": monte_carlo,
         "targets": targets,
+        "plots": _tables(data.get("plots", []), f"{source}: plots"),
         "source": source,
     }
     try:
@@ -372,7 +443,76 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
     except ValidationError as exc:
         raise InputError(_pydantic_message(exc, source, head)) from None
     _check(definition)
+    _check_plots(definition, ev)
+    if not ev.fill_defaults:  # the generic evaluator: every level built into the input once
+        from bearingkit.studies.generic import check_values
+
+        check_values(ev, definition)
     return definition
+
+
+def _flatten(table: dict, prefix: str = ""):
+    """``(key, value)`` of a table, nested tables as dotted keys (TOML ``geometry.bore = …`` in [fixed])."""
+    for k, v in table.items():
+        if isinstance(v, dict):
+            yield from _flatten(v, f"{prefix}{k}.")
+        else:
+            yield f"{prefix}{k}", v
+
+
+def _names(data: dict) -> list:
+    """Every factor and output name a parsed study file uses (before it is checked), for the generic
+    evaluator: the load case its paths name, the outputs it needs."""
+    out = []
+    for key in ("factors", "variables"):
+        items = data.get(key, [])
+        out += [f.get("name") for f in items if isinstance(f, dict)] if isinstance(items, list) else []
+    mc = data.get("monte_carlo")
+    if isinstance(mc, dict) and isinstance(mc.get("factors"), list):
+        out += [f.get("name") for f in mc["factors"] if isinstance(f, dict)]
+    fixed = data.get("fixed")
+    if isinstance(fixed, dict):
+        out += [k for k, _ in _flatten(fixed)]
+    head = data.get("study", {})
+    out.append(head.get("response"))
+    for key, fields in (
+        ("plots", ("x", "y", "series")),
+        ("objectives", ("output",)),
+        ("constraints", ("output",)),
+    ):
+        items = data.get(key, [])
+        for item in items if isinstance(items, list) else []:
+            for f in fields if isinstance(item, dict) else ():
+                value = item.get(f)
+                out += value if isinstance(value, list) else [value]
+    return out
+
+
+def _evaluator(name: str, bearing, head: dict, data: dict, source: str):
+    """The evaluator a study file names (the generic one is built from its bearing and checked)."""
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.generic import GENERIC, study_evaluator
+
+    if name != GENERIC:
+        return evaluators.get(name)
+    if bearing is None:
+        raise InputError(
+            f"{source}: study.bearing: missing; the generic evaluator needs a bearing file or a designation"
+        )
+    ev = study_evaluator(bearing, head, _names(data), source)
+    head["load_case"] = ev.function.load_case  # the choice is part of the definition (and its fingerprint)
+    return ev
+
+
+def evaluator_of(d: StudyDefinition):
+    """The evaluator of a checked study definition (the generic one rebuilt from its bearing, cached)."""
+    from bearingkit.studies import evaluators
+    from bearingkit.studies.generic import GENERIC, study_evaluator
+
+    if d.evaluator != GENERIC:
+        return evaluators.get(d.evaluator)
+    head = {"load_case": d.load_case, "outputs": None if d.outputs is None else list(d.outputs)}
+    return study_evaluator(d.bearing, head, (), d.source)
 
 
 def case_count(d: StudyDefinition) -> int:
@@ -390,6 +530,42 @@ def case_count(d: StudyDefinition) -> int:
     else:
         n = sum(len(f.levels or ()) for f in d.factors)
     return n * (d.monte_carlo.per_point if d.monte_carlo is not None else 1)
+
+
+def _check_plots(d: StudyDefinition, ev) -> None:
+    """Every ``[[plots]]`` entry names columns the study has (checked fully where the outputs are known)."""
+    if len(d.plots) > MAX_PLOTS:
+        raise InputError(f"{d.source}: plots ({len(d.plots)} of them) must be at most {MAX_PLOTS}")
+    if d.design == "optimize" and d.plots:
+        raise InputError(
+            f"{d.source}: plots: an optimisation writes pareto.png; [[plots]] are for case tables"
+        )
+    factors = {f.name for f in d.factors} | set(d.fixed)
+    if d.monte_carlo is not None:
+        factors |= {f.name for f in d.monte_carlo.factors}
+    known = set(ev.outputs) if not ev.fill_defaults else None  # the generic evaluator lists every output
+    for i, p in enumerate(d.plots):
+        where = f"{d.source}: plots[{i}]"
+        need = {"lines": ("x",), "map": ("x", "series"), "scatter": ("x",), "histogram": ()}[p.kind]
+        for key in need:
+            if getattr(p, key) is None:
+                raise InputError(f"{where}.{key}: missing; a {p.kind} plot needs {' and '.join(need)}")
+        if p.kind == "histogram" and (p.x is not None or p.series is not None):
+            raise InputError(f"{where}: a histogram shows the distribution of y; it takes no x or series")
+        if not p.y:
+            raise InputError(f"{where}.y ([]) must name at least one output")
+        for key, names in (("x", [p.x]), ("series", [p.series]), ("y", list(p.y))):
+            for name in names:
+                if name is None or name in factors:
+                    continue
+                if known is not None and name not in known:
+                    from bearingkit.studies.paths import nearest
+
+                    near = ", ".join(nearest(name, sorted(known | factors)))
+                    raise InputError(
+                        f"{where}.{key} ({name!r}) is neither a factor of the study nor one of its outputs; "
+                        f"nearest: {near}"
+                    )
 
 
 def _check(d: StudyDefinition) -> None:
@@ -484,7 +660,7 @@ def _check_monte_carlo(d: StudyDefinition) -> None:
             raise InputError(
                 f"{where} is also a design factor; expected deviation = true (level + draw) or another factor"
             )
-        if evaluators.get(d.evaluator).factors[f.name].dimension in evaluators.NON_PHYSICAL:
+        if evaluator_of(d).factors[f.name].dimension in evaluators.NON_PHYSICAL:
             raise InputError(f"{where} is a count or a name; expected a continuous factor to sample")
     for q in mc.quantiles:
         if not 0.0 < q < 1.0:

@@ -39,7 +39,7 @@ references.add(
 )
 
 #: Dimensions a factor may have besides the physical ones of :data:`bearingkit.units.SI_UNITS`.
-NON_PHYSICAL = ("count", "text")
+NON_PHYSICAL = ("count", "text", "flag")
 
 
 @dataclass(frozen=True)
@@ -51,7 +51,8 @@ class Factor:
     name : str
     dimension : str
         A key of :data:`bearingkit.units.SI_UNITS` (values in the study file need a unit unless
-        ``"dimensionless"``), ``"count"`` (integer) or ``"text"`` (a name, e.g. a crowning type).
+        ``"dimensionless"``), ``"count"`` (integer), ``"text"`` (a name, e.g. a crowning type) or
+        ``"flag"`` (true / false).
     default : object
         Value (SI) used when the study neither varies nor fixes the factor.
     batched : bool
@@ -67,7 +68,12 @@ class Factor:
 
 @dataclass(frozen=True)
 class Evaluator:
-    """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors."""
+    """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors.
+
+    ``fill_defaults`` False: the cases carry only the factors a study sets (the evaluator takes the
+    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic` does);
+    ``factor_noun`` says in messages what a factor is (default "a factor of evaluator NAME").
+    """
 
     name: str
     function: Callable
@@ -76,10 +82,19 @@ class Evaluator:
     bearing_type: str | None = None
     description: str = ""
     references: tuple = field(default_factory=tuple)
+    fill_defaults: bool = True
+    factor_noun: str = ""
+
+    @property
+    def noun(self) -> str:
+        """What a factor of this evaluator is, for messages."""
+        return self.factor_noun or f"a factor of evaluator {self.name!r}"
 
     def complete(self, cases):
         """``cases`` with a column for every declared factor (defaults filled in)."""
         out = cases.copy()
+        if not self.fill_defaults:
+            return out
         for name, f in self.factors.items():
             if name not in out.columns:
                 out[name] = f.default
@@ -240,6 +255,8 @@ def python_value(value, factor: Factor):
         return int(value)
     if factor.dimension == "text":
         return str(value)
+    if factor.dimension == "flag":
+        return bool(value)
     return float(value)
 
 

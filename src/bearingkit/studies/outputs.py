@@ -44,6 +44,8 @@ OUTPUT_FILES = (
     "pareto.csv",
     "selections.csv",
     "pareto.png",
+    "statistics.csv",
+    *(f"plot_{i}.png" for i in range(1, 10)),
     "summary.json",
 )
 

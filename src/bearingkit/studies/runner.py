@@ -151,6 +151,10 @@ def _run_cases(plan: StudyPlan, executor, store, resume: bool, progress) -> Stud
     result = StudyResult(d, cases, results, stats=stats)
     if d.monte_carlo is not None:
         _levels_by_samples_analysis(result, outputs.columns.difference(["case", *index], sort=False))
+    elif d.design == "monte_carlo":  # one sample of the whole study: statistics of every output
+        names = list(outputs.columns.difference(["case"], sort=False))
+        table = analysis.point_statistics(results.assign(point=0), names, d.quantiles)
+        result.analysis["statistics"] = table.drop(columns=["point"])
     elif d.response and d.design in ("orthogonal", "factorial"):
         names = [f.name for f in d.factors]
         result.analysis["main_effects"] = analysis.main_effects(results, names, d.response)
@@ -200,4 +204,5 @@ def _select(frame, outputs):
         raise InputError(
             f"study.outputs {missing} are not outputs of the evaluator; it gives {list(frame.columns)}"
         )
-    return frame[["case", *outputs]]
+    keep = ["error"] if "error" in frame.columns and "error" not in outputs else []  # why a group failed
+    return frame[["case", *outputs, *keep]]

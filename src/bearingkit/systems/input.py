@@ -14,6 +14,7 @@ for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
     [[load_cases]]       name, speed, temperature, gears = {NAME = torque}, forces = [...],
                          line_loads = [...]
     [lubricant]          name (friction of bearings whose file has none)
+    [lubrication]        contamination, roughness_element, roughness_raceway (bearings whose file has none)
     [solver]             rtol, max_iterations
 
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
@@ -21,17 +22,19 @@ Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE:
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, ValidationError
+from pydantic import Field, ValidationError, field_validator
 
 from bearingkit.errors import InputError
 from bearingkit.io import schema
-from bearingkit.io.loader import _one_line, load_file
+from bearingkit.io.loader import load_file
+from bearingkit.io.messages import one_line
+from bearingkit.io.reading import load_toml
+from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
 from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
 from bearingkit.systems.solver import ShaftSystem, SystemOptions
@@ -44,7 +47,7 @@ Mass = schema.quantity("mass", "non_negative")
 PositiveMass = schema.quantity("mass", "positive")
 
 
-class SectionSpec(schema._Strict):
+class SectionSpec(schema.Strict):
     """``[[shaft.sections]]``: one step of the shaft."""
 
     start: schema.Length | None = Field(
@@ -56,7 +59,7 @@ class SectionSpec(schema._Strict):
     inner_diameter: schema.NonNegativeLength = 0.0
 
 
-class HousingSpec(schema._Strict):
+class HousingSpec(schema.Strict):
     """``housing``: stiffness of the housing per outer-ring DOF; a value left out is rigid."""
 
     radial: Stiffness | None = None
@@ -64,7 +67,7 @@ class HousingSpec(schema._Strict):
     tilt: RotationalStiffness | None = None
 
 
-class LinearStiffnessSpec(schema._Strict):
+class LinearStiffnessSpec(schema.Strict):
     """``stiffness``: a bearing given as constant stiffness (a hand model) instead of a file."""
 
     radial: Stiffness
@@ -72,7 +75,7 @@ class LinearStiffnessSpec(schema._Strict):
     tilt: RotationalStiffness = 0.0
 
 
-class BearingSpec(schema._Strict):
+class BearingSpec(schema.Strict):
     """``[[shaft.bearings]]``: a bearing and where it sits."""
 
     name: str
@@ -86,7 +89,7 @@ class BearingSpec(schema._Strict):
     housing: HousingSpec | None = None
 
 
-class GearSpec(schema._Strict):
+class GearSpec(schema.Strict):
     """``[[shaft.gears]]``: a gear (or a pulley with pressure_angle 0 deg)."""
 
     name: str
@@ -98,7 +101,7 @@ class GearSpec(schema._Strict):
     mass: Mass = 0.0
 
 
-class MassSpec(schema._Strict):
+class MassSpec(schema.Strict):
     """``[[shaft.masses]]``: a lumped mass (coupling, disc) that gravity loads."""
 
     name: str = "mass"
@@ -106,7 +109,7 @@ class MassSpec(schema._Strict):
     mass: PositiveMass
 
 
-class ShaftSpec(schema._Strict):
+class ShaftSpec(schema.Strict):
     """``[shaft]``."""
 
     name: str = "shaft"
@@ -122,7 +125,7 @@ class ShaftSpec(schema._Strict):
     masses: list[MassSpec] = Field(default_factory=list)
 
 
-class ForceSpec(schema._Strict):
+class ForceSpec(schema.Strict):
     """``forces = [{...}]`` of a load case: force and moment at a position."""
 
     name: str = "force"
@@ -134,7 +137,7 @@ class ForceSpec(schema._Strict):
     M_y: schema.Moment = 0.0
 
 
-class LineLoadSpec(schema._Strict):
+class LineLoadSpec(schema.Strict):
     """``line_loads = [{...}]`` of a load case: uniform load per length between start and end."""
 
     name: str = "line load"
@@ -145,7 +148,7 @@ class LineLoadSpec(schema._Strict):
     q_z: LineLoadValue = 0.0
 
 
-class ShaftCaseSpec(schema._Strict):
+class ShaftCaseSpec(schema.Strict):
     """``[[load_cases]]`` of a shaft file."""
 
     name: str
@@ -158,20 +161,37 @@ class ShaftCaseSpec(schema._Strict):
     line_loads: list[LineLoadSpec] = Field(default_factory=list)
 
 
-class ShaftSolverSpec(schema._Strict):
+class ShaftSolverSpec(schema.Strict):
     """``[solver]`` of a shaft file."""
 
     rtol: schema.Dimensionless | None = None
     max_iterations: schema.IterationCount | None = None
 
 
-class ShaftFile(schema._Strict):
+#: Most load cases of one shaft file. Measured on the 2-core reference machine (countershaft example):
+#: 100 cases take 24 s through ``bearingkit shaft``, 1,000 take 76 s and 300 MB.
+MAX_SHAFT_CASES = 100
+
+
+class ShaftFile(schema.Strict):
     """A shaft input file."""
 
     shaft: ShaftSpec
     load_cases: list[ShaftCaseSpec]
     lubricant: schema.LubricantSpec | None = None
+    lubrication: LubricationSpec | None = None
     solver: ShaftSolverSpec | None = None
+
+    @field_validator("load_cases", mode="before")
+    @classmethod
+    def _at_most(cls, value):
+        """Counted before the cases are validated."""
+        if isinstance(value, list) and len(value) > MAX_SHAFT_CASES:
+            raise InputError(
+                f"load_cases ({len(value)} cases) must be at most {MAX_SHAFT_CASES} per shaft file; "
+                "split the file"
+            )
+        return value
 
 
 _MODELS = {
@@ -188,13 +208,18 @@ _MODELS = {
     "load_cases.forces": ForceSpec,
     "load_cases.line_loads": LineLoadSpec,
     "lubricant": schema.LubricantSpec,
+    "lubrication": LubricationSpec,
     "solver": ShaftSolverSpec,
 }
 
 
 @dataclass(frozen=True)
 class ShaftInput:
-    """A loaded shaft file (SI): the system, its load cases, solver options and notes."""
+    """A loaded shaft file (SI): the system, its load cases, solver options and notes.
+
+    ``lubricant`` and ``lubrication`` (the ``[lubrication]`` section: contamination, roughness) apply to
+    the bearings whose own file gives none.
+    """
 
     source: str
     system: ShaftSystem
@@ -202,6 +227,7 @@ class ShaftInput:
     options: SystemOptions
     lubricant: object | None = None
     warnings: tuple = field(default_factory=tuple)
+    lubrication: LubricationSpec | None = None
 
     def solve(self):
         """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
@@ -213,16 +239,7 @@ class ShaftInput:
 def load_shaft_file(path) -> ShaftInput:
     """Read and validate a shaft file; InputError (one line naming the file and field) if malformed."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(
-            f"{path}: cannot read the file ({type(exc).__name__}: {exc})".replace("\n", " ")
-        ) from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
     return shaft_from_dict(data, str(path), base=path.parent)
 
 
@@ -232,7 +249,7 @@ def shaft_from_dict(data: dict, source: str = "<dict>", base=None) -> ShaftInput
     try:
         spec = ShaftFile.model_validate(data)
     except ValidationError as exc:
-        raise _one_line(source, exc, (), _MODELS) from None
+        raise one_line(source, exc, (), _MODELS) from None
     try:
         return _build(spec, source, base)
     except InputError as exc:
@@ -399,38 +416,39 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
                 f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
             )
         lubricant = LUBRICANTS[spec.lubricant.name]
-    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes))
+    _check_contamination(spec.lubrication)
+    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
 
 
-def shaft_dict(inp: ShaftInput, result) -> dict:
+def _check_contamination(lubrication) -> None:
+    """``[lubrication] contamination``: a number 0 … 1 or an ISO 281 level name (one line otherwise)."""
+    from bearingkit.physics.life.iso281_contamination import contamination_levels
+
+    value = None if lubrication is None else lubrication.contamination
+    if value is None:
+        return
+    if isinstance(value, str) and value.strip() not in contamination_levels():
+        from bearingkit.units import parse
+
+        try:
+            value = parse(value, "dimensionless", "lubrication.contamination")
+        except InputError:
+            raise InputError(
+                f"lubrication.contamination ({value!r}) must be a number 0 … 1 or one of "
+                f"{', '.join(contamination_levels())}"
+            ) from None
+    if not isinstance(value, str) and not 0.0 <= float(value) <= 1.0:
+        raise InputError(f"lubrication.contamination ({value!r}) must lie in 0 … 1 (ISO 281 e_C)")
+
+
+def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
     """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
 
-    Per case: :meth:`ShaftResult.to_dict`, each bearing's ratings and the system life
-    (:func:`bearingkit.systems.life.rate_system`), and each bearing's friction torque where a lubricant
-    and a speed are known (:func:`bearingkit.systems.life.friction_system`); plus the file's notes.
+    :meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`: the inputs; per case the shaft
+    lines, every bearing's reactions, seat state, summary and full pipeline Analysis (pressures, lives,
+    friction), the system life and every warning; the notes. ``options`` go to the ShaftAnalysis
+    (``friction_model``, ``contamination``, ``reliability``).
     """
-    from bearingkit.systems.life import friction_system, rate_system
+    from bearingkit.systems.shaft_analysis import ShaftAnalysis
 
-    rating = rate_system(result)
-    torque, notes = friction_system(result, lubricant=inp.lubricant)
-    cases = []
-    for c in range(result.n_cases):
-        d = result.to_dict(c)
-        d["rating"] = rating.to_dict(c)
-        d["friction_Nm"] = {name: (None if np.isnan(t[c]) else float(t[c])) for name, t in torque.items()}
-        d["warnings"] = list(rating.warnings[c])
-        cases.append(d)
-    return {
-        "file": inp.source,
-        "shaft": inp.system.name,
-        "bearings": [
-            {
-                "name": b.name,
-                "bearing": getattr(b.bearing, "name", "linear bearing"),
-                "position_m": b.position,
-            }
-            for b in inp.system.bearings
-        ],
-        "notes": [*inp.warnings, *notes],
-        "cases": cases,
-    }
+    return ShaftAnalysis(inp, result, **options).to_dict()

@@ -87,6 +87,17 @@ def test_f0_thrust_reproduces_hertz_4200_mpa(gamma):
     assert iso76.f0_thrust_ball(gamma) == pytest.approx(q / dw**2 / 1e6, rel=6e-3)
 
 
+def test_c0_thrust_ball_90_is_hertz_on_a_washer_flat_in_rolling_direction():
+    """At α = 90° the contact normal is axial: the washer groove has no curvature in the rolling direction
+    (curvature = radial part of the normal / contact radius = 0), so every ball carries the Hertz load at
+    4200 MPa of a ball in a straight groove of radius 0.54 Dw, whatever Dw/Dpw (tolerance as above)."""
+    dw, z = 10 * MM, 15
+    q = _hertz_load_at_pressure(*_contact(dw, 0.0, 0.54, True), 4200e6)
+    for dpw in (40 * MM, 60 * MM, 200 * MM):
+        c0 = iso76.static_rating_ball(dw, dpw, np.pi / 2, z, kind="thrust")
+        assert c0 == pytest.approx(z * q, rel=6e-3)
+
+
 def test_roller_factor_220_is_hertz_line_contact_at_4000_mpa():
     """Line contact: Q/(L Dwe) = pi p^2 (1-gamma)/E' at the inner contact; 220 MPa at 4000 MPa (0.5 %)."""
     e_prime = E_STEEL / (1 - NU_STEEL**2)
@@ -117,7 +128,9 @@ def test_c0_6205_against_catalogue():
 def test_c0_thrust_ball_90_and_angular():
     dw, dpw, z = 12 * MM, 80 * MM, 18
     c90 = iso76.static_rating_ball(dw, dpw, np.pi / 2, z, kind="thrust")
-    assert c90 == pytest.approx(iso76.f0_thrust_ball(dw / dpw) * 1e6 * z * dw**2)
+    # α = 90°: γ = Dw cos α / Dpw = 0 (the table's curvature parameter), f0 = 61.6 for any Dw/Dpw
+    assert c90 == pytest.approx(61.6e6 * z * dw**2, rel=1e-12)
+    assert iso76.static_rating_ball(dw, 3 * dpw, np.pi / 2, z, kind="thrust") == pytest.approx(c90)
     a = np.radians(60)
     c60 = iso76.static_rating_ball(dw, dpw, a, z, kind="thrust")
     assert c60 == pytest.approx(iso76.f0_thrust_ball(dw * np.cos(a) / dpw) * 1e6 * z * dw**2 * np.sin(a))

@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
@@ -52,6 +52,7 @@ def test_translation_load_pattern_gives_no_bending():
     assert np.abs(w).max() < 2e-5 * np.abs(single).max() * 36
 
 
+@settings(deadline=None)  # no timing in tests: the first example pays for warm-up on a busy machine
 @given(st.integers(3, 40), st.floats(0.0, 6.0))
 def test_influence_symmetric_psd(n, phase):
     psi = phase + 2 * np.pi * np.arange(n) / n
@@ -186,3 +187,38 @@ def test_housing_bad_input():
         thin_ring.ring_radial_kernel(0.3, -0.5)
     with pytest.raises(InputError, match="wall_thickness"):
         thin_ring.housing_wall_stiffness(2e11, 0.0, 0.2, 0.05)
+
+
+def _peak_bytes(fn):
+    """Peak of the memory numpy allocates while ``fn`` runs (numpy reports to tracemalloc)."""
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        fn()
+        return tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+
+
+@pytest.mark.parametrize("housing_stiffness", [6.9e9, 1e2])  # closed form (β = 3.7e4), series (β = 5e-4)
+def test_influence_memory_does_not_grow_with_cases(housing_stiffness):
+    """Issue 23: the kernel formed cases × elements² × 64 modes at once (2.4 GiB for 100 load cases of
+    the ball–column bearing). Angles shared by every case give one matrix, broadcast: the peak memory
+    of 200 cases stays that of 2 (margin 1.5 for allocator noise), and the series works in blocks."""
+    psi = np.linspace(0.0, 2.0 * np.pi, 200, endpoint=False)
+
+    def influence(cases):
+        grid = np.broadcast_to(psi, (cases, psi.size))
+        return lambda: thin_ring.radial_influence(grid, grid, 0.2, 300.0, housing_stiffness)
+
+    assert _peak_bytes(influence(200)) < 1.5 * _peak_bytes(influence(2))
+    # the series' temporary is SERIES_BLOCK × N_SERIES floats (8 MiB), not elements² × N_SERIES
+    assert _peak_bytes(influence(2)) < 5 * thin_ring.SERIES_BLOCK * thin_ring.N_SERIES * 8
+    many = thin_ring.radial_influence(np.broadcast_to(psi, (3, 200)), psi, 0.2, 300.0, housing_stiffness)
+    one = thin_ring.radial_influence(psi, psi, 0.2, 300.0, housing_stiffness)
+    assert many.shape == (3, 200, 200)
+    assert np.array_equal(many[2], one)
+    couple = thin_ring.couple_influence(np.broadcast_to(psi, (3, 200)), psi, 0.2, 300.0, housing_stiffness)
+    assert np.array_equal(couple[1], thin_ring.couple_influence(psi, psi, 0.2, 300.0, housing_stiffness))
+

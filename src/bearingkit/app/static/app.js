@@ -176,8 +176,10 @@ function request() {
 }
 
 async function analyze() {
+  delete $("status").dataset.pending;
   if (!state.source) return;
   const seq = ++state.seq;
+  $("status").dataset.requested = String(seq); // the page is settled when data-seq reaches it
   clearErrors();
   setStatus("analysing…", "busy");
   const t0 = performance.now();
@@ -199,6 +201,7 @@ async function analyze() {
 
 function scheduleAnalyze() {
   clearTimeout(state.timer);
+  $("status").dataset.pending = "1"; // an analysis is due: what is shown is about to change
   state.timer = setTimeout(analyze, 150);
 }
 

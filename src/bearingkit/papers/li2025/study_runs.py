@@ -7,11 +7,25 @@ from __future__ import annotations
 
 from bearingkit.studies.cases import StudyResult
 
+#: Columns of the generic evaluator's study (paths into ball_column_condition1.toml) → short names.
+GENERIC_COLUMNS = {
+    "geometry.clearance_ball": "clearance_ball",
+    "geometry.clearance_roller": "clearance_roller",
+    "load_cases.condition1.F_x": "radial_load",
+    "roller_2_radial_share": "roller_radial_share",
+}
+
 
 def seed002_clearance_map(result: StudyResult):
     """Pivot a ``seed002_clearance_map`` result: one row per (ball, roller) clearance, one share column
-    per radial load (``roller_share_<load in N>N``), plus ``gradient`` = heavy − light share."""
-    table = result.results.pivot_table(
+    per radial load (``roller_share_<load in N>N``), plus ``gradient`` = heavy − light share.
+
+    Reads the study of ``examples/studies/seed002_clearance_map.toml`` (the generic evaluator: paths as
+    column names) or one run on the ``seed002_clearance`` evaluator (short names)."""
+    results = result.results
+    if "roller_radial_share" not in results:
+        results = results.rename(columns=GENERIC_COLUMNS)
+    table = results.pivot_table(
         index=["clearance_ball", "clearance_roller"], columns="radial_load", values="roller_radial_share"
     )
     loads = sorted(table.columns)

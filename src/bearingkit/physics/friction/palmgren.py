@@ -16,9 +16,11 @@ branch is a constant, so at zero speed this model returns M0(νn < 2000) + M1, n
 of the published model, kept as published).
 
 f0 (type × lubrication method) and f1 = z (P0/C0)^y with the load P1 (type) are data files
-(``data/palmgren_f0.csv``, ``data/palmgren_f1.csv``). **Every value in them is tagged [M]** (from
-memory of Harris & Kotzalas 2007 ch. 11 / Palmgren 1959, not verified with the search tool): use the
-results as indicative and pass ``f0``/``f1`` explicitly when you have the book's values.
+(``data/palmgren_f0.csv``, ``data/palmgren_f1.csv``). The rows of the original types are tagged [M] (from
+memory of Harris & Kotzalas 2007 ch. 11 / Palmgren 1959, not verified with the search tool); the spherical
+roller and needle rows are [S1] (one public transcription of Schaeffler's type values). Use the results as
+indicative and pass ``f0``/``f1`` explicitly when you have the book's values. Types with no source for
+their factors are refused (:data:`NOT_COVERED`).
 """
 
 from __future__ import annotations
@@ -50,6 +52,11 @@ M0_EXP = 2.0 / 3.0  # [-]
 M0_LOW_COEFF = 160.0e-7  # [-]
 #: Threshold of ν n [mm²/s · r/min] between the two branches.
 NU_N_THRESHOLD = 2000.0  # [mm²/s · r/min]
+#: Spherical roller P1 (Schaeffler, via one public transcription [S1]): coefficients of 1.6 F_a/e and of
+#: F_r [1 + 0.6 (F_a/(e F_r))³], and e = 1.5 tan α (ISO 281:2007 Table 8).
+SPHERICAL_P1_HIGH = 1.6  # [-]
+SPHERICAL_P1_CUBIC = 0.6  # [-]
+SPHERICAL_E_FACTOR = 1.5  # [-]
 
 _F0_FILE = "palmgren_f0.csv"
 _F1_FILE = "palmgren_f1.csv"
@@ -86,6 +93,17 @@ def _p1_thrust(fr, fa, alpha):
     return fa
 
 
+def _p1_spherical(fr, fa, alpha):
+    """Schaeffler's P1 of spherical roller bearings [S1]: 1.6 F_a/e or F_r [1 + 0.6 (F_a/(e F_r))³].
+
+    e = 1.5 tan α (ISO 281:2007 Table 8, double-row radial roller bearings); continuous at F_a/F_r = e.
+    """
+    e = SPHERICAL_E_FACTOR * np.tan(alpha)
+    ratio = fa / np.maximum(e * fr, np.finfo(float).tiny)
+    low = fr * (1.0 + SPHERICAL_P1_CUBIC * np.minimum(ratio, 1.0) ** 3)
+    return np.where(fa > e * fr, SPHERICAL_P1_HIGH * fa / e, low)
+
+
 #: Laws of the load P1 [N] of M1 (Harris & Kotzalas 2007 ch. 11 [M]); keys as in ``palmgren_f1.csv``.
 P1_LAWS = {
     "deep_groove": _p1_deep_groove,
@@ -93,6 +111,18 @@ P1_LAWS = {
     "radial": _p1_radial,
     "tapered": _p1_tapered,
     "thrust": _p1_thrust,
+    "spherical": _p1_spherical,
+}
+#: Laws whose P1 needs the nominal contact angle.
+_ANGLE_LAWS = ("angular", "tapered", "spherical")
+
+#: Bearing types whose Palmgren factors no source gave, and what is missing (refused in one line).
+NOT_COVERED = {
+    "self_aligning_ball": (
+        "no source found for the Palmgren factors of self-aligning ball bearings: f0 per lubrication, "
+        "f1 = z (P0/C0)^y (z, y) and the load P1 (Harris & Kotzalas 2007 ch. 11 tabulates them; not in a "
+        "searchable source, so bearingkit does not guess them)"
+    ),
 }
 
 
@@ -215,6 +245,10 @@ def palmgren_friction_moment(
     Palmgren A. (1959) Ball and Roller Bearing Engineering, 3rd ed., SKF Industries; Harris T.A.,
     Kotzalas M.N. (2007) Rolling Bearing Analysis 5th ed., Essential Concepts, ch. 11.
     """
+    if bearing_type in NOT_COVERED:
+        raise InputError(
+            f"bearing_type ({bearing_type!r}): Palmgren model refused: {NOT_COVERED[bearing_type]}"
+        )
     checks.one_of("bearing_type", bearing_type, palmgren_types())
     checks.positive("pitch_diameter", pitch_diameter, "m")
     checks.finite("speed", speed, "rad/s")
@@ -224,7 +258,7 @@ def palmgren_friction_moment(
     z, y, p1_key = f1_law(bearing_type)
     fr = np.asarray(load_radial, dtype=float)
     fa = np.asarray(load_axial, dtype=float)
-    if p1_key in ("angular", "tapered"):
+    if p1_key in _ANGLE_LAWS:
         if contact_angle is None:
             raise InputError(f"contact_angle (None rad) must be given for {bearing_type} (P1 law {p1_key!r})")
         checks.in_range("contact_angle", contact_angle, 0.0, np.pi / 2, "rad", closed=False)
@@ -268,6 +302,7 @@ def palmgren_friction_moment(
 REFERENCE_KEYS = ("palmgren1959", "harris2007_ch11")
 
 __all__ = [
+    "NOT_COVERED",
     "P1_LAWS",
     "PALMGREN_LUBRICATIONS",
     "f0_factor",

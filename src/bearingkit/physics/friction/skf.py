@@ -19,7 +19,8 @@ Model (SKF Group, Rolling bearings catalogue 10000 EN 2012 / 17000 EN 2018, chap
     \\mu_{sl} = \\phi_{bl}\\mu_{bl} + (1 - \\phi_{bl})\\mu_{EHL}, \\qquad
     \\phi_{bl} = \\exp[-2.6\\cdot10^{-8}(n\\nu)^{1.4} d_m]
 
-G_rr and G_sl per bearing type are in :data:`G_MODELS` (the registry of bearing types); their
+G_rr and G_sl per bearing type are in :data:`G_MODELS` (the registry of bearing types; the types SKF does
+not cover, e.g. needle roller bearings, are refused with what is missing, :data:`NOT_COVERED`); their
 constants per series are data (``data/skf_friction_constants.csv``, K_Z/K_L in ``skf_friction_kz.csv``,
 seal constants in ``skf_seal_constants.csv``), each row tagged with how far it was verified.
 
@@ -48,6 +49,7 @@ from bearingkit.physics.friction.skf_terms import (
     M_TO_MM,
     MU_BL,
     NMM_TO_NM,
+    NOT_COVERED,
     RAD_S_TO_RPM,
     RR_EXP,
     boundary_weighting,
@@ -159,6 +161,8 @@ def skf_friction_moment(
     SKF Group (2018) Rolling bearings, PUB BU/P1 17000 EN, chapter "Friction" (SKF 2012, 10000 EN, same
     model); G_rr/G_sl forms: Tables 2a/2b.
     """
+    if bearing_type in NOT_COVERED:
+        raise InputError(f"bearing_type ({bearing_type!r}): SKF model refused: {NOT_COVERED[bearing_type]}")
     checks.one_of("bearing_type", bearing_type, G_MODELS)
     checks.one_of("lubrication", lubrication, LUBRICATION_METHODS)
     checks.positive("bore_diameter", bore_diameter, "m")
@@ -250,6 +254,7 @@ REFERENCE_KEYS = ("skf2018_friction", "skf_friction")
 __all__ = [
     "G_MODELS",
     "LUBRICATION_METHODS",
+    "NOT_COVERED",
     "boundary_weighting",
     "drag_moment",
     "inlet_shear_factor",

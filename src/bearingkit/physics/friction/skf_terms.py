@@ -60,6 +60,17 @@ DRAG_FA_FACTOR = 0.05  # [-]
 DRAG_LEVEL_CAP = 1.2  # [-] H/d_m above which H = 1.2 d_m is used
 DRAG_CW = (2.789e-10, -2.786e-4, 0.0195, 0.6439)  # [-] C_w = a l_D³ + b l_D² + c l_D + d
 DRAG_LD_FACTOR = 5.0  # [-]
+#: Exponents of d_m in the self-aligning ball laws and the rotational F_g terms (SKF Table 2a, verified in
+#: the catalogue text): G_rr ∝ d_m², G_sl ∝ d_m^−0.12, F_g ∝ d_m^3.5.
+SA_RR_DM_EXP = 2.0  # [-]
+SA_SL_DM_EXP = -0.12  # [-]
+SA_FG_EXP = 3.5  # [-]
+#: Exponents of d_m in the spherical roller laws (SKF Table 2a, verified): G_rr.e 1.85, G_rr.l 2.3,
+#: G_sl.e 0.25, G_sl.l 0.94.
+SR_RR_E_DM_EXP = 1.85  # [-]
+SR_RR_L_DM_EXP = 2.3  # [-]
+SR_SL_E_DM_EXP = 0.25  # [-]
+SR_SL_L_DM_EXP = 0.94  # [-]
 
 #: Lubrication methods and their K_rs.
 LUBRICATION_METHODS = {
@@ -77,6 +88,7 @@ _ROLLER_TYPES = (
     "cylindrical_roller_full",
     "tapered_roller",
     "cylindrical_roller_thrust",
+    "spherical_roller",
 )
 _THRUST_TYPES = ("thrust_ball", "cylindrical_roller_thrust")
 
@@ -99,7 +111,7 @@ def series_constants(bearing_type: str, series: str | None = None) -> dict:
     Returns
     -------
     dict
-        ``R1 R2 R3 S1 S2 S3`` (NaN where the type has none), ``K_Z``, ``K_L``, ``series``, ``tag``,
+        ``R1 R2 R3 R4 S1 S2 S3 S4`` (NaN where the type has none), ``K_Z``, ``K_L``, ``series``, ``tag``,
         ``kz_tag``.
     """
     checks.one_of("bearing_type", bearing_type, G_MODELS)
@@ -112,7 +124,8 @@ def series_constants(bearing_type: str, series: str | None = None) -> dict:
     else:
         checks.one_of(f"series (of {bearing_type})", str(series), known)
         i = rows[known.index(str(series))]
-    out = {k: float(tables.column(_CONSTANTS_FILE, k)[i]) for k in ("R1", "R2", "R3", "S1", "S2", "S3")}
+    keys = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4")
+    out = {k: float(tables.column(_CONSTANTS_FILE, k)[i]) for k in keys}
     out["series"] = all_series[i]
     out["tag"] = tables.text_column(_CONSTANTS_FILE, "tag")[i]
     j = tables.text_column(_KZ_FILE, "bearing_type").index(bearing_type)
@@ -120,6 +133,19 @@ def series_constants(bearing_type: str, series: str | None = None) -> dict:
     out["K_L"] = float(tables.column(_KZ_FILE, "K_L")[j])
     out["kz_tag"] = tables.text_column(_KZ_FILE, "tag")[j]
     return out
+
+
+def series_keys(bearing_type: str) -> tuple[str, ...]:
+    """Series keys of ``data/skf_friction_constants.csv`` for a bearing type, in file order (first = default).
+
+    Parameters
+    ----------
+    bearing_type : str
+        A key of :data:`G_MODELS`.
+    """
+    types = tables.text_column(_CONSTANTS_FILE, "bearing_type")
+    series = tables.text_column(_CONSTANTS_FILE, "series")
+    return tuple(s for t, s in zip(types, series, strict=True) if t == bearing_type)
 
 
 def seal_constants(bearing_type: str, seal: str, outside_diameter_mm: float) -> tuple[float, float, float]:
@@ -307,6 +333,45 @@ def _g_angular(c, dm, fr, fa, n, extra):
     return g_rr, g_sl
 
 
+def _g_self_aligning(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, self-aligning ball bearings: F_g = R3 d_m^3.5 n² (rolling), S3 d_m^3.5 n² (sliding).
+
+    .. math::
+
+        G_{rr} = R_1 d_m^2 (F_r + F_g + R_2 F_a)^{0.54},\\qquad
+        G_{sl} = S_1 d_m^{-0.12} [(F_r + F_g)^{4/3} + S_2 F_a^{4/3}]
+    """
+    fg_rr = c["R3"] * dm**SA_FG_EXP * n**2
+    fg_sl = c["S3"] * dm**SA_FG_EXP * n**2
+    g_rr = c["R1"] * dm**SA_RR_DM_EXP * (fr + fg_rr + c["R2"] * fa) ** 0.54
+    g_sl = c["S1"] * dm**SA_SL_DM_EXP * ((fr + fg_sl) ** (4.0 / 3.0) + c["S2"] * fa ** (4.0 / 3.0))
+    return g_rr, g_sl
+
+
+def _g_spherical(c, dm, fr, fa, n, extra):
+    """SKF Table 2a, spherical roller bearings: the smaller of a ball-like (e) and a line-contact (l) law.
+
+    .. math::
+
+        G_{rr} = \\min\\bigl(R_1 d_m^{1.85}(F_r + R_2 F_a)^{0.54},\\
+                        R_3 d_m^{2.3}(F_r + R_4 F_a)^{0.31}\\bigr)
+
+        G_{sl} = \\min\\bigl(S_1 d_m^{0.25}(F_r^4 + S_2 F_a^4)^{1/3},\\
+                        S_3 d_m^{0.94}(F_r^3 + S_4 F_a^3)^{1/3}\\bigr)
+
+    (SKF: "G_rr = G_rr.e when G_rr.e < G_rr.l, otherwise G_rr.l"; likewise G_sl.)
+    """
+    g_rr = np.minimum(
+        c["R1"] * dm**SR_RR_E_DM_EXP * (fr + c["R2"] * fa) ** 0.54,
+        c["R3"] * dm**SR_RR_L_DM_EXP * (fr + c["R4"] * fa) ** 0.31,
+    )
+    g_sl = np.minimum(
+        c["S1"] * dm**SR_SL_E_DM_EXP * (fr**4 + c["S2"] * fa**4) ** (1.0 / 3.0),
+        c["S3"] * dm**SR_SL_L_DM_EXP * (fr**3 + c["S4"] * fa**3) ** (1.0 / 3.0),
+    )
+    return g_rr, g_sl
+
+
 def _g_cylindrical(c, dm, fr, fa, n, extra):
     """SKF Table 2a, cylindrical roller bearings (with cage or full complement)."""
     return c["R1"] * dm**2.41 * fr**0.31, c["S1"] * dm**0.9 * fa + c["S2"] * dm * fr
@@ -340,11 +405,22 @@ G_MODELS = {
     "angular_contact_ball": _g_angular,
     "angular_contact_ball_double": _g_angular,
     "four_point_contact_ball": _g_angular,
+    "self_aligning_ball": _g_self_aligning,
     "cylindrical_roller": _g_cylindrical,
     "cylindrical_roller_full": _g_cylindrical,
     "tapered_roller": _g_tapered,
     "thrust_ball": _g_thrust_ball,
     "cylindrical_roller_thrust": _g_cyl_thrust,
+    "spherical_roller": _g_spherical,
+}
+
+#: Bearing types the SKF model does not cover, with what is missing (the refusal says it in one line).
+NOT_COVERED = {
+    "needle_roller": (
+        "the SKF model gives no G_rr/G_sl law and no R/S constants for needle roller bearings (SKF "
+        "Table 2a and the geometry-constants table cover deep groove, angular contact, four-point, "
+        "self-aligning ball, cylindrical, tapered, spherical roller, CARB and thrust bearings only)"
+    ),
 }
 
 

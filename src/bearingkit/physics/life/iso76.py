@@ -110,7 +110,16 @@ def f0_thrust_ball(gamma):
     Parameters
     ----------
     gamma : array_like
-        γ = Dw cos α / Dpw (α != 90°) or Dw / Dpw (α = 90°) [-], tabulated 0 … 0.35.
+        γ = Dw cos α / Dpw [-], tabulated 0 … 0.35; γ = 0 for α = 90° (f0 = 61.6).
+
+    Notes
+    -----
+    The table is f0 = Q/Dw² at 4200 MPa (Hertz, groove radius 0.54 Dw) with the washer raceway's
+    circumferential curvature (2/Dw) γ/(1 − γ) (tests/physics/life/test_iso76.py reproduces every checked
+    row). That curvature is n_r/r, the radial share of the contact normal over the contact radius; at
+    α = 90° the normal is axial and the curvature vanishes, so γ = Dw cos 90°/Dpw = 0 — unlike ISO 281
+    Table 4, whose α = 90° column takes Dw/Dpw for the rolling kinematics (the (1 ∓ γ) speed terms),
+    which a static stress criterion does not contain.
     """
     return tables.interp_strict(
         "gamma", gamma, tables.column(_F0_THRUST, "gamma"), tables.column(_F0_THRUST, "f0")
@@ -127,8 +136,8 @@ def static_rating_ball(
         C_{0r} = f_0\\, i\\, Z\\, D_w^2 \\cos\\alpha \\quad\\text{(radial)},\\qquad
         C_{0a} = f_0\\, Z\\, D_w^2 \\sin\\alpha \\quad\\text{(thrust; } \\sin 90° = 1)
 
-    with f0 from ISO 76:2006 Table 1 (radial, γ = Dw cos α/Dpw) or Table 3 (thrust, γ = Dw cos α/Dpw for
-    α != 90°, Dw/Dpw for α = 90°).
+    with f0 from ISO 76:2006 Table 1 (radial) or Table 3 (thrust), both at γ = Dw cos α/Dpw (thrust
+    α = 90°: γ = 0, see :func:`f0_thrust_ball`).
 
     Parameters
     ----------
@@ -164,7 +173,8 @@ def static_rating_ball(
     checks.positive("n_elements", n_elements)
     checks.positive("n_rows", n_rows)
     is_90 = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
-    gamma = np.where(is_90, dw / dpw, dw * np.cos(alpha) / dpw)
+    # Dw cos α/Dpw, exactly 0 at α = 90° (cos(π/2) is 6e-17 in floating point)
+    gamma = np.where(is_90, 0.0, dw * np.cos(alpha) / dpw)
     if f0 is None:
         f0 = f0_thrust_ball(gamma) if thrust else f0_radial_ball(gamma)
     else:

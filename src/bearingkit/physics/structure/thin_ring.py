@@ -159,6 +159,28 @@ def _modes_n():
     return np.arange(2, N_SERIES + 2, dtype=float)
 
 
+#: Angles per block of the correction series: the (block, N_SERIES) temporary stays at 8 MiB
+#: whatever the number of cases and elements (the series used to be formed for every angle at once,
+#: cases × elements² × N_SERIES floats: 2.4 GiB for 100 load cases of the ball–column bearing).
+SERIES_BLOCK = 16384
+
+
+def _series(t, b, term):
+    """Σ_n term(n, θ, β) over the modes n = 2 … N_SERIES + 1, only where 0 < β ≤ :data:`BETA_SERIES`.
+
+    ``t`` and ``b`` are broadcast arrays of one shape; the sum is formed in blocks of
+    :data:`SERIES_BLOCK` angles, so the temporary does not grow with the number of angles.
+    """
+    out = np.zeros(t.shape)
+    where = np.flatnonzero((b > 0) & (b <= BETA_SERIES))
+    flat_t, flat_b, flat_out = t.reshape(-1), b.reshape(-1), out.reshape(-1)
+    n = _modes_n()
+    for start in range(0, where.size, SERIES_BLOCK):
+        k = where[start : start + SERIES_BLOCK]
+        flat_out[k] = np.sum(term(n, flat_t[k, None], flat_b[k, None]), axis=-1)
+    return out
+
+
 def ring_radial_kernel(theta, beta=0.0):
     """Dimensionless radial-load kernel S_β(θ) = Σ_{n≥2} cos nθ / ((n² − 1)² + β).
 
@@ -202,10 +224,13 @@ def ring_radial_kernel(theta, beta=0.0):
     if not np.any(b):
         return free + np.zeros_like(b)
     t, b, free = np.broadcast_arrays(t, b, free)
-    n = _modes_n()
-    m = (n * n - 1.0) ** 2
-    bs = np.minimum(b, BETA_SERIES)[..., None]  # the series branch, evaluated on a safe β
-    series = free - bs[..., 0] * np.sum(np.cos(n * t[..., None]) / (m * (m + bs)), axis=-1)
+
+    def term(n, t, b):
+        m = (n * n - 1.0) ** 2
+        return np.cos(n * t) / (m * (m + b))
+
+    # the series is used where β ≤ BETA_SERIES only
+    series = free - np.where(b <= BETA_SERIES, b, 0.0) * _series(t, b, term)
     big = np.where(b > BETA_SERIES, b, 1.0)  # the closed-form branch, on a safe β
     big = np.where(np.isinf(big), 1.0, big)
     z = _winkler_z(big)
@@ -253,10 +278,12 @@ def ring_couple_kernel(theta, beta=0.0):
     if not np.any(b):
         return free + np.zeros_like(b)
     t, b, free = np.broadcast_arrays(t, b, free)
-    n = _modes_n()
-    m = n * n - 1.0
-    bs = np.minimum(b, BETA_SERIES)[..., None]
-    series = free - bs[..., 0] * np.sum(np.sin(n * t[..., None]) / (n * m * (m * m + bs)), axis=-1)
+
+    def term(n, t, b):
+        m = n * n - 1.0
+        return np.sin(n * t) / (n * m * (m * m + b))
+
+    series = free - np.where(b <= BETA_SERIES, b, 0.0) * _series(t, b, term)
     big = np.where(b > BETA_SERIES, b, 1.0)
     big = np.where(np.isinf(big), 1.0, big)
     z = _winkler_z(big)
@@ -309,6 +336,30 @@ def housing_wall_stiffness(youngs_modulus, wall_thickness, radius, width):
     return e * t * np.asarray(width, float) / np.asarray(radius, float) ** 2
 
 
+def _shared_angles(theta_eval, theta_load, *params):
+    """(θ_eval, θ_load, leading shape) when every case has the same angles and the parameters are scalars.
+
+    Returns None otherwise. The element azimuths of a bearing are the same in every load case, so the
+    influence matrix is formed once and broadcast over the cases: memory O(elements²), not
+    O(cases × elements²).
+    """
+    te, tl = np.asarray(theta_eval, dtype=float), np.asarray(theta_load, dtype=float)
+    if te.ndim < 1 or tl.ndim < 1 or any(np.ndim(p) for p in params):
+        return None
+    try:
+        lead = np.broadcast_shapes(te.shape[:-1], tl.shape[:-1])
+    except ValueError:
+        return None
+    if not lead:
+        return None
+    te2, tl2 = te.reshape(-1, te.shape[-1]), tl.reshape(-1, tl.shape[-1])
+    if np.array_equal(te2, np.broadcast_to(te2[0], te2.shape)) and np.array_equal(
+        tl2, np.broadcast_to(tl2[0], tl2.shape)
+    ):
+        return te2[0], tl2[0], lead
+    return None
+
+
 def radial_influence(theta_eval, theta_load, radius, flexural_rigidity, housing_stiffness=0.0):
     """Influence matrix C [m/N]: outward deflection at θ_eval per unit outward radial force at θ_load.
 
@@ -337,9 +388,17 @@ def radial_influence(theta_eval, theta_load, radius, flexural_rigidity, housing_
 
     Symmetric for coincident point sets (Maxwell–Betti reciprocity) and positive semi-definite.
     Reference: Roark & Young 2012 §9.2; Li et al. 2025 (doi:10.3390/machines13090785) eq. 8.
+
+    When every case (leading index) has the same angles and the parameters are scalars, the matrix
+    is formed once and returned as a read-only broadcast view (memory of one M × N matrix).
     """
     checks.positive("radius", radius, "m")
     ei = _rigidity(flexural_rigidity)
+    shared = _shared_angles(theta_eval, theta_load, radius, flexural_rigidity, housing_stiffness)
+    if shared is not None:
+        te, tl, lead = shared
+        one = radial_influence(te, tl, radius, flexural_rigidity, housing_stiffness)
+        return np.broadcast_to(one, (*lead, *one.shape))
     te = np.asarray(theta_eval, dtype=float)[..., :, None]
     tl = np.asarray(theta_load, dtype=float)[..., None, :]
     r = np.asarray(radius, dtype=float)[..., None, None]
@@ -369,10 +428,16 @@ def couple_influence(theta_eval, theta_load, radius, flexural_rigidity, housing_
     .. math:: C^{M}_{mn} = -\\frac{R^2}{\\pi EI} T_\\beta(\\theta_m - \\varphi_n)
 
     The couple is positive counter-clockwise about +z (the bearing axis); section rotation
-    β = (v − w′)/R. Li et al. 2025 eq. (8), second sum.
+    β = (v − w′)/R. Li et al. 2025 eq. (8), second sum. Angles shared by every case: a read-only
+    broadcast view, as :func:`radial_influence`.
     """
     checks.positive("radius", radius, "m")
     _rigidity(flexural_rigidity)
+    shared = _shared_angles(theta_eval, theta_load, radius, flexural_rigidity, housing_stiffness)
+    if shared is not None:
+        te, tl, lead = shared
+        one = couple_influence(te, tl, radius, flexural_rigidity, housing_stiffness)
+        return np.broadcast_to(one, (*lead, *one.shape))
     te = np.asarray(theta_eval, dtype=float)[..., :, None]
     tl = np.asarray(theta_load, dtype=float)[..., None, :]
     r = np.asarray(radius, dtype=float)[..., None, None]

@@ -1,0 +1,587 @@
+"""Outputs of the generic evaluator: named quantities of the pipeline's Analysis.
+
+SI units: every output names its unit in its name (``u_x_m``, ``k_xx_N_per_m``, ``L10r_h``) and in
+:attr:`Quantity.unit`. :func:`catalogue` lists what a bearing input offers (the row names and the
+duty-cycle bins make it input-specific); :func:`extract` reads the asked-for ones from an Analysis of
+G study cases (its first G load cases) — each part of the Analysis (statics, per-row states, rating,
+friction, duty cycle) is computed only when an asked-for output needs it. Values a part cannot give
+for a case (a life of a case that did not converge, friction without a lubricant) are NaN.
+
+``bearingkit study --list-outputs FILE`` prints the catalogue of a bearing file with units.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["DOFS", "Quantity", "catalogue", "extract", "parts_of"]
+
+#: Degrees of freedom of the inner ring, in the solver's order, as they appear in output names.
+DOFS = ("x", "y", "z", "thx", "thy")
+_DOF_LONG = ("u_x", "u_y", "u_z", "theta_x", "theta_y")
+
+#: The parts of an Analysis, in the order they are computed (a later part may need an earlier one).
+PARTS = ("statics", "rows", "rating", "lubrication", "friction", "duty")
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """One output: its column name, SI unit, meaning, the Analysis part it needs and how to read it.
+
+    ``get(ctx)`` returns an array (G,) for the G study cases of the context (:class:`_Context`).
+    """
+
+    name: str
+    unit: str
+    description: str
+    part: str
+    get: Callable
+
+
+@dataclass
+class _Context:
+    """An Analysis whose first ``n`` load cases are the study cases; ``duty`` the (n, B) bin block."""
+
+    analysis: object
+    n: int
+    duty: dict | None = None
+
+    @property
+    def statics(self):
+        """The solve the outputs read: the coupled flexible-ring solve where the input has one."""
+        flex = self.analysis.flexible
+        return self.analysis.statics if flex is None else flex.result
+
+    @property
+    def converged(self):
+        flex = self.analysis.flexible
+        return self.statics.converged if flex is None else flex.converged
+
+
+def _first(values, n):
+    return np.asarray(values)[:n]
+
+
+def _masked(values, n):
+    return np.ma.filled(np.ma.asarray(values).astype(float), np.nan)[:n]
+
+
+def _stiffness_unit(i: int, j: int) -> str:
+    rot = (i >= 3) + (j >= 3)
+    return ("N/m", "N/rad", "N·m/rad")[rot]
+
+
+def _stiffness_name(i: int, j: int) -> str:
+    a, b = DOFS[i], DOFS[j]
+    key = f"k_{a}{b}" if i < 3 and j < 3 else f"k_{a}_{b}"
+    suffix = {"N/m": "N_per_m", "N/rad": "N_per_rad", "N·m/rad": "Nm_per_rad"}[_stiffness_unit(i, j)]
+    return f"{key}_{suffix}"
+
+
+def _element(kind: str) -> str:
+    return "ball" if kind == "ball" else "roller"
+
+
+def _group_share(c: _Context, members: Sequence[str], rows: Sequence[str], what: str) -> np.ndarray:
+    return sum(_share(c, r, rows, what) for r in members)
+
+
+def _groups(model_rows) -> list[Quantity]:
+    """Shares of the ball rows and of the roller rows, for bearings that have both."""
+    rows = tuple(r.name for r in model_rows)
+    groups: dict[str, list[str]] = {}
+    for r in model_rows:
+        groups.setdefault(_element(r.kind), []).append(r.name)
+    if len(groups) < 2:
+        return []
+    out = []
+    for element, members in groups.items():
+        for what in ("radial", "axial"):
+            out.append(
+                Quantity(
+                    f"{element}_rows_{what}_share",
+                    "-",
+                    f"share of the rows' {what} forces the {element} rows ({', '.join(members)}) carry",
+                    "statics",
+                    lambda c, m=tuple(members), w=what: _group_share(c, m, rows, w),
+                )
+            )
+    return out
+
+
+def _statics(rows: Sequence[str]) -> list[Quantity]:
+    out = []
+    for k, (dof, unit) in enumerate(zip(_DOF_LONG, ("m", "m", "m", "rad", "rad"), strict=True)):
+        out.append(
+            Quantity(
+                f"{dof}_{unit}",
+                unit,
+                f"displacement {dof} of the inner ring",
+                "statics",
+                lambda c, k=k: c.statics.displacement[: c.n, k],
+            )
+        )
+    out += [
+        Quantity(
+            "radial_displacement_m",
+            "m",
+            "radial displacement √(u_x² + u_y²)",
+            "statics",
+            lambda c: np.hypot(c.statics.displacement[: c.n, 0], c.statics.displacement[: c.n, 1]),
+        ),
+        Quantity(
+            "tilt_rad",
+            "rad",
+            "tilt √(θ_x² + θ_y²) of the inner ring",
+            "statics",
+            lambda c: np.hypot(c.statics.displacement[: c.n, 3], c.statics.displacement[: c.n, 4]),
+        ),
+    ]
+    for i in range(5):
+        for j in range(i, 5):
+            out.append(
+                Quantity(
+                    _stiffness_name(i, j),
+                    _stiffness_unit(i, j),
+                    f"tangent stiffness −∂F_{DOFS[i]}/∂{DOFS[j]} at the solution",
+                    "statics",
+                    lambda c, i=i, j=j: c.statics.stiffness[: c.n, i, j],
+                )
+            )
+    out += [
+        Quantity(
+            "converged", "bool", "the case converged", "statics", lambda c: _first(c.converged, c.n)
+        ),
+        Quantity(
+            "iterations", "count", "Newton iterations", "statics", lambda c: _first(c.statics.iterations, c.n)
+        ),
+    ]
+    for name in rows:
+        out += [
+            Quantity(
+                f"{name}_radial_load_N",
+                "N",
+                f"radial force row {name!r} carries",
+                "statics",
+                lambda c, r=name: np.hypot(*c.statics.row_load(r)[: c.n, :2].T),
+            ),
+            Quantity(
+                f"{name}_axial_load_N",
+                "N",
+                f"axial force row {name!r} carries (signed, along +z)",
+                "statics",
+                lambda c, r=name: c.statics.row_load(r)[: c.n, 2],
+            ),
+        ]
+    if len(rows) > 1:
+        for name in rows:
+            out += [
+                Quantity(
+                    f"{name}_radial_share",
+                    "-",
+                    f"share of the rows' radial forces row {name!r} carries",
+                    "statics",
+                    lambda c, r=name, rows=tuple(rows): _share(c, r, rows, "radial"),
+                ),
+                Quantity(
+                    f"{name}_axial_share",
+                    "-",
+                    f"share of the rows' |axial forces| row {name!r} carries",
+                    "statics",
+                    lambda c, r=name, rows=tuple(rows): _share(c, r, rows, "axial"),
+                ),
+            ]
+    return out
+
+
+def _share(c: _Context, row: str, rows: Sequence[str], what: str) -> np.ndarray:
+    def size(r):
+        f = c.statics.row_load(r)[: c.n]
+        return np.hypot(f[:, 0], f[:, 1]) if what == "radial" else np.abs(f[:, 2])
+
+    total = sum(size(r) for r in rows)
+    mine = size(row)
+    return np.divide(mine, total, out=np.full_like(total, np.nan), where=total > 0)
+
+
+def _row_state(c: _Context, name: str):
+    return c.statics.row(name)
+
+
+def _contact_angle(c: _Context, name: str) -> np.ndarray:
+    state = _row_state(c, name)
+    load = state.load[: c.n]
+    k = np.argmax(load, axis=1)
+    angle = np.asarray(np.broadcast_to(state.contact_angle, state.load.shape))[: c.n]
+    return np.take_along_axis(angle, k[:, None], axis=1)[:, 0]
+
+
+def _rows(rows: Sequence[str]) -> list[Quantity]:
+    out = []
+    for name in rows:
+        out += [
+            Quantity(
+                f"{name}_max_load_N",
+                "N",
+                f"largest element load of row {name!r}",
+                "rows",
+                lambda c, r=name: _row_state(c, r).max_load[: c.n],
+            ),
+            Quantity(
+                f"{name}_max_pressure_Pa",
+                "Pa",
+                f"largest contact pressure of row {name!r}",
+                "rows",
+                lambda c, r=name: _row_state(c, r).max_pressure[: c.n].max(axis=-1),
+            ),
+            Quantity(
+                f"{name}_loaded_count",
+                "count",
+                f"elements of row {name!r} in contact",
+                "rows",
+                lambda c, r=name: _row_state(c, r).loaded_count[: c.n],
+            ),
+            Quantity(
+                f"{name}_contact_angle_rad",
+                "rad",
+                f"operating contact angle of the most loaded element of row {name!r}",
+                "rows",
+                lambda c, r=name: _contact_angle(c, r),
+            ),
+        ]
+    out += [
+        Quantity(
+            "max_load_N",
+            "N",
+            "largest element load of the bearing",
+            "rows",
+            lambda c: np.max([_row_state(c, r).max_load[: c.n] for r in rows], axis=0),
+        ),
+        Quantity(
+            "max_pressure_Pa",
+            "Pa",
+            "largest contact pressure of the bearing",
+            "rows",
+            lambda c: np.max([_row_state(c, r).max_pressure[: c.n].max(axis=-1) for r in rows], axis=0),
+        ),
+    ]
+    return out
+
+
+def _edge_ratio(c: _Context, name: str) -> np.ndarray:
+    """Largest end-slice pressure over the row's largest slice pressure (what the edge-loading flag tests)."""
+    ex = _row_state(c, name).extras
+    p = np.maximum(ex["slice_pressure_inner"], ex["slice_pressure_outer"])[: c.n]
+    p_row = p.max(axis=(-2, -1))
+    p_end = np.maximum(p[..., 0], p[..., -1]).max(axis=-1)
+    return np.divide(p_end, p_row, out=np.full_like(p_row, np.nan), where=p_row > 0)
+
+
+def _edges(sliced: Sequence[str]) -> list[Quantity]:
+    return [
+        Quantity(
+            f"{name}_edge_pressure_ratio",
+            "-",
+            f"largest end-slice pressure over the largest slice pressure of row {name!r} (edge loading "
+            "when it reaches the rating's edge_pressure_ratio)",
+            "rows",
+            lambda c, r=name: _edge_ratio(c, r),
+        )
+        for name in sliced
+    ]
+
+
+def _flag(c: _Context, row: str, flag: str) -> np.ndarray:
+    rating = _rating(c)
+    if rating is None:
+        return np.zeros(c.n, bool)
+    return np.asarray(rating.row(row).flags.get(flag, np.zeros(rating.n_cases, bool)), bool)[: c.n]
+
+
+def _flags(rows) -> list[Quantity]:
+    """Rating flags per row: static overload; truncated ellipse (ball rows), edge loading (sliced rollers)."""
+    out = []
+    for row in rows:
+        names = ["static_overload"]
+        if row.kind == "ball":
+            names.append("truncated_ellipse")
+        if row.kind in ("cylindrical", "tapered") and int(getattr(row, "n_slices", 1)) > 1:
+            names.append("edge_loading")
+        out += [
+            Quantity(
+                f"{row.name}_{flag}",
+                "bool",
+                f"rating flag {flag.replace('_', ' ')} of row {row.name!r}",
+                "rating",
+                lambda c, r=row.name, f=flag: _flag(c, r, f),
+            )
+            for flag in names
+        ]
+    return out
+
+
+def _rating(c: _Context):
+    return c.analysis.rating
+
+
+def _rated(c: _Context, get) -> np.ndarray:
+    rating = _rating(c)
+    if rating is None:
+        return np.full(c.n, np.nan)
+    return get(rating)
+
+
+def _ratings(rows: Sequence[str]) -> list[Quantity]:
+    out = [
+        Quantity(
+            "L10r_rev",
+            "rev",
+            "basic reference rating life of the bearing (ISO/TS 16281, from the load distribution)",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.life, c.n)),
+        ),
+        Quantity(
+            "L10r_h",
+            "h",
+            "L10r in hours at the case's speed",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.hours(r.life), c.n)),
+        ),
+        Quantity(
+            "Lnr_rev",
+            "rev",
+            "L10r at the analysis's reliability (a1 L10r)",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.life_reliability, c.n)),
+        ),
+        Quantity(
+            "Lnmr_rev",
+            "rev",
+            "modified reference rating life a1 a_ISO L10r (ISO/TS 16281; needs a lubricant, e_C and a speed)",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.modified_life, c.n)),
+        ),
+        Quantity(
+            "Lnmr_h",
+            "h",
+            "L_nmr in hours at the case's speed",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.hours(r.modified_life), c.n)),
+        ),
+        Quantity(
+            "s0",
+            "-",
+            "static safety factor of the bearing (ISO 76, from the largest contact pressure)",
+            "rating",
+            lambda c: _rated(c, lambda r: _masked(r.static_safety, c.n)),
+        ),
+    ]
+    for name in rows:
+        out += [
+            Quantity(
+                f"{name}_L10r_rev",
+                "rev",
+                f"basic reference rating life of row {name!r}",
+                "rating",
+                lambda c, n=name: _rated(c, lambda r: _masked(r.row(n).life, c.n)),
+            ),
+            Quantity(
+                f"{name}_s0",
+                "-",
+                f"static safety factor of row {name!r}",
+                "rating",
+                lambda c, n=name: _rated(c, lambda r: _masked(r.row(n).static_safety, c.n)),
+            ),
+            Quantity(
+                f"{name}_a_ISO",
+                "-",
+                f"life modification factor a_ISO of row {name!r} (ISO 281 9.3)",
+                "rating",
+                lambda c, n=name: _rated(c, lambda r: _masked(r.row(n).life_modification, c.n)),
+            ),
+        ]
+    return out
+
+
+def _friction_of(c: _Context, attr: str) -> np.ndarray:
+    outcome = c.analysis.friction
+    if outcome is None:
+        return np.full(c.n, np.nan)
+    return np.asarray(getattr(outcome, attr), dtype=float)[: c.n]
+
+
+def _friction() -> list[Quantity]:
+    return [
+        Quantity(
+            "friction_torque_Nm",
+            "N·m",
+            "friction torque (the analysis's friction model)",
+            "friction",
+            lambda c: _friction_of(c, "total"),
+        ),
+        Quantity(
+            "power_loss_W",
+            "W",
+            "friction power loss M |ω|",
+            "friction",
+            lambda c: _friction_of(c, "power_loss"),
+        ),
+    ]
+
+
+def _lubrication_of(c: _Context):
+    outcome = c.analysis.lubrication
+    return None if outcome is None else outcome.result
+
+
+def _kappa(c: _Context, rows: Sequence[str]) -> np.ndarray:
+    res = _lubrication_of(c)
+    if res is None:
+        return np.full(c.n, np.nan)
+    values = [np.asarray(res.kappa[r], float)[: c.n] for r in rows if r in res.kappa]
+    return np.min(values, axis=0) if values else np.full(c.n, np.nan)
+
+
+def _film(c: _Context, row: str) -> np.ndarray:
+    res = _lubrication_of(c)
+    if res is None:
+        return np.full(c.n, np.nan)
+    for f in res.films:
+        if f.row == row:
+            hi = np.where(f.loaded_inner, f.film_minimum_inner, np.inf).min(-1)
+            ho = np.where(f.loaded_outer, f.film_minimum_outer, np.inf).min(-1)
+            h = np.minimum(hi, ho)[: c.n]
+            return np.where(np.isfinite(h), h, np.nan)
+    return np.full(c.n, np.nan)
+
+
+def _lubrication(rows: Sequence[str]) -> list[Quantity]:
+    out = [
+        Quantity(
+            "kappa",
+            "-",
+            "viscosity ratio κ = ν/ν1 (ISO 281 9.3.3; the smallest over the rows; NaN at rest)",
+            "lubrication",
+            lambda c: _kappa(c, rows),
+        )
+    ]
+    for name in rows:
+        if len(rows) > 1:
+            out.append(
+                Quantity(
+                    f"{name}_kappa",
+                    "-",
+                    f"viscosity ratio κ of row {name!r}",
+                    "lubrication",
+                    lambda c, r=name: _kappa(c, (r,)),
+                )
+            )
+        out.append(
+            Quantity(
+                f"{name}_film_min_m",
+                "m",
+                f"smallest minimum film thickness over the loaded contacts of row {name!r} (EHL)",
+                "lubrication",
+                lambda c, r=name: _film(c, r),
+            )
+        )
+    return out
+
+
+def _duty(bins: Sequence[str]) -> list[Quantity]:
+    out = [
+        Quantity(
+            "duty_L10r_rev",
+            "rev",
+            "L10r over the duty cycle (Palmgren–Miner sum of the bins' lives)",
+            "duty",
+            lambda c: c.duty["L10r_rev"],
+        ),
+        Quantity(
+            "duty_L10r_h",
+            "h",
+            "L10r over the duty cycle, in hours",
+            "duty",
+            lambda c: c.duty["L10r_h"],
+        ),
+        Quantity(
+            "duty_Lnmr_rev",
+            "rev",
+            "L_nmr over the duty cycle (Palmgren–Miner)",
+            "duty",
+            lambda c: c.duty["Lnmr_rev"],
+        ),
+        Quantity(
+            "duty_Lnmr_h",
+            "h",
+            "L_nmr over the duty cycle, in hours",
+            "duty",
+            lambda c: c.duty["Lnmr_h"],
+        ),
+    ]
+    for b, name in enumerate(bins):
+        out += [
+            Quantity(
+                f"duty_{name}_L10r_rev",
+                "rev",
+                f"L10r of duty-cycle bin {name!r}",
+                "duty",
+                lambda c, b=b: c.duty["bin_L10r"][:, b],
+            ),
+            Quantity(
+                f"duty_{name}_damage_share",
+                "-",
+                f"share of the duty-cycle damage bin {name!r} does",
+                "duty",
+                lambda c, b=b: c.duty["L10r_damage_share"][:, b],
+            ),
+        ]
+    return out
+
+
+def _warnings() -> list[Quantity]:
+    return [
+        Quantity(
+            "warnings_count",
+            "count",
+            "warnings of the case (statics and ratings: non-convergence, overload, edge loading …)",
+            "rating",
+            lambda c: np.array([len(w) for w in c.analysis.warnings[: c.n]], dtype=int),
+        )
+    ]
+
+
+def catalogue(bearing) -> dict[str, Quantity]:
+    """Every output the generic evaluator offers for ``bearing`` (a BearingInput), by name.
+
+    Lubrication and friction outputs need a lubricant (the file's, or ``lubricant.name`` set by the
+    study; NaN without one); duty-cycle outputs are offered when the input has a ``[[duty_cycle]]``.
+    """
+    rows = [r.name for r in bearing.model.rows]
+    sliced = [
+        r.name
+        for r in bearing.model.rows
+        if r.kind in ("cylindrical", "tapered") and int(getattr(r, "n_slices", 1)) > 1
+    ]
+    items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
+    items += _flags(bearing.model.rows)
+    items += _warnings()
+    items += _lubrication(rows) + _friction()  # NaN without a lubricant (a study may set lubricant.name)
+    cycle = getattr(bearing, "duty_cycle", None)
+    if cycle is not None:
+        items += _duty(cycle.names)
+    return {q.name: q for q in items}
+
+
+def parts_of(quantities) -> set[str]:
+    """The Analysis parts the given quantities need."""
+    return {q.part for q in quantities}
+
+
+def extract(analysis, n: int, quantities, duty: dict | None = None) -> dict[str, np.ndarray]:
+    """Read ``quantities`` (Quantity objects) of the first ``n`` cases of ``analysis`` → name → (n,)."""
+    ctx = _Context(analysis, n, duty)
+    return {q.name: np.asarray(q.get(ctx)) for q in quantities}

@@ -1,0 +1,199 @@
+"""Estimates of the kinds of issue 17 (four-point, self-aligning ball, spherical roller, needle roller)
+and series 64: the checks beyond "within 10 % of the catalogue" (test_estimate.py) — where the rule
+constants come from, what a catalogue's rating basis is, and the stated deviations.
+
+Catalogues: NSK *Rolling Bearings* CAT. No. E1102e (NSK-E1102) and SKF *General Catalogue* 6000, Russian
+edition, data of 2006 (SKF-6000RU); the page of every number is in the data files' ``source`` column.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearingkit.catalogue import basis, entries, estimate, find, four_point_radial, internal, ratings
+from bearingkit.catalogue.iso_ratings import axial_factors
+from bearingkit.catalogue.tables import reference_ratings, reference_table
+from bearingkit.physics.life import iso76, iso281
+
+DEG = math.pi / 180
+
+
+def errors(rows):
+    """(C, C0) relative errors of the estimate against each row's catalogue ratings."""
+    out = np.array([ratings(estimate(e)) for e in rows]) / np.array([(e.C, e.C0) for e in rows]) - 1.0
+    return out[:, 0], out[:, 1]
+
+
+# --- four-point contact ball (QJ) ---------------------------------------------------------------------
+def test_qj_contact_angle_is_35_deg_by_nsk_load_centre_spacing():
+    """NSK E1102 B68-B70 print the load-centre spacing a0 of every QJ bearing: a0 = d_m tan α with
+    d_m = (d + D)/2 gives α = 35.0° for all 30 rows (a0 printed to 0.1 mm), the angle the estimate uses."""
+    for e in entries("four_point_contact_ball").values():
+        alpha = math.atan(e.number("a0_mm", 1e-3) / (0.5 * (e.bore + e.outer_diameter)))
+        assert alpha == pytest.approx(35 * DEG, abs=0.2 * DEG), e.designation
+        assert estimate(e).contact_angle == pytest.approx(35 * DEG)
+
+
+def test_qj_axial_factors_are_the_double_row_angular_contact_ones():
+    """Pure axial load on a QJ bearing: P = 1.07 F_a, P0 = 0.58 F_a — the values SKF 6000 p. 455 prints
+    for four-point bearings (P = 0.6 F_r + 1.07 F_a, P0 = F_r + 0.58 F_a) and ISO 281 Table 3 / ISO 76
+    Table 2 give for a double-row angular contact bearing at 35° (physics.life.kinds)."""
+    y, y0 = axial_factors(35 * DEG)
+    assert y == pytest.approx(1.07, abs=1e-12) and y0 == pytest.approx(0.58, abs=1e-12)
+    assert basis("four_point_contact_ball").startswith("axial")
+
+
+def test_qj_nsk_axial_and_skf_radial_ratings_are_one_bearing_on_two_bases():
+    """The same QJ sizes in two catalogues: NSK prints C_a, C_0a (P_a = F_a), SKF C_r, C_0r with the
+    double-row factors. C_a = C_r/1.07 and C_0a = C_0r/0.58 connect them: NSK · Y / SKF lies at 0.88–1.05
+    (C) and 0.85–1.09 (C0) for all 30 common sizes, median 0.94 and 0.92 — the remaining few per cent are
+    the makers' own (several SKF rows are SKF Explorer, rated above ISO's b_m)."""
+    skf = reference_ratings("four_point_radial_skf")
+    y, y0 = axial_factors(35 * DEG)
+    rc, r0 = [], []
+    for e in entries("four_point_contact_ball").values():
+        c_r, c0_r, _ = skf[e.designation]
+        rc.append(e.C * y / c_r)
+        r0.append(e.C0 * y0 / c0_r)
+    assert len(rc) == 30
+    assert 0.85 < min(rc) and max(rc) < 1.05 and 0.90 < np.median(rc) < 0.97
+    assert 0.85 < min(r0) and max(r0) < 1.10 and 0.90 < np.median(r0) < 0.97
+
+
+def test_qj_radial_ratings_against_skf():
+    """The radial C_r, C_0r (i = 2, α = 35°) of the estimate against SKF 6000 pp. 456-458 within 10 % for
+    the listed sizes; over all 30 sizes the median error is -2 % (C) and -7 % (C0: SKF Explorer)."""
+    skf = reference_ratings("four_point_radial_skf")
+    rows = entries("four_point_contact_ball")
+    for name in ["QJ206", "QJ208", "QJ210", "QJ212", "QJ214", "QJ306", "QJ308", "QJ318"]:
+        c_r, c0_r = four_point_radial(estimate(rows[name]))
+        assert c_r == pytest.approx(skf[name][0], rel=0.10), name
+        assert c0_r == pytest.approx(skf[name][1], rel=0.10), name
+    ec = [four_point_radial(estimate(e))[0] / skf[e.designation][0] - 1 for e in rows.values()]
+    assert abs(np.median(ec)) < 0.05
+
+
+def test_qj_rule_is_the_angular_contact_rule_unchanged():
+    """No constant was chosen for QJ bearings: they use the single-row angular contact rule (k_w, cage pitch,
+    width cap), and the axial equivalents then follow NSK within 10 % for most sizes."""
+    assert internal.RULES["four_point_contact_ball"] == internal.RULES["angular_contact_ball"]
+    ec, e0 = errors(list(entries("four_point_contact_ball").values()))
+    assert np.mean(np.abs(ec) < 0.10) >= 0.8 and abs(np.median(ec)) < 0.05 and abs(np.median(e0)) < 0.05
+
+
+# --- self-aligning ball ----------------------------------------------------------------------------------
+def test_self_aligning_angle_from_published_e_and_balls_within_the_rings():
+    """α = atan(e/1.5) from NSK's e (ISO 281 Table 3: e = 1.5 tan α); the rows sit on the sphere at
+    z = ±(d_m/2) tan α, and the estimate keeps each ball within the ring width and on its side of the
+    centre plane (the engine refuses crossing rows)."""
+    for e in entries("self_aligning_ball").values():
+        est = estimate(e)
+        assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        z_c = 0.5 * est.pitch_diameter * math.tan(est.contact_angle)
+        assert z_c + 0.5 * est.element_diameter <= 0.5 * e.width + 1e-12, e.designation
+        assert z_c > 0.5 * est.element_diameter, e.designation
+
+
+def test_self_aligning_derived_factors_against_nsk():
+    """ISO 281 Table 2 column 3 and ISO 76 Table 1 column 2 (self-aligning) are not shipped; f_c and f0 are
+    DERIVED in physics.life.kinds (f_c: column 1 × the ISO/TR 1281-1 conformity ratio for the sphere;
+    f0: the ISO 76 stress definition at 4600 MPa). With the estimated geometry (cage pitch 1.20, the
+    angular contact value; ball size set by the ring width) C and C0 follow NSK E1102 B74-B79 over all 42
+    sizes with median errors within ±3 % and at least 3 sizes in 4 within 10 % — the comparison that
+    supports the derived columns (no constant was chosen to match C0)."""
+    ec, e0 = errors(list(entries("self_aligning_ball").values()))
+    assert len(ec) == 42
+    assert abs(np.median(ec)) < 0.03 and abs(np.median(e0)) < 0.03
+    assert np.mean(np.abs(ec) < 0.10) >= 0.75 and np.mean(np.abs(e0) < 0.10) >= 0.75
+
+
+# --- spherical roller --------------------------------------------------------------------------------------
+def test_spherical_rows_fit_radially_and_axially():
+    for e in entries("spherical_roller").values():
+        est = estimate(e)
+        assert est.rows == 2 and math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        assert internal.axial_margin(est) > 0, e.designation
+
+
+def test_spherical_small_sizes_are_nsk_older_c_design():
+    """NSK E1102 lists 22205-22207 in its design C (B178: "type EA has especially high load capacity");
+    the rules describe today's high-capacity designs, so their C lies 15-30 % above NSK's C design but
+    within 10 % of SKF's E design of the same size (SKF 6000 p. 716: 49, 64, 86.5 kN). That is the stated
+    mechanism of these three deviations; no constant was changed for them."""
+    skf = reference_ratings("spherical_roller_skf")
+    rows = entries("spherical_roller")
+    for name in ["22205", "22206", "22207"]:
+        e = rows[name]
+        assert e.extra["design"] == "C"
+        c, _ = ratings(estimate(e))
+        assert 0.15 < c / e.C - 1 < 0.30, name
+        assert c == pytest.approx(skf[name][0], rel=0.10), name
+    # for the sizes NSK makes in its high-capacity EA design the two makers differ by SKF Explorer's
+    # uplift only (SKF/NSK 1.02-1.16), and the estimate follows NSK
+    for name in ["22208", "22209", "22210", "22211", "22308", "22309", "22310", "22311"]:
+        e = rows[name]
+        c, _ = ratings(estimate(e))
+        assert e.extra["design"] == "EA" and 1.0 < skf[name][0] / e.C < 1.17
+        assert c == pytest.approx(e.C, rel=0.05), name
+
+
+# --- needle roller -----------------------------------------------------------------------------------------
+def test_needle_cage_pitch_and_length_from_nsk_cage_assemblies():
+    """Where the needle size is published: NSK's cage & needle assemblies (E1102 B248-B251) give F_w and
+    E_w, so D_w = (E_w - F_w)/2. With L_we = 0.80 B_c (the estimate's length ratio, assumed; C0 fixes only
+    Z L_we and C then varies as L_we^(1/36), so the C check hardly depends on it) the needle count that
+    gives the published C0 (ISO 76) makes ISO 281 give the published C within 2 % for every assembly, and
+    the pitch ratio π d_m/(Z D_w) of those sets lies at 1.5-2.1 with median 1.7 — where the rule's
+    cage pitch 1.80 comes from (needle cages are stout: a roller pitch of ~1.8 D_w)."""
+    rule = internal.RULES["needle_roller"]
+    pitches = []
+    for r in reference_table("needle_cage_assemblies_nsk"):
+        fw, ew, bc = (float(r[k]) * 1e-3 for k in ("F_w_mm", "E_w_mm", "B_c_mm"))
+        dw, length = 0.5 * (ew - fw), rule.length * bc
+        dm = fw + dw
+        z = float(r["C0r_N"]) / float(iso76.static_rating_roller(dw, length, dm, 0.0, 1))
+        c = float(iso281.dynamic_rating_roller(dw, length, dm, 0.0, z, 1, "needle_roller_machined"))
+        assert c == pytest.approx(float(r["Cr_N"]), rel=0.02), r["designation"]
+        pitches.append(math.pi * dm / (z * dw))
+    assert 1.5 < min(pitches) and max(pitches) < 2.15
+    assert abs(np.median(pitches) - rule.pitch) < 0.1
+
+
+def test_needle_ratings_follow_without_tuning_c0():
+    """With the pitch and length from the assemblies, only k_w (needle share of the section) was chosen,
+    by C over the NA table; C0 then follows NSK E1102 B260-B269 with a median error within ±5 %."""
+    rows = [e for e in entries("needle_roller").values() if not e.designation.startswith("R")]
+    ec, e0 = errors(rows)
+    assert len(rows) == 46
+    assert abs(np.median(ec)) < 0.05 and abs(np.median(e0)) < 0.05
+    assert np.mean(np.abs(ec) < 0.10) >= 0.8 and np.mean(np.abs(e0) < 0.10) >= 0.75
+
+
+def test_rna_twin_runs_on_the_shaft():
+    """RNA = NA without inner ring: bore = F_w, same outer ring, same needle set and NSK rating."""
+    rows = entries("needle_roller")
+    na, rna = rows["NA4906"], rows["RNA4906"]
+    assert rna.bore == pytest.approx(na.number("F_w_mm", 1e-3)) and rna.outer_diameter == na.outer_diameter
+    assert (rna.C, rna.C0) == (na.C, na.C0)
+    a, b = estimate(na), estimate(rna)
+    assert (a.n_elements, a.element_diameter, a.pitch_diameter) == (
+        b.n_elements,
+        b.element_diameter,
+        b.pitch_diameter,
+    )
+    assert a.extra["inner_ring"] and not b.extra["inner_ring"]
+    assert [e.designation for e in find("RNA49*")][:2] == ["RNA4900", "RNA4901"]
+
+
+# --- deep groove series 64 ----------------------------------------------------------------------------------
+def test_series_64_against_skf():
+    """Series 64 (not in NSK E1102) against SKF 6000 pp. 304-312: C and C0 within 10 % for the listed
+    sizes; the heavy section makes the width cap decide the ball size (0.80 B, the angular contact cap)."""
+    rows = {e.designation: e for e in find("64*")}
+    assert len(rows) == 16 and all(e.source.startswith("SKF-6000RU") for e in rows.values())
+    for name in ["6403", "6406", "6407", "6408", "6413", "6416", "6417", "6418"]:
+        c, c0 = ratings(estimate(rows[name]))
+        assert c == pytest.approx(rows[name].C, rel=0.10), name
+        assert c0 == pytest.approx(rows[name].C0, rel=0.10), name
+    assert "D_w capped at 0.8 B/1" in estimate(rows["6406"]).notes[1]

@@ -1,0 +1,180 @@
+"""Duty cycles: every bin rated in one batch, the combined life is the hand Miner sum of the bin lives."""
+
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+import bearingkit as bk
+from bearingkit.cli import app
+from bearingkit.errors import InputError
+from bearingkit.io.loader import from_dict
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "dgbb_6209_duty_cycle.toml"
+runner = CliRunner()
+
+
+@pytest.fixture(scope="module")
+def cycle():
+    return bk.analyze(EXAMPLE, contamination=0.5).rating_dict()["duty_cycle"]
+
+
+def test_combined_life_is_the_hand_miner_sum_of_the_bin_lives(cycle):
+    bins = cycle["bins"]
+    t = np.array([b["time_fraction"] for b in bins])
+    n = np.array([b["speed_rad_s"] for b in bins])
+    u = t * n / np.sum(t * n)  # revolution fractions, by hand
+    np.testing.assert_allclose([b["revolution_fraction"] for b in bins], u, rtol=1e-14)
+    for key in ("L10r_rev", "Lnmr_rev"):
+        lives = np.array([b[key] for b in bins])
+        assert np.all(np.isfinite(lives))
+        hand = 1.0 / np.sum(u / lives)
+        assert cycle[key] == pytest.approx(hand, rel=1e-13)
+        # hours: the revolutions over the mean revolution rate Σ t_i n_i / 2π [rev/s]
+        hours = hand / (np.sum(t * n) / (2 * math.pi)) / 3600.0
+        assert cycle[key.replace("_rev", "_h")] == pytest.approx(hours, rel=1e-13)
+    shares = np.array([b["damage_share"] for b in bins])
+    assert shares.sum() == pytest.approx(1.0, rel=1e-14)
+
+
+def test_each_bin_is_rated_as_its_own_load_case(cycle):
+    """A bin's life is that of the same load, speed and temperature analysed as a plain load case."""
+    for b in cycle["bins"]:
+        ld = b["load"]
+        a = bk.analyze(
+            EXAMPLE,
+            load={"F_x": f"{ld['F_x_N']!r} N", "F_z": f"{ld['F_z_N']!r} N"},
+            speed=b["speed_rad_s"],
+            temperature=b["temperature_C"],
+            contamination=0.5,
+        )
+        single = a.rating_dict()["cases"][0]["system"]
+        assert b["L10r_rev"] == pytest.approx(single["L10r_rev"], rel=1e-9)
+        assert b["Lnmr_rev"] == pytest.approx(single["Lnmr_rev"], rel=1e-9)
+        assert b["static_safety"] == pytest.approx(single["static_safety"], rel=1e-9)
+
+
+def _data() -> dict:
+    return tomllib.loads(EXAMPLE.read_text())
+
+
+def test_bins_at_rest_do_no_damage_and_do_not_block_the_modified_life():
+    data = _data()
+    data["duty_cycle"][3] = {**data["duty_cycle"][3], "speed": "0 rpm", "name": "parked"}
+    a = bk.analyze(from_dict(data, "rest.toml"), contamination=0.5)
+    d = a.rating_dict()["duty_cycle"]
+    parked = d["bins"][3]
+    assert parked["revolution_fraction"] == 0.0 and parked["damage_share"] == 0.0
+    assert parked["L10r_rev"] is None and parked["static_safety"] > 1.0
+    assert d["Lnmr_rev"] is not None
+    assert any("'parked' is at rest" in n for n in d["notes"])
+
+
+def test_unloaded_bin_counts_as_no_damage():
+    data = _data()
+    data["duty_cycle"][3] = {**data["duty_cycle"][3], "F_x": "0 N"}
+    d = bk.analyze(from_dict(data, "x.toml")).rating_dict()["duty_cycle"]
+    assert d["bins"][3]["no_load"] is True and d["bins"][3]["damage_share"] == 0.0
+    u = np.array([b["revolution_fraction"] for b in d["bins"][:3]])
+    lives = np.array([b["L10r_rev"] for b in d["bins"][:3]])
+    assert d["L10r_rev"] == pytest.approx(1.0 / np.sum(u / lives), rel=1e-13)
+
+
+def test_revolution_fractions_without_speeds_give_revolutions_only():
+    data = _data()
+    data["duty_cycle"] = [
+        {"name": "a", "F_x": "3 kN", "revolution_fraction": 0.7},
+        {"name": "b", "F_x": "6 kN", "revolution_fraction": 0.3},
+    ]
+    d = bk.analyze(from_dict(data, "x.toml")).rating_dict()["duty_cycle"]
+    lives = np.array([b["L10r_rev"] for b in d["bins"]])
+    assert d["L10r_rev"] == pytest.approx(1.0 / (0.7 / lives[0] + 0.3 / lives[1]), rel=1e-13)
+    assert d["L10r_h"] is None and any("no life in hours" in n for n in d["notes"])
+
+
+def test_a_file_with_only_a_duty_cycle_is_rated():
+    data = _data()
+    del data["load_cases"]
+    out = bk.analyze(from_dict(data, "x.toml")).rating_dict()
+    assert out["cases"] == [] and out["duty_cycle"]["L10r_rev"] > 0
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (
+            {0: {"time_fraction": 0.5}},
+            r"^x.toml: duty_cycle.time_fraction \(sum of the bins 0.95\) must sum to 1",
+        ),
+        (
+            {1: {"time_fraction": None, "revolution_fraction": 0.25}},
+            r"^x.toml: duty_cycle: mixes time_fraction and revolution_fraction",
+        ),
+        ({2: {"time_fraction": 1.5}}, r"duty_cycle\[2\]\.time_fraction \(1.5\) must lie in \[0, 1\]"),
+        ({0: {"speed": None}}, r"duty_cycle\[0\] \(cruise\)\.speed: missing; time fractions need"),
+        ({0: {"F_x": "3 kg"}}, r"duty_cycle\[0\]\.F_x \('3 kg'\)"),
+        ({1: {"time_fraction": None}}, r"give exactly one of them"),
+        ({1: {"name": "cruise"}}, r"^x.toml: duty_cycle.name \(\['cruise'\]\) must be unique$"),
+    ],
+)
+def test_bad_duty_cycles_are_one_line_naming_the_field(change, message):
+    data = _data()
+    for i, fields in change.items():
+        row = dict(data["duty_cycle"][i])
+        for k, v in fields.items():
+            if v is None:
+                row.pop(k, None)
+            else:
+                row[k] = v
+        data["duty_cycle"][i] = row
+    with pytest.raises(InputError, match=message) as err:
+        from_dict(data, "x.toml")
+    assert "\n" not in str(err.value)
+
+
+def test_cli_rating_shows_the_duty_cycle_and_json_has_it(tmp_path):
+    out = runner.invoke(app, ["rating", str(EXAMPLE), "--contamination", "0.5"])
+    assert out.exit_code == 0, out.stderr
+    assert "duty cycle: 4 bins, time fractions, Palmgren–Miner" in out.stdout
+    assert "over the cycle: L10r =" in out.stdout
+    data = json.loads(runner.invoke(app, ["rating", str(EXAMPLE), "--json"]).stdout)
+    assert [b["bin"] for b in data["duty_cycle"]["bins"]] == ["cruise", "climb", "peak", "idle"]
+
+
+def test_report_has_a_duty_cycle_section(tmp_path):
+    path = bk.analyze(EXAMPLE, contamination=0.5).report(tmp_path / "r.html")
+    html = path.read_text()
+    assert 'id="duty-cycle"' in html and "Palmgren–Miner" in html
+    assert "palmgren1924" in html and "miner1945" in html
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        (3.0, r"^x.toml: duty_cycle \(3.0\) must be an array of tables \(\[\[duty_cycle\]\] …\)$"),
+        ([{"F_x": "1 kN"}, 7], r"^x.toml: duty_cycle\[1\] \(7\) must be a table"),
+        ([{}] * 1001, r"^x.toml: duty_cycle \(1001 entries\) must have at most 1000 entries$"),
+    ],
+)  # fmt: skip
+def test_duty_cycle_shape_and_count_are_checked_before_the_bins(value, message):
+    """The cap of the load cases holds for the bins (one batched run, same memory); counted first."""
+    data = _data()
+    data["duty_cycle"] = value
+    with pytest.raises(InputError, match=message):
+        from_dict(data, "x.toml")
+
+
+def test_duty_cycle_bins_obey_the_contact_point_cap(monkeypatch):
+    from bearingkit.io import loader
+
+    monkeypatch.setattr(loader, "MAX_CASE_POINTS", 30)  # 4 bins × the 6209's 9 balls = 36 points
+    data = _data()
+    del data["load_cases"]
+    with pytest.raises(InputError, match=r"^x.toml: duty_cycle \(4 cases × 9 contact points\) must stay"):
+        from_dict(data, "x.toml")
