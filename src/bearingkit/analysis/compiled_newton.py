@@ -18,7 +18,6 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit, prange
 
 from bearingkit.analysis.cone import CONE_MISS_RTOL
 from bearingkit.analysis.newton import CONE_CHECK_ITERATION, MAX_HALVINGS, MECHANISM_RTOL
@@ -36,8 +35,12 @@ from bearingkit.rows.compiled_contacts import (
 )
 from bearingkit.rows.compiled_tapered import TaperedPack, pack_tapered, tapered_response
 from bearingkit.rows.cylindrical import CylindricalKernel
+from bearingkit.rows.numba_cache import configure
 from bearingkit.rows.tapered_kernel import TaperedKernel
 from bearingkit.rows.threaded import ThreadedKernel
+
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit, prange  # noqa: E402
 
 #: A bearing in compiled form: the packed rows of each kind, the rows' start matrices (R, 5, 5) and
 #: exponents (R,), the row count and the kinds present.

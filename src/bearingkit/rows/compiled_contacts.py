@@ -16,7 +16,11 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit
+
+from bearingkit.rows.numba_cache import configure
+
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit  # noqa: E402
 
 #: Packed ball rows (E balls): B (Cb, E, 2, 5), s0 (Cb, E, 2), a0, k_n, side (Cb, E), row (E,) int.
 BallPack = namedtuple("BallPack", "B s0 a0 kn side row")

@@ -15,8 +15,8 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit, prange
 
+from bearingkit.rows.numba_cache import configure
 from bearingkit.rows.tapered_kernel import (
     ROLLER_MAX_HALVINGS,
     ROLLER_MAX_ITER,
@@ -26,6 +26,9 @@ from bearingkit.rows.tapered_kernel import (
     ROLLER_STEP_CAP,
 )
 from bearingkit.rows.tapered_laws import TAYLOR_DELTA_FLOOR, TAYLOR_REGULAR_APPROACH
+
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit, prange  # noqa: E402
 
 #: Packed tapered rows (T rollers, S ≥ n_s slots): cone directions gi (T, S, 5), rib gf (T, 5); constant
 #: approach parts d0i, d0e (Ct, T, S) and Δ dev (Ct, T); slices ns (T,); local directions bi, be, bf
