@@ -1,10 +1,14 @@
-"""Load a bearing input file (TOML with units) into a model, load cases and solver settings.
+"""Load a bearing input file (TOML with units) into a :class:`BearingInput` (model, load cases, settings).
 
 SI inside: the schema (:mod:`bearingkit.io.schema`) turns every ``"6 mm"`` into metres; this
-module maps ``bearing.type`` to a builder of :mod:`bearingkit.bearings` through :data:`BUILDERS`,
-builds the :class:`~bearingkit.analysis.model.BearingModel`, checks that the rows fit the envelope,
-and forms the (C, 5) load matrix. Every malformed input raises
+module validates the file, resolves a designation (:mod:`bearingkit.io.designation`), maps
+``bearing.type`` to a builder of :data:`~bearingkit.io.builders.BUILDERS`, checks that the rows fit
+the envelope (:mod:`bearingkit.io.envelope`), forms the load cases (:mod:`bearingkit.io.load_cases`)
+and bounds their number (the caps below). Every malformed input raises
 :class:`bearingkit.errors.InputError` with one line: ``FILE: field (value) what was expected``.
+
+The names of those modules are importable from here as before (``loader.BUILDERS``,
+``loader.LoadCase``, ``loader.register_bearing_type`` …).
 
 >>> from bearingkit.io.loader import load_file
 >>> bearing = load_file("examples/seed000_composite.toml")      # doctest: +SKIP
@@ -14,7 +18,7 @@ and forms the (C, 5) load matrix. Every malformed input raises
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,16 +26,45 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.model import BearingModel
 from bearingkit.errors import InputError, did_you_mean, quote
-from bearingkit.io import kinds, schema, schema_cycle
+from bearingkit.io import schema, schema_cycle
+from bearingkit.io.builders import BUILDERS, register_bearing_type
+from bearingkit.io.designation import from_designation
+from bearingkit.io.envelope import check_envelope, check_shoulders
+from bearingkit.io.load_cases import (
+    DOF_NAMES,
+    LOAD_ALIASES,
+    LOAD_NAMES,
+    LOAD_UNITS,
+    LoadCase,
+    check_fixed_loads,
+    check_single_tapered,
+    load_case_of,
+    parse_load_options,
+)
 from bearingkit.io.messages import one_line, prefix_field, section_models
 from bearingkit.io.reading import parse_toml, read_text
 
-#: Inner-ring DOF names, in the solver's order.
-DOF_NAMES = schema.DOF_CHOICES
-#: Load component names, in the solver's order.
-LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
-#: SI units of the load components.
-LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+__all__ = [
+    "BUILDERS",
+    "DOF_NAMES",
+    "LOAD_ALIASES",
+    "LOAD_NAMES",
+    "LOAD_UNITS",
+    "MAX_CASE_POINTS",
+    "MAX_FLEXIBLE_LOAD_CASES",
+    "MAX_REPORT_CASES",
+    "BearingInput",
+    "LoadCase",
+    "from_dict",
+    "load_file",
+    "loads",
+    "max_cases",
+    "parse_load_options",
+    "register_bearing_type",
+]
+
+# The caps stay in this module: max_cases and _check_case_count read them here, where callers and
+# tests look them up (``loader.MAX_CASE_POINTS``).
 #: Most load cases of a bearing with a flexible ring ([geometry.ring] flexible, the default of a
 #: ball–column bearing): the coupled Newton solve keeps a (cases, n, n) Jacobian of the ~240 raceway
 #: offsets. Measured on the 2-core reference machine: 100 cases take 27 s and 270 MB through analyze.
@@ -43,214 +76,11 @@ MAX_REPORT_CASES = 20
 #: cylindrical roller bearing of 250 rollers × 200 slices: 2·10⁶ points peak at 260 MB through
 #: friction (212 MB analyze), 10⁷ at 900 MB. A seed-000 turntable (≈ 3,200 points) takes ≈ 600 cases.
 MAX_CASE_POINTS = 2_000_000
-#: Names accepted for ``--load KEY=VALUE`` on the command line → load-case field.
-LOAD_ALIASES: dict[str, str] = {
-    **{k: k for k in (*LOAD_NAMES, "eccentricity", "speed", "temperature")},
-    "Fx": "F_x",
-    "Fr": "F_x",
-    "Fy": "F_y",
-    "Fz": "F_z",
-    "Fa": "F_z",
-    "Mx": "M_x",
-    "My": "M_y",
-    "e": "eccentricity",
-    "n": "speed",
-    "T": "temperature",
-}
-
-
-# ---------------------------------------------------------------------------------------------
-# Builder registry: bearing type → function(geometry dict (SI), material, name) → BearingModel.
-# ---------------------------------------------------------------------------------------------
-def _profile(geometry: dict, diameter: float | None = None):
-    from bearingkit.physics.contact.profiles import make_profile
-
-    spec = geometry.get("profile")
-    if spec is None:
-        return None
-    params = {k: v for k, v in spec.items() if k != "name" and v is not None}
-    d = geometry["element_diameter"] if diameter is None else diameter
-    return make_profile(spec["name"], geometry["effective_length"], d, **params)
-
-
-def _standard(builder_name: str, renames: dict | None = None):
-    def build(geometry: dict, material, name: str) -> BearingModel:
-        from bearingkit.bearings import standard
-
-        skip = ("bore", "outer_diameter", *schema.SHOULDER_FIELDS)  # not builder arguments
-        kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
-        for old, new in (renames or {}).items():
-            if old in kwargs:
-                kwargs[new] = kwargs.pop(old)
-        if "profile" in kwargs:
-            kwargs["profile"] = _profile(geometry)
-        if name:
-            kwargs["name"] = name
-        return getattr(standard, builder_name)(material=material, **kwargs)
-
-    return build
-
-
-def _turntable(builder_name: str):
-    def build(geometry: dict, material, name: str) -> BearingModel:
-        from bearingkit.bearings import turntable
-        from bearingkit.physics.contact.profiles import PROFILES, SEED000_CROWNING
-
-        crowning = geometry.get("crowning")
-        if crowning is not None and crowning not in SEED000_CROWNING and crowning not in PROFILES:
-            raise InputError(
-                f"crowning ({crowning!r}) must be a seed-000 letter ({', '.join(SEED000_CROWNING)}) or a "
-                f"profile name ({', '.join(PROFILES)})"
-            )
-        overrides = {k: v for k, v in geometry.items() if v is not None}
-        if builder_name == "yrt_turntable":
-            overrides = {k: v for k, v in overrides.items() if k not in ("bore", "outer_diameter")}
-        model = getattr(turntable, builder_name)(material=material, **overrides)
-        return dataclasses.replace(model, name=name) if name else model
-
-    return build
-
-
-def _diameter_deviation(geometry: dict):
-    """ΔD per roller (Z,) [m] from a list (SI already) or a generator spec; None when not given."""
-    from bearingkit.physics.deviations import gaussian_deviations, seed001_series
-
-    spec = geometry.get("diameter_deviation")
-    if spec is None:
-        return None
-    if isinstance(spec, (list, tuple)):
-        return np.asarray(spec, dtype=float)
-    if spec.get("series") is not None:
-        dev = seed001_series(spec["series"])
-        if dev.shape[0] != geometry["n_elements"]:
-            raise InputError(
-                f"diameter_deviation (series {spec['series']}, {dev.shape[0]} rollers) must match "
-                f"n_elements ({geometry['n_elements']})"
-            )
-        return dev
-    return gaussian_deviations(
-        geometry["n_elements"], spec["magnitude"], 1, spec["arrangement"], spec["seed"]
-    )[0]
-
-
-def _tapered(geometry: dict, material, name: str) -> BearingModel:
-    """Tapered roller bearing: :class:`~bearingkit.rows.tapered.TaperedRow`, single or a DB/DF pair."""
-    from bearingkit.bearings.common import e_reduced_of
-    from bearingkit.bearings.tapered import tapered_pair
-    from bearingkit.rows.tapered import TaperedRow
-
-    skip = ("bore", "outer_diameter", "arrangement", "row_spacing", "diameter_deviation", "profile")
-    kwargs = {k: v for k, v in geometry.items() if v is not None and k not in skip}
-    kwargs.update(
-        e_reduced=e_reduced_of(material),
-        density=material.density,
-        diameter_deviation=_diameter_deviation(geometry),
-    )
-    if geometry.get("profile") is not None:
-        mean_diameter = 0.5 * (geometry["small_diameter"] + geometry["large_diameter"])
-        kwargs["profile"] = _profile(geometry, diameter=mean_diameter)
-    if geometry["arrangement"] == "single":
-        row = TaperedRow(**kwargs, name="tapered")
-        refs = ("liu2022", "kunert1961")
-        return BearingModel((row,), name=name or "tapered roller bearing", references=refs)
-    return tapered_pair(
-        spacing=geometry["row_spacing"],
-        arrangement=geometry["arrangement"],
-        name=name or f"tapered roller pair {geometry['arrangement']}",
-        **kwargs,
-    )
-
-
-def _ptrb(geometry: dict, material, name: str) -> BearingModel:
-    """Planetary thread roller bearing (seed 004): one :class:`~bearingkit.rows.threaded.ThreadedRow`."""
-    from bearingkit.bearings.ptrb import ptrb_model
-    from bearingkit.rows.threaded import PTRBGeometry
-
-    renames = {"bore": "bore_diameter", "outer_diameter": "outside_diameter"}
-    kwargs = {renames.get(k, k): v for k, v in geometry.items() if v is not None and k != "clearance"}
-    g = PTRBGeometry(**kwargs, youngs_modulus=material.youngs_modulus, poisson_ratio=material.poisson_ratio)
-    return ptrb_model(g, clearance=geometry.get("clearance") or 0.0, name=name or "PTRB")
-
-
-def _ball_column(geometry: dict, material, name: str) -> BearingModel:
-    """Seed-002 ball–column composite bearing (:func:`bearingkit.bearings.ball_column.ball_column`)."""
-    from bearingkit.bearings.ball_column import BallColumnGeometry, RingOptions, ball_column
-
-    fields = {k: v for k, v in geometry.items() if v is not None and k != "ring"}
-    if "support_positions" in fields:
-        fields["support_positions"] = tuple(fields["support_positions"])
-    ring = RingOptions(**{k: v for k, v in (geometry.get("ring") or {}).items() if v is not None})
-    model = ball_column(BallColumnGeometry(**fields), material=material, ring=ring)
-    return dataclasses.replace(model, name=name) if name else model
-
-
-#: Bearing type → builder. Keys equal :data:`bearingkit.io.schema.GEOMETRY_MODELS`'s.
-BUILDERS: dict[str, Callable[[dict, object, str], BearingModel]] = {
-    "composite_turntable": _turntable("composite_turntable"),
-    "yrt_turntable": _turntable("yrt_turntable"),
-    "deep_groove_ball": _standard("deep_groove_ball"),
-    "angular_contact_ball": _standard("angular_contact_ball"),
-    "angular_contact_pair": _standard("angular_contact_pair", {"clearance_axial": "axial_clearance"}),
-    "thrust_ball": _standard("thrust_ball"),
-    "cylindrical_roller": _standard("cylindrical_roller"),
-    "cylindrical_roller_thrust": _standard("cylindrical_roller_thrust"),
-    "tapered_roller": _tapered,
-    "ptrb": _ptrb,
-    "ball_column": _ball_column,
-}
-kinds.register(BUILDERS, schema.GEOMETRY_MODELS)  # four-point, slewing, spherical, self-aligning, needle
-assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
-
-
-def register_bearing_type(name: str, geometry_model: type[BaseModel], builder: Callable) -> None:
-    """Add a bearing type to the input format.
-
-    Parameters
-    ----------
-    name : str
-        The ``bearing.type`` value.
-    geometry_model : pydantic model
-        Validates ``[geometry]`` (use the annotated types of :mod:`bearingkit.io.schema`, e.g.
-        ``schema.PositiveLength``, so values arrive in SI); unknown fields must be forbidden.
-    builder : callable
-        ``builder(geometry: dict (SI), material, name: str) -> BearingModel``.
-    """
-    if name in BUILDERS:
-        raise InputError(f"bearing type ({name!r}) is already registered")
-    schema.GEOMETRY_MODELS[name] = geometry_model
-    BUILDERS[name] = builder
 
 
 # ---------------------------------------------------------------------------------------------
 # Results of loading.
 # ---------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class LoadCase:
-    """One load case in SI.
-
-    Attributes
-    ----------
-    name : str
-    load : ndarray (5,) [N, N, N, N·m, N·m]
-        (F_x, F_y, F_z, M_x, M_y) on the inner ring, eccentricity already turned into M_y.
-    speed : float or None [rad/s]
-    temperature : float or None [°C]
-    """
-
-    name: str
-    load: np.ndarray
-    speed: float | None = None
-    temperature: float | None = None
-
-    def to_dict(self) -> dict:
-        """JSON-ready dict, units in keys."""
-        return {
-            "case": self.name,
-            "speed_rad_s": self.speed,
-            "temperature_C": self.temperature,
-        }
-
-
 @dataclass(frozen=True)
 class BearingInput:
     """A loaded input file: the model, its load cases and the solver settings (all SI).
@@ -320,8 +150,8 @@ class BearingInput:
     def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
         """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
         _check_case_count(self.source, self.model, len(cases))
-        _check_fixed_loads(self.source, cases, self.free)
-        _check_single_tapered(self.source, self.model, cases, self.free)
+        check_fixed_loads(self.source, cases, self.free)
+        check_single_tapered(self.source, self.model, cases, self.free)
         return dataclasses.replace(self, cases=tuple(cases))
 
     def load_matrix(self) -> np.ndarray:
@@ -371,7 +201,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     except ValidationError as exc:
         raise one_line(source, exc, (), section_models(None)) from None
     if spec.bearing.designation is not None:
-        spec = _from_designation(source, spec)
+        spec = from_designation(source, spec)
     elif "geometry" not in data:
         raise InputError(f"{source}: geometry: missing required field (or give bearing.designation)")
     gmodel = schema.GEOMETRY_MODELS[spec.bearing.type]
@@ -386,8 +216,8 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         model = BUILDERS[spec.bearing.type](gdict, material, spec.bearing.name)
     except InputError as exc:
         raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
-    _check_envelope(source, model, gdict)
-    _check_shoulders(source, model, gdict)
+    check_envelope(source, model, gdict)
+    check_shoulders(source, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -397,15 +227,15 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     from bearingkit.io.schema_operating import validate_sections
 
     sections = validate_sections(spec, source, one_line)
-    cases = tuple(_load_case(c) for c in spec.load_cases)
+    cases = tuple(load_case_of(c) for c in spec.load_cases)
     _check_case_count(source, model, len(cases))
-    _check_fixed_loads(source, cases, free)
-    _check_single_tapered(source, model, cases, free)
-    duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), _load_case)
+    check_fixed_loads(source, cases, free)
+    check_single_tapered(source, model, cases, free)
+    duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), load_case_of)
     if duty is not None:
         _check_case_count(source, model, len(duty.bins), "duty_cycle")
-        _check_fixed_loads(source, duty.bins, free)
-        _check_single_tapered(source, model, duty.bins, free)
+        check_fixed_loads(source, duty.bins, free)
+        check_single_tapered(source, model, duty.bins, free)
     return BearingInput(
         source=source,
         spec=spec,
@@ -420,113 +250,6 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         duty_cycle=duty,
         tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
     )
-
-
-def _check_shoulders(source: str, model, gdict: dict) -> None:
-    """Refuse shoulder heights above the groove depth (one line; :mod:`bearingkit.io.shoulders`)."""
-    from bearingkit.io.shoulders import shoulder_fractions
-
-    try:
-        shoulder_fractions(gdict, model)
-    except InputError as exc:
-        raise InputError(f"{source}: {exc}") from None
-
-
-#: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)
-#: except the dimensionless conformities.
-_CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inner", "roller_angle")
-
-
-def _catalogue_value(key: str, value):
-    """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
-    if isinstance(value, (dict, str, int, bool)):
-        return value
-    if key.startswith(("conformity", "osculation")):
-        return float(value)
-    return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
-
-
-def _from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFile:
-    """Type, geometry (estimate, overridden by the file's [geometry]), name and source from a designation."""
-    from bearingkit.catalogue import resolve
-
-    header = spec.bearing
-    try:
-        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
-    except InputError as exc:
-        field = "bearing." if str(exc).startswith("designation") else ""
-        raise InputError(f"{source}: {field}{exc}") from None
-    if header.type and header.type != found.bearing_type:
-        raise InputError(
-            f"{source}: bearing.type ({header.type!r}) does not match designation {header.designation!r} "
-            f"({found.bearing_type!r}); omit type"
-        )
-    geometry = {k: _catalogue_value(k, v) for k, v in found.geometry.items() if v is not None}
-    geometry.update(spec.geometry)
-    overridden = sorted(set(spec.geometry) & set(found.geometry))
-    given = f"; given in the file, not estimated: {', '.join(overridden)}" if overridden else ""
-    note = found.source + given
-    bearing = header.model_copy(
-        update={
-            "type": found.bearing_type,
-            "name": header.name or header.designation,
-            "source": header.source or note,
-        }
-    )
-    return spec.model_copy(update={"bearing": bearing, "geometry": geometry})
-
-
-def parse_load_options(items: Sequence[str], name: str = "command line") -> LoadCase:
-    """One load case from ``["Fa=5kN", "My=600N*m", …]`` (names in :data:`LOAD_ALIASES`)."""
-    fields: dict[str, str] = {}
-    for item in items:
-        key, sep, value = item.partition("=")
-        key = key.strip()
-        if not sep or not value.strip():
-            raise InputError(f"--load ({item!r}) must look like NAME=VALUE with a unit, e.g. Fa=5kN")
-        if key not in LOAD_ALIASES:
-            raise InputError(
-                f"--load ({item!r}): unknown name {key!r}; expected one of {', '.join(LOAD_ALIASES)}"
-            )
-        canonical = LOAD_ALIASES[key]
-        if canonical in fields:
-            raise InputError(f"--load ({item!r}): {canonical} given twice")
-        fields[canonical] = value.strip()
-    try:
-        spec = schema.LoadCaseSpec.model_validate({"name": name, **fields})
-    except ValidationError as exc:
-        raise one_line("--load", exc, (), {"": schema.LoadCaseSpec}) from None
-    return _load_case(spec)
-
-
-# ---------------------------------------------------------------------------------------------
-# Helpers.
-# ---------------------------------------------------------------------------------------------
-def _load_case(spec: schema.LoadCaseSpec) -> LoadCase:
-    from bearingkit.analysis.quasistatic import load_vector
-
-    m_y = spec.M_y - (spec.eccentricity or 0.0) * spec.F_z
-    load = load_vector(F_x=spec.F_x, F_y=spec.F_y, F_z=spec.F_z, M_x=spec.M_x, M_y=m_y)
-    return LoadCase(spec.name, load, spec.speed, spec.temperature)
-
-
-def _check_single_tapered(source: str, model, cases, free) -> None:
-    """A lone tapered row carries axial load one way only: F_z·direction must be positive if u_z is free.
-
-    With u_z free and no axial load towards the row's cone the inner ring lifts off (no equilibrium).
-    """
-    rows = model.rows
-    if len(rows) != 1 or rows[0].kind != "tapered" or not free[2]:
-        return
-    sign = rows[0].direction
-    word = "positive" if sign > 0 else "negative"
-    for c in cases:
-        if not c.load[2] * sign > 0.0:
-            raise InputError(
-                f"{source}: load case {c.name!r}: F_z ({c.load[2]:.6g} N) must be {word}: a single tapered "
-                "row carries axial load one way only and lifts off otherwise; use "
-                "arrangement DB or DF for reversing loads, or fix u_z in [solver] free"
-            )
 
 
 def max_cases(model) -> int:
@@ -555,21 +278,6 @@ def _check_case_count(source: str, model, n_cases: int, section: str = "load_cas
         raise InputError(
             f"{source}: {section} ({n_cases} cases × {points} contact points) must stay within "
             f"{MAX_CASE_POINTS:.0e} contact points per run; use fewer cases, elements or n_slices"
-        )
-
-
-def _check_fixed_loads(source: str, cases, free) -> None:
-    fixed = np.flatnonzero(~np.asarray(free))
-    if not len(cases) or not fixed.size:
-        return
-    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
-    bad = np.argwhere(loads != 0.0)
-    if bad.size:
-        k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find
-        c, i = cases[k], fixed[j]
-        raise InputError(
-            f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
-            f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
         )
 
 
@@ -615,42 +323,3 @@ def _profile_as_table(geometry: dict) -> dict:
     if isinstance(geometry.get("profile"), str):
         return {**geometry, "profile": {"name": geometry["profile"]}}
     return geometry
-
-
-def _radial_extent(row) -> tuple[float, float]:
-    """Smallest and largest radius [m] a row's elements occupy."""
-    if row.kind == "threaded":  # PTRB: rollers of pitch diameter d_R on the pitch circle D_pw
-        g = row.geometry
-        return (g.pitch_diameter - g.roller_pitch_diameter) / 2, (
-            g.pitch_diameter + g.roller_pitch_diameter
-        ) / 2
-    radius = float(np.max(row.pitch_diameter)) / 2
-    if row.kind == "tapered":
-        half = float(row.large_diameter) / 2
-    elif getattr(row, "orientation", "radial") != "radial":
-        half = float(np.max(row.effective_length)) / 2  # thrust roller: its axis is radial
-    else:
-        half = float(np.max(row.element_diameter)) / 2
-    return radius - half, radius + half
-
-
-def _check_envelope(source: str, model: BearingModel, geometry: dict) -> None:
-    """Rows must lie strictly between the bore and the outside diameter, when they are known."""
-    env = model.metadata.get("geometry", {})
-    env = dataclasses.asdict(env) if dataclasses.is_dataclass(env) else dict(env)
-    env.update({k: geometry[k] for k in ("bore", "outer_diameter") if geometry.get(k) is not None})
-    bore, outer = env.get("bore"), env.get("outer_diameter")
-    if bore is not None and outer is not None and not bore < outer:
-        raise InputError(f"{source}: geometry.outer_diameter ({outer:.6g} m) must exceed bore ({bore:.6g} m)")
-    for row in model.rows:
-        r_in, r_out = _radial_extent(row)
-        if (bore is not None and r_in <= bore / 2) or (outer is not None and r_out >= outer / 2):
-            raise InputError(
-                f"{source}: geometry: row {row.name!r} spans diameters {2 * r_in * 1e3:.6g}–"
-                f"{2 * r_out * 1e3:.6g} mm, which must lie strictly between bore ({_mm(bore)}) "
-                f"and outer_diameter ({_mm(outer)})"
-            )
-
-
-def _mm(x) -> str:
-    return "not given" if x is None else f"{x * 1e3:.6g} mm"

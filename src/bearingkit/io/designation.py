@@ -1,0 +1,54 @@
+"""A bearing file that gives ``bearing.designation``: the catalogue's type and estimated geometry,
+overridden field by field by the file's own ``[geometry]``.
+
+The estimate (:func:`bearingkit.catalogue.resolve`, SI floats) is written back as the input format's
+strings with units so that the schema validates it exactly as if it had been typed into the file.
+"""
+
+from __future__ import annotations
+
+from bearingkit.errors import InputError
+from bearingkit.io import schema
+
+#: Geometry fields of the catalogue estimate that are angles (radians); other floats are lengths (m)
+#: except the dimensionless conformities.
+_CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inner", "roller_angle")
+
+
+def _catalogue_value(key: str, value):
+    """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
+    if isinstance(value, (dict, str, int, bool)):
+        return value
+    if key.startswith(("conformity", "osculation")):
+        return float(value)
+    return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
+
+
+def from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFile:
+    """Type, geometry (estimate, overridden by the file's [geometry]), name and source from a designation."""
+    from bearingkit.catalogue import resolve
+
+    header = spec.bearing
+    try:
+        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
+    except InputError as exc:
+        field = "bearing." if str(exc).startswith("designation") else ""
+        raise InputError(f"{source}: {field}{exc}") from None
+    if header.type and header.type != found.bearing_type:
+        raise InputError(
+            f"{source}: bearing.type ({header.type!r}) does not match designation {header.designation!r} "
+            f"({found.bearing_type!r}); omit type"
+        )
+    geometry = {k: _catalogue_value(k, v) for k, v in found.geometry.items() if v is not None}
+    geometry.update(spec.geometry)
+    overridden = sorted(set(spec.geometry) & set(found.geometry))
+    given = f"; given in the file, not estimated: {', '.join(overridden)}" if overridden else ""
+    note = found.source + given
+    bearing = header.model_copy(
+        update={
+            "type": found.bearing_type,
+            "name": header.name or header.designation,
+            "source": header.source or note,
+        }
+    )
+    return spec.model_copy(update={"bearing": bearing, "geometry": geometry})
