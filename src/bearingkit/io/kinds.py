@@ -3,7 +3,7 @@ self-aligning ball and needle roller bearings.
 
 SI inside: the geometry models use the annotated unit types of :mod:`bearingkit.io.schema`, so every
 ``"25 mm"`` arrives in metres. :func:`register` adds the models to ``schema.GEOMETRY_MODELS`` and the
-builders to the loader's registry (called once by :mod:`bearingkit.io.loader`); each builder maps the
+builders to the loader's registry (called once by :mod:`bearingkit.io.builders`); each builder maps the
 validated ``[geometry]`` dict onto the keyword arguments of :mod:`bearingkit.bearings.slewing` /
 :mod:`bearingkit.bearings.self_aligning`. Defaults of omitted fields are the builders' defaults.
 """
