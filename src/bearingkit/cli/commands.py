@@ -443,7 +443,25 @@ def report(
     lubricant: str = _LUBRICANT_OPTION,
     contamination: str = _CONTAMINATION_OPTION,
 ):
-    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings."""
+    """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings.
+
+    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``)."""
+    from bearingkit.cli.shaft_tables import is_shaft_file
+
+    if is_shaft_file(file):
+        given = [f for f, v in (("--load", load), ("--case", case), ("--speed", speed)) if v]
+        given += [f for f, v in (("--temperature", temperature), ("--lubricant", lubricant)) if v]
+        if given:
+            raise InputError(
+                f"{file}: {', '.join(given)} apply to a bearing file; a shaft file's [[load_cases]] and "
+                "[lubricant] give them"
+            )
+        from bearingkit.systems.input import load_shaft_file
+        from bearingkit.systems.shaft_analysis import ShaftAnalysis
+
+        path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
+        console.print(f"wrote {path}")
+        return
     a = _analysis(
         file,
         load,
@@ -521,23 +539,29 @@ def catalogue(
 def shaft(
     file: Path = typer.Argument(..., help="Shaft file (TOML with units), see docs/systems.md."),
     as_json: bool = _JSON_OPTION,
+    report: Path = typer.Option(
+        None, "--report", help="Write the HTML report (shaft lines, every bearing, system life) here."
+    ),
     plot: Path = typer.Option(None, "--plot", help="Write deflection and moment lines (PNG) per case here."),
     stiffness: Path = typer.Option(
         None, "--stiffness", help="Write every bearing's 5x5 stiffness per case to this .csv or .json."
     ),
+    contamination: str = _CONTAMINATION_OPTION,
+    model: str = typer.Option(
+        "components", "--friction-model", help="Friction model of every bearing: components | skf | palmgren."
+    ),
 ):
-    """A shaft on several bearings: reactions, seat tilts, shaft lines, lives; exit 1 if a case fails."""
-    import math
-
-    from rich.markup import escape
-
-    from bearingkit.cli.tables import _num
-    from bearingkit.systems.input import load_shaft_file, shaft_dict
+    """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and
+    friction, system life; exit 1 if a case fails."""
+    from bearingkit.cli.shaft_tables import shaft_case_tables
+    from bearingkit.systems.input import load_shaft_file
+    from bearingkit.systems.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
 
     inp = load_shaft_file(file)
-    result = inp.solve()
-    data = shaft_dict(inp, result)
+    analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
+    result = analysis.result
+    data = analysis.to_dict()
     if stiffness is not None:
         write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
     if plot is not None:
@@ -545,51 +569,19 @@ def shaft(
 
         for c, name in enumerate(result.loads.names):
             write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
+    if report is not None:
+        written = analysis.report(report)
     if as_json:
         _print_json(file, data)
     else:
         console.print(f"{inp.system.name}  ({file})", markup=False, highlight=False)
         for c in data["cases"]:
-            s, life = c["shaft"], c["rating"]["system"]
-            status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
-            caption = (
-                f"shaft: max deflection {s['max_radial_deflection_m'] * 1e6:.4g} µm at "
-                f"{s['max_radial_deflection_at_m'] * 1e3:.4g} mm, max bending moment "
-                f"{s['max_bending_moment_Nm']:.4g} N·m at {s['max_bending_moment_at_m'] * 1e3:.4g} mm; "
-                f"system L10h = {_num(life['L10h_h'], fmt='.4g')} h"
-            )
-            table = Table(title=escape(f"case {c['case']!r}: {status}"), caption=escape(caption))
-            for col in (
-                "bearing",
-                "z mm",
-                "F_r N",
-                "F_a N",
-                "tilt mrad",
-                "seat u µm",
-                "L10h h",
-                "s0",
-                "M_fr N·m",
-            ):
-                table.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
-            for b in c["bearings"]:
-                u = b["seat_displacement"]
-                r = c["rating"]["bearings"].get(b["name"], {})
-                table.add_row(
-                    b["name"],
-                    f"{b['position_m'] * 1e3:.4g}",
-                    f"{b['radial_load_N']:.1f}",
-                    f"{round(b['axial_load_N'], 1) + 0.0:.1f}",
-                    f"{b['misalignment_rad'] * 1e3:.3g}",
-                    f"{math.hypot(u['u_x_m'], u['u_y_m']) * 1e6:.3g}",
-                    _num(r.get("L10h_h"), fmt=".4g"),
-                    _num(r.get("static_safety"), fmt=".3g"),
-                    _num(c["friction_Nm"].get(b["name"]), fmt=".3g"),
-                )
-            console.print(table)
-            for w in c["warnings"]:
-                console.print(f"  warning: {w}", markup=False, highlight=False)
+            for part in shaft_case_tables(c):
+                console.print(part)
         for note in data["notes"]:
             console.print(f"  note: {note}", markup=False, highlight=False)
+        if report is not None:
+            console.print(f"wrote {written}", markup=False, highlight=False)
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)

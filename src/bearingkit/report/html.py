@@ -169,19 +169,25 @@ def _rating_html(rating, case: int, n: int) -> str:
     )
 
 
-def _case_html(bearing, result, friction, rating, case: int, warnings, extra=None) -> str:
+def _case_html(
+    bearing, result, friction, rating, case: int, warnings, extra=None, *, number=None, anchor=None, level=2
+) -> str:
+    """One load case; ``number`` (default case + 2), ``anchor`` (``case-N``) and the heading ``level``
+    let another report (the shaft's) nest it."""
     lc = bearing.cases[case]
     data = result.to_dict(case)
     ok = bool(result.converged[case])
     disp = result.displacement[case]
-    parts = [f'<section class="case" id="case-{case}" data-section="case" data-case="{_e(lc.name)}">']
-    parts.append(f"<h2>{case + 2}. Load case “{_e(lc.name)}” {_badge(ok)}</h2>")
+    num = str(case + 2) if number is None else str(number)
+    anchor = f"case-{case}" if anchor is None else anchor
+    parts = [f'<section class="case" id="{_e(anchor)}" data-section="case" data-case="{_e(lc.name)}">']
+    parts.append(f"<h{level}>{num}. Load case “{_e(lc.name)}” {_badge(ok)}</h{level}>")
     reason = "" if ok else f"; reason: {_e(result.reason[case] or '—')}"
     parts.append(
         f'<p class="sub">{int(result.iterations[case])} iterations, residual '
         f"{float(result.residual_norm[case]):.2e} (relative to the load scale){reason}</p>"
     )
-    parts.append(f"<h4>{case + 2}.1. Load and displacement of the inner ring</h4>")
+    parts.append(f"<h4>{num}.1. Load and displacement of the inner ring</h4>")
     parts.append(
         _table(
             [f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY],
@@ -202,7 +208,7 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
             cls="displacement",
         )
     )
-    parts.append(f"<h4>{case + 2}.2. Rows</h4>")
+    parts.append(f"<h4>{num}.2. Rows</h4>")
     parts.append(_row_table(data))
     parts.append(
         _figure_html(
@@ -214,7 +220,7 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
     )
     k = 3
     if plots.roller_rows(result):
-        parts.append(f"<h4>{case + 2}.{k}. Slice pressure map of the roller rows</h4>")
+        parts.append(f"<h4>{num}.{k}. Slice pressure map of the roller rows</h4>")
         parts.append(
             _figure_html(
                 plots.slice_pressure_figure(result, case),
@@ -225,15 +231,15 @@ def _case_html(bearing, result, friction, rating, case: int, warnings, extra=Non
         )
         k += 1
     if friction is not None:
-        parts.append(_friction_html(friction, case, f"{case + 2}.{k}"))
+        parts.append(_friction_html(friction, case, f"{num}.{k}"))
         k += 1
     if rating is not None:
-        parts.append(_rating_html(rating, case, f"{case + 2}.{k}"))
+        parts.append(_rating_html(rating, case, f"{num}.{k}"))
         k += 1
     if extra:
-        parts.append(extra(f"{case + 2}.{k}"))
+        parts.append(extra(f"{num}.{k}"))
         k += 1
-    parts.append(f"<h4>{case + 2}.{k}. Warnings</h4>")
+    parts.append(f"<h4>{num}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
     parts.append("</section>")
     return "".join(parts)

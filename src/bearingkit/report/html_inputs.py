@@ -85,6 +85,16 @@ def _row_cell(row, attr, factor):
     return fmt(arr, 6, factor or 1.0)
 
 
+def rows_table(model) -> str:
+    """The "rows as modelled" table of a bearing model (the fields any row has)."""
+    fields = [(a, h, f) for a, h, f in ROW_FIELDS if any(getattr(r, a, None) is not None for r in model.rows)]
+    return _table(
+        ["row", "kind"] + [h for _, h, _ in fields],
+        [[_e(r.name), _e(r.kind)] + [_row_cell(r, a, f) for a, _, f in fields] for r in model.rows],
+        left=2,
+    )
+
+
 def _inputs_html(bearing) -> str:
     spec, model = bearing.spec, bearing.model
     parts = ['<section id="inputs" data-section="inputs"><h2>1. Inputs</h2>']
@@ -103,14 +113,7 @@ def _inputs_html(bearing) -> str:
     parts.append("<h3>Geometry</h3>")
     parts.append(_table(["field", "as given", "SI value", "SI unit"], geometry_rows(bearing), left=2))
     parts.append("<h3>Rows as modelled</h3>")
-    fields = [(a, h, f) for a, h, f in ROW_FIELDS if any(getattr(r, a, None) is not None for r in model.rows)]
-    parts.append(
-        _table(
-            ["row", "kind"] + [h for _, h, _ in fields],
-            [[_e(r.name), _e(r.kind)] + [_row_cell(r, a, f) for a, _, f in fields] for r in model.rows],
-            left=2,
-        )
-    )
+    parts.append(rows_table(model))
     mat = bearing.material
     parts.append("<h3>Material</h3>")
     parts.append(

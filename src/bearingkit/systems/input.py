@@ -14,6 +14,7 @@ for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
     [[load_cases]]       name, speed, temperature, gears = {NAME = torque}, forces = [...],
                          line_loads = [...]
     [lubricant]          name (friction of bearings whose file has none)
+    [lubrication]        contamination, roughness_element, roughness_raceway (bearings whose file has none)
     [solver]             rtol, max_iterations
 
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
@@ -33,6 +34,7 @@ from bearingkit.io import schema
 from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
 from bearingkit.io.reading import load_toml
+from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
 from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
 from bearingkit.systems.solver import ShaftSystem, SystemOptions
@@ -177,6 +179,7 @@ class ShaftFile(schema.Strict):
     shaft: ShaftSpec
     load_cases: list[ShaftCaseSpec]
     lubricant: schema.LubricantSpec | None = None
+    lubrication: LubricationSpec | None = None
     solver: ShaftSolverSpec | None = None
 
     @field_validator("load_cases", mode="before")
@@ -205,13 +208,18 @@ _MODELS = {
     "load_cases.forces": ForceSpec,
     "load_cases.line_loads": LineLoadSpec,
     "lubricant": schema.LubricantSpec,
+    "lubrication": LubricationSpec,
     "solver": ShaftSolverSpec,
 }
 
 
 @dataclass(frozen=True)
 class ShaftInput:
-    """A loaded shaft file (SI): the system, its load cases, solver options and notes."""
+    """A loaded shaft file (SI): the system, its load cases, solver options and notes.
+
+    ``lubricant`` and ``lubrication`` (the ``[lubrication]`` section: contamination, roughness) apply to
+    the bearings whose own file gives none.
+    """
 
     source: str
     system: ShaftSystem
@@ -219,6 +227,7 @@ class ShaftInput:
     options: SystemOptions
     lubricant: object | None = None
     warnings: tuple = field(default_factory=tuple)
+    lubrication: LubricationSpec | None = None
 
     def solve(self):
         """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
@@ -407,38 +416,39 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
                 f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
             )
         lubricant = LUBRICANTS[spec.lubricant.name]
-    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes))
+    _check_contamination(spec.lubrication)
+    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
 
 
-def shaft_dict(inp: ShaftInput, result) -> dict:
+def _check_contamination(lubrication) -> None:
+    """``[lubrication] contamination``: a number 0 … 1 or an ISO 281 level name (one line otherwise)."""
+    from bearingkit.physics.life.iso281_contamination import contamination_levels
+
+    value = None if lubrication is None else lubrication.contamination
+    if value is None:
+        return
+    if isinstance(value, str) and value.strip() not in contamination_levels():
+        from bearingkit.units import parse
+
+        try:
+            value = parse(value, "dimensionless", "lubrication.contamination")
+        except InputError:
+            raise InputError(
+                f"lubrication.contamination ({value!r}) must be a number 0 … 1 or one of "
+                f"{', '.join(contamination_levels())}"
+            ) from None
+    if not isinstance(value, str) and not 0.0 <= float(value) <= 1.0:
+        raise InputError(f"lubrication.contamination ({value!r}) must lie in 0 … 1 (ISO 281 e_C)")
+
+
+def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
     """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
 
-    Per case: :meth:`ShaftResult.to_dict`, each bearing's ratings and the system life
-    (:func:`bearingkit.systems.life.rate_system`), and each bearing's friction torque where a lubricant
-    and a speed are known (:func:`bearingkit.systems.life.friction_system`); plus the file's notes.
+    :meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`: the inputs; per case the shaft
+    lines, every bearing's reactions, seat state, summary and full pipeline Analysis (pressures, lives,
+    friction), the system life and every warning; the notes. ``options`` go to the ShaftAnalysis
+    (``friction_model``, ``contamination``, ``reliability``).
     """
-    from bearingkit.systems.life import friction_system, rate_system
+    from bearingkit.systems.shaft_analysis import ShaftAnalysis
 
-    rating = rate_system(result)
-    torque, notes = friction_system(result, lubricant=inp.lubricant)
-    cases = []
-    for c in range(result.n_cases):
-        d = result.to_dict(c)
-        d["rating"] = rating.to_dict(c)
-        d["friction_Nm"] = {name: (None if np.isnan(t[c]) else float(t[c])) for name, t in torque.items()}
-        d["warnings"] = list(rating.warnings[c])
-        cases.append(d)
-    return {
-        "file": inp.source,
-        "shaft": inp.system.name,
-        "bearings": [
-            {
-                "name": b.name,
-                "bearing": getattr(b.bearing, "name", "linear bearing"),
-                "position_m": b.position,
-            }
-            for b in inp.system.bearings
-        ],
-        "notes": [*inp.warnings, *notes],
-        "cases": cases,
-    }
+    return ShaftAnalysis(inp, result, **options).to_dict()

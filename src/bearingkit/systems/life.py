@@ -10,7 +10,10 @@ Palmgren 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8):
 
 computed by :func:`bearingkit.analysis.rating.system_life` over the rows of all bearings, which for
 rows of one slope per bearing is exactly this formula over the bearings and solves the Weibull
-equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed.
+equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed. :func:`combine_ratings` does
+the combination for bearings already rated (the shaft's pipeline analyses,
+:mod:`bearingkit.systems.shaft_analysis`), also for the modified lives L_nm (at 90 % reliability, then
+times a1: the practice of system calculations, an assumption, as ISO 281 defines L_nm per bearing).
 """
 
 from __future__ import annotations
@@ -38,21 +41,29 @@ class SystemRating:
     speed : ndarray (C,) or None [rad/s]
     warnings : list of list of str
         Per case, each bearing's warnings prefixed by its name, and the system's.
+    modified_life : numpy.ma.MaskedArray (C,) [rev]
+        System modified life L_nm at the ratings' reliability (:func:`combine_ratings`); masked where
+        a loaded row has no L_nm.
     """
 
     bearings: dict
     life: np.ma.MaskedArray
     speed: np.ndarray | None
     warnings: list
+    modified_life: np.ma.MaskedArray | None = None
+
+    def hours(self, life) -> np.ma.MaskedArray:
+        """A life [rev] (C,) in hours at the cases' speed (masked without speed)."""
+        if self.speed is None:
+            return np.ma.masked_all(np.shape(life))
+        return np.ma.masked_array(
+            iso281.life_in_seconds(np.ma.filled(life, 0.0), self.speed) / HOUR,
+            np.ma.getmaskarray(life),
+        )
 
     def life_hours(self) -> np.ma.MaskedArray:
         """System life in hours (C,) at the cases' speed (masked without speed)."""
-        if self.speed is None:
-            return np.ma.masked_all(self.life.shape)
-        return np.ma.masked_array(
-            iso281.life_in_seconds(np.ma.filled(self.life, 0.0), self.speed) / HOUR,
-            np.ma.getmaskarray(self.life),
-        )
+        return self.hours(self.life)
 
     def to_dict(self, case: int) -> dict:
         """JSON-ready summary of one case: each bearing's system values and the shaft's system life."""
@@ -63,7 +74,12 @@ class SystemRating:
 
         return {
             "bearings": {name: r.to_dict(case)["system"] for name, r in self.bearings.items()},
-            "system": {"L10r_rev": val(self.life), "L10h_h": val(self.life_hours())},
+            "system": {
+                "L10r_rev": val(self.life),
+                "L10h_h": val(self.life_hours()),
+                "Lnmr_rev": None if self.modified_life is None else val(self.modified_life),
+                "Lnmr_h": None if self.modified_life is None else val(self.hours(self.modified_life)),
+            },
             "warnings": list(self.warnings[case]),
         }
 
@@ -94,25 +110,64 @@ def rate_system(result, **options) -> SystemRating:
     for b in result.system.bearings:
         if isinstance(b.bearing, BearingModel):
             ratings[b.name] = rate(result.bearing_result(b.name), speed=speed, rotating="inner", **options)
-    n = result.n_cases
+    return combine_ratings(ratings, result.converged, speed)
+
+
+def _combined(ratings: dict, attr: str, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """System life over the rows of every bearing from their ``attr`` lives, and its mask (C,)."""
+    lives, slopes, mask = [], [], mask.copy()
+    for r in ratings.values():
+        for row in r.rows:
+            unloaded = row.loaded_count == 0
+            value = getattr(row, attr)
+            missing = np.ma.getmaskarray(value) & ~unloaded
+            mask |= missing
+            lives.append(np.where(unloaded | missing, np.inf, np.ma.getdata(value)))
+            slopes.append(row.weibull_slope)
+    life = system_life(np.array(lives), np.array(slopes))
+    mask |= ~np.isfinite(life)
+    return np.where(mask, 0.0, life), mask
+
+
+def combine_ratings(ratings: dict, converged, speed=None) -> SystemRating:
+    """The system life of bearings already rated (module docstring), with each bearing's warnings.
+
+    Parameters
+    ----------
+    ratings : dict name → RatingResult
+        One rating per bearing over the same C load cases (linear bearings have none).
+    converged : array_like (C,) of bool
+        The system's convergence: a case that did not converge has no system life.
+    speed : ndarray (C,) or None [rad/s]
+        Shaft speed (lives in hours).
+
+    Returns
+    -------
+    SystemRating
+        ``life`` is the L10 from the rows' ISO/TS 16281 L10r; ``modified_life`` combines the rows'
+        L_nm at 90 % reliability the same way and scales it by a1 (as ISO 281 does for one bearing),
+        masked unless every loaded row has one (a lubricant, a given temperature, e_C and speed).
+    """
+    converged = np.asarray(converged, bool)
+    n = converged.shape[0]
     notes = [[] for _ in range(n)]
-    lives, slopes, mask = [], [], ~np.asarray(result.converged, bool)
     for name, r in ratings.items():
         for c in range(n):
             notes[c].extend(f"{name}: {w}" for w in r.warnings[c])
-        for row in r.rows:
-            unloaded = row.loaded_count == 0
-            missing = np.ma.getmaskarray(row.life) & ~unloaded
-            mask |= missing
-            lives.append(np.where(unloaded | missing, np.inf, np.ma.getdata(row.life)))
-            slopes.append(row.weibull_slope)
-    if not lives:
-        return SystemRating(ratings, np.ma.masked_all(n), speed, notes)
-    life = system_life(np.array(lives), np.array(slopes))
-    mask |= ~np.isfinite(life)
+    if not ratings:
+        return SystemRating(ratings, np.ma.masked_all(n), speed, notes, np.ma.masked_all(n))
+    life, mask = _combined(ratings, "life", ~converged)
     for c in np.flatnonzero(mask):
         notes[c].append("system: no system life (a bearing has none, or the case did not converge)")
-    return SystemRating(ratings, np.ma.masked_array(np.where(mask, 0.0, life), mask), speed, notes)
+    a1 = float(next(iter(ratings.values())).a1)
+    modified, mod_mask = _combined(ratings, "modified_life_90", ~converged)
+    return SystemRating(
+        ratings,
+        np.ma.masked_array(life, mask),
+        speed,
+        notes,
+        np.ma.masked_array(modified * a1, mod_mask),
+    )
 
 
 def friction_system(result, lubricant=None, temperature=None, **operating_point) -> tuple[dict, list]:

@@ -1,0 +1,84 @@
+"""Console output of ``bearingkit shaft``: per load case the bearings' reactions, seat state and results.
+
+SI values come in (:meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`); shown in mm, µm,
+mrad, N, MPa, h, W. Faces only: nothing is computed here.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rich.markup import escape
+from rich.table import Table
+from rich.text import Text
+
+from bearingkit.cli.tables import _num
+
+
+def is_shaft_file(path) -> bool:
+    """True for a readable TOML file with a ``[shaft]`` table (anything else goes the bearing way, whose
+    reader reports what is wrong with it). Read through the bounded reader (size, nesting)."""
+    from bearingkit.errors import InputError
+    from bearingkit.io.reading import load_toml
+
+    path = Path(path)
+    if path.suffix.lower() != ".toml" or not path.is_file():
+        return False
+    try:
+        return isinstance(load_toml(path).get("shaft"), dict)
+    except InputError:
+        return False
+
+
+def _round(value, digits: int = 1) -> str:
+    """A force rounded for display without "-0.0" (round-off of an unloaded direction)."""
+    return f"{round(value, digits) + 0.0:.{digits}f}"
+
+
+def shaft_case_tables(c: dict) -> list:
+    """Renderables of one case of ``ShaftAnalysis.to_dict()["cases"]``: two tables and the warnings."""
+    s, life = c["shaft"], c["rating"]["system"]
+    status = "converged" if c["converged"] else f"NOT converged: {c['reason']}"
+    caption = (
+        f"shaft: max deflection {s['max_radial_deflection_m'] * 1e6:.4g} µm at "
+        f"{s['max_radial_deflection_at_m'] * 1e3:.4g} mm, max bending moment "
+        f"{s['max_bending_moment_Nm']:.4g} N·m at {s['max_bending_moment_at_m'] * 1e3:.4g} mm; "
+        f"system L10h = {_num(life['L10h_h'], fmt='.4g')} h, L_nm = {_num(life['Lnmr_h'], fmt='.4g')} h; "
+        f"power loss {_num(c['power_loss_W'], fmt='.4g')} W"
+    )
+    seat = Table(title=escape(f"case {c['case']!r}: {status} — reactions on the shaft, seat state"))
+    cols = ("bearing", "z mm", "F_x N", "F_y N", "F_z N", "M_x N·m", "M_y N·m", "u_x µm", "u_y µm", "u_z µm")
+    for col in (*cols, "θ_x mrad", "θ_y mrad", "tilt mrad"):
+        seat.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
+    results = Table(title=escape(f"case {c['case']!r}: bearing results"), caption=escape(caption))
+    cols = ("bearing", "F_r N", "F_a N", "p_max MPa", "s0", "L10h h", "L_nm h", "κ", "M_fr N·m", "P_loss W")
+    for col in (*cols, "warnings"):
+        results.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
+    for b in c["bearings"]:
+        sm = b["summary"]
+        r, u = sm["reaction_on_shaft"], sm["seat_displacement"]
+        seat.add_row(
+            b["name"],
+            f"{b['position_m'] * 1e3:.4g}",
+            *(_round(r[k]) for k in ("F_x_N", "F_y_N", "F_z_N")),
+            *(_round(r[k], 3) for k in ("M_x_Nm", "M_y_Nm")),
+            *(f"{u[k] * 1e6:.3g}" for k in ("u_x_m", "u_y_m", "u_z_m")),
+            *(f"{u[k] * 1e3:.3g}" for k in ("theta_x_rad", "theta_y_rad")),
+            f"{sm['misalignment_rad'] * 1e3:.3g}",
+        )
+        results.add_row(
+            b["name"],
+            _round(sm["radial_load_N"]),
+            _round(sm["axial_load_N"]),
+            _num(sm["max_pressure_Pa"], 1e-6, ".4g"),
+            _num(sm["static_safety"], fmt=".3g"),
+            _num(sm["L10h_h"], fmt=".4g"),
+            _num(sm["Lnmr_h"], fmt=".4g"),
+            _num(sm["kappa_min"], fmt=".3g"),
+            _num(sm["friction_torque_Nm"], fmt=".3g"),
+            _num(sm["power_loss_W"], fmt=".3g"),
+            str(sm["warnings"]),
+        )
+    out = [seat, results]
+    out += [Text(f"  warning: {w}") for w in c["warnings"]]
+    return out
