@@ -18,7 +18,13 @@ SI units (N, m); times in s, throughputs in cases/s. All numbers come from one r
    Chunks of :data:`CHUNK` cases: a multiple of the solver's 256-case blocks (so the in-process
    thread pool splits a chunk evenly over 2 cores) and ~50 chunks at 50k cases (so the last chunk
    of one worker leaves the other idle for ≤ 1/25 of the run);
-2. NSGA-II, population 100 × 100 generations on the vectorised ZDT1 objective → wall time (≤ 60 s).
+2. NSGA-II, population 100 × 100 generations on the vectorised ZDT1 objective → wall time (≤ 60 s);
+3. the PTRB NSGA-II of seed 004 (``examples/studies/seed004_axial_nsga2.toml``: 100 × 100 = 10⁴
+   evaluations of the PTRB objectives) → wall time (issue 19: ≤ 2 s), with the time its evaluator
+   alone takes on the same 100 populations of 100 designs in the note (the rest is the optimiser and
+   the study bookkeeping);
+4. the peak RSS of a fresh process running a 100,000-case seed-000 sweep through the study runner
+   (in-process executor, results kept in memory; issue 19: < 2 GB).
 
 ``run(quick, cases)`` returns records with keys name, value, unit, target (and ratio: ≥ 1 meets the
 target). ``python -m benchmarks.bench_studies [--quick] [--cases N] [--repeat K]`` prints them
@@ -32,6 +38,8 @@ import time
 
 SWEEP_CASES = 50_000
 SWEEP_CASES_QUICK = 10_000
+#: Cases of the study-runner memory measurement (issue 19: 100,000 below 2 GB peak RSS).
+MEMORY_CASES = 100_000
 #: Cases per chunk: 4 × the numpy solver's CHUNK_CASES (256), see the module docstring.
 CHUNK = 1024
 SEED = 20250588
@@ -140,6 +148,46 @@ def _nsga2_seconds(pop: int = 100, gen: int = 100) -> tuple[float, int]:
     return time.perf_counter() - t0, res.stats["evaluations"]
 
 
+def _ptrb_nsga2() -> tuple[float, int, float]:
+    """Wall time [s] of the seed-004 PTRB NSGA-II, its evaluations, and its evaluator's share [s]."""
+    from bearingkit.papers.zheng2022.study_runs import seed004_optimize
+    from bearingkit.studies import evaluators
+
+    seed004_optimize("axial", pop_size=8, generations=2)  # imports, catalogue and unit tables
+    t0 = time.perf_counter()
+    res = seed004_optimize("axial")
+    total = time.perf_counter() - t0
+    # The evaluator alone on the populations the run evaluated (same chunks, no optimiser).
+    history = res.results
+    ev = evaluators.get(res.definition.evaluator)
+    factors = [c for c in history.columns if c in ev.factors]
+    fixed = {k: v for k, v in res.definition.fixed.items() if k in ev.factors}
+    t0 = time.perf_counter()
+    for _, gen in history.groupby("generation"):
+        cases = gen[factors].reset_index(drop=True).assign(**fixed)
+        cases.insert(0, "case", range(len(cases)))
+        evaluators.evaluate_chunk(res.definition.evaluator, cases)
+    return total, len(history), time.perf_counter() - t0
+
+
+def sweep_memory(n: int) -> float:
+    """Peak RSS [MB] of a fresh process running an n-case seed-000 sweep through the study runner."""
+    import subprocess
+    import sys
+
+    code = (
+        "import resource, sys; sys.path.insert(0, '.');"
+        "from benchmarks.bench_studies import _sweep_definition;"
+        "from bearingkit.studies.runner import run_study;"
+        f"res = run_study(_sweep_definition({n}), progress=False);"
+        "assert res.results['converged'].all();"
+        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)"
+    )
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root)
+    return float(out.stdout.strip() or "nan")
+
+
 def sweep_records(n: int) -> list[dict]:
     """The three sweep measurements of ``n`` cases and their ratios (one run)."""
     d = _sweep_definition(n)
@@ -196,6 +244,9 @@ def run(quick: bool = False, cases: int | None = None) -> list[dict]:
     n = int(cases) if cases else (SWEEP_CASES_QUICK if quick else SWEEP_CASES)
     records = sweep_records(n)
     nsga_s, n_eval = _nsga2_seconds()
+    ptrb_s, ptrb_eval, ptrb_ev_s = _ptrb_nsga2()
+    n_mem = SWEEP_CASES_QUICK if quick else MEMORY_CASES
+    mem = sweep_memory(n_mem)
     return [
         *records,
         {
@@ -204,6 +255,20 @@ def run(quick: bool = False, cases: int | None = None) -> list[dict]:
             "unit": "s",
             "target": "<= 60",
             "ratio": 60.0 / nsga_s,
+        },
+        {
+            "name": f"PTRB NSGA-II seed 004 axial ({ptrb_eval} evaluations)",
+            "value": ptrb_s,
+            "unit": "s",
+            "target": "<= 2",
+            "note": f"of which the PTRB evaluator {ptrb_ev_s:.2f} s; load {os.getloadavg()[0]:.2f}",
+        },
+        {
+            "name": f"memory: {n_mem}-case seed-000 sweep through the study runner",
+            "value": mem,
+            "unit": "MB",
+            "target": "<= 2000",
+            "note": "peak RSS of a fresh process (in-process executor, results in memory)",
         },
     ]
 

@@ -119,3 +119,21 @@ def test_kernels_at_speed_run_the_numpy_path():
     auto = solve(inp.model, inp.load_matrix(), free=inp.free, speed=2000.0)
     ref = solve(inp.model, inp.load_matrix(), free=inp.free, speed=2000.0, options=NUMPY)
     np.testing.assert_array_equal(auto.displacement, ref.displacement)
+
+
+def test_compiled_roller_loads_agree_with_roller_state():
+    """The Monte Carlo's compiled per-roller loads against the numpy kernel's roller sub-problem
+    (same algorithm from the same closed-form start: agreement to rounding, 1e-12 of the largest)."""
+    from bearingkit.analysis.model import BearingModel
+    from bearingkit.rows.compiled_tapered import roller_loads
+
+    dev = np.stack([seed001_series(k) for k in range(1, 7)])
+    row = seed001_row(diameter_deviation=dev)
+    model = BearingModel((row,))
+    load = load_vector(F_z=np.linspace(200.0, 20_000.0, 6) * row.direction, F_x=[0, 0, 300.0, 0, 0, 900.0])
+    res = solve(model, load, free=[True, True, True, False, False])
+    assert res.converged.all()
+    got = roller_loads(model.kernels[0], res.displacement)
+    ref = model.kernels[0].roller_state(res.displacement)
+    for k, key in enumerate(("load_inner", "load_outer", "load_flange")):
+        np.testing.assert_allclose(got[..., k], ref[key], rtol=0, atol=1e-12 * np.abs(ref[key]).max())

@@ -18,7 +18,6 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit, prange
 
 from bearingkit.analysis.cone import CONE_MISS_RTOL
 from bearingkit.analysis.newton import CONE_CHECK_ITERATION, MAX_HALVINGS, MECHANISM_RTOL
@@ -36,8 +35,12 @@ from bearingkit.rows.compiled_contacts import (
 )
 from bearingkit.rows.compiled_tapered import TaperedPack, pack_tapered, tapered_response
 from bearingkit.rows.cylindrical import CylindricalKernel
+from bearingkit.rows.numba_cache import configure
 from bearingkit.rows.tapered_kernel import TaperedKernel
 from bearingkit.rows.threaded import ThreadedKernel
+
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit, prange  # noqa: E402
 
 #: A bearing in compiled form: the packed rows of each kind, the rows' start matrices (R, 5, 5) and
 #: exponents (R,), the row count and the kinds present.
@@ -124,9 +127,97 @@ def _state(c, q, load, mp, ws, inner, scale, idx, force, jac, rowf, residual):
 
 
 # -- linear algebra helpers --------------------------------------------------------------------------
+# The systems are at most 5×5: written out here, they cost ~0.1 µs where a LAPACK call from numba
+# (argument copies, finiteness checks, workspace queries) costs ~1–2 µs, several times per iteration.
+@njit(cache=True, error_model="numpy")
+def _lu_solve(a, b):
+    """x with a x = b (n ≤ 5) by LU with partial pivoting (LAPACK gesv's algorithm); a, b untouched.
+
+    Raises ZeroDivisionError on an exactly singular matrix (where gesv reports a zero pivot).
+    """
+    n = a.shape[0]
+    m = a.copy()
+    x = b.copy()
+    for col in range(n):
+        piv = col
+        big = abs(m[col, col])
+        for r in range(col + 1, n):
+            if abs(m[r, col]) > big:
+                big = abs(m[r, col])
+                piv = r
+        if big == 0.0:
+            raise ZeroDivisionError("singular matrix")
+        if piv != col:
+            for j in range(n):
+                m[col, j], m[piv, j] = m[piv, j], m[col, j]
+            x[col], x[piv] = x[piv], x[col]
+        inv = 1.0 / m[col, col]
+        for r in range(col + 1, n):
+            f = m[r, col] * inv
+            if f != 0.0:
+                for j in range(col + 1, n):
+                    m[r, j] -= f * m[col, j]
+                x[r] -= f * x[col]
+    for col in range(n - 1, -1, -1):
+        s = x[col]
+        for j in range(col + 1, n):
+            s -= m[col, j] * x[j]
+        x[col] = s / m[col, col]
+    return x
+
+
+#: Safety factor of :func:`_surely_regular` on the eigenvalue ratio (covers the rounding of the
+#: computed inverse, relative ~ cond × eps ≤ 1e-7 where the test can pass) [-].
+REGULAR_SAFETY = 10.0
+
+
+@njit(cache=True, error_model="numpy")
+def _surely_regular(h):
+    """True when the symmetric h (n ≤ 5) certainly has no eigenvalue ≤ MECHANISM_RTOL × the largest.
+
+    λ_max ≤ ‖h‖_F and λ_min ≥ 1/‖L⁻¹‖_F² (h = L Lᵀ positive definite, shown by its Cholesky factor);
+    when 1/‖L⁻¹‖_F² > REGULAR_SAFETY · MECHANISM_RTOL · ‖h‖_F no direction is a mechanism and the
+    eigen-decomposition of :func:`_without_idle` would change nothing. False (decompose) otherwise.
+    """
+    n = h.shape[0]
+    lo = np.zeros((n, n))
+    fro = 0.0
+    for i in range(n):
+        for j in range(n):
+            fro += h[i, j] * h[i, j]
+        for j in range(i + 1):
+            s = h[i, j]
+            for k in range(j):
+                s -= lo[i, k] * lo[j, k]
+            if i == j:
+                if not s > 0.0:
+                    return False
+                lo[i, i] = np.sqrt(s)
+            else:
+                lo[i, j] = s / lo[j, j]
+    # h⁻¹ = L⁻ᵀ L⁻¹: 1/λ_min = ‖h⁻¹‖₂ = ‖L⁻¹‖₂² ≤ ‖L⁻¹‖_F² = li.
+    inv = np.zeros((n, n))
+    for j in range(n):
+        inv[j, j] = 1.0 / lo[j, j]
+        for i in range(j + 1, n):
+            s = 0.0
+            for k in range(j, i):
+                s -= lo[i, k] * inv[k, j]
+            inv[i, j] = s / lo[i, i]
+    li = 0.0
+    for i in range(n):
+        for j in range(i + 1):
+            li += inv[i, j] * inv[i, j]
+    if not np.isfinite(li) or not np.isfinite(fro):
+        return False
+    return 1.0 / li > REGULAR_SAFETY * MECHANISM_RTOL * np.sqrt(fro)
+
+
 @njit(cache=True, error_model="numpy")
 def _without_idle(h, g, step, tol):
     """``step`` without its components along mechanisms of h the gradient does not load (in place)."""
+    if _surely_regular(h):
+        return
     lam, vec = np.linalg.eigh(h)
     n = h.shape[0]
     top = 0.0
@@ -246,7 +337,7 @@ def _start(q, load, mp, scale, idx, max_step):
                     k[a, b] = 0.0
             k[a, a] += 1e-300
         try:
-            qt = np.linalg.solve(k, f)
+            qt = _lu_solve(k, f)
         except Exception:  # degenerate stiffness: start from the given point
             return out
         approach = 0.0
@@ -287,7 +378,9 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
     diverged = False
     refused = False
     g = np.empty(n)
+    mg = np.empty(n)
     h = np.empty((n, n))
+    hm = np.empty((n, n))
     cand = np.empty(5)
     t_force = np.empty(5)
     t_jac = np.empty((5, 5))
@@ -317,10 +410,11 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
                 h[a, b] = -(jac[idx[a], idx[b]] * scale[idx[a]] * scale[idx[b]])
             diag = max(diag, abs(h[a, a]))
         mu = 1e-12 * diag + gmax / (1e6 * max_step) + 1e-300
-        hm = h.copy()
         for a in range(n):
+            hm[a, :] = h[a, :]
             hm[a, a] += mu
-        step = np.linalg.solve(hm, -g)
+            mg[a] = -g[a]
+        step = _lu_solve(hm, mg)
         noise = rtol * gmax / max(norm, 1e-300)
         _without_idle(h, g, step, noise)
         big = 0.0
@@ -415,20 +509,20 @@ def _solve_case(c, q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q,
 def _solve_batch(
     q0, load, free,
     b_B, b_s0, b_a0, b_kn, b_side, b_row,
-    r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row,
+    r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row, r_reach,
     p_G, p_d0, p_k, p_row,
     t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
-    t_taylor, t_row,
+    t_taylor, t_row, t_lc,
     start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
 ):  # fmt: skip
     for i in prange(load.shape[0]):
         c = np.int64(i)  # the parfor index may be unsigned: int64 keeps `c if … else 0` an integer
         balls = BallPack(b_B, b_s0, b_a0, b_kn, b_side, b_row)
-        rollers = RollerPack(r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row)
+        rollers = RollerPack(r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row, r_reach)
         points = PointPack(p_G, p_d0, p_k, p_row)
         tapered = TaperedPack(
             t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor,
-            t_ffloor, t_cap, t_taylor, t_row
+            t_ffloor, t_cap, t_taylor, t_row, t_lc
         )  # fmt: skip
         mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows)
         _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
@@ -447,43 +541,84 @@ def _solve_serial(q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, 
                     out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
 
 
-def solve_packed(mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel):
+def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
+    """The arguments of a solve that do not depend on the loads (kept by the caller per model)."""
+    idx = np.flatnonzero(free).astype(np.int64)
+    cone_on = 0.0 if cone is None else 1.0
+    steps = options.continuation_steps
+    return {
+        "idx": idx,
+        "p": np.array([options.rtol, options.max_iterations, max_step, limit, cone_on], dtype=np.float64),
+        "fracs": np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0),
+        "cone": np.zeros((len(idx), 0)) if cone is None else np.ascontiguousarray(cone, dtype=np.float64),
+        "flat": _flat(mp),
+    }
+
+
+def _serial_entry(args):
+    """The compiled serial driver for these argument types, without the dispatcher's type resolution.
+
+    Resolving the types of a ModelPack (a namedtuple of ~45 arrays) costs the dispatcher ~10 µs per
+    call, a tenth of a whole single solve; the argument types of one model never change, so the
+    compiled entry point is looked up once (None: let the dispatcher compile or choose).
+    """
+    try:
+        sig = tuple(_solve_serial.typeof_pyval(a) for a in args)
+        return _solve_serial.overloads[sig].entry_point
+    except Exception:  # not compiled for these types yet, or a numba without this API
+        return None
+
+
+def solve_packed(
+    mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None
+):
     """Run the compiled solve of every case (C, 5 arrays in SI); returns the raw per-case outputs.
+
+    ``cache`` (a dict kept by the caller per model, free DOFs and options) holds the arguments that do
+    not depend on the loads.
 
     Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
     ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations`` (C,) int, ``norm`` (C,),
     ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers.
     """
     n = load.shape[0]
-    idx = np.flatnonzero(free).astype(np.int64)
-    cone_on = 0.0 if cone is None else 1.0
-    p = np.array([options.rtol, options.max_iterations, max_step, limit, cone_on], dtype=np.float64)
-    steps = options.continuation_steps
-    fracs = np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0)
-    cone_arr = np.zeros((len(idx), 0)) if cone is None else np.ascontiguousarray(cone)
+    cache = {} if cache is None else cache
+    if "idx" not in cache:
+        cache.update(_constants(mp, free, max_step, limit, options, cone))
     out_q = np.empty((n, 5))
     out_f = np.empty((n, 5))
     out_j = np.empty((n, 5, 5))
     out_i = np.empty((n, 7))
     inner = np.zeros((n, 3))
-    head = (np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64),
-            np.asarray(free, np.bool_))  # fmt: skip
-    tail = (np.asarray(scale, np.float64), idx, p, fracs, cone_arr, bool(given))
+    if "scale" not in cache:
+        cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
+        cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
+    q0, load = np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64)
+    head = (q0, load, cache["free"])
+    tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
     tail += (out_q, out_f, out_j, out_i, inner)
     if parallel:
-        _solve_batch(*head, *_flat(mp), *tail)
+        _solve_batch(*head, *cache["flat"], *tail)
     else:
-        _solve_serial(*head, mp, *tail)
+        args = (*head, mp, *tail)
+        entry = cache.get("serial")
+        if entry is None:
+            _solve_serial(*args)
+            cache["serial"] = _serial_entry(args)
+        else:
+            entry(*args)
+    flags = (out_i[:, :4] > 0.5).T
+    counts = out_i[:, 4:6].astype(int).T
     return {
         "q": out_q,
         "force": out_f,
         "jac": out_j,
-        "converged": out_i[:, 0] > 0.5,
-        "diverged": out_i[:, 1] > 0.5,
-        "refused": out_i[:, 2] > 0.5,
-        "broken": out_i[:, 3] > 0.5,
-        "iterations": out_i[:, 4].astype(int),
-        "evaluations": out_i[:, 5].astype(int),
+        "converged": flags[0],
+        "diverged": flags[1],
+        "refused": flags[2],
+        "broken": flags[3],
+        "iterations": counts[0],
+        "evaluations": counts[1],
         "norm": out_i[:, 6],
         "inner": inner,
     }

@@ -75,6 +75,11 @@ class SolverOptions:
             checks.one_of("backend", self.backend, backend.BACKENDS)
 
 
+#: The options of a solve that gives none (one instance: building and checking them costs more than
+#: a small compiled solve).
+DEFAULT_OPTIONS = SolverOptions()
+
+
 def load_vector(F_x=0.0, F_y=0.0, F_z=0.0, M_x=0.0, M_y=0.0) -> np.ndarray:
     """External load on the inner ring (..., 5) [N, N, N, N·m, N·m] from named components (broadcast)."""
     parts = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (F_x, F_y, F_z, M_x, M_y)))
@@ -90,6 +95,9 @@ CHUNK_CASES = 256
 #: matrix products are small, and OpenBLAS threads on them cost more than they give (issue 19:
 #: 6.7x slower per case at 256 cases with its threads).
 BLAS_SERIAL_ABOVE = 8
+
+#: Cases per chunk the compiled core's threads take at a time (dynamic scheduling of ``prange``).
+PARALLEL_CHUNK = 32
 
 #: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
 #: runs one solver per core (Dask workers, process pools): nested pools would oversubscribe them.
@@ -199,35 +207,43 @@ def solve(
     -------
     QuasiStaticResult
     """
-    options = options or SolverOptions()
+    options = options or DEFAULT_OPTIONS
     if speed is not None:  # speed hook: rows at speed (the model itself when nothing turns)
         from bearingkit.analysis.speed import model_at_speed
 
         model = model_at_speed(model, speed)
-    load = np.atleast_2d(np.asarray(load, dtype=float))
+    load = np.asarray(load, dtype=float)
+    if load.ndim < 2:
+        load = load.reshape(1, -1)
     if load.shape[-1] != N_DOF:
         raise InputError(f"load (shape {load.shape}) must have 5 components (F_x, F_y, F_z, M_x, M_y)")
-    checks.finite("load", load, "N")
-    free = np.ones(N_DOF, bool) if free is None else np.asarray(free, dtype=bool)
-    if free.shape != (N_DOF,):
-        raise InputError(f"free (shape {free.shape}) must be 5 booleans for u_x, u_y, u_z, theta_x, theta_y")
+    if not np.isfinite(load).all():
+        checks.finite("load", load, "N")  # raises, naming the values
+    free_key = _free_key(free)
     n_cases = load.shape[0]
-    q0 = np.zeros((n_cases, N_DOF)) if displacement is None else np.asarray(displacement, dtype=float)
-    q0 = np.array(np.broadcast_to(q0, (max(n_cases, q0.shape[0] if q0.ndim == 2 else 1), N_DOF)))
-    load = np.array(np.broadcast_to(load, q0.shape))
-    checks.finite("displacement", q0, "m")
+    if displacement is None:
+        q0 = np.zeros((n_cases, N_DOF))
+        load = np.array(load, dtype=float)  # the caller's array is never written to
+    else:
+        q0 = np.asarray(displacement, dtype=float)
+        q0 = np.array(np.broadcast_to(q0, (max(n_cases, q0.shape[0] if q0.ndim == 2 else 1), N_DOF)))
+        load = np.array(np.broadcast_to(load, q0.shape))
+        if not np.isfinite(q0).all():
+            checks.finite("displacement", q0, "m")
+    free = np.array(free_key, bool)
     n_cases = q0.shape[0]
     offsets = _offsets_for(model, raceway_offsets)
-    problem = Problem(model.kernels, load, free, options, offsets)
-    _check_directions(model, problem, load)
+    plan = _plan(model, free_key, options, offsets)
+    _check_directions(plan, load)
 
     iterations = np.zeros(n_cases, int)
     pack = _compiled_pack(model, options, offsets)
     if pack is not None:
         q, converged, st, diverged, broken = _solve_compiled(
-            model, pack, problem, q0, load, free, options, displacement is not None, iterations
+            plan, pack, q0, load, free, options, displacement is not None, iterations
         )
     else:
+        problem = plan.problem(load)
         q, converged, st, diverged = _solve_numpy(problem, q0, load, free, options, displacement, iterations)
         broken = None
     # A case whose iterate or residual went non-finite failed numerically: report it, never return NaN.
@@ -237,16 +253,19 @@ def solve(
             q = np.where(broken[:, None], q0, q)
             converged = converged & ~broken
     reasons = [None] * n_cases
-    for c in np.flatnonzero(~converged):
-        reasons[c] = (
-            "numerical failure: the iterate became non-finite (load or offsets far beyond the contacts)"
-            if broken[c]
-            else cone.diagnose(
-                problem.kernels, problem.scale, problem.idx, load[c], bool(diverged[c]), st["norm"][c]
+    if not converged.all():
+        problem = plan.problem(load)
+        for c in np.flatnonzero(~converged):
+            reasons[c] = (
+                "numerical failure: the iterate became non-finite (load or offsets far beyond the contacts)"
+                if broken[c]
+                else cone.diagnose(
+                    problem.kernels, problem.scale, problem.idx, load[c], bool(diverged[c]), st["norm"][c]
+                )
             )
-        )
-    reaction = load.copy()
-    reaction[:, ~free] = -st["force"][:, ~free]
+    reaction = load
+    if not free.all():
+        reaction[:, ~free] = -st["force"][:, ~free]
     result = QuasiStaticResult(
         model=model,
         load=reaction,
@@ -257,7 +276,7 @@ def solve(
         reason=reasons,
         stiffness=-st["jac"],
         free=free,
-        references=tuple(model.references),
+        references=plan.references,
         offsets=offsets,
         evaluations=st.get("evaluations"),
     )
@@ -308,33 +327,42 @@ def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
     return pack
 
 
-def _solve_compiled(model, pack, problem: Problem, q0, load, free, options, given, iterations):
+def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
     """The compiled core over every case (one thread per core); the numpy reference's outputs."""
     from bearingkit.analysis.compiled_newton import solve_packed
 
     n = load.shape[0]
-    _check_case_axis(pack, n)
-    threads = min(solver_threads(), n)
-    cone_matrix = _model_cache(model, ("cone", tuple(free)), lambda: _cone_matrix(problem))
-    args = (pack, q0, load, free, problem.scale, problem.max_step, problem.limit, options, cone_matrix, given)
+    if "lead" not in plan.compiled:
+        axes = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]}
+        plan.compiled["lead"] = axes - {1}
+    _check_case_axis(plan.compiled["lead"], n)
+    threads = min(solver_threads(), n) if n > 1 else 1
+    args = (pack, q0, load, free, plan.scale, plan.max_step, plan.limit, options, plan.cone_matrix, given)
     if threads > 1:
         import numba
 
         # No BLAS limit here: the compiled core calls LAPACK on 5×5 systems only, which OpenBLAS
         # runs on the calling thread (and a limit costs ~0.1–2 ms per call).
         numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
-        out = solve_packed(*args, parallel=True)
+        # Cases handed out in small chunks as threads free up, not in one equal share per thread: on
+        # a shared machine one thread is often descheduled, and cases differ in cost (continuation).
+        previous = numba.set_parallel_chunksize(PARALLEL_CHUNK)
+        try:
+            out = solve_packed(*args, parallel=True, cache=plan.compiled)
+        finally:
+            numba.set_parallel_chunksize(previous)
     else:
-        out = solve_packed(*args, parallel=False)
+        out = solve_packed(*args, parallel=False, cache=plan.compiled)
     iterations += out["iterations"]
-    _record_inner(problem.kernels, out["inner"])
+    if plan.tapered:
+        _record_inner(plan.kernels, out["inner"])
     state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
     return out["q"], out["converged"], state, out["diverged"], out["broken"]
 
 
-def _check_case_axis(pack, n_cases: int) -> None:
-    """Per-case geometry must have one entry per load case (the compiled core does not broadcast)."""
-    lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
+def _check_case_axis(lead: set, n_cases: int) -> None:
+    """Per-case geometry (``lead``: the pack's case-axis lengths other than 1) must have one entry per
+    load case (the compiled core does not broadcast)."""
     if lead and lead != {n_cases}:
         raise InputError(
             f"the bearing's per-case geometry has {sorted(lead)} cases but the load has {n_cases}; "
@@ -350,14 +378,64 @@ def _model_cache(model: BearingModel, key, compute):
     return cache[key]
 
 
-def _check_directions(model: BearingModel, problem: Problem, load: np.ndarray) -> None:
+def _check_directions(plan, load: np.ndarray) -> None:
     """:func:`cone.check_directions` with the DOFs the rows reach computed once per model."""
-    reach = _model_cache(
-        model, "reach", lambda: np.abs(cone.directions(problem.kernels) * problem.scale).max(axis=0)
-    )
-    idle = reach <= 1e-12 * reach.max()
-    if np.any(idle[problem.idx] & np.any(load[:, problem.idx] != 0.0, axis=0)):
+    if plan.idle_free.size and np.any(load[:, plan.idle_free] != 0.0):
+        problem = plan.problem(load)
         cone.check_directions(problem.kernels, problem.scale, problem.idx, load)  # raises, naming the DOF
+
+
+def _free_key(free) -> tuple:
+    """``free`` (None or 5 booleans) as a tuple of 5 bools (the key of the per-model solver plan)."""
+    if free is None:
+        return (True,) * N_DOF
+    arr = np.asarray(free, dtype=bool)
+    if arr.shape != (N_DOF,):
+        raise InputError(f"free (shape {arr.shape}) must be 5 booleans for u_x, u_y, u_z, theta_x, theta_y")
+    return tuple(bool(v) for v in arr)
+
+
+class _Plan:
+    """The constants of one (model, free DOFs, options) solve, computed once and kept on the model.
+
+    A single solve should cost what its Newton iterations cost: the scaling, step limits, the contact
+    cone of the free DOFs, the DOFs no row reaches and the compiled core's argument arrays do not
+    change from one call to the next (the model and its kernels are immutable geometry).
+    """
+
+    def __init__(self, model: BearingModel, free_key: tuple, options: SolverOptions, offsets):
+        free = np.array(free_key, bool)
+        ref = Problem(model.kernels, np.zeros((1, N_DOF)), free, options, offsets)
+        self.kernels = ref.kernels
+        self.free, self.options, self.offsets = free, options, offsets
+        self.scale, self.idx = ref.scale, ref.idx
+        self.max_step, self.limit = ref.max_step, ref.limit
+        reach = _model_cache(
+            model, "reach", lambda: np.abs(cone.directions(ref.kernels) * ref.scale).max(axis=0)
+        )
+        idle = reach <= 1e-12 * reach.max()
+        self.idle_free = np.flatnonzero(idle & free)
+        self.references = tuple(model.references)
+        self.tapered = any(hasattr(k, "inner_stats") for k in self.kernels)
+        self._cone = None
+        self.compiled = {}  # compiled core's constant arguments (compiled_newton.solve_packed)
+
+    @property
+    def cone_matrix(self):
+        if self._cone is None:
+            self._cone = (_cone_matrix(self.problem(np.zeros((1, N_DOF)))),)
+        return self._cone[0]
+
+    def problem(self, load: np.ndarray) -> Problem:
+        """The numpy reference's problem for these loads (cheap: the kernels are shared)."""
+        return Problem(self.kernels, load, self.free, self.options, self.offsets)
+
+
+def _plan(model: BearingModel, free_key: tuple, options: SolverOptions, offsets) -> _Plan:
+    """The model's cached :class:`_Plan` (a new one when raceway offsets are imposed: they vary)."""
+    if offsets is not None:
+        return _Plan(model, free_key, options, offsets)
+    return _model_cache(model, ("plan", free_key, options), lambda: _Plan(model, free_key, options, None))
 
 
 def _cone_matrix(problem: Problem):

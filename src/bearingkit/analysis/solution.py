@@ -32,6 +32,14 @@ def _take(offset, cases: slice):
     return None if offset is None else offset.take(np.arange(cases.start, cases.stop))
 
 
+def _part(kernel, n: int, cases: slice):
+    """The kernel restricted to ``cases`` of n (per-case geometry, e.g. a clearance varied in a study,
+    must follow the displacements it is evaluated with; shared geometry is left as is)."""
+    if cases.start == 0 and cases.stop >= n:
+        return kernel
+    return kernel.take(np.arange(cases.start, cases.stop))
+
+
 @dataclass(frozen=True)
 class RowStats:
     """Per-case statistics of one row, computed without keeping per-element arrays (SI).
@@ -70,7 +78,7 @@ class StreamedRowState(RowState):
         first = None
         parts = {}
         for cases in _chunks(n):
-            st = kernel.state(displacement[cases], _take(offset, cases))
+            st = _part(kernel, n, cases).state(displacement[cases], _take(offset, cases))
             if first is None:
                 first = st
                 z = st.load.shape[1]
@@ -87,7 +95,8 @@ class StreamedRowState(RowState):
     def _full(self):
         if not self._lazy:
             kernel, q, offset, has_slices = self._source
-            states = [kernel.state(q[c], _take(offset, c)) for c in _chunks(q.shape[0])]
+            n = q.shape[0]
+            states = [_part(kernel, n, c).state(q[c], _take(offset, c)) for c in _chunks(n)]
             self._lazy["slice_load"] = np.concatenate([s.slice_load for s in states]) if has_slices else None
             extras = {}
             for key in states[0].extras:
@@ -189,7 +198,7 @@ class QuasiStaticResult:
         out = {k: np.empty(n) for k in ("max_load", "max_pressure", "max_deflection")}
         count = np.empty(n, int)
         for cases in _chunks(n):
-            st = kernel.state(self.displacement[cases], _take(offset, cases))
+            st = _part(kernel, n, cases).state(self.displacement[cases], _take(offset, cases))
             out["max_load"][cases] = st.max_load
             out["max_pressure"][cases] = st.max_pressure.max(axis=-1)
             out["max_deflection"][cases] = st.deflection.max(axis=-1)
@@ -208,8 +217,9 @@ class QuasiStaticResult:
             return self.rows
         offs = self.offsets or [None] * len(self.model.kernels)
         one = slice(case, case + 1)
+        n = self.n_cases
         return [
-            k.state(self.displacement[one], _take(o, one))
+            _part(k, n, one).state(self.displacement[one], _take(o, one))
             for k, o in zip(self.model.kernels, offs, strict=True)
         ]
 
@@ -272,8 +282,9 @@ class QuasiStaticResult:
             offset = self.offsets[i] if self.offsets else None
             kernel, q = self.model.kernels[i], self.displacement
             force = np.empty_like(q)
-            for cases in _chunks(q.shape[0]):
-                force[cases] = -kernel.response(q[cases], _take(offset, cases)).force
+            n = q.shape[0]
+            for cases in _chunks(n):
+                force[cases] = -_part(kernel, n, cases).response(q[cases], _take(offset, cases)).force
             self._row_loads[name] = force
         return self._row_loads[name]
 

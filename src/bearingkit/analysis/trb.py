@@ -81,17 +81,30 @@ def contact_forces(row: TaperedRow, axial_load, deviations=None, free=SEED001_FR
     fz = np.broadcast_to(np.asarray(axial_load, dtype=float), (n_cases,)) * row.direction
     model = BearingModel((row,), name="tapered row", references=("liu2022",))
     res = solve(model, load_vector(F_z=fz), free=list(free))
-    st = model.kernels[0].roller_state(res.displacement)
-    q_e = st["load_outer"]
+    q_i, q_e, q_f = _roller_loads(model, res.displacement)
     return ContactForceStatistics(
         load_outer=q_e,
-        load_inner=st["load_inner"],
-        load_flange=st["load_flange"],
+        load_inner=q_i,
+        load_flange=q_f,
         max_contact_force=q_e.max(axis=-1),
         variance=q_e.var(axis=-1),
         converged=res.converged,
         displacement=res.displacement,
     )
+
+
+def _roller_loads(model: BearingModel, q: np.ndarray):
+    """Cone, cup and rib loads (C, Z) of the row's rollers at q: compiled where the solve was."""
+    from bearingkit.analysis import backend
+
+    kernel = model.kernels[0]
+    if backend.requested(None) != "numpy" and backend.compiled_pack(model) is not None:
+        from bearingkit.rows.compiled_tapered import roller_loads
+
+        loads = roller_loads(kernel, q)
+        return loads[..., 0], loads[..., 1], loads[..., 2]
+    st = kernel.roller_state(q)
+    return st["load_inner"], st["load_outer"], st["load_flange"]
 
 
 @dataclass(frozen=True)

@@ -181,7 +181,9 @@ def one_sided_row(row: BallRow, alpha0) -> bool:
 class BallKernel(KernelBase):
     """Precomputed geometry and stiffness of a :class:`BallRow` for fast repeated evaluation."""
 
-    _case_arrays = ("B", "Bf", "BB", "s0", "a0", "k_n", "side")
+    #: Per-case arrays (leading axis C or 1) that :meth:`take` restricts; ``geometry`` holds the
+    #: columns (C|1, 4) D_w, d_m, f_i, f_o that :meth:`state` reads (a study may vary them per case).
+    _case_arrays = ("B", "Bf", "BB", "s0", "a0", "k_n", "side", "psi", "geometry")
 
     def __init__(self, row: BallRow):
         from bearingkit.physics.contact import hertz
@@ -193,6 +195,7 @@ class BallKernel(KernelBase):
         d, dm = col(row.element_diameter), col(row.pitch_diameter)
         alpha0 = col(row.contact_angle)
         fi, fo = col(row.conformity_inner), col(row.conformity_outer)
+        self.geometry = np.concatenate(np.broadcast_arrays(d, dm, fi, fo), axis=1)  # (C|1, 4)
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
         self.psi = azimuths(row.n_elements, case_column(row.azimuth_phase)[:, 0])  # (C|1, Z)
         self.a0 = (fi + fo - 1.0) * d  # groove-centre distance at first touch
@@ -286,13 +289,11 @@ class BallKernel(KernelBase):
         delta = self._approach(s, a)
         load = self.k_n * delta**POINT_EXPONENT
         alpha = np.arctan2(s[..., 1], s[..., 0])
-        d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1)
-        dm = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1)
+        d, dm, f_i, f_o = (self.geometry[:, k : k + 1] for k in range(4))
         extras, p_max = {}, np.zeros_like(load)
         # The curvatures depend on cos α only; a thrust contact leaning past 90° uses |cos α|.
         alpha_geo = np.arccos(np.clip(np.abs(np.cos(alpha)), 0.0, 1.0))
-        for side, f in (("inner", row.conformity_inner), ("outer", row.conformity_outer)):
-            f = np.asarray(f, dtype=float).reshape(-1, 1)
+        for side, f in (("inner", f_i), ("outer", f_o)):
             sr, fr = hertz.ball_raceway_curvature(d, dm, alpha_geo, f * d, side)
             contact = hertz.point_contact(load, sr, fr, self.e_reduced, method=row.hertz_method)
             extras[f"semi_major_{side}"] = contact.semi_major

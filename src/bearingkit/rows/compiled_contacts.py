@@ -16,13 +16,19 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit
+
+from bearingkit.rows.numba_cache import configure
+
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit  # noqa: E402
 
 #: Packed ball rows (E balls): B (Cb, E, 2, 5), s0 (Cb, E, 2), a0, k_n, side (Cb, E), row (E,) int.
 BallPack = namedtuple("BallPack", "B s0 a0 kn side row")
 #: Packed cylindrical rows (R rollers, S ≥ n_s slots): Ga, Gb (Cc, R, 5), x, d0 (Cc, R, S),
-#: c_s (Cc, R), ns (R,) int slices per roller, row (R,) int.
-RollerPack = namedtuple("RollerPack", "Ga Gb x d0 cs ns row")
+#: c_s (Cc, R), ns (R,) int slices per roller, row (R,) int; reach (Cc, R, 2): the largest δ0_k and
+#: the largest |x_k| of each roller (a roller whose a + max δ0 + |b| max|x| is below zero has no
+#: loaded slice and is skipped without visiting its slices).
+RollerPack = namedtuple("RollerPack", "Ga Gb x d0 cs ns row reach")
 #: Packed affine point contacts (threaded rows; P contacts): G (P, 5), d0, k (P,), row (P,) int.
 PointPack = namedtuple("PointPack", "G d0 k row")
 
@@ -64,7 +70,7 @@ def pack_rollers(kernels, rows) -> RollerPack:
     if not kernels:
         return RollerPack(
             np.zeros((1, 0, 5)), np.zeros((1, 0, 5)), np.zeros((1, 0, 1)), np.zeros((1, 0, 1)),
-            np.zeros((1, 0)), np.zeros(0, np.int64), np.zeros(0, np.int64),
+            np.zeros((1, 0)), np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros((1, 0, 2)),
         )  # fmt: skip
     s_max = max(k.shape[1] for k in kernels)
     ga, gb, xs, d0, cs, ns, row = [], [], [], [], [], [], []
@@ -83,7 +89,9 @@ def pack_rollers(kernels, rows) -> RollerPack:
         ns.append(np.full(z, n_s, np.int64))
         row.append(np.full(z, r, np.int64))
     ga, gb, xs, d0, cs = (_concat(a) for a in (ga, gb, xs, d0, cs))
-    return RollerPack(ga, gb, xs, d0, cs, np.concatenate(ns), np.concatenate(row))
+    # Padded slots hold x = δ0 = 0: they can only raise the bounds (the skip stays conservative).
+    reach = np.ascontiguousarray(np.stack([d0.max(axis=2), np.abs(xs).max(axis=2)], axis=-1))
+    return RollerPack(ga, gb, xs, d0, cs, np.concatenate(ns), np.concatenate(row), reach)
 
 
 def pack_points(kernels, rows) -> PointPack:
@@ -204,6 +212,11 @@ def ninth_root(d, y, n):
             y[k] = x ** (1.0 / 9.0)
 
 
+#: Relative margin of the unloaded-roller test of :func:`roller_response` (far above rounding: a
+#: roller is skipped only when no slice approach can be positive).
+SKIP_MARGIN = 1e-12
+
+
 @njit(cache=True, error_model="numpy")
 def roller_response(c, q, rp, force, jac, rowf):
     """Add the cylindrical rows' force, Jacobian and per-row force of case c; return the energy.
@@ -211,28 +224,49 @@ def roller_response(c, q, rp, force, jac, rowf):
     Same model as :meth:`bearingkit.rows.cylindrical.CylindricalKernel.response`: slice approach
     δ_k = a + b x_k + δ0_k with a = Ga·q, b = Gb·q, slice load c_s δ^(10/9) (δ^(1/9) by
     :func:`ninth_root`), reduced per roller to Σq, Σqx (force) and Σq′, Σq′x, Σq′x² (stiffness).
+    Three passes: the touching slices of every roller are gathered (a roller no slice of which can
+    touch, by its ``reach`` bound, is skipped unvisited), their roots taken in one long loop the
+    compiler vectorises, then each roller's sums are formed in slice order (the slices left out add
+    exact zeros to the reference's sums).
     """
     cc = c if rp.Ga.shape[0] > 1 else 0
-    energy = 0.0
+    n_r = rp.Ga.shape[1]
     s_max = rp.x.shape[2]
-    ju = np.zeros((5, 5))
-    dbuf = np.empty(s_max)
-    ybuf = np.empty(s_max)
-    for r in range(rp.Ga.shape[1]):
+    dbuf = np.empty(n_r * s_max)
+    ybuf = np.empty(n_r * s_max)
+    xbuf = np.empty(n_r * s_max)
+    rid = np.empty(n_r, np.int64)
+    seg = np.empty(n_r + 1, np.int64)
+    n = 0
+    m = 0
+    for r in range(n_r):
         a = 0.0
         b = 0.0
         for i in range(5):
             a += rp.Ga[cc, r, i] * q[i]
             b += rp.Gb[cc, r, i] * q[i]
-        ns = rp.ns[r]
-        touch = False
-        for k in range(ns):
-            d = b * rp.x[cc, r, k] + a + rp.d0[cc, r, k]
-            dbuf[k] = d if d > 0.0 else 0.0
-            touch = touch or d > 0.0
-        if not touch:
+        top = a + rp.reach[cc, r, 0] + abs(b) * rp.reach[cc, r, 1]
+        if top < -SKIP_MARGIN * (abs(a) + abs(rp.reach[cc, r, 0]) + abs(b) * rp.reach[cc, r, 1]):
             continue
-        ninth_root(dbuf, ybuf, ns)
+        n0 = n
+        for k in range(rp.ns[r]):
+            x = rp.x[cc, r, k]
+            d = b * x + a + rp.d0[cc, r, k]
+            dbuf[n] = d
+            xbuf[n] = x
+            n += 1 if d > 0.0 else 0  # branch-free gather of the touching slices
+        if n > n0:
+            rid[m] = r
+            seg[m] = n0
+            m += 1
+    seg[m] = n
+    ninth_root(dbuf, ybuf, n)
+    energy = 0.0
+    ju = np.zeros((5, 5))
+    u = np.empty(5)
+    w = np.empty(5)
+    for j in range(m):
+        r = rid[j]
         cs = rp.cs[cc, r]
         f0 = 0.0
         f1 = 0.0
@@ -240,8 +274,8 @@ def roller_response(c, q, rp, force, jac, rowf):
         k1 = 0.0
         k2 = 0.0
         e = 0.0
-        for k in range(ns):
-            x = rp.x[cc, r, k]
+        for k in range(seg[j], seg[j + 1]):
+            x = xbuf[k]
             d = dbuf[k]
             t = ybuf[k]
             load = d * t * cs
@@ -253,16 +287,20 @@ def roller_response(c, q, rp, force, jac, rowf):
             k2 += kk * (x * x)
             e += load * d
         row = rp.row[r]
+        # Roller stiffness [Ga Gb] [[k0, k1], [k1, k2]] [Ga Gb]ᵀ: u = k0 Ga + k1 Gb, w = k1 Ga + k2 Gb.
         for i in range(5):
             gai = rp.Ga[cc, r, i]
             gbi = rp.Gb[cc, r, i]
             fi = -(f0 * gai + f1 * gbi)
             force[i] += fi
             rowf[row, i] += fi
-            for j in range(i, 5):
-                gaj = rp.Ga[cc, r, j]
-                gbj = rp.Gb[cc, r, j]
-                ju[i, j] -= k0 * gai * gaj + k1 * (gai * gbj + gbi * gaj) + k2 * gbi * gbj
+            u[i] = k0 * gai + k1 * gbi
+            w[i] = k1 * gai + k2 * gbi
+        for i in range(5):
+            gai = rp.Ga[cc, r, i]
+            gbi = rp.Gb[cc, r, i]
+            for jj in range(i, 5):
+                ju[i, jj] -= gai * u[jj] + gbi * w[jj]
         energy += e / (1.0 + LINE_EXPONENT)
     _add_symmetric(jac, ju)
     return energy

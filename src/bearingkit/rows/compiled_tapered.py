@@ -15,8 +15,8 @@ from __future__ import annotations
 from collections import namedtuple
 
 import numpy as np
-from numba import njit
 
+from bearingkit.rows.numba_cache import configure
 from bearingkit.rows.tapered_kernel import (
     ROLLER_MAX_HALVINGS,
     ROLLER_MAX_ITER,
@@ -27,11 +27,17 @@ from bearingkit.rows.tapered_kernel import (
 )
 from bearingkit.rows.tapered_laws import TAYLOR_DELTA_FLOOR, TAYLOR_REGULAR_APPROACH
 
+configure()  # before numba reads its configuration: the cache follows the compiled sources
+from numba import njit, prange  # noqa: E402
+
 #: Packed tapered rows (T rollers, S ≥ n_s slots): cone directions gi (T, S, 5), rib gf (T, 5); constant
 #: approach parts d0i, d0e (Ct, T, S) and Δ dev (Ct, T); slices ns (T,); local directions bi, be, bf
 #: (T, 2); per-roller constants cs, kf, fc, floor (stiffness floor), ffloor (force floor), cap (step
-#: cap), taylor (1.0 for seed 001 eq. 4); row (T,) the row index.
-TaperedPack = namedtuple("TaperedPack", "gi gf d0i d0e dev ns bi be bf cs kf fc floor ffloor cap taylor row")
+#: cap), taylor (1.0 for seed 001 eq. 4); row (T,) the row index; lc (Ct, T, 5) the constants of the
+#: eq. (4) law of each roller and case (:func:`_consts`; zeros for the Kunert law), computed once.
+TaperedPack = namedtuple(
+    "TaperedPack", "gi gf d0i d0e dev ns bi be bf cs kf fc floor ffloor cap taylor row lc"
+)
 
 N_LINE = 10.0 / 9.0
 
@@ -44,10 +50,11 @@ def pack_tapered(kernels, rows) -> TaperedPack:
         return TaperedPack(
             np.zeros((0, 1, 5)), np.zeros((0, 5)), np.zeros((1, 0, 1)), np.zeros((1, 0, 1)), np.zeros((1, 0)),
             np.zeros(0, np.int64), z2, z2, z2, z0, z0, z0, z0, z0, z0, z0, np.zeros(0, np.int64),
+            np.zeros((1, 0, 5)),
         )  # fmt: skip
     s_max = max(k.row.n_slices for k in kernels)
     lead = max(max(k.d0_i.shape[0], k.d0_e.shape[0], k.delta_dev.shape[0]) for k in kernels)
-    parts = {f: [] for f in TaperedPack._fields}
+    parts = {f: [] for f in TaperedPack._fields if f != "lc"}
     for kern, r in zip(kernels, rows, strict=True):
         z, n_s = kern.row.n_elements, kern.row.n_slices
         gi = np.zeros((z, s_max, 5))
@@ -78,6 +85,7 @@ def pack_tapered(kernels, rows) -> TaperedPack:
     for name, arrays in parts.items():
         axis = 1 if name in ("d0i", "d0e", "dev") else 0
         out[name] = np.ascontiguousarray(np.concatenate(arrays, axis=axis))
+    out["lc"] = _consts_table(out["dev"], out["cs"], out["taylor"])
     return TaperedPack(**out)
 
 
@@ -101,6 +109,29 @@ def _consts(dv, c):
     a = (2.0 * q_t - k_t * d_t) / d_t
     b = (k_t * d_t - q_t) / (d_t * d_t)
     return a, b, (a * d_t * d_t / 2.0 + b * d_t**3 / 3.0) - e_t, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _consts_table(dev, cs, taylor):
+    """:func:`_consts` of every roller and case (Ct, T, 5): constant for the whole solve."""
+    out = np.zeros((dev.shape[0], dev.shape[1], 5))
+    for c in range(dev.shape[0]):
+        for t in range(dev.shape[1]):
+            if taylor[t] != 0.0:
+                a, b, e, p1, p0 = _consts(dev[c, t], cs[t])
+                out[c, t, 0] = a
+                out[c, t, 1] = b
+                out[c, t, 2] = e
+                out[c, t, 3] = p1
+                out[c, t, 4] = p0
+    return out
+
+
+@njit(cache=True, error_model="numpy")
+def _row_consts(tp, cc, t):
+    """The roller's :func:`_consts` as a tuple of scalars (an array view passed down to every slice
+    law call costs a reference count each time: twice the cost of the law itself)."""
+    return (tp.lc[cc, t, 0], tp.lc[cc, t, 1], tp.lc[cc, t, 2], tp.lc[cc, t, 3], tp.lc[cc, t, 4])
 
 
 @njit(cache=True, error_model="numpy")
@@ -298,11 +329,13 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
     unconverged = 0
     warm = ws_flag[0] > 0.0
     dq = np.empty(5)
+    kqq = np.empty((5, 5))
+    vi = np.empty(5)
     for i in range(5):
         dq[i] = q[i] - ws_q[i]
     for t in range(n_t):
         dv = tp.dev[cc, t]
-        lc = _consts(dv, tp.cs[t]) if tp.taylor[t] != 0.0 else (0.0, 0.0, 0.0, 0.0, 0.0)
+        lc = _row_consts(tp, cc, t)
         af = _ring(tp, t, cc, q, ai, d0e)
         x0, x1 = _guess(tp, t, ai, af, d0e)
         if warm:
@@ -325,8 +358,8 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
         cs, tay = tp.cs[t], tp.taylor[t]
         xi = x0 * tp.bi[t, 0] + x1 * tp.bi[t, 1]
         xe = x0 * tp.be[t, 0] + x1 * tp.be[t, 1]
-        kqq = np.zeros((5, 5))
-        vi = np.zeros(5)
+        kqq[:, :] = 0.0
+        vi[:] = 0.0
         ki_sum = 0.0
         ke_sum = 0.0
         row = tp.row[t]
@@ -377,3 +410,60 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
         ws_q[i] = q[i]
     ws_flag[0] = 1.0
     return energy, used_max, unconverged
+
+
+# -- per-roller contact loads at given ring displacements (post-processing) --------------------------
+@njit(cache=True, error_model="numpy")
+def _case_roller_loads(c, q, tp, out):
+    """Roller contact loads of case c at ring displacement q (5,): out[c, t] = (Q_i, Q_e, Q_f) [N].
+
+    The roller sub-problem of :func:`tapered_response` solved from the closed-form guess, as
+    :meth:`bearingkit.rows.tapered_kernel.TaperedKernel.roller_state` does without a warm start.
+    """
+    cc = c if tp.d0i.shape[0] > 1 else 0
+    s_max = tp.gi.shape[1]
+    ai = np.empty(s_max)
+    d0e = np.empty(s_max)
+    for t in range(tp.gf.shape[0]):
+        dv = tp.dev[cc, t]
+        lc = _row_consts(tp, cc, t)
+        af = _ring(tp, t, cc, q, ai, d0e)
+        x0, x1 = _guess(tp, t, ai, af, d0e)
+        x0, x1, _, _, _ = _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1)
+        cs, tay = tp.cs[t], tp.taylor[t]
+        xi = x0 * tp.bi[t, 0] + x1 * tp.bi[t, 1]
+        xe = x0 * tp.be[t, 0] + x1 * tp.be[t, 1]
+        si = 0.0
+        se = 0.0
+        for k in range(tp.ns[t]):
+            si += _line(ai[k] + xi, dv, cs, tay, lc)[0]
+            se += _line(d0e[k] + xe, dv, cs, tay, lc)[0]
+        out[c, t, 0] = si
+        out[c, t, 1] = se
+        out[c, t, 2] = _rib(af + (x0 * tp.bf[t, 0] + x1 * tp.bf[t, 1]), tp.kf[t])[0]
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def _roller_loads_batch(
+    q, gi, gf, d0i, d0e, dev, ns, bi, be, bf, cs, kf, fc, floor, ffloor, cap, taylor, row, lc, out
+):
+    for i in prange(q.shape[0]):
+        c = np.int64(i)
+        tp = TaperedPack(
+            gi, gf, d0i, d0e, dev, ns, bi, be, bf, cs, kf, fc, floor, ffloor, cap, taylor, row, lc
+        )  # fmt: skip
+        _case_roller_loads(c, q[c], tp, out)
+
+
+def roller_loads(kernel, q: np.ndarray) -> np.ndarray:
+    """Contact loads (C, Z, 3) [N] — cone, cup, rib — of a tapered kernel's rollers at q (C, 5).
+
+    The compiled counterpart of the loads of :meth:`TaperedKernel.roller_state` (same roller
+    sub-problem from the same start; agreement to the sub-problem's tolerance), over the cases in
+    parallel: a Monte Carlo of 10⁴ realisations needs only these three loads per roller.
+    """
+    pack = pack_tapered([kernel], [0])
+    q = np.ascontiguousarray(q, dtype=np.float64)
+    out = np.empty((q.shape[0], kernel.row.n_elements, 3))
+    _roller_loads_batch(q, *pack, out)
+    return out

@@ -154,7 +154,12 @@ class CylindricalKernel(KernelBase):
     the 5-DOF directions are per roller, not per slice.
     """
 
-    _case_arrays = ("Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "delta0_flat", "c_s", "x", "X2", "X3")
+    #: Per-case arrays (leading axis C or 1) that :meth:`take` restricts; ``geometry`` holds the
+    #: columns (C|1, 3) D_w, d_m, effective length that :meth:`state` reads.
+    _case_arrays = (
+        "Ga", "Gb", "GaGa", "GaGb", "GbGb", "delta0", "delta0_flat", "c_s", "x", "X2", "X3", "psi",
+        "geometry",
+    )  # fmt: skip
 
     def __init__(self, row: CylindricalRow):
         from bearingkit.physics.contact import hertz, line
@@ -168,6 +173,8 @@ class CylindricalKernel(KernelBase):
         x = np.asarray(x, dtype=float).reshape(-1, n_s)  # (C|1, n_s)
         self.x = x
         self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
+        columns = (case_column(v) for v in (row.element_diameter, row.pitch_diameter, row.effective_length))
+        self.geometry = np.concatenate(np.broadcast_arrays(*columns), axis=1)  # (C|1, 3)
         psi = azimuths(z_el, case_column(row.azimuth_phase)[:, 0])  # (C|1, Z)
         self.psi = psi
         r = case_column(row.pitch_diameter) / 2
@@ -316,9 +323,8 @@ class CylindricalKernel(KernelBase):
         c_s = self.c_s[..., None]
         q_slice = c_s * delta**LINE_EXPONENT
         load = q_slice.sum(axis=-1)
-        d = np.asarray(row.element_diameter, dtype=float).reshape(-1, 1, 1)
-        dm = np.asarray(row.pitch_diameter, dtype=float).reshape(-1, 1, 1)
-        width = np.asarray(row.effective_length, dtype=float).reshape(-1, 1, 1) / n_s
+        d, dm, length = (self.geometry[:, k, None, None] for k in range(3))
+        width = length / n_s
         if row.direction == 0:  # radial: the inner contact (convex–convex) has the smaller R_x
             radius_x = {"inner": d / 2 * (1 - d / dm), "outer": d / 2 * (1 + d / dm)}
         else:  # thrust: roller on flat washers
