@@ -164,3 +164,24 @@ def test_newton_metre_written_as_engineers_do():
     assert parse("1 nm", "length", "u") == pytest.approx(1e-9, rel=1e-15)  # nanometre unchanged
     with pytest.raises(InputError, match="M_y"):
         parse("5 Nm", "force", "M_y")
+
+
+@pytest.mark.parametrize(
+    "value, dimension, message",
+    [
+        # `--speed 3000` once suggested "a angular velocity such as '3000 rad/s'"
+        ("3000", "angular_velocity", "expected an angular velocity such as '3000 rpm'"),
+        (3000, "angular_velocity", "expected an angular velocity such as '3000 rpm'"),
+        ("40", "angle", "expected an angle such as '40 deg'"),
+        ("2000", "force", "expected a force such as '2000 N'"),
+    ],
+)
+def test_a_missing_unit_suggests_the_unit_engineers_write(value, dimension, message):
+    with pytest.raises(InputError) as err:
+        parse(value, dimension, field="speed")
+    assert message in str(err.value)
+    # the suggestion parses to the value it names
+    suggestion = str(err.value).split("such as '")[1].rstrip("'")
+    assert parse(suggestion, dimension, "speed") == pytest.approx(
+        {"angular_velocity": 3000 * math.pi / 30, "angle": math.radians(40), "force": 2000.0}[dimension]
+    )

@@ -30,6 +30,10 @@ import pint
 from bearingkit.errors import InputError, quote
 
 #: The SI unit each named dimension is converted to. Keys are what fields declare.
+#: Unit suggested when a value of a dimension comes without one, where engineers do not write the SI
+#: unit (a speed is given in r/min, not rad/s); every other dimension suggests its SI unit.
+SUGGESTED_UNITS: dict[str, str] = {"angular_velocity": "rpm", "angle": "deg"}
+
 SI_UNITS: dict[str, str] = {
     "length": "m",
     "force": "N",
@@ -156,13 +160,16 @@ def parse(value, dimension: str, field: str) -> float:
         raise InputError(f"{field}: unknown dimension {dimension!r}; expected one of {sorted(SI_UNITS)}")
     target = SI_UNITS[dimension]
     words = dimension.replace("_", " ")
+    article = "an" if words[0] in "aeiou" else "a"
+    suggested = SUGGESTED_UNITS.get(dimension, target)
     if isinstance(value, bool):
         raise InputError(f"{field} ({value!r}) must be a quantity with a unit of {words} (e.g. '1 {target}')")
     if isinstance(value, (int, float)):
         if dimension == "dimensionless":
             return _finite(value, field, value)
         raise InputError(
-            f"{field} ({quote(value)}) has no unit; expected a {words} such as '{quote(value)} {target}'"
+            f"{field} ({quote(value)}) has no unit; "
+            f"expected {article} {words} such as '{quote(value)} {suggested}'"
         )
     if not isinstance(value, str):
         raise InputError(f"{field} ({quote(value)}) must be a string with a unit, e.g. '1 {target or '1'}'")
@@ -174,7 +181,8 @@ def parse(value, dimension: str, field: str) -> float:
         if dimension == "dimensionless":
             return _remember(value, dimension, _finite(number, field, value))
         raise InputError(
-            f"{field} ({quote(value)}) has no unit; expected a {words} such as '{value.strip()} {target}'"
+            f"{field} ({quote(value)}) has no unit; "
+            f"expected {article} {words} such as '{value.strip()} {suggested}'"
         )
     unit = _unit(unit_text)
     if isinstance(unit, str):

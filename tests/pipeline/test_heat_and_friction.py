@@ -33,6 +33,17 @@ def test_compare_lists_every_model_with_when_it_applies(dgbb):
     assert comp["cage"] == [0.0] and comp["differential_sliding"] == [0.0]  # what the note explains
 
 
+def test_compare_note_states_the_ratio_it_prints(dgbb):
+    # The note under --compare once said "the models differ 3x" next to a printed ratio of 2.2 (docs/
+    # operating.md example: 0.023 against SKF 0.049 N*m); it now says "about half of SKF's torque or
+    # less": the SKF/components ratio on this 6205 must be at least 1.8 and the note must not claim 3x.
+    data = dgbb.friction_comparison()
+    ratio = data["models"]["skf"]["total_Nm"][0] / data["models"]["components"]["total_Nm"][0]
+    assert 1.8 < ratio < 3.0
+    note = next(n for n in data["notes"] if "Heathcote" in n)
+    assert "half of SKF" in note and "3×" not in note
+
+
 def test_tapered_rows_from_a_file_use_the_seed001_model():
     a = bk.analyze(str(EXAMPLES / "trb_32008.toml"), speed="1000 rpm", lubricant="ISO_VG46")
     f = a.friction

@@ -87,12 +87,16 @@ def _num(x, scale: float = 1.0, fmt: str = ".4g") -> str:
 
 
 def _compact(x, scale: float = 1.0) -> str:
-    """Three significant digits, short exponent (``7.45e4``); ``—`` for None."""
+    """Three significant digits, short exponent (``7.45e4``, ``4.00e3``); ``—`` for None.
+
+    Trailing zeros are kept (``#``): a life of 4003 reads ``4.00e3``, not ``4e3`` (one digit).
+    """
     if x is None:
         return "—"
-    text = f"{x * scale:.3g}"
+    text = f"{x * scale:#.3g}"
     mantissa, e, exponent = text.partition("e")
-    return f"{mantissa}e{int(exponent)}" if e else text
+    mantissa = mantissa.rstrip(".")  # '#' leaves '100.' for 100
+    return f"{mantissa}e{int(exponent)}" if e else mantissa
 
 
 def _lnm(value) -> str:
@@ -140,8 +144,8 @@ def duty_cycle_table(d: dict) -> Table:
     kind = d["fraction_kind"]
     title = f"duty cycle: {len(d['bins'])} bins, {kind} fractions, Palmgren–Miner"
     caption = (
-        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev, L10r = {_compact(d['L10r_h'])} h, "
-        f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_compact(d['Lnmr_h'])} h"
+        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev = {_compact(d['L10r_h'])} h, "
+        f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev = {_compact(d['Lnmr_h'])} h"
     )
     table = Table(title=escape(title), caption=escape(caption))
     for col in (

@@ -44,8 +44,8 @@ COMPONENT_MODEL_GAPS = (
     "sums hysteresis and EHL rolling only — its 'differential_sliding' is that of thrust rollers, ball "
     "spin is zero at a 0° contact angle and the cage term is the cage's weight on its guide (zero unless "
     "cage_mass is given) — while SKF's sliding term M_sl carries the Heathcote slip in the conforming "
-    "groove and the cage pocket friction; that difference, not an error, is why the models differ 3× "
-    "on a deep groove ball bearing"
+    "groove and the cage pocket friction; that difference, not an error, is why the component model "
+    "reads about half of SKF's torque or less on a deep groove ball bearing"
 )
 
 
