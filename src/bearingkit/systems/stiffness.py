@@ -146,15 +146,12 @@ class StiffnessTable:
         return path
 
 
-def _at_speed(model, speed: float):
-    """The model with its speed-dependent rows (tapered: ``speed``) at ``speed`` [rad/s]."""
-    rows = tuple(dataclasses.replace(r, speed=speed) if hasattr(r, "speed") else r for r in model.rows)
-    return dataclasses.replace(model, rows=rows)
-
-
 def speed_dependent(model) -> bool:
-    """Whether any row of the model changes with speed (tapered rows' centrifugal force)."""
-    return any(hasattr(r, "speed") for r in model.rows)
+    """Whether any row of the model changes with speed: the kinds with a speed kernel (ball
+    centrifugal force and gyroscopic moment, cylindrical and tapered roller centrifugal force)."""
+    from bearingkit.analysis.speed import SPEED_KERNELS
+
+    return any(r.kind in SPEED_KERNELS or hasattr(r, "speed") for r in model.rows)
 
 
 def bearing_stiffness_table(model, loads, speeds=(0.0,), *, free=None, options=None, name=None):
@@ -190,7 +187,9 @@ def bearing_stiffness_table(model, loads, speeds=(0.0,), *, free=None, options=N
     conv = np.empty((n_l, n_s), bool)
     if speed_dependent(model):
         for j, w in enumerate(speeds):  # one batched solve over the loads per speed
-            res = solve(_at_speed(model, float(w)), loads, free=free, options=options)
+            # the same speed hook as analyze --speed: every row kind with a speed kernel, not only
+            # tapered rows (a spindle's ball rows soften by a factor of ~3 at 20,000 rpm)
+            res = solve(model, loads, free=free, options=options, speed=float(w) if w else None)
             k[:, j], conv[:, j] = res.stiffness, res.converged
     else:
         res = solve(model, loads, free=free, options=options)
