@@ -351,3 +351,12 @@ def test_uncarriable_loads_say_what_to_do():
     r = runner.invoke(app, ["analyze", "NU210", "--load", "Fz=1kN"])
     assert r.exit_code == 2
     assert "remove the load" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("command", ["analyze", "rating", "friction"])
+def test_a_shaft_file_given_to_a_bearing_command_names_the_shaft_command(command):
+    path = str(EXAMPLES / "shaft_countershaft.toml")
+    r = runner.invoke(app, [command, path])
+    assert r.exit_code == 2
+    assert "this is a shaft file" in r.stderr and f"bearingkit shaft {path}" in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1

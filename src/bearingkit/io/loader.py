@@ -195,6 +195,11 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
+    if "shaft" in data and "bearing" not in data:  # a shaft file given to a bearing command
+        raise InputError(
+            f"{source}: this is a shaft file ([shaft] table), not a bearing file: run "
+            f"'bearingkit shaft {source}' (or 'bearingkit report {source}' for its report)"
+        )
     cycle = {k: data[k] for k in schema_cycle.SECTIONS if k in data}  # validated by schema_cycle
     try:
         spec = schema.BearingFile.model_validate({k: v for k, v in data.items() if k not in cycle})
