@@ -102,7 +102,8 @@ def _compact(x, scale: float = 1.0) -> str:
 def _lnm(value) -> str:
     """L_nmr in 10⁶ rev, or why it is missing (a_ISO needs e_C, a lubricant, a temperature and a speed)."""
     if value is None:
-        return "— (a_ISO needs --contamination, a lubricant, a temperature and a speed)"
+        # no flag named: run-flagship has none, rating takes --contamination, a file [operating]
+        return "— (no a_ISO: it needs the contamination factor e_C, a lubricant, a temperature and a speed)"
     return f"{_num(value, 1e-6)} 10⁶ rev"
 
 
