@@ -172,6 +172,8 @@ def _short_leaves(obj, path=(), longest: int = 50):
     """As :func:`_leaves`, without descending into arrays longer than ``longest`` (a huge array is
     one leaf: mutants stay small enough to write, and the next mutation need not visit 100,000 items)."""
     out = [(path, obj)] if path else []
+    if len(path) > 32:  # a deeply nested mutant is one leaf too (a later mutation would recurse 1000 deep)
+        return out
     if isinstance(obj, dict):
         for k, v in obj.items():
             out += _short_leaves(v, (*path, k), longest)
@@ -459,7 +461,8 @@ _FILE_LEVEL = (
     "row '",
     "--",
 )
-_FIELD = re.compile(r"^[^\s(]+ \(|^[A-Za-z_][\w.\[\]]*: ")
+#: "field (value)…" or "field: …"; a key the mutator made up is quoted and may hold spaces ('5 kN').
+_FIELD = re.compile(r"^(?:[^\s('\"]|'[^']*'|\"[^\"]*\")+ \(|^[A-Za-z_][\w.\[\]]*: ")
 
 
 def _names_a_field(message: str) -> bool:
