@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
+from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life
 from bearingkit.analysis.rating_options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
@@ -191,6 +192,8 @@ class RatingResult:
         Per case: every warning of the rows (prefixed by the row name) and of the system.
     references : tuple of str
         Keys of :mod:`bearingkit.references`.
+    iso281 : Iso281Life or None
+        ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating_iso281`).
     """
 
     bearing: str
@@ -206,6 +209,7 @@ class RatingResult:
     converged: np.ndarray
     warnings: list
     references: tuple = _REFERENCES
+    iso281: Iso281Life | None = None
 
     @property
     def n_cases(self) -> int:
@@ -275,9 +279,27 @@ class RatingResult:
                 "Lnmr_rev": val(self.modified_life),
                 "Lnmr_h": val(self.hours(self.modified_life)),
                 "static_safety": val(self.static_safety),
+                **self._iso281_dict(val),
             },
             "warnings": list(self.warnings[case]),
             "references": list(self.references),
+        }
+
+    def _iso281_dict(self, val) -> dict:
+        """The system's ISO 281 keys (P, C and its source, L10, L10h, L_nm; None where not given)."""
+        b = self.iso281
+        if b is None:
+            return {}
+        return {
+            "P_iso281_N": val(b.load),
+            "C_iso281_N": b.load_rating,
+            "C_source": b.rating_source,
+            "L10_iso281_rev": val(b.life),
+            "L10h_iso281_h": val(self.hours(b.life)),
+            "a_ISO_iso281": val(b.life_modification),
+            "Lnm_iso281_rev": val(b.modified_life),
+            "Lnm_iso281_h": val(self.hours(b.modified_life)),
+            "iso281_note": b.note,
         }
 
     def to_pandas(self):
@@ -326,6 +348,7 @@ def rate(
     edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO,
     edge_stress_factor: str = "auto",
     load_ratings: Mapping | None = None,
+    catalogue_rating=None,
 ) -> RatingResult:
     """Rate every row of a solved bearing and combine the rows into the system life.
 
@@ -366,6 +389,9 @@ def rate(
         ISO/TS 16281 eq. (60) slice factor use ("auto": rollers without a profile).
     load_ratings : Mapping[str, float], optional
         C [N] per row name, replacing ISO 281 (catalogue values; thrust roller rows).
+    catalogue_rating : (float, float or None), optional
+        The published (C, C0) [N] of the bearing (a designation): the C of the whole-bearing ISO 281
+        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry).
 
     Returns
     -------
@@ -444,4 +470,5 @@ def rate(
         converged=converged,
         warnings=warnings,
         references=refs,
+        iso281=bearing_life(result, rows, opts, catalogue_rating),
     )

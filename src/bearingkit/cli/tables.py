@@ -13,6 +13,8 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
+from bearingkit.analysis.rating_iso281 import caption as iso281_caption
+
 #: Displacements [m] and angles [rad] below this are the solver's round-off, shown as 0 (the solve
 #: converges to ~1e-10 of the load scale; 1e-12 m is a thousandth of a nanometre).
 DISPLACEMENT_NOISE = 1.0e-12
@@ -117,6 +119,9 @@ def rating_table(c: dict) -> Table:
         f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}, "
         f"s0 = {_num(s['static_safety'], fmt='.3g')}"
     )
+    iso281 = iso281_caption(s)
+    if iso281:
+        caption += "\n" + iso281
     table = Table(title=escape(title), caption=escape(caption))
     for col in ("row", "C kN", "C0 kN", "L10r 10⁶rev", "L10h h", "s0", "flags"):
         justify = "left" if col in ("row", "flags") else "right"

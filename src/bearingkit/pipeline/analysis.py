@@ -218,10 +218,30 @@ class Analysis:
                 reliability=op.reliability,
                 load_ratings=self.load_ratings,
                 shoulder_height=self._shoulder_heights(),
+                catalogue_rating=self._catalogue_rating(),
                 **life,
             ), None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
+
+    def _catalogue_rating(self):
+        """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C),
+        None for a bearing given by its geometry or a catalogue row without ratings."""
+        spec = getattr(self.input, "spec", None)
+        header = getattr(spec, "bearing", None)
+        designation = getattr(header, "designation", None)
+        if not designation:
+            return None
+        from bearingkit.catalogue import parse, tables
+
+        des = parse(designation)
+        entry = tables.entries(des.family).get(des.base)
+        given = getattr(header, "C", None)
+        if given is not None:
+            return float(given), None if entry is None else entry.C0
+        if entry is None or entry.C is None:
+            return None
+        return entry.C, entry.C0
 
     def _shoulder_heights(self):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""

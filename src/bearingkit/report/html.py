@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 
+from bearingkit.analysis.rating_iso281 import caption as iso281_caption
 from bearingkit.errors import InputError
 from bearingkit.report import plots
 from bearingkit.report.html_duty import duty_cycle_html
@@ -153,6 +154,12 @@ def _rating_html(rating, case: int, n: int) -> str:
         heads.append(f"L{fmt((1 - d['reliability']) * 100, 3)}r [rev]")
         cells.append(fmt(s["Lnr_rev"], 4))
     system = _table([*heads, "static safety s0"], [[*cells, fmt(s["static_safety"], 4)]])
+    iso281 = iso281_caption(s)
+    if iso281:
+        system += (
+            f"<p>{_e(iso281)}.</p><p>ISO 281 basic rating life of the whole bearing from P = X F_r + Y F_a "
+            "of the applied load, beside the ISO/TS 16281 life L10r from the load distribution.</p>"
+        )
     return (
         f"<h4>{n}. Ratings and static safety</h4>"
         f"<p>Rotating ring: {_e(d['rotating'])}; speed {speed} r/min; reliability "
