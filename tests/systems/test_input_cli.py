@@ -186,3 +186,13 @@ def test_bearing_by_designation_equals_its_catalogue_input():
     assert res.converged.all()
     data["shaft"]["bearings"][0]["file"] = "dgbb_6209.toml"
     assert "exactly one of file" in _error(data)
+
+
+def test_a_tiny_element_length_is_refused_before_meshing():
+    """max_element_length = 1e-9 mm asked for 2.5e8 elements (the fuzz found 9 TiB allocations)."""
+    data = _data()
+    data["shaft"]["max_element_length"] = "1e-9 mm"
+    message = _error(data)
+    assert "shaft.max_element_length" in message and "more than 5000 elements" in message
+    data["shaft"]["max_element_length"] = "0.1 mm"  # 2,500 elements of a 250 mm shaft: allowed
+    assert shaft_from_dict(data, "fine.toml", base=EXAMPLES).system.max_element_length == pytest.approx(1e-4)

@@ -38,6 +38,9 @@ POSITION_TOL = 1e-7
 #: Default number of elements a shaft's length is divided into at least (nodal values are exact; the
 #: subdivision only draws the deflection and moment lines).
 DEFAULT_DIVISIONS = 60
+#: Most beam elements a shaft may be divided into: nodal values are exact already with a few per span,
+#: and a tiny max_element_length must not allocate the machine away (the fuzz gave 1.25e12 elements).
+MAX_ELEMENTS = 5000
 
 
 @dataclass(frozen=True)
@@ -145,6 +148,16 @@ class Shaft:
         starts = np.array([s.start for s in self.sections])
         return np.clip(np.searchsorted(starts, np.asarray(z, dtype=float), side="right") - 1, 0, None)
 
+    def check_element_length(self, h: float) -> None:
+        """Refuse an element length that is not positive or would need over :data:`MAX_ELEMENTS` [m]."""
+        checks.positive("max_element_length", h, "m")
+        if self.length / h > MAX_ELEMENTS:
+            raise InputError(
+                f"shaft.max_element_length ({h * 1e3:.6g} mm) would divide the "
+                f"{self.length * 1e3:.6g} mm shaft into more than {MAX_ELEMENTS} elements; give at least "
+                f"{self.length / MAX_ELEMENTS * 1e3:.3g} mm"
+            )
+
     def mesh(self, points=(), max_element_length: float | None = None) -> Mesh:
         """The finite-element mesh with a node at every section step and at ``points`` [m].
 
@@ -156,7 +169,7 @@ class Shaft:
             Largest element; default the length / :data:`DEFAULT_DIVISIONS`.
         """
         h = max_element_length if max_element_length is not None else self.length / DEFAULT_DIVISIONS
-        checks.positive("max_element_length", h, "m")
+        self.check_element_length(h)
         fixed = np.array(
             [self.start, self.end, *(s.end for s in self.sections), *np.asarray(list(points), dtype=float)]
         )

@@ -146,7 +146,7 @@ class ShaftSystem:
         for i, m in enumerate(self.masses):
             self.shaft.check_position(f"masses[{i}].position", m.position, f"mass {m.name!r}")
         if self.max_element_length is not None:
-            checks.positive("max_element_length", self.max_element_length, "m")
+            self.shaft.check_element_length(self.max_element_length)  # before any mesh is built
         self._check_supports()
 
     @cached_property
