@@ -234,7 +234,7 @@ def _cases_of(result, cases):
     from bearingkit.analysis.quasistatic import QuasiStaticResult
 
     return QuasiStaticResult(
-        model=result.model,
+        model=_model_of(result.model, cases, len(result.load)),
         load=result.load[cases],
         displacement=result.displacement[cases],
         converged=result.converged[cases],
@@ -244,4 +244,19 @@ def _cases_of(result, cases):
         stiffness=result.stiffness[cases],
         free=result.free,
         references=result.references,
+    )
+
+
+def _model_of(model, cases, n_cases: int):
+    """A model whose per-case speeds (a ModelAtSpeed's) are restricted to ``cases`` of the batch."""
+    import dataclasses
+
+    from bearingkit.analysis.speed import ModelAtSpeed, model_at_speed
+
+    if not isinstance(model, ModelAtSpeed):
+        return model
+    sp = model.speed
+    pick = lambda v: np.broadcast_to(v, (n_cases,))[cases]  # noqa: E731
+    return model_at_speed(
+        model, dataclasses.replace(sp, speed_inner=pick(sp.inner), speed_outer=pick(sp.outer))
     )

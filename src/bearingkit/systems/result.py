@@ -62,6 +62,7 @@ class ShaftResult:
     iterations: np.ndarray = None
     residual_norm: np.ndarray = None
     reason: list = None
+    laws: list = None
     _bearing_results: dict = field(default_factory=dict, repr=False)
 
     # -- shaft -------------------------------------------------------------------------------
@@ -121,13 +122,24 @@ class ShaftResult:
             raise InputError(f"bearing ({name!r}) not in the result; bearings are {names}")
         return names.index(name)
 
+    def law(self, name: str):
+        """The :class:`~bearingkit.systems.supports.BearingLaw` the bearing was solved with (its rows at
+        the cases' shaft speed)."""
+        i = self._index(name)
+        return self.system.bearings[i].law if self.laws is None else self.laws[i]
+
+    def model(self, name: str):
+        """The bearing's model as solved: a :class:`~bearingkit.analysis.speed.ModelAtSpeed` when the
+        shaft turns, else the bearing's own model (LinearBearing for a linear stiffness)."""
+        return self.law(name).bearing
+
     @cached_property
     def _bearing_states(self) -> list:
         asm = self.assembly
         out = []
         for b, p, c in zip(self.system.bearings, asm.projections, asm.offsets, strict=True):
             q = self.unknowns @ p.T + c
-            out.append((q, b.law.response(q)))
+            out.append((q, self.law(b.name).response(q)))
         return out
 
     def relative_displacement(self, name: str) -> np.ndarray:
@@ -177,7 +189,8 @@ class ShaftResult:
         """The bearing's :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` at its seat state.
 
         Load = what the bearing carries (bearing frame), displacement = q; convergence and residual are
-        the system's. Not available for a :class:`~bearingkit.systems.supports.LinearBearing`.
+        the system's; its model has the rows at the cases' shaft speed (:meth:`model`). Not available
+        for a :class:`~bearingkit.systems.supports.LinearBearing`.
         """
         from bearingkit.analysis.quasistatic import QuasiStaticResult
 
@@ -188,7 +201,7 @@ class ShaftResult:
             return self._bearing_results[name]
         q, resp = self._bearing_states[self._index(name)]
         self._bearing_results[name] = QuasiStaticResult(
-            model=b.bearing,
+            model=self.model(name),
             load=-resp.force,
             displacement=q,
             converged=self.converged.copy(),

@@ -9,14 +9,16 @@ shaft puts on the bearing), and friction, lubrication (κ, film), ratings (ISO 7
 16281, a_ISO and L_nm where a lubricant, a temperature and e_C are known) and warnings follow exactly as
 for a single bearing. Nothing is orchestrated twice.
 
-What the shaft solver does not model is not added here either: the statics carry no speed effects
-(``speed_effects = false``), no fits and no preload of the bearing file's ``[operating]`` section (the
-shaft's ``axial_offset`` is the adjustment), so the values equal the shaft solver's reactions.
+Speed effects are those of the shaft solve: the statics evaluate the bearing model the shaft was
+solved with (its rows at the cases' shaft speed, :meth:`ShaftResult.model
+<bearingkit.systems.result.ShaftResult.model>`), not the pipeline's own speed setup, so the loads
+equal the shaft solver's reactions. What the shaft solver does not model is not added: no fits and no
+preload of the bearing file's ``[operating]`` section (the shaft's ``axial_offset`` is the adjustment).
 
 Speed: the inner rings turn with the shaft; a bearing turned end for end (``orientation = "-z"``)
-sees the shaft's speed with the opposite sign about its own axis (the sign only orients friction
-torques). Lubricant and ``[lubrication]`` (contamination, roughness): the bearing file's, else the
-shaft file's.
+sees the shaft's speed with the opposite sign about its own axis (the inertia terms depend on its
+square; the sign orients friction torques). Lubricant and ``[lubrication]`` (contamination,
+roughness): the bearing file's, else the shaft file's.
 """
 
 from __future__ import annotations
@@ -58,6 +60,9 @@ class SeatInput(ModelInput):
         The bearing file the seat came from (geometry, header, its ``[lubrication]``).
     lubrication : LubricationSpec or None
         ``[lubrication]`` (contamination, roughness) when the bearing file has none.
+    solved_model : BearingModel or None
+        The model the shaft solved the bearing with (rows at speed); the statics evaluate it at q.
+        None: ``model``.
     """
 
     displacement: np.ndarray = None
@@ -67,6 +72,7 @@ class SeatInput(ModelInput):
     system_state: tuple | None = None
     bearing_input: object = None
     lubrication: object = None
+    solved_model: object = None
 
     def __post_init__(self):
         super().__post_init__()
@@ -98,7 +104,8 @@ class SeatInput(ModelInput):
 
     @property
     def sections(self):
-        """No speed effects, fits or preload (the shaft solver models none); the ``[lubrication]``."""
+        """No fits or preload (the shaft solver models none), no speed setup of the pipeline (the
+        statics take the shaft's model at speed, :meth:`solve`); the ``[lubrication]``."""
         from bearingkit.io.schema_operating import OperatingSections, OperatingSpec
 
         own = getattr(self.bearing_input, "sections", None)
@@ -128,12 +135,12 @@ class SeatInput(ModelInput):
 
     def solve(self):
         """The statics at the imposed state: the row kernels evaluated at q (load = −f(q)); the
-        convergence, iterations, residual and reason are the shaft solve's."""
+        convergence, iterations, residual and reason are the shaft solve's (including its beyond-the-
+        speed-model flags)."""
         from bearingkit.analysis.quasistatic import solve
 
-        res = solve(
-            self.model, self.load, free=self.free, displacement=self.displacement, options=self.options
-        )
+        model = self.model if self.solved_model is None else self.solved_model
+        res = solve(model, self.load, free=self.free, displacement=self.displacement, options=self.options)
         if self.system_state is None:
             return res
         converged, iterations, residual, reason = self.system_state
@@ -198,7 +205,7 @@ class ShaftAnalysis:
         res, loads = self.result, self.input.loads
         source = seat.source
         lubricant = getattr(source, "lubricant", None) or self.input.lubricant
-        speed = None if loads.speed is None else seat.transform[2, 2] * np.asarray(loads.speed, float)
+        speed = None if loads.speed is None else seat.seat_speed(loads.speed)
         return SeatInput(
             model=seat.bearing,
             load=res.bearing_load(seat.name),
@@ -213,6 +220,7 @@ class ShaftAnalysis:
             system_state=(res.converged, res.iterations, res.residual_norm, res.reason),
             bearing_input=source,
             lubrication=getattr(self.input, "lubrication", None),
+            solved_model=res.model(seat.name),
         )
 
     @functools.cached_property
@@ -277,8 +285,9 @@ class ShaftAnalysis:
             if seat.name not in self.bearings:
                 out.append(f"{seat.name}: a linear stiffness: no rows, so no pressures, lives or friction")
         out.append(
-            "bearings: each is analysed at the state the shaft solution gives it (all five DOFs imposed): "
-            "no speed effects, fits or [operating] preload of the bearing files (the shaft models none)"
+            "bearings: each is analysed at the state the shaft solution gives it (all five DOFs imposed), "
+            "with the speed effects of the shaft solve; no fits or [operating] preload of the bearing "
+            "files (the shaft models none)"
         )
         for name, a in self.bearings.items():
             out += [f"{name}: {n}" for n in a.notes]

@@ -22,6 +22,11 @@ mechanisms (an unloaded floating bearing's outer ring), load continuation for th
 every step is one batched solve over the load cases. Rotations are scaled by the largest bearing
 pitch radius L so the residual is one relative number: max |R| (moments / L) ≤ rtol × the load scale
 (the largest external or bearing force).
+
+Speed: each bearing's law has its rows at the load case's shaft speed
+(:meth:`~bearingkit.systems.supports.BearingSeat.law_at`, per case), and a case where a bearing at
+speed is beyond what the speed model holds is marked not converged with the reason, as a
+single-bearing solve at speed (:func:`bearingkit.analysis.speed.flag_beyond_model`).
 """
 
 from __future__ import annotations
@@ -402,7 +407,8 @@ def solve(
 
     options = options or SystemOptions()
     asm = assemble(system, loads)
-    laws = [b.law for b in system.bearings]
+    # Rows at the cases' shaft speed (the zero-speed laws themselves when nothing turns).
+    laws = [b.law_at(loads.speed) for b in system.bearings]
     d_min = min(law.deflection_scale for law in laws)
     problem = _Problem(
         laws,
@@ -452,11 +458,32 @@ def solve(
         iterations=iterations,
         residual_norm=st["norm"],
         reason=reasons,
+        laws=laws,
     )
+    _flag_beyond_model(result)
     if raise_on_failure and not converged.all():
         bad = int(np.flatnonzero(~converged)[0])
         raise ConvergenceError(f"load case {loads.names[bad]!r} did not converge: {reasons[bad]}", result)
     return result
+
+
+def _flag_beyond_model(result) -> None:
+    """Cases where a bearing at speed is beyond what the speed model holds: not converged, with the
+    reason (:func:`bearingkit.analysis.speed.flag_beyond_model` on each bearing's state), in place."""
+    from bearingkit.analysis.speed import ModelAtSpeed, flag_beyond_model
+
+    for b, law in zip(result.system.bearings, result.laws, strict=True):
+        if not isinstance(law.bearing, ModelAtSpeed):
+            continue
+        state = result.bearing_result(b.name)
+        before = state.converged.copy()
+        flag_beyond_model(state)
+        for c in np.flatnonzero(before & ~state.converged):
+            result.converged[c] = False
+            result.reason[c] = f"bearing {b.name!r}: {state.reason[c]}"
+    for state in result._bearing_results.values():  # the system's final convergence (states kept)
+        state.converged = result.converged.copy()
+        state.reason = list(result.reason)
 
 
 def _diagnose(system: ShaftSystem, asm: _Assembly, case: int, diverged: bool, norm: float) -> str:

@@ -10,10 +10,10 @@ k_xy come from a radial load that is not along x or y and from tilt coupling.
 
 A table is a list of operating points (load (5,), speed) with their K: from a grid of loads × speeds
 on one bearing (:func:`bearing_stiffness_table`, one batched solve per speed) or from the seats of a
-solved shaft (:func:`shaft_stiffness_table`, one point per load case). Speed enters the present row
-laws only through tapered rows (roller centrifugal force, ``TaperedRow.speed``); ball and cylindrical
-rows neglect centrifugal and gyroscopic effects (``rows/ball.py``), so their K does not change with
-speed and a speed-indexed table of them is flat.
+solved shaft (:func:`shaft_stiffness_table`, one point per load case). Speed enters both as it enters
+``bearingkit analyze --speed`` (:mod:`bearingkit.analysis.speed`): ball rows with their balls'
+centrifugal force and gyroscopic moment, cylindrical and tapered rows with the rollers' centrifugal
+force; a shaft's table is the tangent of each bearing as the shaft solved it, at the case's speed.
 """
 
 from __future__ import annotations
@@ -208,7 +208,11 @@ def bearing_stiffness_table(model, loads, speeds=(0.0,), *, free=None, options=N
 
 
 def shaft_stiffness_table(result, name: str, frame: str = "shaft") -> StiffnessTable:
-    """Stiffness of bearing ``name`` of a solved shaft: one point per load case (its speed, 0 if none)."""
+    """Stiffness of bearing ``name`` of a solved shaft: one point per load case (its speed, 0 if none).
+
+    K is the tangent of the bearing's law as the shaft solved it, with its rows at the case's shaft
+    speed (:meth:`~bearingkit.systems.supports.BearingSeat.law_at`).
+    """
     speeds = result.loads.speed if result.loads.speed is not None else np.zeros(result.n_cases)
     return StiffnessTable(
         bearing=name,

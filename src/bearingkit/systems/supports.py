@@ -17,6 +17,15 @@ outer ring's. The outer ring is held by the housing DOF by DOF: rigidly at its p
 ``"floating"`` bearing's outer ring slides axially (axial spring 0), so it carries no axial load.
 ``axial_offset`` moves the outer ring along the shaft's +z: the adjustment that preloads a pair of
 single angular contact or tapered bearings set against each other.
+
+Speed. The inner rings turn with the shaft at the load case's shaft speed Ω, the outer rings stand.
+A bearing's rows then include their rolling elements' inertia exactly as a single-bearing solve at
+speed (:func:`bearingkit.analysis.speed.model_at_speed`: ball rows with centrifugal force and
+gyroscopic moment, cylindrical and tapered rows with the rollers' centrifugal force), per load case.
+About its own axis z' a bearing turned ``"-z"`` sees the inner ring turn at −Ω (only the sign of
+friction torques depends on it; the inertia terms depend on Ω²). Element density and raceway control
+come from the bearing file (its material, ``[operating] raceway_control``), else GCr15 and outer-raceway
+control, as ``bearingkit analyze --speed`` takes them.
 """
 
 from __future__ import annotations
@@ -202,6 +211,49 @@ class BearingSeat:
         """Contact directions (M, 5) in the shaft frame, without the DOFs a free outer ring cannot pass on."""
         reach = self.law.reach @ self.transform  # rows d' → d = T d' (T symmetric)
         return np.where(self.outer_springs() == 0.0, 0.0, reach)
+
+    def seat_speed(self, shaft_speed) -> np.ndarray:
+        """Inner-ring speed about the bearing's own axis (C,) [rad/s] for the shaft speed Ω (C,)."""
+        return self.transform[2, 2] * np.asarray(shaft_speed, dtype=float)
+
+    def speed_of(self, shaft_speed):
+        """The :class:`~bearingkit.analysis.speed.OperatingSpeed` of this bearing at shaft speed Ω (C,).
+
+        Inner ring at :meth:`seat_speed`, outer ring at rest; element density from the bearing file's
+        material (else :data:`~bearingkit.analysis.speed.DEFAULT_ELEMENT_DENSITY`) and the file's
+        ``[operating] raceway_control`` (else "outer"), as a single-bearing analysis at speed.
+        """
+        from bearingkit.analysis.speed import DEFAULT_ELEMENT_DENSITY, OperatingSpeed
+
+        src = self.source
+        density = getattr(getattr(src, "material", None), "density", None) or DEFAULT_ELEMENT_DENSITY
+        sections = getattr(src, "sections", None)
+        operating = getattr(sections, "operating", None)
+        control = getattr(operating, "raceway_control", None) or "outer"
+        return OperatingSpeed(self.seat_speed(shaft_speed), 0.0, float(density), control)
+
+    def law_at(self, shaft_speed) -> BearingLaw:
+        """The bearing's law with its rows at shaft speed Ω (C,) [rad/s]; :attr:`law` itself when no
+        case turns (the zero-speed law, unchanged) or for a linear bearing.
+
+        Raises InputError naming the bearing when its rows cannot take these speeds in one solve (a
+        tapered row takes one speed per solve).
+        """
+        if shaft_speed is None or not isinstance(self.bearing, BearingModel):
+            return self.law
+        from bearingkit.analysis.speed import model_at_speed
+
+        speed = self.speed_of(shaft_speed)
+        if not speed.moving:
+            return self.law
+        model = model_at_speed(self.bearing, speed)
+        try:
+            return BearingLaw(model)
+        except InputError as exc:
+            raise InputError(
+                f"bearings.{self.name}: {exc} (the load cases of a shaft with this bearing must share one "
+                "speed: put the cases of each speed in their own file)"
+            ) from None
 
     def outer_springs(self) -> np.ndarray:
         """Housing stiffness per outer-ring DOF (5,): inf = held rigidly, 0 = free (floating axially)."""
