@@ -122,7 +122,9 @@ def rating_table(c: dict) -> Table:
     iso281 = iso281_caption(s)
     if iso281:
         caption += "\n" + iso281
-    table = Table(title=escape(title), caption=escape(caption))
+    # as wide as its title and caption lines (up to 120 columns): a narrow table wraps them mid-phrase
+    width = min(max(len(line) for line in (title, *caption.split("\n"))) + 2, 120)
+    table = Table(title=escape(title), caption=escape(caption), min_width=width, caption_justify="left")
     for col in ("row", "C kN", "C0 kN", "L10r 10⁶rev", "L10h h", "s0", "flags"):
         justify = "left" if col in ("row", "flags") else "right"
         table.add_column(
