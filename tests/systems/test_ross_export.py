@@ -71,8 +71,9 @@ def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(
             )
         )
     by_hand = rs.Rotor(exported.shaft_elements, exported.disk_elements, hand_bearings)
-    # 3. Speed-indexed: load case 0 at four speeds (the ball and roller rows have no speed terms, so
-    #    the table is flat) → elements whose coefficients ROSS interpolates over speed.
+    # 3. Speed-indexed: load case 0 at four speeds (the rows soften with their centrifugal force) →
+    #    elements whose coefficients ROSS interpolates over speed, against the same four-point tables
+    #    typed by hand from the CSV bearingkit writes.
     speeds = np.array([100.0, 400.0, 900.0, 1600.0])
     sweep = dataclasses.replace(inp.loads.take([0]), names=tuple("abcd"), speed=speeds)
     res4 = solve(inp.system, sweep)
@@ -80,13 +81,42 @@ def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(
     assert (
         indexed.bearing_elements[0].frequency is not None and len(indexed.bearing_elements[0].frequency) == 4
     )
+    path4 = write_tables(
+        [shaft_stiffness_table(res4, b.name) for b in inp.system.bearings], tmp_path / "k4.csv"
+    )
+    csv4 = pd.read_csv(path4).sort_values("speed_rad_s", kind="stable")
+    hand_indexed = []
+    for b, node in zip(inp.system.bearings, res4.assembly.seat_nodes, strict=True):
+        rows = csv4[csv4["bearing"] == b.name]
+        hand_indexed.append(
+            rs.BearingElement(
+                n=int(node),
+                frequency=rows["speed_rad_s"].to_numpy(float),
+                cxx=np.zeros(len(rows)),
+                **{
+                    key: rows[col].to_numpy(float)
+                    for key, col in (
+                        ("kxx", "K_ux_ux_N_per_m"),
+                        ("kxy", "K_ux_uy_N_per_m"),
+                        ("kyx", "K_uy_ux_N_per_m"),
+                        ("kyy", "K_uy_uy_N_per_m"),
+                        ("kzz", "K_uz_uz_N_per_m"),
+                    )
+                },
+            )
+        )
+    by_hand_indexed = rs.Rotor(indexed.shaft_elements, indexed.disk_elements, hand_indexed)
+    # the spindle's bearings soften with speed: the speed-indexed table is not flat
+    kxx = csv4[csv4["bearing"] == inp.system.bearings[0].name]["K_ux_ux_N_per_m"].to_numpy(float)
+    assert kxx[-1] < 0.99 * kxx[0]
 
     wn_exported = _first_critical_speeds(exported)
     wn_hand = _first_critical_speeds(by_hand)
     wn_indexed = _first_critical_speeds(indexed)
+    wn_hand_indexed = _first_critical_speeds(by_hand_indexed)
     assert np.all(wn_exported > 100.0)
     assert np.allclose(wn_exported, wn_hand, rtol=1e-6)
-    assert np.allclose(wn_indexed, wn_hand, rtol=1e-6)
+    assert np.allclose(wn_indexed, wn_hand_indexed, rtol=1e-6)
     # The bearings matter in this rotor: ten times stiffer bearings move the first critical speed.
     stiff = [
         rs.BearingElement(
