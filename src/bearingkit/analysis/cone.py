@@ -84,13 +84,9 @@ def shared_directions(kernels) -> np.ndarray | None:
 
 #: What a user can do when the load lies outside the contacts' reach, by the worst component.
 _CONE_HINTS = {
-    "F_z": "; a row whose contacts all lean one way carries F_z in one direction only, and radial load "
-    "only with enough F_z (about F_r tan(alpha) or more): check the sign of F_z, raise it, or use a "
-    "paired bearing (DB/DF)",
-    "M_x": "; the rows cannot hold this moment: fix the tilt ([solver] free) or use a bearing with more "
-    "rows or a wider spread",
-    "M_y": "; the rows cannot hold this moment: fix the tilt ([solver] free) or use a bearing with more "
-    "rows or a wider spread",
+    "F_z": "; check the sign of F_z, raise it (to F_r tan(alpha) or more) or use a DB/DF pair",
+    "M_x": "; fix the tilt ([solver] free) or use more rows",
+    "M_y": "; fix the tilt ([solver] free) or use more rows",
 }
 
 

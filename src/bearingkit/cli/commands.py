@@ -20,7 +20,7 @@ from rich.table import Table
 
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
 from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, one_line
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
 # Piped output (CI logs, files) gets a wide console so table ids are not cut.
@@ -187,11 +187,14 @@ def _fail_unconverged(file, analysis) -> None:
     res = analysis.statics
     if not res.converged.all():
         i = int(next(i for i, ok in enumerate(res.converged) if not ok))
-        _fail(f"{file}: load case {analysis.case_names[i]!r} did not converge: {res.reason[i]}", 1)
+        # the file, then at most MAX_MESSAGE_CHARS (a long case name and the remedy must not overflow)
+        what = f"load case {analysis.case_names[i]!r} did not converge: {res.reason[i]}"
+        _fail(f"{file}: " + one_line(what), 1)
     flex = analysis.flexible
     if flex is not None and not flex.converged.all():
         i = int(next(i for i, ok in enumerate(flex.converged) if not ok))
-        _fail(f"{file}: load case {analysis.case_names[i]!r}: the flexible-ring coupling did not converge", 1)
+        what = f"load case {analysis.case_names[i]!r}: the flexible-ring coupling did not converge"
+        _fail(f"{file}: " + one_line(what), 1)
 
 
 @app.command()
@@ -584,7 +587,8 @@ def shaft(
             console.print(f"wrote {written}", markup=False, highlight=False)
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
-        _fail(f"{file}: load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}", 1)
+        what = f"load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}"
+        _fail(f"{file}: " + one_line(what), 1)
 
 
 @app.command()
