@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -360,3 +361,14 @@ def test_a_shaft_file_given_to_a_bearing_command_names_the_shaft_command(command
     assert r.exit_code == 2
     assert "this is a shaft file" in r.stderr and f"bearingkit shaft {path}" in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1
+
+
+def test_an_absurd_load_on_a_self_aligning_bearing_fails_in_one_line(tmp_path):
+    """1e9 N on a 1209 emptied the cone check's active set (a numpy traceback; fuzz seed 2031)."""
+    text = (EXAMPLES / "sabb_1209.toml").read_text(encoding="utf-8")
+    path = tmp_path / "absurd.toml"
+    path.write_text(re.sub(r'(?m)^F_x = .*$', 'F_x = "1e9 N"', text, count=1), encoding="utf-8")
+    r = runner.invoke(app, ["analyze", str(path), "--json"])
+    assert r.exception is None or isinstance(r.exception, SystemExit)
+    assert r.exit_code == 1 and len(r.stderr.strip().splitlines()) == 1
+    assert "did not converge" in r.stderr

@@ -43,6 +43,8 @@ def nnls(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, float]:
     """
     m, n = a.shape
     x = np.zeros(n)
+    if not (np.isfinite(a).all() and np.isfinite(b).all()):  # nothing to fit: say it misses
+        return x, float("inf")
     passive = np.zeros(n, bool)
     tol = 10.0 * np.finfo(float).eps * np.abs(a).sum(axis=0).max(initial=0.0) * max(m, n)
     w = a.T @ b
@@ -52,11 +54,15 @@ def nnls(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, float]:
         passive[int(np.argmax(np.where(passive, -np.inf, w)))] = True
         for _inner in range(3 * n + 10):
             s = np.zeros(n)
+            if not passive.any():  # every column left the passive set (round-off at extreme loads)
+                break
             s[passive] = np.linalg.lstsq(a[:, passive], b, rcond=None)[0]
             if s[passive].min() > 0.0:
                 break
             shrink = passive & (s <= 0.0)
-            alpha = np.min(x[shrink] / (x[shrink] - s[shrink]))
+            with np.errstate(divide="ignore", invalid="ignore"):  # x = s = 0 at round-off: no step
+                ratio = x[shrink] / (x[shrink] - s[shrink])
+            alpha = float(np.min(np.nan_to_num(ratio, nan=0.0)))
             x = x + alpha * (s - x)
             passive &= x > tol
         x = s
