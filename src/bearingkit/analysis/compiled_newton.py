@@ -31,6 +31,7 @@ from bearingkit.rows.compiled_contacts import (
     pack_points,
     pack_rollers,
     point_response,
+    roller_buffers,
     roller_response,
 )
 from bearingkit.rows.compiled_tapered import TaperedPack, pack_tapered, tapered_response
@@ -85,14 +86,14 @@ def pack_model(kernels) -> ModelPack | None:
 def _evaluate(c, q, mp, ws, inner, force, jac, rowf):
     """Contact force, Jacobian and per-row force of case c at q; returns the energy.
 
-    ``ws`` is the case's workspace (:func:`_workspace`): its first four arrays hold the tapered
-    rows' warm start.
+    ``ws`` is the thread's workspace (:func:`_workspace`): its first four arrays hold the tapered
+    rows' warm start, the last two the cylindrical rows' scratch.
     """
     force[:] = 0.0
     jac[:, :] = 0.0
     rowf[:, :] = 0.0
     energy = ball_response(c, q, mp.balls, force, jac, rowf)
-    energy += roller_response(c, q, mp.rollers, force, jac, rowf)
+    energy += roller_response(c, q, mp.rollers, force, jac, rowf, ws[9], ws[10])
     energy += point_response(q, mp.points, force, jac, rowf)
     if mp.tapered.gf.shape[0] > 0:
         e, used, unconv = tapered_response(c, q, mp.tapered, ws[0], ws[1], ws[2], ws[3], force, jac, rowf)
@@ -453,7 +454,9 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
 
 @njit(cache=True, error_model="numpy")
 def _workspace(mp):
+    """Scratch of one thread, reused case after case (:func:`_solve_case` resets the warm start)."""
     t = mp.tapered.gf.shape[0]
+    fbuf, ibuf = roller_buffers(mp.rollers)
     return (
         np.zeros((t, 2)),
         np.zeros((t, 5, 2)),
@@ -464,16 +467,22 @@ def _workspace(mp):
         np.zeros((mp.n_rows, 5)),
         np.zeros(5),
         np.zeros(1),
+        fbuf,
+        ibuf,
     )
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_case(c, q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+def _solve_case(c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
-    out_i[c] = (converged, diverged, refused, broken, iterations, evaluations, norm).
+    ``ws``: the thread's workspace (:func:`_workspace`). out_i[c] = (converged, diverged, refused,
+    broken, iterations, evaluations, norm).
     """
-    ws = _workspace(mp)
+    ws[0][:, :] = 0.0  # the tapered warm start never crosses from one case to the next
+    ws[1][:, :, :] = 0.0
+    ws[2][:] = 0.0
+    ws[3][:] = 0.0
     stats = np.zeros(2)
     q = q0.copy() if given else _start(q0, load, mp, scale, idx, p[2])
     conv, div, ref = _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
@@ -504,7 +513,7 @@ def _solve_case(c, q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q,
 
 # The parfor wrapper of ``prange`` takes arrays and scalars only, not namedtuples of arrays: the
 # parallel driver receives the packed rows flattened (order of :func:`_flat`) and rebuilds the pack
-# inside the loop body.
+# inside the loop body. The loop runs over blocks of ``block`` cases, one workspace per block.
 @njit(cache=True, parallel=True, error_model="numpy")
 def _solve_batch(
     q0, load, free,
@@ -514,9 +523,11 @@ def _solve_batch(
     t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
     t_taylor, t_row, t_lc,
     start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
+    block,
 ):  # fmt: skip
-    for i in prange(load.shape[0]):
-        c = np.int64(i)  # the parfor index may be unsigned: int64 keeps `c if … else 0` an integer
+    n_cases = load.shape[0]
+    for i in prange((n_cases + block - 1) // block):
+        first = np.int64(i) * block  # the parfor index may be unsigned: int64 keeps indices integers
         balls = BallPack(b_B, b_s0, b_a0, b_kn, b_side, b_row)
         rollers = RollerPack(r_Ga, r_Gb, r_x, r_d0, r_cs, r_ns, r_row, r_reach)
         points = PointPack(p_G, p_d0, p_k, p_row)
@@ -525,8 +536,10 @@ def _solve_batch(
             t_ffloor, t_cap, t_taylor, t_row, t_lc
         )  # fmt: skip
         mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows)
-        _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
-                    out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
+        ws = _workspace(mp)
+        for c in range(first, min(first + block, n_cases)):
+            _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
+                        out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
 
 
 def _flat(mp: ModelPack) -> tuple:
@@ -536,8 +549,9 @@ def _flat(mp: ModelPack) -> tuple:
 
 @njit(cache=True, error_model="numpy")
 def _solve_serial(q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+    ws = _workspace(mp)
     for c in range(load.shape[0]):
-        _solve_case(c, q0[c], load[c], free, mp, scale, idx, p, fracs, cone, given,
+        _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
                     out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
 
 
@@ -570,12 +584,13 @@ def _serial_entry(args):
 
 
 def solve_packed(
-    mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None
+    mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None, block=32
 ):
     """Run the compiled solve of every case (C, 5 arrays in SI); returns the raw per-case outputs.
 
     ``cache`` (a dict kept by the caller per model, free DOFs and options) holds the arguments that do
-    not depend on the loads.
+    not depend on the loads. ``parallel``: blocks of ``block`` cases are handed to the threads, each
+    block solved with one workspace.
 
     Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
     ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations`` (C,) int, ``norm`` (C,),
@@ -598,7 +613,7 @@ def solve_packed(
     tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
     tail += (out_q, out_f, out_j, out_i, inner)
     if parallel:
-        _solve_batch(*head, *cache["flat"], *tail)
+        _solve_batch(*head, *cache["flat"], *tail, np.int64(block))
     else:
         args = (*head, mp, *tail)
         entry = cache.get("serial")

@@ -96,7 +96,8 @@ CHUNK_CASES = 256
 #: 6.7x slower per case at 256 cases with its threads).
 BLAS_SERIAL_ABOVE = 8
 
-#: Cases per chunk the compiled core's threads take at a time (dynamic scheduling of ``prange``).
+#: Cases per block the compiled core's threads take at a time (dynamic scheduling of ``prange``
+#: over blocks; one workspace per block).
 PARALLEL_CHUNK = 32
 
 #: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
@@ -346,9 +347,9 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
         numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
         # Cases handed out in small chunks as threads free up, not in one equal share per thread: on
         # a shared machine one thread is often descheduled, and cases differ in cost (continuation).
-        previous = numba.set_parallel_chunksize(PARALLEL_CHUNK)
+        previous = numba.set_parallel_chunksize(1)
         try:
-            out = solve_packed(*args, parallel=True, cache=plan.compiled)
+            out = solve_packed(*args, parallel=True, cache=plan.compiled, block=PARALLEL_CHUNK)
         finally:
             numba.set_parallel_chunksize(previous)
     else:

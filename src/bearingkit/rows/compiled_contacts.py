@@ -218,7 +218,19 @@ SKIP_MARGIN = 1e-12
 
 
 @njit(cache=True, error_model="numpy")
-def roller_response(c, q, rp, force, jac, rowf):
+def roller_buffers(rp):
+    """Scratch arrays of :func:`roller_response` for one thread: slice values (3, R·S), indices (2R+1,).
+
+    Allocated once per thread and reused by every evaluation: a fresh ~75 kB per evaluation is handed
+    back to the system by glibc's heap trimming and faulted in again each time, which cost more
+    than the arithmetic (issue 19's "glibc trims them").
+    """
+    n_r = rp.Ga.shape[1]
+    return np.empty((3, max(n_r * rp.x.shape[2], 1))), np.empty(2 * n_r + 1, np.int64)
+
+
+@njit(cache=True, error_model="numpy")
+def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
     """Add the cylindrical rows' force, Jacobian and per-row force of case c; return the energy.
 
     Same model as :meth:`bearingkit.rows.cylindrical.CylindricalKernel.response`: slice approach
@@ -227,16 +239,15 @@ def roller_response(c, q, rp, force, jac, rowf):
     Three passes: the touching slices of every roller are gathered (a roller no slice of which can
     touch, by its ``reach`` bound, is skipped unvisited), their roots taken in one long loop the
     compiler vectorises, then each roller's sums are formed in slice order (the slices left out add
-    exact zeros to the reference's sums).
+    exact zeros to the reference's sums). ``fbuf``, ``ibuf``: scratch from :func:`roller_buffers`.
     """
     cc = c if rp.Ga.shape[0] > 1 else 0
     n_r = rp.Ga.shape[1]
-    s_max = rp.x.shape[2]
-    dbuf = np.empty(n_r * s_max)
-    ybuf = np.empty(n_r * s_max)
-    xbuf = np.empty(n_r * s_max)
-    rid = np.empty(n_r, np.int64)
-    seg = np.empty(n_r + 1, np.int64)
+    dbuf = fbuf[0]
+    ybuf = fbuf[1]
+    xbuf = fbuf[2]
+    rid = ibuf[:n_r]
+    seg = ibuf[n_r:]
     n = 0
     m = 0
     for r in range(n_r):
