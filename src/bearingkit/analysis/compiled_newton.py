@@ -473,7 +473,9 @@ def _workspace(mp):
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_case(c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+def _solve_case(
+    c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner
+):
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
     ``ws``: the thread's workspace (:func:`_workspace`). out_i[c] = (converged, diverged, refused,
@@ -584,8 +586,9 @@ def _serial_entry(args):
 
 
 def solve_packed(
-    mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None, block=32
-):
+    mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None,
+    block=32,
+):  # fmt: skip
     """Run the compiled solve of every case (C, 5 arrays in SI); returns the raw per-case outputs.
 
     ``cache`` (a dict kept by the caller per model, free DOFs and options) holds the arguments that do
