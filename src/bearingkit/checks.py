@@ -27,10 +27,21 @@ def scalar_or_array(x):
     return x[()] if x.ndim == 0 else x
 
 
+def _floats(value) -> np.ndarray:
+    # Called ~100 times per batched physics call: skip asarray for what already is a float array.
+    if type(value) is np.ndarray and value.dtype == np.float64:
+        return value
+    return np.asarray(value, dtype=float)
+
+
+def _all_finite(arr: np.ndarray) -> bool:
+    return bool(np.isfinite(arr).all())
+
+
 def finite(field: str, value, unit: str = ""):
     """Require finite values; return ``value`` unchanged."""
-    arr = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(arr)):
+    ok = math.isfinite(value) if type(value) is float else _all_finite(_floats(value))
+    if not ok:
         raise InputError(f"{field} ({_fmt(value)} {unit}) must be finite".replace("  ", " "))
     return value
 
@@ -38,7 +49,7 @@ def finite(field: str, value, unit: str = ""):
 def positive(field: str, value, unit: str = ""):
     """Require finite values > 0."""
     finite(field, value, unit)
-    if not np.all(np.asarray(value, dtype=float) > 0):
+    if not (value > 0 if type(value) is float else (_floats(value) > 0).all()):
         raise InputError(f"{field} ({_fmt(value)} {unit}) must be positive".replace("  ", " "))
     return value
 
@@ -46,7 +57,7 @@ def positive(field: str, value, unit: str = ""):
 def non_negative(field: str, value, unit: str = ""):
     """Require finite values >= 0."""
     finite(field, value, unit)
-    if not np.all(np.asarray(value, dtype=float) >= 0):
+    if not (value >= 0 if type(value) is float else (_floats(value) >= 0).all()):
         raise InputError(f"{field} ({_fmt(value)} {unit}) must be non-negative".replace("  ", " "))
     return value
 
@@ -54,9 +65,9 @@ def non_negative(field: str, value, unit: str = ""):
 def in_range(field: str, value, low: float, high: float, unit: str = "", *, closed: bool = True):
     """Require ``low <= value <= high`` (or strict when ``closed`` is False)."""
     finite(field, value, unit)
-    arr = np.asarray(value, dtype=float)
+    arr = _floats(value)
     ok = (arr >= low) & (arr <= high) if closed else (arr > low) & (arr < high)
-    if not np.all(ok):
+    if not ok.all():
         br = "[]" if closed else "()"
         raise InputError(
             f"{field} ({_fmt(value)} {unit}) must lie in {br[0]}{low:g}, {high:g}{br[1]}".replace("  ", " ")

@@ -12,6 +12,7 @@ Reference: Zheng et al. (2022) Machines 10:1051, doi:10.3390/machines10111051.
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import cache
 
 import numpy as np
 
@@ -46,6 +47,12 @@ CALIBRATION_POINT = {"case": "axial", "load_N": 20.0e3, "speed_rpm": 600.0, "tor
 PROTOTYPE_PITCH_DIAMETER = 42.5e-3
 #: n·P of the prototype, held when n changes (§5 (2): n = 8–16 ↔ P = 1.6–0.8 mm) [m].
 PROTOTYPE_THREAD_LENGTH = 12.0e-3
+
+@cache
+def _prototype() -> PTRBGeometry:
+    """The default prototype, built once (a frozen dataclass: its checks cost ~0.2 ms per build)."""
+    return ptrb_prototype()
+
 
 def calibrate_contact_traction(
     geometry: PTRBGeometry | None = None,
@@ -147,7 +154,7 @@ def ptrb_objectives(
     """
     checks.one_of("case", case, CASES)
     params = parameters or PTRBFrictionParameters()
-    base = ptrb_prototype()
+    base = _prototype()
     alpha, n_f, r_rr, d_r = np.broadcast_arrays(
         *(np.atleast_1d(np.asarray(x, float)) for x in (alpha, n, R_rr, d_R))
     )

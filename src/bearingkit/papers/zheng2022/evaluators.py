@@ -50,7 +50,7 @@ def seed004_ptrb(cases):
 
     parts = []
     for idx, key in group_cases(cases, SEED004_FACTORS):
-        sub = cases.iloc[idx]
+        sub = cases if len(idx) == len(cases) else cases.iloc[idx]  # one group: no copy
         alpha = sub["contact_angle"].to_numpy(float)
         r_rr = sub["roller_contact_radius"].to_numpy(float)
         d_r = sub["roller_pitch_diameter"].to_numpy(float)
