@@ -90,3 +90,16 @@ def test_optimisation_resumes_by_replay(tmp_path):
     assert res.stats["reused"] == 6 and res.stats["computed"] == 4
     pd.testing.assert_frame_equal(res.results, full.results)
     pd.testing.assert_frame_equal(res.pareto, full.pareto)
+
+
+def test_chunking_of_a_generation_does_not_change_the_run():
+    # A population split into chunks of 7 (evaluated one by one, reassembled in order) must give the
+    # run of one chunk per generation bit for bit: pymoo sees the same F and G either way.
+    one = run_study(sd.from_dict(zdt1_study(pop=20, gen=6, n_var=5)), progress=False)
+    split = zdt1_study(pop=20, gen=6, n_var=5)
+    split["study"]["chunk_size"] = 7
+    many = run_study(sd.from_dict(split), progress=False)
+    pd.testing.assert_frame_equal(many.results, one.results, check_exact=True)
+    pd.testing.assert_frame_equal(many.pareto, one.pareto, check_exact=True)
+    assert list(one.results.columns[:2]) == ["generation", "x1"]
+    assert one.results["generation"].to_list() == [g for g in range(6) for _ in range(20)]

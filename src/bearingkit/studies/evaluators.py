@@ -220,7 +220,7 @@ def get(name: str) -> Evaluator:
     )
 
 
-def evaluate_chunk(evaluator, cases):
+def evaluate_chunk(evaluator, cases, with_ids: bool = True):
     """Evaluate one chunk (top-level, picklable: what executors send to workers).
 
     ``evaluator`` is the :class:`Evaluator` itself (resolved once, by the process that read the study
@@ -229,7 +229,8 @@ def evaluate_chunk(evaluator, cases):
     splits a matrix product differently for another thread count and the last bits of a result
     depend on it, so this is what makes the executors agree bit for bit.
 
-    Returns the cases' ``case`` ids joined with the outputs.
+    Returns the cases' ``case`` ids (0… when ``cases`` has no ``case`` column) joined with the outputs;
+    ``with_ids`` False: the outputs alone, row for row (a caller that keeps the order itself).
     """
     from bearingkit.studies.executors import one_blas_thread
 
@@ -243,7 +244,8 @@ def evaluate_chunk(evaluator, cases):
         out = ev(cases)
     if not _default_index(out.index, len(out)):
         out = out.reset_index(drop=True)
-    out.insert(0, "case", ids)
+    if with_ids:
+        out.insert(0, "case", ids)
     return out
 
 

@@ -116,20 +116,23 @@ def _problem_class():
 
 
 def objectives_and_constraints(d, frame):
-    """pymoo's F (minimised) and G (≤ 0 feasible) arrays from an evaluated population."""
+    """pymoo's F (minimised) and G (≤ 0 feasible) arrays from an evaluated population.
+
+    ``frame``: a DataFrame or a mapping column → array.
+    """
     F = np.column_stack(
-        [frame[o.output].to_numpy(float) * (1.0 if o.sense == "min" else -1.0) for o in d.objectives]
+        [np.asarray(frame[o.output], float) * (1.0 if o.sense == "min" else -1.0) for o in d.objectives]
     )
     G = []
     for c in d.constraints:
-        y = frame[c.output].to_numpy(float)
+        y = np.asarray(frame[c.output], float)
         if c.upper is not None:
             G.append(y - c.upper)
         if c.lower is not None:
             G.append(c.lower - y)
     ok = np.all(np.isfinite(F), axis=1)
-    if "converged" in frame.columns:
-        ok &= frame["converged"].to_numpy(bool)
+    if "converged" in frame:
+        ok &= np.asarray(frame["converged"], bool)
     G.append(np.where(ok, -1.0, 1.0))
     F = np.where(ok[:, None], F, PENALTY)
     G = np.column_stack([np.where(np.isfinite(g), g, PENALTY) for g in G])
@@ -166,10 +169,10 @@ def algorithm_for(d):
 
 
 def _population_cases(X, names, integer, fixed):
-    """The case table of a population X (P, n_var): ``case``, the variables, the fixed factors."""
+    """The case table of a population X (P, n_var): the variables and the fixed factors."""
     import pandas as pd
 
-    cols = {"case": np.arange(len(X))}
+    cols = {}
     for j, (name, is_int) in enumerate(zip(names, integer, strict=True)):
         cols[name] = np.round(X[:, j]).astype(int) if is_int else X[:, j]
     later = {}
@@ -193,7 +196,7 @@ def run_optimization(d, executor, store, resume: bool, progress, plan=None):
     o = d.optimizer
     done = store.open(plan.fingerprint, o.generations, d.chunk_size, resume, study=d.name)
     counts = {"computed": 0, "reused": 0, "generation": 0}
-    fn = functools.partial(evaluators.evaluate_chunk, ev)
+    fn = functools.partial(evaluators.evaluate_chunk, ev, with_ids=False)  # chunks come back in order
     prog, task = progress_bar(o.pop_size * o.generations, d.name, progress)
 
     integer = [v.integer for v in d.variables]
@@ -217,14 +220,15 @@ def run_optimization(d, executor, store, resume: bool, progress, plan=None):
         chunks = [cases] if len(X) <= step else [cases.iloc[i : i + step] for i in range(0, len(X), step)]
         parts = dict(executor.map_unordered(fn, chunks))
         out = parts[0] if len(parts) == 1 else pd.concat([parts[i] for i in sorted(parts)], ignore_index=True)
-        keep = [c for c in (d.outputs or out.columns) if c not in names and c != "case"]
+        keep = set(d.outputs or out.columns) - set(names)
         columns = {"generation": np.full(len(X), gen), **{n: X[:, j] for j, n in enumerate(names)}}
-        columns.update({c: out[c].array for c in keep})
-        result = pd.DataFrame(columns)
-        store.write(gen, result)
+        for c, col in out.items():
+            if c in keep:
+                columns[c] = col.to_numpy() if isinstance(col.dtype, np.dtype) else col.array
+        store.write(gen, pd.DataFrame(columns))
         counts["computed"] += 1
         advance(prog, task, len(X))
-        return result
+        return columns  # pymoo's F and G come from the arrays, not from the frame
 
     problem = _problem_class()(d, evaluate)
     with prog:
