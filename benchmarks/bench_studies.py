@@ -157,15 +157,19 @@ def _ptrb_nsga2() -> tuple[float, int, float]:
     t0 = time.perf_counter()
     res = seed004_optimize("axial")
     total = time.perf_counter() - t0
-    # The evaluator alone on the populations the run evaluated (same chunks, no optimiser).
+    # The evaluator alone on the populations the run evaluated (same chunks, no optimiser); the case
+    # tables are built before the clock starts, so only evaluate_chunk is timed.
     history = res.results
     ev = evaluators.get(res.definition.evaluator)
     factors = [c for c in history.columns if c in ev.factors]
     fixed = {k: v for k, v in res.definition.fixed.items() if k in ev.factors}
-    t0 = time.perf_counter()
+    chunks = []
     for _, gen in history.groupby("generation"):
         cases = gen[factors].reset_index(drop=True).assign(**fixed)
         cases.insert(0, "case", range(len(cases)))
+        chunks.append(cases)
+    t0 = time.perf_counter()
+    for cases in chunks:
         evaluators.evaluate_chunk(res.definition.evaluator, cases)
     return total, len(history), time.perf_counter() - t0
 

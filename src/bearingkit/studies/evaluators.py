@@ -101,12 +101,13 @@ class Evaluator:
         return out
 
     def __call__(self, cases):
-        unknown = [c for c in cases.columns if c not in self.factors and c != "case"]
+        columns = list(cases.columns)  # a list: `in` on a pandas 3 str Index costs µs per name
+        unknown = [c for c in columns if c not in self.factors and c != "case"]
         if unknown:
             raise InputError(
                 f"evaluator {self.name!r}: unknown factors {unknown}; known: {list(self.factors)}"
             )
-        if self.fill_defaults and any(name not in cases.columns for name in self.factors):
+        if self.fill_defaults and not set(self.factors) <= set(columns):
             cases = self.complete(cases)
         else:  # a shallow copy (copy-on-write): the function may add columns without touching ours
             cases = cases.copy(deep=False)
