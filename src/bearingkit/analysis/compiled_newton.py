@@ -27,6 +27,7 @@ from bearingkit.rows.compiled_contacts import (
     PointPack,
     RollerPack,
     ball_response,
+    mirror_upper,
     pack_balls,
     pack_points,
     pack_rollers,
@@ -95,6 +96,7 @@ def _evaluate(c, q, mp, ws, inner, force, jac, rowf):
     energy = ball_response(c, q, mp.balls, force, jac, rowf)
     energy += roller_response(c, q, mp.rollers, force, jac, rowf, ws[9], ws[10])
     energy += point_response(q, mp.points, force, jac, rowf)
+    mirror_upper(jac)  # the three above accumulate the upper triangle only
     if mp.tapered.gf.shape[0] > 0:
         e, used, unconv = tapered_response(c, q, mp.tapered, ws[0], ws[1], ws[2], ws[3], force, jac, rowf)
         energy += e
