@@ -27,6 +27,7 @@ from bearingkit.rows.compiled_contacts import (
     PointPack,
     RollerPack,
     ball_response,
+    mirror_upper,
     pack_balls,
     pack_points,
     pack_rollers,
@@ -43,8 +44,8 @@ from bearingkit.rows.threaded import ThreadedKernel
 configure()  # before numba reads its configuration: the cache follows the compiled sources
 from numba import njit, prange  # noqa: E402
 
-#: A bearing in compiled form: the packed rows of each kind, the rows' start matrices (R, 5, 5) and
-#: exponents (R,), the row count and the kinds present.
+#: A bearing in compiled form: the packed rows of each kind, the start matrices summed over the rows
+#: of one start exponent (G, 5, 5) and those exponents (G,), and the row count.
 ModelPack = namedtuple("ModelPack", "balls rollers points tapered start_mats start_exps n_rows")
 #: Kernel classes the compiled core can evaluate, by their ``row.kind``.
 SUPPORTED_KINDS = ("ball", "cylindrical", "tapered", "threaded")
@@ -70,13 +71,19 @@ def pack_model(kernels) -> ModelPack | None:
         groups[kind][1].append(r)
     if groups["threaded"][0] and any(np.shape(k.G)[0] != 1 for k in groups["threaded"][0]):
         return None
+    # Rows sharing a start exponent share the power of δ: summed once here, the starting point
+    # takes one power per exponent per sweep instead of one per row.
+    exps = sorted({float(k.start_exponent) for k in kernels})
+    mats = [
+        sum(np.asarray(k.start_matrix, float) for k in kernels if float(k.start_exponent) == e) for e in exps
+    ]
     return ModelPack(
         pack_balls(*groups["ball"]),
         pack_rollers(*groups["cylindrical"]),
         pack_points(*groups["threaded"]),
         pack_tapered(*groups["tapered"]),
-        np.ascontiguousarray(np.stack([np.asarray(k.start_matrix, float) for k in kernels])),
-        np.array([float(k.start_exponent) for k in kernels]),
+        np.ascontiguousarray(np.stack(mats)),
+        np.array(exps),
         len(kernels),
     )
 
@@ -95,6 +102,7 @@ def _evaluate(c, q, mp, ws, inner, force, jac, rowf):
     energy = ball_response(c, q, mp.balls, force, jac, rowf)
     energy += roller_response(c, q, mp.rollers, force, jac, rowf, ws[9], ws[10])
     energy += point_response(q, mp.points, force, jac, rowf)
+    mirror_upper(jac)  # the three above accumulate the upper triangle only
     if mp.tapered.gf.shape[0] > 0:
         e, used, unconv = tapered_response(c, q, mp.tapered, ws[0], ws[1], ws[2], ws[3], force, jac, rowf)
         energy += e
@@ -317,15 +325,21 @@ def _start(q, load, mp, scale, idx, max_step):
     delta = 1e-4 * max_step / 0.02
     k = np.zeros((n, n))
     qt = np.zeros(n)
+    n_g = mp.start_mats.shape[0]
+    sm = np.empty((n_g, n, n))  # the scaled start matrices on the free DOFs
+    for r in range(n_g):
+        for a in range(n):
+            for b in range(n):
+                i, j = idx[a], idx[b]
+                sm[r, a, b] = mp.start_mats[r, i, j] * scale[i] * scale[j]
     for _ in range(6):
         k[:, :] = 0.0
-        for r in range(mp.start_mats.shape[0]):
+        for r in range(n_g):
             ex = mp.start_exps[r]
             fac = ex * delta ** (ex - 1.0)
             for a in range(n):
                 for b in range(n):
-                    i, j = idx[a], idx[b]
-                    k[a, b] += fac * (mp.start_mats[r, i, j] * scale[i] * scale[j])
+                    k[a, b] += fac * sm[r, a, b]
         kmax = 0.0
         for a in range(n):
             for b in range(n):

@@ -111,26 +111,26 @@ def pack_points(kernels, rows) -> PointPack:
 
 
 @njit(cache=True, error_model="numpy")
-def _add_symmetric(jac, ju):
-    """jac += the symmetric matrix whose upper triangle is ju (the contact Jacobians are symmetric:
-    sums of g gᵀ-type products, so only 15 of 25 entries are accumulated)."""
+def mirror_upper(jac):
+    """Copy the upper triangle of the 5×5 ``jac`` to its lower one (the contact Jacobians are
+    symmetric, sums of g gᵀ-type products: the responses accumulate only 15 of 25 entries)."""
     for i in range(5):
-        jac[i, i] += ju[i, i]
         for j in range(i + 1, 5):
-            jac[i, j] += ju[i, j]
-            jac[j, i] += ju[i, j]
+            jac[j, i] = jac[i, j]
 
 
 @njit(cache=True, error_model="numpy")
 def ball_response(c, q, bp, force, jac, rowf):
-    """Add the ball rows' force (5,), Jacobian (5, 5) and per-row force (rows, 5) of case c; return energy.
+    """Add the ball rows' force (5,), Jacobian (upper triangle) and per-row force (rows, 5) of case c.
+
+    Returns the energy.
 
     Same model as :meth:`bearingkit.rows.ball.BallKernel.response`: groove-centre separation
     s = s0 + B q, δ = |s| − A0 (zero on the relieved side of a one-sided groove), Q = K δ^1.5 along s.
     """
     cb = c if bp.B.shape[0] > 1 else 0
     energy = 0.0
-    ju = np.zeros((5, 5))  # upper triangle of the (symmetric) Jacobian, mirrored at the end
+    ju = jac  # upper triangle only: the caller mirrors it once per evaluation
     for e in range(bp.B.shape[1]):
         u0 = 0.0
         u1 = 0.0
@@ -167,7 +167,6 @@ def ball_response(c, q, bp, force, jac, rowf):
             for j in range(i, 5):
                 ju[i, j] += t0 * bp.B[cb, e, 0, j] + t1 * bp.B[cb, e, 1, j]
         energy += kn * d * d * root / 2.5
-    _add_symmetric(jac, ju)
     return energy
 
 
@@ -181,15 +180,19 @@ _ROOT_RANGE = (1e-200, 1e10)
 def ninth_root(d, y, n):
     """y[k] = d[k]^(1/9) for k < n (0 where d ≤ 0); d, y float64 arrays (y may not alias d).
 
-    A bit-level first guess (the exponent divided by 9: relative error ≤ 3.4 %) and three Halley
-    steps y ← y (8 y⁹ + 10 d)/(10 y⁹ + 8 d) (cubic convergence: 2e-4, 5e-11, below rounding) give
-    the root to ~1 ulp — within 2 ulp of the reference's two cube roots — in straight-line
-    arithmetic the compiler pipelines (3x faster than two libm cube roots here).
+    A bit-level first guess (the exponent divided by 9, in floating point so that it vectorises:
+    relative error ≤ 3.4 %) and three Halley steps y ← y (8 y⁹ + 10 d)/(10 y⁹ + 8 d) (cubic
+    convergence: 2e-4, 5e-11, below rounding) give the root to ~1 ulp — within 2 ulp of the
+    reference's two cube roots — in straight-line arithmetic the compiler pipelines (3x faster than
+    two libm cube roots here). Values outside ``_ROOT_RANGE`` (never a contact approach) take ``**``.
     """
     db = d.view(np.int64)
     yb = y.view(np.int64)
+    outside = 0
     for k in range(n):
-        yb[k] = (db[k] - _ONE_BITS) // 9 + _ONE_BITS
+        yb[k] = np.int64(np.float64(db[k] - _ONE_BITS) * (1.0 / 9.0)) + _ONE_BITS
+        x = d[k]
+        outside += 0 if (x <= 0.0 or (_ROOT_RANGE[0] < x < _ROOT_RANGE[1])) else 1
     for k in range(n):
         v = y[k]
         x = d[k]
@@ -206,10 +209,11 @@ def ninth_root(d, y, n):
         v9 = v4 * v4 * v
         v = v * (8.0 * v9 + 10.0 * x) / (10.0 * v9 + 8.0 * x)
         y[k] = v if x > 0.0 else 0.0
-    for k in range(n):
-        x = d[k]
-        if x > 0.0 and not (_ROOT_RANGE[0] < x < _ROOT_RANGE[1]):
-            y[k] = x ** (1.0 / 9.0)
+    if outside:
+        for k in range(n):
+            x = d[k]
+            if x > 0.0 and not (_ROOT_RANGE[0] < x < _ROOT_RANGE[1]):
+                y[k] = x ** (1.0 / 9.0)
 
 
 #: Relative margin of the unloaded-roller test of :func:`roller_response` (far above rounding: a
@@ -219,35 +223,39 @@ SKIP_MARGIN = 1e-12
 
 @njit(cache=True, error_model="numpy")
 def roller_buffers(rp):
-    """Scratch arrays of :func:`roller_response` for one thread: slice values (3, R·S), indices (2R+1,).
+    """Scratch arrays of :func:`roller_response` for one thread: slice values (2, R·S), indices (3R+1,).
 
     Allocated once per thread and reused by every evaluation: a fresh ~75 kB per evaluation is handed
     back to the system by glibc's heap trimming and faulted in again each time, which cost more
     than the arithmetic (issue 19's "glibc trims them").
     """
     n_r = rp.Ga.shape[1]
-    return np.empty((3, max(n_r * rp.x.shape[2], 1))), np.empty(2 * n_r + 1, np.int64)
+    return np.empty((2, max(n_r * rp.x.shape[2], 1))), np.empty(3 * n_r + 1, np.int64)
 
 
 @njit(cache=True, error_model="numpy")
 def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
-    """Add the cylindrical rows' force, Jacobian and per-row force of case c; return the energy.
+    """Add the cylindrical rows' force, Jacobian (upper triangle) and per-row force of case c.
 
-    Same model as :meth:`bearingkit.rows.cylindrical.CylindricalKernel.response`: slice approach
-    δ_k = a + b x_k + δ0_k with a = Ga·q, b = Gb·q, slice load c_s δ^(10/9) (δ^(1/9) by
-    :func:`ninth_root`), reduced per roller to Σq, Σqx (force) and Σq′, Σq′x, Σq′x² (stiffness).
-    Three passes: the touching slices of every roller are gathered (a roller no slice of which can
-    touch, by its ``reach`` bound, is skipped unvisited), their roots taken in one long loop the
-    compiler vectorises, then each roller's sums are formed in slice order (the slices left out add
-    exact zeros to the reference's sums). ``fbuf``, ``ibuf``: scratch from :func:`roller_buffers`.
+    Returns the energy. Same model as :meth:`bearingkit.rows.cylindrical.CylindricalKernel.response`:
+    slice approach δ_k = a + b x_k + δ0_k with a = Ga·q, b = Gb·q, slice load c_s δ^(10/9) (δ^(1/9)
+    by :func:`ninth_root`), reduced per roller to Σq, Σqx (force) and Σq′, Σq′x, Σq′x² (stiffness).
+    Only the upper triangle of ``jac`` is accumulated (the caller mirrors it once per evaluation).
+
+    Three passes. (1) Each roller's slices from its first to its last touching one are copied into
+    one buffer (a roller no slice of which can touch, by its ``reach`` bound, is skipped unvisited);
+    for a crowned or straight profile that range is exactly the touching set, and a slice inside it
+    that does not touch has δ^(1/9) = 0 and adds exact zeros, as in the reference's sums over every
+    slice. (2) Their roots are taken in one long loop the compiler vectorises. (3) Each roller's
+    sums are formed in slice order. ``fbuf``, ``ibuf``: scratch from :func:`roller_buffers`.
     """
     cc = c if rp.Ga.shape[0] > 1 else 0
     n_r = rp.Ga.shape[1]
     dbuf = fbuf[0]
     ybuf = fbuf[1]
-    xbuf = fbuf[2]
     rid = ibuf[:n_r]
-    seg = ibuf[n_r:]
+    first = ibuf[n_r : 2 * n_r]
+    seg = ibuf[2 * n_r :]
     n = 0
     m = 0
     for r in range(n_r):
@@ -259,25 +267,28 @@ def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
         top = a + rp.reach[cc, r, 0] + abs(b) * rp.reach[cc, r, 1]
         if top < -SKIP_MARGIN * (abs(a) + abs(rp.reach[cc, r, 0]) + abs(b) * rp.reach[cc, r, 1]):
             continue
-        n0 = n
-        for k in range(rp.ns[r]):
-            x = rp.x[cc, r, k]
-            d = b * x + a + rp.d0[cc, r, k]
-            dbuf[n] = d
-            xbuf[n] = x
-            n += 1 if d > 0.0 else 0  # branch-free gather of the touching slices
-        if n > n0:
-            rid[m] = r
-            seg[m] = n0
-            m += 1
+        ns = rp.ns[r]
+        lo = 0
+        while lo < ns and not (b * rp.x[cc, r, lo] + a + rp.d0[cc, r, lo] > 0.0):
+            lo += 1
+        if lo == ns:
+            continue
+        hi = ns - 1
+        while not (b * rp.x[cc, r, hi] + a + rp.d0[cc, r, hi] > 0.0):
+            hi -= 1
+        for k in range(lo, hi + 1):
+            dbuf[n + k - lo] = b * rp.x[cc, r, k] + a + rp.d0[cc, r, k]
+        rid[m] = r
+        first[m] = lo
+        seg[m] = n
+        n += hi + 1 - lo
+        m += 1
     seg[m] = n
     ninth_root(dbuf, ybuf, n)
     energy = 0.0
-    ju = np.zeros((5, 5))
-    u = np.empty(5)
-    w = np.empty(5)
     for j in range(m):
         r = rid[j]
+        off = first[j] - seg[j]
         cs = rp.cs[cc, r]
         f0 = 0.0
         f1 = 0.0
@@ -286,42 +297,47 @@ def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
         k2 = 0.0
         e = 0.0
         for k in range(seg[j], seg[j + 1]):
-            x = xbuf[k]
+            x = rp.x[cc, r, k + off]
             d = dbuf[k]
             t = ybuf[k]
-            load = d * t * cs
-            kk = t * ((10.0 / 9.0) * cs)
-            f0 += load
-            f1 += load * x
-            k0 += kk
-            k1 += kk * x
-            k2 += kk * (x * x)
-            e += load * d
+            dt = d * t
+            f0 += dt
+            f1 += dt * x
+            k0 += t
+            k1 += t * x
+            k2 += t * (x * x)
+            e += dt * d
+        # c_s is one per roller: applied to the sums, not to every slice.
+        f0 *= cs
+        f1 *= cs
+        ck = (10.0 / 9.0) * cs
+        k0 *= ck
+        k1 *= ck
+        k2 *= ck
         row = rp.row[r]
-        # Roller stiffness [Ga Gb] [[k0, k1], [k1, k2]] [Ga Gb]ᵀ: u = k0 Ga + k1 Gb, w = k1 Ga + k2 Gb.
+        # Roller stiffness [Ga Gb] [[k0, k1], [k1, k2]] [Ga Gb]ᵀ, upper triangle.
         for i in range(5):
             gai = rp.Ga[cc, r, i]
             gbi = rp.Gb[cc, r, i]
             fi = -(f0 * gai + f1 * gbi)
             force[i] += fi
             rowf[row, i] += fi
-            u[i] = k0 * gai + k1 * gbi
-            w[i] = k1 * gai + k2 * gbi
-        for i in range(5):
-            gai = rp.Ga[cc, r, i]
-            gbi = rp.Gb[cc, r, i]
+            ui = k0 * gai + k1 * gbi
+            wi = k1 * gai + k2 * gbi
             for jj in range(i, 5):
-                ju[i, jj] -= gai * u[jj] + gbi * w[jj]
-        energy += e / (1.0 + LINE_EXPONENT)
-    _add_symmetric(jac, ju)
+                jac[i, jj] -= ui * rp.Ga[cc, r, jj] + wi * rp.Gb[cc, r, jj]
+        energy += cs * e / (1.0 + LINE_EXPONENT)
     return energy
 
 
 @njit(cache=True, error_model="numpy")
 def point_response(q, pp, force, jac, rowf):
-    """Add the affine Hertz point contacts (threaded rows: δ = G·q + δ0, Q = k δ^1.5); return energy."""
+    """Add the affine Hertz point contacts (threaded rows: δ = G·q + δ0, Q = k δ^1.5); return energy.
+
+    Only the upper triangle of ``jac`` is accumulated (the caller mirrors it).
+    """
     energy = 0.0
-    ju = np.zeros((5, 5))
+    ju = jac  # upper triangle only: the caller mirrors it once per evaluation
     for m in range(pp.G.shape[0]):
         d = pp.d0[m]
         for i in range(5):
@@ -339,5 +355,4 @@ def point_response(q, pp, force, jac, rowf):
             for j in range(i, 5):
                 ju[i, j] -= stiff * gi * pp.G[m, j]
         energy += load * d / (1.0 + POINT_EXPONENT)
-    _add_symmetric(jac, ju)
     return energy
