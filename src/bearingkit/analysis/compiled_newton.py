@@ -19,7 +19,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from bearingkit.analysis.cone import CONE_MISS_RTOL
+from bearingkit.analysis.cone import CONE_MISS_RTOL, NNLS_STALL_RTOL
 from bearingkit.analysis.newton import CONE_CHECK_ITERATION, MAX_HALVINGS, MECHANISM_RTOL
 from bearingkit.rows.ball import BallKernel
 from bearingkit.rows.compiled_contacts import (
@@ -259,7 +259,8 @@ def _without_idle(h, g, step, tol):
 
 @njit(cache=True, error_model="numpy")
 def _nnls_misfit(a, b):
-    """‖a x − b‖ at the non-negative least-squares solution (Lawson–Hanson; as cone.nnls)."""
+    """‖a x − b‖ at the non-negative least-squares solution (Lawson–Hanson; as cone.nnls, with its
+    stall stop)."""
     m, n = a.shape
     x = np.zeros(n)
     passive = np.zeros(n, np.bool_)
@@ -272,6 +273,8 @@ def _nnls_misfit(a, b):
     tol = 10.0 * np.finfo(np.float64).eps * colsum * max(m, n)
     w = a.T @ b
     s_vec = np.zeros(n)
+    misfit = np.sqrt(np.sum(b * b))
+    stall = NNLS_STALL_RTOL * misfit
     for _ in range(3 * n + 10):
         best = -np.inf
         jbest = -1
@@ -304,7 +307,12 @@ def _nnls_misfit(a, b):
                 if passive[j] and not x[j] > tol:
                     passive[j] = False
         x[:] = s_vec
-        w = a.T @ (b - a @ x)
+        res = b - a @ x
+        w = a.T @ res
+        previous = misfit
+        misfit = np.sqrt(np.sum(res * res))
+        if previous - misfit <= stall:  # no progress: round-off (cone.NNLS_STALL_RTOL)
+            break
     r = a @ x - b
     return np.sqrt(np.sum(r * r))
 
