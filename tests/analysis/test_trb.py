@@ -1,9 +1,11 @@
 """TRB Monte Carlo and seed 001 validation cases."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
-from bearingkit.analysis.trb import contact_forces, monte_carlo
+from bearingkit.analysis.trb import SEED001_FREE, contact_forces, monte_carlo
 from bearingkit.bearings.tapered import seed001_row
 from bearingkit.physics.deviations import seed001_series
 from bearingkit.validation.registry import all_cases, run_case
@@ -44,3 +46,31 @@ def test_validation_cases_registered_and_ideal_passes():
     assert run_case(case).passed
     var = next(c for c in all_cases(["seed001/table3/series1/variance"]))
     assert var.published == pytest.approx(0.0162e6)
+
+
+def test_roller_loads_from_the_solve_start_equal_the_reference():
+    """The per-roller loads started from the rollers' positions the compiled solve left agree with
+    the cold start and with the numpy reference's roller_state to the sub-problem's tolerance."""
+    from bearingkit.analysis.model import BearingModel
+    from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+    from bearingkit.physics.deviations import gaussian_deviations
+    from bearingkit.rows.compiled_tapered import roller_loads
+
+    row = seed001_row()
+    dev = gaussian_deviations(row.n_elements, 1e-6, 32, seed=11)
+    model = BearingModel((dataclasses.replace(row, diameter_deviation=dev),), name="t")
+    load = load_vector(F_z=np.full(32, 10_000.0 * row.direction))
+    free = list(SEED001_FREE)
+    res = solve(model, load, free=free)
+    assert res._roller_x is not None and np.isfinite(res._roller_x).all()
+    kernel = model.kernels[0]
+    warm = roller_loads(kernel, res.displacement, res._roller_x)
+    cold = roller_loads(kernel, res.displacement)
+    ref = kernel.roller_state(res.displacement)
+    scale = np.abs(cold).max()
+    np.testing.assert_allclose(warm, cold, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(warm[..., 1], ref["load_outer"], rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(warm[..., 0], ref["load_inner"], rtol=0, atol=1e-9 * scale)
+    # The numpy backend leaves no start; a start of the wrong shape is ignored, not misread.
+    assert solve(model, load, free=free, options=SolverOptions(backend="numpy"))._roller_x is None
+    np.testing.assert_array_equal(roller_loads(kernel, res.displacement, res._roller_x[:, :3]), cold)

@@ -496,7 +496,7 @@ def _workspace(mp):
 
 @njit(cache=True, error_model="numpy")
 def _solve_case(
-    c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner
+    c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x
 ):
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
@@ -533,6 +533,14 @@ def _solve_case(
     out_i[c, 4] = stats[0]
     out_i[c, 5] = stats[1]
     out_i[c, 6] = norm
+    # The tapered rollers' positions X at the returned q (NaN when the last evaluation was at
+    # another point): the start of the per-roller loads (compiled_tapered.roller_loads).
+    same = ws[3][0] > 0.0
+    for i in range(5):
+        same = same and ws[2][i] == q[i]
+    for t in range(out_x.shape[1]):
+        out_x[c, t, 0] = ws[0][t, 0] if same else np.nan
+        out_x[c, t, 1] = ws[0][t, 1] if same else np.nan
 
 
 # The parfor wrapper of ``prange`` takes arrays and scalars only, not namedtuples of arrays: the
@@ -547,7 +555,7 @@ def _solve_batch(
     t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
     t_taylor, t_row, t_lc,
     start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
-    block,
+    out_x, block,
 ):  # fmt: skip
     n_cases = load.shape[0]
     for i in prange((n_cases + block - 1) // block):
@@ -563,7 +571,7 @@ def _solve_batch(
         ws = _workspace(mp)
         for c in range(first, min(first + block, n_cases)):
             _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
-                        out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
+                        out_q, out_f, out_j, out_i, inner[c], out_x)  # fmt: skip
 
 
 def _flat(mp: ModelPack) -> tuple:
@@ -572,11 +580,13 @@ def _flat(mp: ModelPack) -> tuple:
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_serial(q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner):
+def _solve_serial(
+    q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x
+):
     ws = _workspace(mp)
     for c in range(load.shape[0]):
         _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
-                    out_q, out_f, out_j, out_i, inner[c])  # fmt: skip
+                    out_q, out_f, out_j, out_i, inner[c], out_x)  # fmt: skip
 
 
 def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
@@ -619,7 +629,8 @@ def solve_packed(
 
     Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
     ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations`` (C,) int, ``norm`` (C,),
-    ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers.
+    ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers; ``roller_x``
+    (C, T, 2): the tapered rollers' positions at q (NaN where unknown; T = 0 without tapered rows).
     """
     n = load.shape[0]
     cache = {} if cache is None else cache
@@ -630,13 +641,14 @@ def solve_packed(
     out_j = np.empty((n, 5, 5))
     out_i = np.empty((n, 7))
     inner = np.zeros((n, 3))
+    out_x = np.empty((n, mp.tapered.gf.shape[0], 2))
     if "scale" not in cache:
         cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
         cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
     q0, load = np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64)
     head = (q0, load, cache["free"])
     tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
-    tail += (out_q, out_f, out_j, out_i, inner)
+    tail += (out_q, out_f, out_j, out_i, inner, out_x)
     if parallel:
         _solve_batch(*head, *cache["flat"], *tail, np.int64(block))
     else:
@@ -661,6 +673,7 @@ def solve_packed(
         "evaluations": counts[1],
         "norm": out_i[:, 6],
         "inner": inner,
+        "roller_x": out_x,
     }
 
 

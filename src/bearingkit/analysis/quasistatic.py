@@ -280,6 +280,7 @@ def solve(
         references=plan.references,
         offsets=offsets,
         evaluations=st.get("evaluations"),
+        _roller_x=st.get("roller_x"),
     )
     if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
         from bearingkit.analysis.speed import flag_beyond_model
@@ -358,6 +359,8 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
     if plan.tapered:
         _record_inner(plan.kernels, out["inner"])
     state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
+    if plan.tapered:
+        state["roller_x"] = out["roller_x"]
     return out["q"], out["converged"], state, out["diverged"], out["broken"]
 
 

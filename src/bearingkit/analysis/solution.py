@@ -167,6 +167,9 @@ class QuasiStaticResult:
     evaluations: np.ndarray | None = field(default=None, repr=False)
     _rows: list | None = field(default=None, repr=False)
     _row_loads: dict = field(default_factory=dict, repr=False)
+    #: Tapered rollers' positions X (C, T, 2) at the solution from the compiled core (NaN where
+    #: unknown), the warm start of the per-roller loads; None otherwise.
+    _roller_x: np.ndarray | None = field(default=None, repr=False)
 
     @property
     def rows(self) -> list[RowState]:

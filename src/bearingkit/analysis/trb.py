@@ -81,7 +81,7 @@ def contact_forces(row: TaperedRow, axial_load, deviations=None, free=SEED001_FR
     fz = np.broadcast_to(np.asarray(axial_load, dtype=float), (n_cases,)) * row.direction
     model = BearingModel((row,), name="tapered row", references=("liu2022",))
     res = solve(model, load_vector(F_z=fz), free=list(free))
-    q_i, q_e, q_f = _roller_loads(model, res.displacement)
+    q_i, q_e, q_f = _roller_loads(model, res.displacement, res._roller_x)
     return ContactForceStatistics(
         load_outer=q_e,
         load_inner=q_i,
@@ -93,15 +93,16 @@ def contact_forces(row: TaperedRow, axial_load, deviations=None, free=SEED001_FR
     )
 
 
-def _roller_loads(model: BearingModel, q: np.ndarray):
-    """Cone, cup and rib loads (C, Z) of the row's rollers at q: compiled where the solve was."""
+def _roller_loads(model: BearingModel, q: np.ndarray, start=None):
+    """Cone, cup and rib loads (C, Z) of the row's rollers at q: compiled where the solve was
+    (``start``: the rollers' positions the compiled solve left at q, its warm start)."""
     from bearingkit.analysis import backend
 
     kernel = model.kernels[0]
     if backend.requested(None) != "numpy" and backend.compiled_pack(model) is not None:
         from bearingkit.rows.compiled_tapered import roller_loads
 
-        loads = roller_loads(kernel, q)
+        loads = roller_loads(kernel, q, start)
         return loads[..., 0], loads[..., 1], loads[..., 2]
     st = kernel.roller_state(q)
     return st["load_inner"], st["load_outer"], st["load_flange"]

@@ -414,11 +414,13 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
 
 # -- per-roller contact loads at given ring displacements (post-processing) --------------------------
 @njit(cache=True, error_model="numpy")
-def _case_roller_loads(c, q, tp, out):
+def _case_roller_loads(c, q, tp, out, start):
     """Roller contact loads of case c at ring displacement q (5,): out[c, t] = (Q_i, Q_e, Q_f) [N].
 
-    The roller sub-problem of :func:`tapered_response` solved from the closed-form guess, as
-    :meth:`bearingkit.rows.tapered_kernel.TaperedKernel.roller_state` does without a warm start.
+    The roller sub-problem of :func:`tapered_response` solved from ``start[c, t]`` (the roller's
+    position the solve left at this q) or, where that is NaN or ``start`` has no rollers, from the
+    closed-form guess, as :meth:`bearingkit.rows.tapered_kernel.TaperedKernel.roller_state` does
+    without a warm start.
     """
     cc = c if tp.d0i.shape[0] > 1 else 0
     s_max = tp.gi.shape[1]
@@ -428,7 +430,10 @@ def _case_roller_loads(c, q, tp, out):
         dv = tp.dev[cc, t]
         lc = _row_consts(tp, cc, t)
         af = _ring(tp, t, cc, q, ai, d0e)
-        x0, x1 = _guess(tp, t, ai, af, d0e)
+        if start.shape[1] > t and np.isfinite(start[c, t, 0]) and np.isfinite(start[c, t, 1]):
+            x0, x1 = start[c, t, 0], start[c, t, 1]
+        else:
+            x0, x1 = _guess(tp, t, ai, af, d0e)
         x0, x1, _, _, _ = _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1)
         cs, tay = tp.cs[t], tp.taylor[t]
         xi = x0 * tp.bi[t, 0] + x1 * tp.bi[t, 1]
@@ -445,25 +450,30 @@ def _case_roller_loads(c, q, tp, out):
 
 @njit(cache=True, parallel=True, error_model="numpy")
 def _roller_loads_batch(
-    q, gi, gf, d0i, d0e, dev, ns, bi, be, bf, cs, kf, fc, floor, ffloor, cap, taylor, row, lc, out
+    q, gi, gf, d0i, d0e, dev, ns, bi, be, bf, cs, kf, fc, floor, ffloor, cap, taylor, row, lc, out, start
 ):
     for i in prange(q.shape[0]):
         c = np.int64(i)
         tp = TaperedPack(
             gi, gf, d0i, d0e, dev, ns, bi, be, bf, cs, kf, fc, floor, ffloor, cap, taylor, row, lc
         )  # fmt: skip
-        _case_roller_loads(c, q[c], tp, out)
+        _case_roller_loads(c, q[c], tp, out, start)
 
 
-def roller_loads(kernel, q: np.ndarray) -> np.ndarray:
+def roller_loads(kernel, q: np.ndarray, start: np.ndarray | None = None) -> np.ndarray:
     """Contact loads (C, Z, 3) [N] — cone, cup, rib — of a tapered kernel's rollers at q (C, 5).
 
     The compiled counterpart of the loads of :meth:`TaperedKernel.roller_state` (same roller
-    sub-problem from the same start; agreement to the sub-problem's tolerance), over the cases in
-    parallel: a Monte Carlo of 10⁴ realisations needs only these three loads per roller.
+    sub-problem; agreement to the sub-problem's tolerance), over the cases in parallel: a Monte
+    Carlo of 10⁴ realisations needs only these three loads per roller. ``start`` (C, Z, 2): the
+    rollers' positions a compiled solve left at these q (``QuasiStaticResult._roller_x``); the
+    sub-problem then starts converged and only confirms it (NaN entries start from the guess).
     """
     pack = pack_tapered([kernel], [0])
     q = np.ascontiguousarray(q, dtype=np.float64)
-    out = np.empty((q.shape[0], kernel.row.n_elements, 3))
-    _roller_loads_batch(q, *pack, out)
+    n_z = kernel.row.n_elements
+    out = np.empty((q.shape[0], n_z, 3))
+    if start is None or np.shape(start) != (q.shape[0], n_z, 2):
+        start = np.empty((q.shape[0], 0, 2))
+    _roller_loads_batch(q, *pack, out, np.ascontiguousarray(start, dtype=np.float64))
     return out
