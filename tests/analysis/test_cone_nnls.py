@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 from scipy.optimize import nnls as scipy_nnls
@@ -62,3 +64,30 @@ def test_compiled_nnls_agrees_on_the_cycling_load(turntable_cone):
     assert compiled > cone.CONE_MISS_RTOL
     assert cone.nnls(dirs, out)[1] == pytest.approx(compiled, rel=1e-9)
     assert scipy_nnls(dirs, out)[1] == pytest.approx(compiled, rel=1e-9)
+
+
+def test_compiled_and_numpy_nnls_agree_where_the_inner_loop_meets_round_off():
+    """6209 loads (F_r with a small F_a) where an inner step of Lawson–Hanson divides 0 by 0: the
+    compiled NNLS took the NaN step and, stopped there, refused carriable loads (bench_generic)."""
+    from pathlib import Path
+
+    from bearingkit.analysis.compiled_newton import _nnls_misfit
+    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.io.loader import load_file
+
+    bearing = load_file(Path(__file__).resolve().parents[2] / "examples" / "dgbb_6209.toml")
+    plan = qs._plan(bearing.model, qs._free_key(bearing.free), bearing.options, None)
+    g = np.ascontiguousarray(plan.cone_matrix)
+    # Full precision: the round-off path needs the exact values (bench_generic's 6209 cases).
+    fx = np.array([1788.727248298261, 2636.492495279866, 2184.9203447667915, 3072.9739981488115])
+    fz = np.array([87.65829751560594, 225.51795344152214, 125.04008191007077, 294.9628886413478])
+    loads = load_vector(F_x=fx, F_z=fz)
+    for load in loads:
+        f = (load * plan.scale)[plan.idx]
+        size = np.linalg.norm(f)
+        assert _nnls_misfit(g, f) < 1e-12 * size
+        assert cone.nnls(g, f)[1] < 1e-12 * size
+    for backend in ("compiled", "numpy"):
+        options = dataclasses.replace(bearing.options, backend=backend)
+        res = solve(bearing.model, loads, free=bearing.free, options=options)
+        assert res.converged.all(), (backend, res.reason)

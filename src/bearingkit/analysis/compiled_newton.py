@@ -273,6 +273,7 @@ def _nnls_misfit(a, b):
     tol = 10.0 * np.finfo(np.float64).eps * colsum * max(m, n)
     w = a.T @ b
     s_vec = np.zeros(n)
+    x_prev = np.zeros(n)
     misfit = np.sqrt(np.sum(b * b))
     stall = NNLS_STALL_RTOL * misfit
     for _ in range(3 * n + 10):
@@ -285,7 +286,10 @@ def _nnls_misfit(a, b):
         if jbest < 0 or best <= tol:
             break
         passive[jbest] = True
+        x_prev[:] = x
         for _inner in range(3 * n + 10):
+            if not passive.any():  # every column left (round-off at extreme loads), as cone.nnls
+                break
             cols = np.flatnonzero(passive)
             sub = np.empty((m, cols.shape[0]))
             for k in range(cols.shape[0]):
@@ -301,7 +305,8 @@ def _nnls_misfit(a, b):
             alpha = np.inf
             for j in range(n):
                 if passive[j] and s_vec[j] <= 0.0:
-                    alpha = min(alpha, x[j] / (x[j] - s_vec[j]))
+                    den = x[j] - s_vec[j]  # x = s = 0 at round-off: no step (cone.nnls's NaN → 0)
+                    alpha = min(alpha, x[j] / den if den != 0.0 else 0.0)
             for j in range(n):
                 x[j] = x[j] + alpha * (s_vec[j] - x[j])
                 if passive[j] and not x[j] > tol:
@@ -311,7 +316,9 @@ def _nnls_misfit(a, b):
         w = a.T @ res
         previous = misfit
         misfit = np.sqrt(np.sum(res * res))
-        if previous - misfit <= stall:  # no progress: round-off (cone.NNLS_STALL_RTOL)
+        if not previous - misfit > stall:  # no progress: round-off (cone.NNLS_STALL_RTOL)
+            if not misfit <= previous:  # worse: keep the previous solution
+                x[:] = x_prev
             break
     r = a @ x - b
     return np.sqrt(np.sum(r * r))

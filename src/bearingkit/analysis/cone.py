@@ -61,6 +61,7 @@ def nnls(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, float]:
         if passive.all() or np.where(passive, -np.inf, w).max() <= tol:
             break
         passive[int(np.argmax(np.where(passive, -np.inf, w)))] = True
+        x_prev = x
         for _inner in range(3 * n + 10):
             s = np.zeros(n)
             if not passive.any():  # every column left the passive set (round-off at extreme loads)
@@ -78,7 +79,9 @@ def nnls(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, float]:
         r = b - a @ x
         w = a.T @ r
         previous, misfit = misfit, float(np.linalg.norm(r))
-        if previous - misfit <= stall:  # no progress: round-off (see NNLS_STALL_RTOL)
+        if not previous - misfit > stall:  # no progress: round-off (see NNLS_STALL_RTOL)
+            if not misfit <= previous:  # worse (round-off in the inner loop): keep the previous x
+                x = x_prev
             break
     return x, float(np.linalg.norm(a @ x - b))
 
