@@ -47,20 +47,20 @@ def test_load_inside_a_cone_of_thousands_of_slices_stops_at_round_off(turntable_
 
 
 def test_compiled_nnls_agrees_on_the_cycling_load(turntable_cone):
-    from bearingkit.analysis.compiled_newton import _nnls_misfit
+    from bearingkit.analysis.compiled_linalg import nnls_misfit
 
     g, scale, idx = turntable_cone
     load = np.array([2.27919853e00, 0.0, 6.83715617e03, 0.0, -4.43125820e02])
     f = (load * scale)[idx]
     size = np.linalg.norm(f)
-    assert _nnls_misfit(np.ascontiguousarray(g), f) < cone.CONE_MISS_RTOL * size
+    assert nnls_misfit(np.ascontiguousarray(g), f) < cone.CONE_MISS_RTOL * size
     # A load outside a cone (directions all with a positive third component, the load negative
     # there) is still refused by both, with the same misfit (its distance to the cone: 1).
     rng = np.random.default_rng(3)
     dirs = rng.normal(size=(5, 300))
     dirs[2] = np.abs(dirs[2]) + 0.1
     out = np.array([0.0, 0.0, -1.0, 0.0, 0.0])
-    compiled = _nnls_misfit(np.ascontiguousarray(dirs), out)
+    compiled = nnls_misfit(np.ascontiguousarray(dirs), out)
     assert compiled > cone.CONE_MISS_RTOL
     assert cone.nnls(dirs, out)[1] == pytest.approx(compiled, rel=1e-9)
     assert scipy_nnls(dirs, out)[1] == pytest.approx(compiled, rel=1e-9)
@@ -71,7 +71,7 @@ def test_compiled_and_numpy_nnls_agree_where_the_inner_loop_meets_round_off():
     compiled NNLS took the NaN step and, stopped there, refused carriable loads (bench_generic)."""
     from pathlib import Path
 
-    from bearingkit.analysis.compiled_newton import _nnls_misfit
+    from bearingkit.analysis.compiled_linalg import nnls_misfit
     from bearingkit.analysis.quasistatic import load_vector, solve
     from bearingkit.io.loader import load_file
 
@@ -85,7 +85,7 @@ def test_compiled_and_numpy_nnls_agree_where_the_inner_loop_meets_round_off():
     for load in loads:
         f = (load * plan.scale)[plan.idx]
         size = np.linalg.norm(f)
-        assert _nnls_misfit(g, f) < 1e-12 * size
+        assert nnls_misfit(g, f) < 1e-12 * size
         assert cone.nnls(g, f)[1] < 1e-12 * size
     for backend in ("compiled", "numpy"):
         options = dataclasses.replace(bearing.options, backend=backend)

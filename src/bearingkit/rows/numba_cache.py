@@ -22,6 +22,7 @@ from pathlib import Path
 COMPILED_SOURCES = (
     "rows/compiled_contacts.py",
     "rows/compiled_tapered.py",
+    "analysis/compiled_linalg.py",
     "analysis/compiled_newton.py",
 )
 
