@@ -14,6 +14,8 @@ from bearingkit.bearings.turntable import composite_turntable
 
 
 def test_nnls_matches_scipy_on_random_problems():
+    from bearingkit.analysis.compiled_linalg import nnls_misfit
+
     rng = np.random.default_rng(7)
     for _ in range(30):
         a = rng.normal(size=(5, 40))
@@ -22,6 +24,7 @@ def test_nnls_matches_scipy_on_random_problems():
         misfit_ref = scipy_nnls(a, b)[1]
         assert (x >= 0).all()
         assert misfit == pytest.approx(misfit_ref, rel=1e-9, abs=1e-12)
+        assert nnls_misfit(a, b) == pytest.approx(misfit_ref, rel=1e-9, abs=1e-12)
 
 
 @pytest.fixture(scope="module")

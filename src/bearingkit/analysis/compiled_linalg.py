@@ -168,6 +168,7 @@ def nnls_misfit(a, b):
         x_prev[:] = x
         for _inner in range(3 * n + 10):
             if not passive.any():  # every column left (round-off at extreme loads), as cone.nnls
+                s_vec[:] = 0.0
                 break
             cols = np.flatnonzero(passive)
             sub = np.empty((m, cols.shape[0]))
