@@ -356,10 +356,9 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
     else:
         out = solve_packed(*args, parallel=False, cache=plan.compiled)
     iterations += out["iterations"]
-    if plan.tapered:
-        _record_inner(plan.kernels, out["inner"])
     state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
     if plan.tapered:
+        _record_inner(plan.kernels, out["inner"])
         state["roller_x"] = out["roller_x"]
     return out["q"], out["converged"], state, out["diverged"], out["broken"]
 
