@@ -220,10 +220,10 @@ def run_optimization(d, executor, store, resume: bool, progress, plan=None):
         chunks = [cases] if len(X) <= step else [cases.iloc[i : i + step] for i in range(0, len(X), step)]
         parts = dict(executor.map_unordered(fn, chunks))
         out = parts[0] if len(parts) == 1 else pd.concat([parts[i] for i in sorted(parts)], ignore_index=True)
-        keep = set(d.outputs or out.columns) - set(names)
         columns = {"generation": np.full(len(X), gen), **{n: X[:, j] for j, n in enumerate(names)}}
-        for c, col in out.items():
-            if c in keep:
+        for c in d.outputs or out.columns:  # in the study's output order, as the store always had
+            if c not in names:
+                col = out[c]
                 columns[c] = col.to_numpy() if isinstance(col.dtype, np.dtype) else col.array
         store.write(gen, pd.DataFrame(columns))
         counts["computed"] += 1

@@ -48,6 +48,7 @@ PROTOTYPE_PITCH_DIAMETER = 42.5e-3
 #: n·P of the prototype, held when n changes (§5 (2): n = 8–16 ↔ P = 1.6–0.8 mm) [m].
 PROTOTYPE_THREAD_LENGTH = 12.0e-3
 
+
 @cache
 def _prototype() -> PTRBGeometry:
     """The default prototype, built once (a frozen dataclass: its checks cost ~0.2 ms per build)."""
