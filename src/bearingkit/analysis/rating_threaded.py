@@ -33,7 +33,7 @@ def threaded_ratings(geometry):
         (C_r, C0r) [N].
     """
     from bearingkit.physics.life import ptrb_rating as pr
-    from bearingkit.rows.threaded import contact_pairs
+    from bearingkit.rows.threaded_geometry import contact_pairs
 
     g = geometry
     pairs = contact_pairs(g)

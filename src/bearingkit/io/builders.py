@@ -122,7 +122,7 @@ def _tapered(geometry: dict, material, name: str) -> BearingModel:
 def _ptrb(geometry: dict, material, name: str) -> BearingModel:
     """Planetary thread roller bearing (seed 004): one :class:`~bearingkit.rows.threaded.ThreadedRow`."""
     from bearingkit.bearings.ptrb import ptrb_model
-    from bearingkit.rows.threaded import PTRBGeometry
+    from bearingkit.rows.threaded_geometry import PTRBGeometry
 
     renames = {"bore": "bore_diameter", "outer_diameter": "outside_diameter"}
     kwargs = {renames.get(k, k): v for k, v in geometry.items() if v is not None and k != "clearance"}

@@ -268,7 +268,7 @@ class TaperedRollerGeometry(Envelope):
 
 
 class PTRBGeometrySpec(Strict):
-    """Planetary thread roller bearing (rows.threaded.PTRBGeometry; E, ν from [material])."""
+    """Planetary thread roller bearing (rows.threaded_geometry.PTRBGeometry; E, ν from [material])."""
 
     bore: PositiveLength = Field(description="Bore d_0 (PTRBGeometry.bore_diameter).")
     outer_diameter: PositiveLength = Field(
@@ -404,7 +404,7 @@ def _describe_defaults() -> None:
     """Put each builder default (SI) into the description of the matching optional field."""
     from bearingkit.bearings import standard, turntable
     from bearingkit.rows.tapered import TaperedRow
-    from bearingkit.rows.threaded import PTRBGeometry
+    from bearingkit.rows.threaded_geometry import PTRBGeometry
 
     def defaults(cls):
         return {f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING}

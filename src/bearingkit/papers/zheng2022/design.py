@@ -29,7 +29,8 @@ from bearingkit.analysis.ptrb_friction import (
 from bearingkit.bearings.ptrb import ptrb_prototype
 from bearingkit.physics.friction import ptrb as pf
 from bearingkit.physics.life import ptrb_rating as pr
-from bearingkit.rows.threaded import PTRBGeometry, radial_roller_distribution
+from bearingkit.rows.threaded_distribution import radial_roller_distribution
+from bearingkit.rows.threaded_geometry import PTRBGeometry
 
 __all__ = [
     "CALIBRATION_POINT",
