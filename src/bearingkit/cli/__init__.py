@@ -1,8 +1,8 @@
 """Command line: ``bearingkit``. Faces only: parse, call the pipeline, print; never recompute physics.
 
 SI inside; units only in the input file and in option values. :mod:`bearingkit.cli.commands` holds the
-commands, :mod:`bearingkit.cli.tables` the rich tables, :mod:`bearingkit.cli.flagship` the flagship
-demonstration (``make run``).
+commands, :mod:`bearingkit.cli.common` the options and helpers they share, :mod:`bearingkit.cli.tables`
+the rich tables, :mod:`bearingkit.cli.flagship` the flagship demonstration (``make run``).
 """
 
 from bearingkit.cli.commands import app, main

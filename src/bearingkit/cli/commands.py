@@ -4,50 +4,44 @@ SI inside; units only in the input file and in option values (``--load Fa=5kN``,
 Every command that reads a bearing builds ONE :class:`~bearingkit.pipeline.Analysis` and prints the
 parts it is about, with every warning the analysis carries. Bad input: one line ``error: …`` on
 stderr, exit 2; a case that does not converge: its tables, then ``error: …``, exit 1.
-Adding a command is one decorated function (``@app.command()``).
+Adding a command is one decorated function (``@app.command()``); the options, consoles and helpers the
+commands share are in :mod:`bearingkit.cli.common`.
 """
 
 from __future__ import annotations
 
-import functools
 import json
 import sys
 from pathlib import Path
 
 import typer
-from rich.console import Console
 from rich.table import Table
 
+from bearingkit.cli.common import (
+    _CASE_OPTION,
+    _CONTAMINATION_OPTION,
+    _FILE_ARGUMENT,
+    _JSON_OPTION,
+    _LOAD_OPTION,
+    _LUBRICANT_OPTION,
+    _ROTATING_OPTION,
+    _SPEED_OPTION,
+    _TEMPERATURE_OPTION,
+    _analysis,
+    _fail,
+    _fail_unconverged,
+    _header,
+    _load_ratings,
+    _print_json,
+    console,
+    err_console,
+    one_line_errors,
+)
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
 from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError, one_line
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
-# Piped output (CI logs, files) gets a wide console so table ids are not cut.
-console = Console() if sys.stdout.isatty() else Console(width=200)
-err_console = Console(stderr=True)
-
-
-def _fail(message: str, code: int = 2):
-    """One line on stderr (no rich wrapping or markup), then exit with ``code``."""
-    sys.stderr.write("error: " + " ".join(str(message).split()) + "\n")
-    raise typer.Exit(code)
-
-
-def one_line_errors(fn):
-    """Decorator for commands: an InputError becomes ``error: …`` on stderr and exit code 2."""
-
-    @functools.wraps(fn)
-    def wrapper(*args, **kwargs):
-        try:
-            return fn(*args, **kwargs)
-        except InputError as exc:
-            message, file = str(exc), kwargs.get("file")
-            if file is not None and not message.startswith(f"{file}:"):  # every error names the file
-                message = f"{file}: {message}"
-            _fail(message)
-
-    return wrapper
 
 
 @app.command()
@@ -94,109 +88,6 @@ def validate(
         raise typer.Exit(1)
 
 
-#: Arguments and options shared by the commands that read a bearing file.
-_FILE_ARGUMENT = typer.Argument(
-    ...,
-    help="Input file (TOML with units, docs/input-format.md) or a standard bearing designation such as "
-    "6205-2RS C3 (docs/catalogue.md).",
-)
-_LOAD_OPTION = typer.Option(
-    None,
-    "--load",
-    "-l",
-    help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
-)
-_CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
-_JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
-_SPEED_OPTION = typer.Option(
-    None,
-    "--speed",
-    help="Speed of the rotating ring, e.g. 3000rpm; its sign is the direction of rotation "
-    "(default: the cases').",
-)
-_TEMPERATURE_OPTION = typer.Option(
-    None, "--temperature", help="Operating temperature, e.g. 60degC (default: the cases', else 25 °C)."
-)
-_ROTATING_OPTION = typer.Option(
-    "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
-)
-_LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
-_CONTAMINATION_OPTION = typer.Option(
-    None,
-    "--contamination",
-    help="ISO 281 e_C (0 … 1) or a level (normal_cleanliness, slight_contamination, …); with lubricant, "
-    "speed and temperature gives a_ISO.",
-)
-
-
-#: Options parsed here (so a bad value names its option): option → (dimension, flag).
-_OPTION_UNITS = {
-    "speed": ("angular_velocity", "--speed"),
-    "temperature": ("temperature", "--temperature"),
-    "reliability": ("dimensionless", "--reliability"),
-}
-
-
-def _analysis(file: Path, load, case, **operating):
-    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some)."""
-    from bearingkit.io.loader import parse_load_options
-    from bearingkit.pipeline import analyze, load_input
-    from bearingkit.units import parse
-
-    for key, (dimension, flag) in _OPTION_UNITS.items():
-        if isinstance(operating.get(key), str):
-            operating[key] = parse(operating[key], dimension, flag)
-    if operating.get("rotating", "inner") not in ("inner", "outer"):
-        raise InputError(f"--rotating ({operating['rotating']!r}) must be one of inner, outer")
-
-    bearing = load_input(file)
-    if load:
-        if case:
-            raise InputError("--case selects file load cases; it cannot be combined with --load")
-        bearing = bearing.with_cases([parse_load_options(load)])
-    else:
-        bearing = bearing.select(case)
-    try:
-        return analyze(bearing, **{k: v for k, v in operating.items() if v is not None})
-    except InputError as exc:
-        if str(exc).startswith(f"{file}:"):
-            raise
-        raise InputError(f"{file}: {exc}") from None
-
-
-def _print_json(file, data: dict) -> None:
-    """Strict JSON on stdout; a non-finite value is a one-line error with exit code 1."""
-    from bearingkit.io.export import to_json
-
-    try:
-        text = to_json(data)
-    except ValueError as exc:
-        _fail(f"{file}: {exc}", 1)
-    sys.stdout.write(text + "\n")
-
-
-def _header(analysis, file) -> None:
-    """The bearing's name and, for a designation, that (and how) its geometry is estimated."""
-    bearing = analysis.input
-    console.print(f"{bearing.model.name}  ({file})", markup=False, highlight=False)
-    if bearing.spec.bearing.designation is not None:
-        console.print(f"  note: {bearing.spec.bearing.source}", markup=False, highlight=False)
-
-
-def _fail_unconverged(file, analysis) -> None:
-    res = analysis.statics
-    if not res.converged.all():
-        i = int(next(i for i, ok in enumerate(res.converged) if not ok))
-        # the file, then at most MAX_MESSAGE_CHARS (a long case name and the remedy must not overflow)
-        what = f"load case {analysis.case_names[i]!r} did not converge: {res.reason[i]}"
-        _fail(f"{file}: " + one_line(what), 1)
-    flex = analysis.flexible
-    if flex is not None and not flex.converged.all():
-        i = int(next(i for i, ok in enumerate(flex.converged) if not ok))
-        what = f"load case {analysis.case_names[i]!r}: the flexible-ring coupling did not converge"
-        _fail(f"{file}: " + one_line(what), 1)
-
-
 @app.command()
 @one_line_errors
 def analyze(
@@ -234,21 +125,6 @@ def schema():
     from bearingkit.io.schema_cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
-
-
-def _load_ratings(items: list[str] | None) -> dict:
-    """``--load-rating ROW=C`` (C with a force unit) → {row name: C [N]}."""
-    from bearingkit.units import parse
-
-    out = {}
-    for item in items or ():
-        row, sep, value = item.partition("=")
-        if not sep or not row.strip() or not value.strip():
-            raise InputError(
-                f"--load-rating ({item!r}) must look like ROW=VALUE with a unit, e.g. roller_upper=50kN"
-            )
-        out[row.strip()] = parse(value.strip(), "force", f"--load-rating {row.strip()}")
-    return out
 
 
 @app.command()
