@@ -25,6 +25,7 @@ from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
 from bearingkit.physics.friction import ptrb as pf
+from bearingkit.physics.friction import ptrb_laws as pl
 from bearingkit.rows.threaded_distribution import axial_tooth_distribution, radial_roller_distribution
 from bearingkit.rows.threaded_geometry import PTRBGeometry
 
@@ -82,8 +83,8 @@ class PTRBFrictionParameters:
     power-balance reading with its own calibration (same published value).
     """
 
-    traction: float = pf.CONTACT_TRACTION_CALIBRATED
-    hysteresis: float = pf.HYSTERESIS_PTRB
+    traction: float = pl.CONTACT_TRACTION_CALIBRATED
+    hysteresis: float = pl.HYSTERESIS_PTRB
     carrier_friction: float = pf.CARRIER_FRICTION
     journal_ratio: float = pf.JOURNAL_DIAMETER_RATIO
     viscous_model: str = "harris"

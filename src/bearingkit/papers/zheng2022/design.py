@@ -61,13 +61,13 @@ def calibrate_contact_traction(
     convention: str | None = None,
     parameters: PTRBFrictionParameters | None = None,
 ) -> float:
-    """Recompute :data:`~bearingkit.physics.friction.ptrb.CONTACT_TRACTION_CALIBRATED` [1].
+    """Recompute :data:`~bearingkit.physics.friction.ptrb_laws.CONTACT_TRACTION_CALIBRATED` [1].
 
     The torque is affine in μ_c (spin and differential sliding ∝ μ_c, the rest independent of it), so
     two evaluations at :data:`CALIBRATION_POINT` give the μ_c that reproduces 0.476 N·m exactly.
     ``parameters`` (its ``traction`` ignored) sets the other model choices (default: the default
     reading; ``PTRBFrictionParameters.power_balance()`` recomputes
-    :data:`~bearingkit.physics.friction.ptrb.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
+    :data:`~bearingkit.physics.friction.ptrb_laws.CONTACT_TRACTION_POWER_BALANCE`); ``convention``, if
     given, overrides its convention (with that convention's default viscous projection).
     """
     g = geometry or ptrb_prototype()

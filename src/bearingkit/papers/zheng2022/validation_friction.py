@@ -6,8 +6,8 @@ summed as printed with M_v = F_v d_X/2, Harris's EHL rolling resistance with the
 R_y = D_w/2, uniform tooth shares, roller 0 under the radial load).
 
 ONE number is calibrated: the contact traction μ_c, against ``seed004/table7/axial/20kN`` (0.476 N·m),
-see :data:`bearingkit.physics.friction.ptrb.CONTACT_TRACTION_CALIBRATED`. Nothing in the viscous
-(speed-dependent) term is fitted. All other cases follow: Table 7 within 6.4 %, Table 8 within 5.9 %,
+see :data:`bearingkit.physics.friction.ptrb_laws.CONTACT_TRACTION_CALIBRATED`. Nothing in the
+viscous (speed-dependent) term is fitted. All other cases follow: Table 7 within 6.4 %, Table 8 within 5.9 %,
 §4 within 6.3 %, Table 5 within 7.1 % except the contact-angle row.
 Tolerance 0.15 (the task's; the paper's own test/simulation deviation is up to 0.1 N·m, i.e. 20–50 %).
 
