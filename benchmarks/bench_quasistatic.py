@@ -305,32 +305,40 @@ def _kernel_rates() -> tuple[float, float]:
     return t_root, t_flop
 
 
-def arithmetic_limit(model, res, evaluations: float) -> tuple[float, str]:
+def arithmetic_limit(model, res, evaluations: float, coarse_evaluations: float = 0.0) -> tuple[float, str]:
     """CPU time per case [s] the kernels' operation count allows: evaluations × (roots + flops).
 
     Operation count of one evaluation at the solution (compiled kernels): per loaded slice one
     ninth root and 12 flops; per roller 20 flops for its approach and slope, per touching roller
     230 for its force and 5×5 stiffness; per ball 30 flops, per loaded ball 170 and two square roots
-    (counted as roots). Rates: :func:`_kernel_rates`, measured in the same run.
+    (counted as roots). A coarse evaluation (:mod:`bearingkit.analysis.coarse`) counts the same with
+    the loaded slices of a coarsened row scaled by COARSE_SLICES / n_slices. Rates:
+    :func:`_kernel_rates`, measured in the same run.
     """
+    from bearingkit.analysis.coarse import COARSE_FROM_SLICES, COARSE_SLICES
+
     t_root, t_flop = _kernel_rates()
-    roots = flops = 0.0
+    full, rough = np.zeros(2), np.zeros(2)  # (roots, flops) per full and per coarse evaluation
     for st, row in zip(res.rows, model.rows, strict=True):
         if row.kind == "cylindrical":
             loaded = (st.slice_load > 0).sum(axis=(1, 2)).mean()
             touching = (st.load > 0).sum(axis=1).mean()
-            roots += loaded
-            flops += 12 * loaded + 20 * row.n_elements + 230 * touching
+            fixed = 20 * row.n_elements + 230 * touching
+            full += (loaded, 12 * loaded + fixed)
+            share = COARSE_SLICES / row.n_slices if row.n_slices >= COARSE_FROM_SLICES else 1.0
+            rough += (loaded * share, 12 * loaded * share + fixed)
         elif row.kind == "ball":
             loaded = (st.load > 0).sum(axis=1).mean()
-            roots += 2 * loaded
-            flops += 30 * row.n_elements + 170 * loaded
-    per_eval = roots * t_root + flops * t_flop
+            ball = np.array([2 * loaded, 30 * row.n_elements + 170 * loaded])
+            full += ball
+            rough += ball
+    per_eval, per_coarse = (r[0] * t_root + r[1] * t_flop for r in (full, rough))
     note = (
-        f"{roots:.0f} roots + {flops / 1e3:.0f} kflop per evaluation, {evaluations:.1f} evaluations/case; "
+        f"{full[0]:.0f} roots + {full[1] / 1e3:.0f} kflop per evaluation, {evaluations:.1f} evaluations/case "
+        f"+ {coarse_evaluations:.1f} coarse ({rough[0]:.0f} roots + {rough[1] / 1e3:.0f} kflop); "
         f"root {t_root * 1e9:.1f} ns, flop {t_flop * 1e9:.2f} ns"
     )
-    return evaluations * per_eval, note
+    return evaluations * per_eval + coarse_evaluations * per_coarse, note
 
 
 def bench_rates(model, loads: np.ndarray, sizes: tuple[int, ...]) -> tuple[list[Record], dict]:
@@ -344,7 +352,9 @@ def bench_rates(model, loads: np.ndarray, sizes: tuple[int, ...]) -> tuple[list[
         wall, cpu = time.perf_counter() - t0, time.process_time() - c0
         rate = n / wall
         evals = float(np.mean(res.evaluations)) if res.evaluations is not None else float("nan")
-        stats[n] = {"rate": rate, "cpu_per_case": cpu / n, "evaluations": evals, "result": res}
+        coarse = float(np.mean(res.coarse_evaluations)) if res.coarse_evaluations is not None else 0.0
+        stats[n] = {"rate": rate, "cpu_per_case": cpu / n, "evaluations": evals, "coarse": coarse}
+        stats[n]["result"] = res
         records.append(
             Record(
                 f"batch of {n} in one call",
@@ -353,7 +363,8 @@ def bench_rates(model, loads: np.ndarray, sizes: tuple[int, ...]) -> tuple[list[
                 f">= {TARGET_BATCH_RATE:g}",
                 rate / TARGET_BATCH_RATE,
                 f"converged {res.converged.mean():.1%}, max {int(res.iterations.max())} it., "
-                f"{evals:.2f} evaluations/case, {cpu / n * 1e6:.0f} µs CPU/case, peak RSS "
+                f"{evals:.2f} + {coarse:.2f} coarse evaluations/case, {cpu / n * 1e6:.0f} µs CPU/case, "
+                "peak RSS "
                 f"+{_peak_rss_mb() - rss0:.0f} MB, load {os.getloadavg()[0]:.1f}",
             )
         )
@@ -420,8 +431,11 @@ def run(quick: bool = False) -> tuple[list[Record], dict]:
     stats["best_chunk"] = max(rates, key=lambda k: rates[k]["rate"])
     small = rates[sizes[0]]
     sample = solve(model, loads[:200])
-    limit, note = arithmetic_limit(model, sample, small["evaluations"])
+    limit, note = arithmetic_limit(model, sample, small["evaluations"], small["coarse"])
     records.append(Record("evaluations per case", small["evaluations"], "", note=f"batch of {sizes[0]}"))
+    records.append(
+        Record("coarse-model evaluations per case", small["coarse"], "", note="the first Newton iterations")
+    )
     records.append(Record("arithmetic-limit estimate, CPU per case", limit * 1e6, "µs", note=note))
     records.append(
         Record(

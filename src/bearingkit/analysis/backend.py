@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import warnings
 
+from bearingkit.analysis.coarse import coarse_kernels
 from bearingkit.errors import InputError
 
 #: Environment variable naming the default backend.
@@ -52,10 +53,18 @@ def compiled_module():
     return _STATE["module"]
 
 
+def coarse_of(model):
+    """The model's coarse kernels (:func:`bearingkit.analysis.coarse.coarse_kernels`, cached on it)."""
+    cache = model.__dict__.setdefault("_coarse_kernels", [])
+    if not cache:
+        cache.append(coarse_kernels(model.kernels))
+    return cache[0]
+
+
 def compiled_pack(model):
     """The model's packed arrays for the compiled core (cached on the model), or None if it has none."""
     cache = model.__dict__.setdefault("_compiled_pack", {})
     if "pack" not in cache:
         module = compiled_module()
-        cache["pack"] = None if module is None else module.pack_model(model.kernels)
+        cache["pack"] = None if module is None else module.pack_model(model.kernels, coarse_of(model))
     return cache["pack"]

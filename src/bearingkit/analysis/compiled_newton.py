@@ -3,7 +3,8 @@
 SI units, scaled DOFs as in :mod:`bearingkit.analysis.quasistatic`. The algorithm is the numpy
 reference's (:mod:`bearingkit.analysis.newton` and the driver in :mod:`~bearingkit.analysis.
 quasistatic`), case by case and step by step: the starting point (fixed-point sizing with the rows'
-start matrices, idle mechanisms removed, capped), damped Newton with the vanishing Levenberg term,
+start matrices, idle mechanisms removed, capped), the first iterations on the coarse model
+(:mod:`bearingkit.analysis.coarse`), damped Newton with the vanishing Levenberg term,
 idle-mechanism removal, the step cap, Armijo backtracking, the contact-cone check at
 :data:`~bearingkit.analysis.newton.CONE_CHECK_ITERATION`, the divergence limit, load continuation
 and the non-finite check. Rows are evaluated by the compiled row functions
@@ -46,8 +47,11 @@ configure()  # before numba reads its configuration: the cache follows the compi
 from numba import njit, prange  # noqa: E402
 
 #: A bearing in compiled form: the packed rows of each kind, the start matrices summed over the rows
-#: of one start exponent (G, 5, 5) and those exponents (G,), and the row count.
-ModelPack = namedtuple("ModelPack", "balls rollers points tapered start_mats start_exps n_rows")
+#: of one start exponent (G, 5, 5) and those exponents (G,), the row count, the cylindrical rows of
+#: the coarse model (:mod:`bearingkit.analysis.coarse`) and whether it differs from the full one (1/0).
+ModelPack = namedtuple(
+    "ModelPack", "balls rollers points tapered start_mats start_exps n_rows coarse has_coarse"
+)
 #: Kernel classes the compiled core can evaluate, by their ``row.kind``.
 SUPPORTED_KINDS = ("ball", "cylindrical", "tapered", "threaded")
 #: The numpy kernel class each compiled group mirrors. Matched by exact class: a subclass (a kernel at
@@ -61,8 +65,12 @@ KERNEL_GROUPS = {
 }
 
 
-def pack_model(kernels) -> ModelPack | None:
-    """The compiled form of a bearing's row kernels, or None if a row kind has no compiled core."""
+def pack_model(kernels, coarse=None) -> ModelPack | None:
+    """The compiled form of a bearing's row kernels, or None if a row kind has no compiled core.
+
+    ``coarse``: the kernels of the coarse model (:func:`bearingkit.analysis.coarse.coarse_kernels`,
+    row for row; only its cylindrical rows differ), or None for no coarse stage.
+    """
     groups = {kind: ([], []) for kind in SUPPORTED_KINDS}
     for r, k in enumerate(kernels):
         kind = KERNEL_GROUPS.get(type(k))
@@ -78,14 +86,22 @@ def pack_model(kernels) -> ModelPack | None:
     mats = [
         sum(np.asarray(k.start_matrix, float) for k in kernels if float(k.start_exponent) == e) for e in exps
     ]
+    rollers = pack_rollers(*groups["cylindrical"])
+    if coarse is None:
+        coarse_rollers, has_coarse = rollers, 0
+    else:
+        coarse_rollers = pack_rollers([coarse[r] for r in groups["cylindrical"][1]], groups["cylindrical"][1])
+        has_coarse = 1
     return ModelPack(
         pack_balls(*groups["ball"]),
-        pack_rollers(*groups["cylindrical"]),
+        rollers,
         pack_points(*groups["threaded"]),
         pack_tapered(*groups["tapered"]),
         np.ascontiguousarray(np.stack(mats)),
         np.array(exps),
         len(kernels),
+        coarse_rollers,
+        has_coarse,
     )
 
 
@@ -207,12 +223,13 @@ def _start(q, load, mp, scale, idx, max_step):
 def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
     """Damped Newton from q (updated in place) under ``load``; returns (converged, diverged, refused).
 
-    ``p`` = (rtol, max_iterations, max_step, limit, cone check on), ``cone`` the scaled contact
-    directions (n, M) on the free DOFs; ``stats`` (iterations, evaluations) are accumulated. The
-    last state is left in ws[4:] (force, jac, residual) and ws[8] (norm).
+    ``p`` = (rtol, max_iterations, max_step, limit, cone check on, coarse iterations, last step
+    unevaluated), ``cone`` the scaled contact directions (n, M) on the free DOFs; ``stats``
+    (iterations, evaluations) are accumulated. The last state is left in ws[4:] (force, jac,
+    residual) and ws[8] (norm).
     """
     force, jac, rowf, residual, tmp = ws[4], ws[5], ws[6], ws[7], ws[8]
-    rtol, max_it, max_step, limit, cone_on = p[0], int(p[1]), p[2], p[3], p[4]
+    rtol, max_it, max_step, limit, cone_on, blind = p[0], int(p[1]), p[2], p[3], p[4], p[6] > 0.0
     n = idx.shape[0]
     pot, norm = _state(c, q, load, mp, ws, inner, scale, idx, force, jac, rowf, residual)
     stats[1] += 1.0
@@ -267,6 +284,15 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
         for a in range(n):
             step[a] *= fac
             slope += g[a] * step[a]
+        if blind and it == max_it - 1:
+            # The coarse stage's last step is taken unevaluated: the full model evaluates its end.
+            for a in range(n):
+                q[idx[a]] += step[a] * scale[idx[a]]
+            qmax = 0.0
+            for i in range(5):
+                qmax = max(qmax, abs(q[i] / scale[i]))
+            diverged = qmax > limit
+            break
         t = 1.0
         for _ls in range(MAX_HALVINGS):
             cand[:] = q
@@ -291,6 +317,36 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
         diverged = qmax > limit
     tmp[0] = norm
     return converged, diverged, refused
+
+
+@njit(cache=True, error_model="numpy")
+def _coarse_stage(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
+    """The first Newton iterations on the coarse model from q (:mod:`bearingkit.analysis.coarse`).
+
+    The last coarse step is taken without evaluating the coarse model: the full model's first
+    evaluation is at its end. Returns the coarse iterate, or q itself where the coarse attempt
+    diverged or went non-finite (as the numpy reference's ``_coarse_start``). Its evaluations are
+    counted in stats[2].
+    """
+    # The same field types as mp (no literal), so _newton_case is compiled once for both models.
+    cm = ModelPack(
+        mp.balls, mp.coarse, mp.points, mp.tapered, mp.start_mats, mp.start_exps, mp.n_rows, mp.coarse,
+        mp.has_coarse,
+    )  # fmt: skip
+    pc = p.copy()
+    pc[1] = p[5]
+    pc[4] = 0.0  # the cone check belongs to the full model's iterations
+    pc[6] = 1.0  # the last coarse step is evaluated by the full model
+    qc = q.copy()
+    own = np.zeros(2)
+    _, div, _ = _newton_case(c, qc, load, cm, ws, inner, scale, idx, pc, cone, own)
+    stats[2] += own[1]
+    if div or not np.isfinite(ws[8][0]):
+        return q
+    for i in range(5):
+        if not np.isfinite(qc[i]):
+            return q
+    return qc
 
 
 @njit(cache=True, error_model="numpy")
@@ -320,14 +376,16 @@ def _solve_case(
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
     ``ws``: the thread's workspace (:func:`_workspace`). out_i[c] = (converged, diverged, refused,
-    broken, iterations, evaluations, norm).
+    broken, iterations, evaluations, norm, coarse evaluations).
     """
     ws[0][:, :] = 0.0  # the tapered warm start never crosses from one case to the next
     ws[1][:, :, :] = 0.0
     ws[2][:] = 0.0
     ws[3][:] = 0.0
-    stats = np.zeros(2)
+    stats = np.zeros(3)
     q = q0.copy() if given else _start(q0, load, mp, scale, idx, p[2])
+    if mp.has_coarse > 0 and p[5] > 0.0 and not given:
+        q = _coarse_stage(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
     conv, div, ref = _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
     if fracs.shape[0] > 0 and not conv and not ref:
         qc = q0.copy()
@@ -352,6 +410,7 @@ def _solve_case(
     out_i[c, 4] = stats[0]
     out_i[c, 5] = stats[1]
     out_i[c, 6] = norm
+    out_i[c, 7] = stats[2]
     # The tapered rollers' positions X at the returned q (NaN when the last evaluation was at
     # another point): the start of the per-roller loads (compiled_tapered.roller_loads).
     same = ws[3][0] > 0.0
@@ -373,8 +432,9 @@ def _solve_batch(
     p_G, p_d0, p_k, p_row,
     t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor, t_ffloor, t_cap,
     t_taylor, t_row, t_lc,
-    start_mats, start_exps, n_rows, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner,
-    out_x, block,
+    start_mats, start_exps, n_rows,
+    c_Ga, c_Gb, c_x, c_d0, c_cs, c_ns, c_row, c_reach, has_coarse,
+    scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x, block,
 ):  # fmt: skip
     n_cases = load.shape[0]
     for i in prange((n_cases + block - 1) // block):
@@ -386,7 +446,8 @@ def _solve_batch(
             t_gi, t_gf, t_d0i, t_d0e, t_dev, t_ns, t_bi, t_be, t_bf, t_cs, t_kf, t_fc, t_floor,
             t_ffloor, t_cap, t_taylor, t_row, t_lc
         )  # fmt: skip
-        mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows)
+        coarse = RollerPack(c_Ga, c_Gb, c_x, c_d0, c_cs, c_ns, c_row, c_reach)
+        mp = ModelPack(balls, rollers, points, tapered, start_mats, start_exps, n_rows, coarse, has_coarse)
         ws = _workspace(mp)
         for c in range(first, min(first + block, n_cases)):
             _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
@@ -395,7 +456,10 @@ def _solve_batch(
 
 def _flat(mp: ModelPack) -> tuple:
     """The pack's arrays in the parallel driver's argument order."""
-    return (*mp.balls, *mp.rollers, *mp.points, *mp.tapered, mp.start_mats, mp.start_exps, mp.n_rows)
+    return (
+        *mp.balls, *mp.rollers, *mp.points, *mp.tapered, mp.start_mats, mp.start_exps, mp.n_rows, *mp.coarse,
+        mp.has_coarse,
+    )  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
@@ -415,7 +479,10 @@ def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
     steps = options.continuation_steps
     return {
         "idx": idx,
-        "p": np.array([options.rtol, options.max_iterations, max_step, limit, cone_on], dtype=np.float64),
+        "p": np.array(
+            [options.rtol, options.max_iterations, max_step, limit, cone_on, options.coarse_iterations, 0.0],
+            dtype=np.float64,
+        ),
         "fracs": np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0),
         "cone": np.zeros((len(idx), 0)) if cone is None else np.ascontiguousarray(cone, dtype=np.float64),
         "flat": _flat(mp),
@@ -447,7 +514,8 @@ def solve_packed(
     block solved with one workspace.
 
     Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
-    ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations`` (C,) int, ``norm`` (C,),
+    ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations``, ``coarse_evaluations`` (C,)
+    int, ``norm`` (C,),
     ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers; ``roller_x``
     (C, T, 2): the tapered rollers' positions at q (NaN where unknown; T = 0 without tapered rows).
     """
@@ -455,31 +523,30 @@ def solve_packed(
     cache = {} if cache is None else cache
     if "idx" not in cache:
         cache.update(_constants(mp, free, max_step, limit, options, cone))
+        cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
+        cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
     out_q = np.empty((n, 5))
     out_f = np.empty((n, 5))
     out_j = np.empty((n, 5, 5))
-    out_i = np.empty((n, 7))
+    out_i = np.empty((n, 8))
     inner = np.zeros((n, 3))
     out_x = np.empty((n, mp.tapered.gf.shape[0], 2))
-    if "scale" not in cache:
-        cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
-        cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
     q0, load = np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64)
-    head = (q0, load, cache["free"])
     tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
     tail += (out_q, out_f, out_j, out_i, inner, out_x)
     if parallel:
-        _solve_batch(*head, *cache["flat"], *tail, np.int64(block))
+        _solve_batch(q0, load, cache["free"], *cache["flat"], *tail, np.int64(block))
     else:
-        args = (*head, mp, *tail)
         entry = cache.get("serial")
         if entry is None:
+            args = (q0, load, cache["free"], mp, *tail)
             _solve_serial(*args)
             cache["serial"] = _serial_entry(args)
         else:
-            entry(*args)
+            entry(q0, load, cache["free"], mp, *tail)
+    # One conversion each for the flags and the counts (columns: see _solve_case).
     flags = (out_i[:, :4] > 0.5).T
-    counts = out_i[:, 4:6].astype(int).T
+    counts = out_i[:, 4:8].astype(int).T
     return {
         "q": out_q,
         "force": out_f,
@@ -490,6 +557,7 @@ def solve_packed(
         "broken": flags[3],
         "iterations": counts[0],
         "evaluations": counts[1],
+        "coarse_evaluations": counts[3],
         "norm": out_i[:, 6],
         "inner": inner,
         "roller_x": out_x,

@@ -150,7 +150,8 @@ def newton(problem: Problem, q, load, active, iterations):
     """Damped Newton on the active cases; returns q, converged, last state, diverged and refused masks.
 
     ``refused`` marks the cases stopped because their load lies outside the contact cone (they are
-    also ``diverged``).
+    also ``diverged``). A problem with ``blind_last`` set (the coarse stage,
+    :mod:`bearingkit.analysis.coarse`) takes its last iteration's step without evaluating its end.
 
     Each iteration works on the cases still running only (kernels and loads restricted to them), so
     a batch costs what its unconverged cases cost.
@@ -195,6 +196,13 @@ def newton(problem: Problem, q, load, active, iterations):
         step = without_idle_mechanisms(h, g, step, noise)
         big = np.abs(step).max(axis=1)
         step *= np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300))[:, None]
+        if it == opts.max_iterations - 1 and getattr(problem, "blind_last", False):
+            # The coarse stage's last step is taken unevaluated (the full model evaluates its end).
+            new_q = q[cases].copy()
+            new_q[:, idx] += step * s[idx]
+            q[cases] = new_q
+            diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
+            break
         slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
         new_q, trial = _line_search(sp, qw, lw, stw, step, slope)
         q[cases] = new_q

@@ -20,6 +20,9 @@ system is well conditioned and the tolerance is one relative number: the residua
 
 from __future__ import annotations
 
+import copy
+import dataclasses
+import math
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -28,6 +31,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis import backend, cone
+from bearingkit.analysis.coarse import COARSE_ITERATIONS
 from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.newton import Problem, merge, newton, starting_point
 from bearingkit.analysis.solution import QuasiStaticResult
@@ -55,6 +59,10 @@ class SolverOptions:
     backend : str or None
         ``"auto"``, ``"compiled"`` or ``"numpy"`` (:mod:`bearingkit.analysis.backend`); None reads
         ``$BEARINGKIT_BACKEND`` (default ``"auto"``: the compiled core where it applies).
+    coarse_iterations : int
+        Newton iterations on the coarse model (sliced rollers at a few slices) before the full model's,
+        when no start is given (:mod:`bearingkit.analysis.coarse`); 0 starts the full model directly.
+        The equilibrium is the same to the tolerance ``rtol`` either way.
     """
 
     rtol: float = 1e-10
@@ -63,6 +71,7 @@ class SolverOptions:
     continuation_steps: int = 4
     divergence_limit: float = 0.5
     backend: str | None = None
+    coarse_iterations: int = COARSE_ITERATIONS
 
     def __post_init__(self):
         checks.positive("rtol", self.rtol)
@@ -73,6 +82,7 @@ class SolverOptions:
         checks.positive("divergence_limit", self.divergence_limit)
         if self.backend is not None:
             checks.one_of("backend", self.backend, backend.BACKENDS)
+        checks.integer("coarse_iterations", self.coarse_iterations, low=0)
 
 
 #: The options of a solve that gives none (one instance: building and checking them costs more than
@@ -213,39 +223,38 @@ def solve(
         from bearingkit.analysis.speed import model_at_speed
 
         model = model_at_speed(model, speed)
-    load = np.asarray(load, dtype=float)
-    if load.ndim < 2:
-        load = load.reshape(1, -1)
+    load = np.array(load, dtype=float, ndmin=2)  # a copy: the caller's array is never written to
     if load.shape[-1] != N_DOF:
         raise InputError(f"load (shape {load.shape}) must have 5 components (F_x, F_y, F_z, M_x, M_y)")
-    if not np.isfinite(load).all():
+    if not _all_finite(load):
         checks.finite("load", load, "N")  # raises, naming the values
     free_key = _free_key(free)
     n_cases = load.shape[0]
     if displacement is None:
         q0 = np.zeros((n_cases, N_DOF))
-        load = np.array(load, dtype=float)  # the caller's array is never written to
     else:
         q0 = np.asarray(displacement, dtype=float)
         q0 = np.array(np.broadcast_to(q0, (max(n_cases, q0.shape[0] if q0.ndim == 2 else 1), N_DOF)))
         load = np.array(np.broadcast_to(load, q0.shape))
         if not np.isfinite(q0).all():
             checks.finite("displacement", q0, "m")
-    free = np.array(free_key, bool)
-    n_cases = q0.shape[0]
     offsets = _offsets_for(model, raceway_offsets)
     plan = _plan(model, free_key, options, offsets)
+    free = plan.free.copy()
     _check_directions(plan, load)
 
-    iterations = np.zeros(n_cases, int)
     pack = _compiled_pack(model, options, offsets)
     if pack is not None:
-        q, converged, st, diverged, broken = _solve_compiled(
-            plan, pack, q0, load, free, options, displacement is not None, iterations
+        q, converged, st, diverged, broken, iterations = _solve_compiled(
+            plan, pack, q0, load, options, displacement is not None
         )
     else:
+        iterations = np.zeros(q0.shape[0], int)
         problem = plan.problem(load)
-        q, converged, st, diverged = _solve_numpy(problem, q0, load, free, options, displacement, iterations)
+        coarse = backend.coarse_of(model) if offsets is None else None
+        q, converged, st, diverged = _solve_numpy(
+            problem, q0, load, free, options, displacement, iterations, coarse
+        )
         broken = None
     # A case whose iterate or residual went non-finite failed numerically: report it, never return NaN.
     if broken is None:
@@ -253,7 +262,7 @@ def solve(
         if broken.any():
             q = np.where(broken[:, None], q0, q)
             converged = converged & ~broken
-    reasons = [None] * n_cases
+    reasons = [None] * q0.shape[0]
     if not converged.all():
         problem = plan.problem(load)
         for c in np.flatnonzero(~converged):
@@ -265,7 +274,7 @@ def solve(
                 )
             )
     reaction = load
-    if not free.all():
+    if not plan.all_free:
         reaction[:, ~free] = -st["force"][:, ~free]
     result = QuasiStaticResult(
         model=model,
@@ -280,6 +289,7 @@ def solve(
         references=plan.references,
         offsets=offsets,
         evaluations=st.get("evaluations"),
+        coarse_evaluations=st.get("coarse_evaluations"),
         _roller_x=st.get("roller_x"),
     )
     if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
@@ -293,9 +303,16 @@ def solve(
     return result
 
 
-def _solve_numpy(problem: Problem, q0, load, free, options: SolverOptions, displacement, iterations):
-    """The numpy reference: start, chunked attempt, load continuation of the failed cases."""
+def _solve_numpy(
+    problem: Problem, q0, load, free, options: SolverOptions, displacement, iterations, coarse=None
+):
+    """The numpy reference: start, coarse stage, chunked attempt, load continuation of the failed cases.
+
+    ``coarse``: the coarse model's kernels (:mod:`bearingkit.analysis.coarse`) or None.
+    """
     start = q0 if displacement is not None else starting_point(problem, load, q0)
+    if coarse is not None and displacement is None and options.coarse_iterations > 0:
+        start = _coarse_start(problem, coarse, start, load)
     q, converged, st, diverged, refused = _attempt(problem, start, load, iterations)
     if options.continuation_steps and not (converged | refused).all():
         # Load continuation from the unloaded start for the failed cases (a load outside the contact
@@ -311,6 +328,19 @@ def _solve_numpy(problem: Problem, q0, load, free, options: SolverOptions, displ
         converged = np.where(retry, conv_c, converged)
         diverged = np.where(retry, div_c, diverged)
     return q, converged, st, diverged
+
+
+def _coarse_start(problem: Problem, coarse: list, start, load):
+    """``coarse_iterations`` Newton iterations on the coarse model from ``start``, the last step taken
+    without evaluating its end; a case that diverges or goes non-finite there keeps ``start`` (as the
+    compiled core)."""
+    rough = copy.copy(problem)
+    rough.kernels = coarse
+    rough.options = dataclasses.replace(problem.options, max_iterations=problem.options.coarse_iterations)
+    rough.blind_last = True
+    q, _, st, diverged, _ = _attempt(rough, start, load, np.zeros(len(start), int))
+    ok = np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]) & ~diverged
+    return np.where(ok[:, None], q, start)
 
 
 def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
@@ -329,17 +359,19 @@ def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
     return pack
 
 
-def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
-    """The compiled core over every case (one thread per core); the numpy reference's outputs."""
-    from bearingkit.analysis.compiled_newton import solve_packed
-
+def _solve_compiled(plan, pack, q0, load, options, given):
+    """The compiled core over every case (one thread per core); the numpy reference's outputs and the
+    Newton iterations per case."""
     n = load.shape[0]
     if "lead" not in plan.compiled:
         axes = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]}
         plan.compiled["lead"] = axes - {1}
-    _check_case_axis(plan.compiled["lead"], n)
+    if plan.compiled["lead"]:
+        _check_case_axis(plan.compiled["lead"], n)
     threads = min(solver_threads(), n) if n > 1 else 1
-    args = (pack, q0, load, free, plan.scale, plan.max_step, plan.limit, options, plan.cone_matrix, given)
+    solve_packed = backend.compiled_module().solve_packed
+    args = (pack, q0, load, plan.free, plan.scale, plan.max_step, plan.limit, options, plan.cone_matrix)
+    args += (given,)
     if threads > 1:
         import numba
 
@@ -355,12 +387,24 @@ def _solve_compiled(plan, pack, q0, load, free, options, given, iterations):
             numba.set_parallel_chunksize(previous)
     else:
         out = solve_packed(*args, parallel=False, cache=plan.compiled)
-    iterations += out["iterations"]
     state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
+    state["coarse_evaluations"] = out["coarse_evaluations"]
     if plan.tapered:
         _record_inner(plan.kernels, out["inner"])
         state["roller_x"] = out["roller_x"]
-    return out["q"], out["converged"], state, out["diverged"], out["broken"]
+    return out["q"], out["converged"], state, out["diverged"], out["broken"], out["iterations"]
+
+
+#: Batches up to this many load values are checked for finiteness in Python (a numpy reduction costs
+#: more than the whole check on a single case's five values).
+_PY_CHECK_VALUES = 64
+
+
+def _all_finite(a: np.ndarray) -> bool:
+    """Whether every value of ``a`` is finite (cheap for a few values)."""
+    if a.size <= _PY_CHECK_VALUES:
+        return all(map(math.isfinite, a.ravel().tolist()))
+    return bool(np.isfinite(a).all())
 
 
 def _check_case_axis(lead: set, n_cases: int) -> None:
@@ -411,6 +455,7 @@ class _Plan:
         ref = Problem(model.kernels, np.zeros((1, N_DOF)), free, options, offsets)
         self.kernels = ref.kernels
         self.free, self.options, self.offsets = free, options, offsets
+        self.all_free = bool(free.all())
         self.scale, self.idx = ref.scale, ref.idx
         self.max_step, self.limit = ref.max_step, ref.limit
         reach = _model_cache(
@@ -438,7 +483,13 @@ def _plan(model: BearingModel, free_key: tuple, options: SolverOptions, offsets)
     """The model's cached :class:`_Plan` (a new one when raceway offsets are imposed: they vary)."""
     if offsets is not None:
         return _Plan(model, free_key, options, offsets)
-    return _model_cache(model, ("plan", free_key, options), lambda: _Plan(model, free_key, options, None))
+    # The last plan by identity first: hashing the options costs more than a small solve's Python.
+    last = model.__dict__.get("_last_plan")
+    if last is not None and last[0] is options and last[1] == free_key:
+        return last[2]
+    plan = _model_cache(model, ("plan", free_key, options), lambda: _Plan(model, free_key, options, None))
+    model.__dict__["_last_plan"] = (options, free_key, plan)
+    return plan
 
 
 def _cone_matrix(problem: Problem):

@@ -147,7 +147,10 @@ class QuasiStaticResult:
         displacement or the row forces skip the per-contact Hertz post-processing; above
         :data:`STATE_CHUNK` cases streamed, see the module docstring).
     evaluations : ndarray (C,) of int or None
-        Row evaluations (force and stiffness of every row) the solve took per case.
+        Row evaluations (force and stiffness of every row) the solve took per case (compiled core).
+    coarse_evaluations : ndarray (C,) of int or None
+        Evaluations of the coarse model in the first Newton iterations
+        (:mod:`bearingkit.analysis.coarse`; compiled core), not counted in ``evaluations``.
     stiffness : ndarray (C, 5, 5)
         Tangent stiffness −∂(contact force)/∂q [N/m, N, N·m/rad …] at the solution.
     free : ndarray (5,) of bool
@@ -165,6 +168,7 @@ class QuasiStaticResult:
     references: tuple = field(default_factory=tuple)
     offsets: list | None = field(default=None, repr=False)
     evaluations: np.ndarray | None = field(default=None, repr=False)
+    coarse_evaluations: np.ndarray | None = field(default=None, repr=False)
     _rows: list | None = field(default=None, repr=False)
     _row_loads: dict = field(default_factory=dict, repr=False)
     #: Tapered rollers' positions X (C, T, 2) at the solution from the compiled core (NaN where
@@ -314,4 +318,3 @@ class QuasiStaticResult:
                 )
             )
         return pd.concat(frames, ignore_index=True)
-
