@@ -110,3 +110,20 @@ def test_the_coarse_model_is_built_once_per_bearing():
 def test_coarse_iterations_must_be_a_non_negative_integer():
     with pytest.raises(InputError, match="coarse_iterations"):
         SolverOptions(coarse_iterations=-1)
+
+
+def test_a_long_coarse_stage_leaves_the_cone_check_to_the_full_model_in_both_cores():
+    """Past the cone-check iteration (8) the coarse stage goes on in both cores; the full model refuses."""
+    from bearingkit.bearings.standard import cylindrical_roller_thrust
+
+    thrust = cylindrical_roller_thrust(
+        n_elements=20, element_diameter=0.01, effective_length=0.01, pitch_diameter=0.08
+    )
+    loads = load_vector(F_z=[-5000.0, 5000.0])  # the first pulls the rings apart: no contact can carry it
+    long = dict(coarse_iterations=10, continuation_steps=0)
+    a = solve(thrust, loads, options=SolverOptions(backend="compiled", **long))
+    b = solve(thrust, loads, options=SolverOptions(backend="numpy", **long))
+    assert list(a.converged) == [False, True] and list(b.converged) == [False, True]
+    np.testing.assert_array_equal(a.iterations, b.iterations)
+    scale = np.abs(b.displacement).max(axis=1)
+    np.testing.assert_array_less(np.abs(a.displacement - b.displacement).max(axis=1), 1e-12 * scale)

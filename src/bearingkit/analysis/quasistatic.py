@@ -338,6 +338,7 @@ def _coarse_start(problem: Problem, coarse: list, start, load):
     rough.kernels = coarse
     rough.options = dataclasses.replace(problem.options, max_iterations=problem.options.coarse_iterations)
     rough.blind_last = True
+    rough.outside_cone = None  # the cone check belongs to the full model's iterations (as compiled)
     q, _, st, diverged, _ = _attempt(rough, start, load, np.zeros(len(start), int))
     ok = np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]) & ~diverged
     return np.where(ok[:, None], q, start)
