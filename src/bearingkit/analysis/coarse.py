@@ -12,7 +12,8 @@ start, not the equilibrium (results agree with the plain start to the solver tol
 
 Measured on the seed-000 composite bearing under 2,000 random loads (issue 19): 6.4 full
 evaluations per case (at most 14) become 4.0 full (at most 6) + 2.0 coarse ones, a coarse
-evaluation costing about 55 % of a full one (the balls are not coarsened): serial CPU per case
+evaluation costing about 60 % of a full one (7.3 against 11.7 µs: the balls and the per-roller
+work are not reduced by coarsening): serial CPU per case
 94 → 81 µs. A YRT turntable: 6.6 → 4.1 + 2.1; a cylindrical roller bearing with 20 µm clearance
 under radial loads: 9.6 → 4.7 + 4.9.
 
@@ -34,8 +35,9 @@ from bearingkit.rows.cylindrical import CylindricalKernel
 #: (4, 6) took 9–12 coarse evaluations (line-search halvings) for two iterations on the seed-000
 #: bearing against 3 for 5 or 7 (issue 19; the cause was not pursued).
 COARSE_SLICES = 5
-#: Rows with at least this many slices are coarsened (3 × :data:`COARSE_SLICES`: below it a coarse
-#: evaluation costs too large a share of a full one to repay the extra evaluations).
+#: Rows with at least this many slices are coarsened. Chosen, not measured: 3 × :data:`COARSE_SLICES`,
+#: since a coarse evaluation already costs ~60 % of a full one at 20 slices and its share grows as
+#: the full row has fewer slices.
 COARSE_FROM_SLICES = 15
 #: Newton iterations on the coarse model. 1 left 4.9 full evaluations per seed-000 case, 2 left
 #: 4.0 and 3 left 4.0 (issue 19), so a third does not repay its evaluation.
