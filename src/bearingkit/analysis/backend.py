@@ -8,7 +8,9 @@
 * ``"numpy"``: always the numpy reference (the test oracle of the compiled core).
 
 If numba is not installed (or fails to import), ``auto`` and ``compiled`` fall back to numpy with one
-warning per process.
+warning per process. The choice is made once per bearing and solver options (the solver keeps it
+in its per-model plan, :mod:`bearingkit.analysis.quasistatic`): the environment variable is read
+when a bearing is first solved with those options, not at every solve.
 """
 
 from __future__ import annotations

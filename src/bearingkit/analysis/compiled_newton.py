@@ -52,6 +52,8 @@ from numba import njit, prange  # noqa: E402
 ModelPack = namedtuple(
     "ModelPack", "balls rollers points tapered start_mats start_exps n_rows coarse has_coarse"
 )
+#: The raw outputs of :func:`solve_packed` (see there).
+PackedSolution = namedtuple("PackedSolution", "q force stiffness flags counts norm bad inner roller_x")
 #: Kernel classes the compiled core can evaluate, by their ``row.kind``.
 SUPPORTED_KINDS = ("ball", "cylindrical", "tapered", "threaded")
 #: The numpy kernel class each compiled group mirrors. Matched by exact class: a subclass (a kernel at
@@ -371,12 +373,14 @@ def _workspace(mp):
 
 @njit(cache=True, error_model="numpy")
 def _solve_case(
-    c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x
-):
+    c, q0, load, free, mp, ws, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r,
+    inner, out_x,
+):  # fmt: skip
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
-    ``ws``: the thread's workspace (:func:`_workspace`). out_i[c] = (converged, diverged, refused,
-    broken, iterations, evaluations, norm, coarse evaluations).
+    ``ws``: the thread's workspace (:func:`_workspace`). out_k[c] the stiffness (−Jacobian);
+    out_b[:, c] = (converged, diverged, refused, broken), out_n[:, c] = (iterations, evaluations,
+    coarse evaluations), out_r[c] the residual norm. Returns 1 if the case did not converge, else 0.
     """
     ws[0][:, :] = 0.0  # the tapered warm start never crosses from one case to the next
     ws[1][:, :, :] = 0.0
@@ -402,15 +406,18 @@ def _solve_case(
         conv = False
     out_q[c] = q
     out_f[c] = ws[4]
-    out_j[c] = ws[5]
-    out_i[c, 0] = conv
-    out_i[c, 1] = div
-    out_i[c, 2] = ref
-    out_i[c, 3] = broken
-    out_i[c, 4] = stats[0]
-    out_i[c, 5] = stats[1]
-    out_i[c, 6] = norm
-    out_i[c, 7] = stats[2]
+    jac = ws[5]
+    for i in range(5):
+        for j in range(5):
+            out_k[c, i, j] = -jac[i, j]
+    out_b[0, c] = conv
+    out_b[1, c] = div
+    out_b[2, c] = ref
+    out_b[3, c] = broken
+    out_n[0, c] = np.int64(stats[0])
+    out_n[1, c] = np.int64(stats[1])
+    out_n[2, c] = np.int64(stats[2])
+    out_r[c] = norm
     # The tapered rollers' positions X at the returned q (NaN when the last evaluation was at
     # another point): the start of the per-roller loads (compiled_tapered.roller_loads).
     same = ws[3][0] > 0.0
@@ -419,6 +426,7 @@ def _solve_case(
     for t in range(out_x.shape[1]):
         out_x[c, t, 0] = ws[0][t, 0] if same else np.nan
         out_x[c, t, 1] = ws[0][t, 1] if same else np.nan
+    return 0 if conv else 1
 
 
 # The parfor wrapper of ``prange`` takes arrays and scalars only, not namedtuples of arrays: the
@@ -434,7 +442,7 @@ def _solve_batch(
     t_taylor, t_row, t_lc,
     start_mats, start_exps, n_rows,
     c_Ga, c_Gb, c_x, c_d0, c_cs, c_ns, c_row, c_reach, has_coarse,
-    scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x, block,
+    scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner, out_x, block,
 ):  # fmt: skip
     n_cases = load.shape[0]
     for i in prange((n_cases + block - 1) // block):
@@ -451,7 +459,7 @@ def _solve_batch(
         ws = _workspace(mp)
         for c in range(first, min(first + block, n_cases)):
             _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
-                        out_q, out_f, out_j, out_i, inner[c], out_x)  # fmt: skip
+                        out_q, out_f, out_k, out_b, out_n, out_r, inner[c], out_x)  # fmt: skip
 
 
 def _flat(mp: ModelPack) -> tuple:
@@ -464,12 +472,16 @@ def _flat(mp: ModelPack) -> tuple:
 
 @njit(cache=True, error_model="numpy")
 def _solve_serial(
-    q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_j, out_i, inner, out_x
-):
+    q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner,
+    out_x,
+):  # fmt: skip
+    """Every case on the calling thread; returns the number of cases that did not converge."""
     ws = _workspace(mp)
+    bad = 0
     for c in range(load.shape[0]):
-        _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
-                    out_q, out_f, out_j, out_i, inner[c], out_x)  # fmt: skip
+        bad += _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
+                           out_q, out_f, out_k, out_b, out_n, out_r, inner[c], out_x)  # fmt: skip
+    return bad
 
 
 def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
@@ -513,9 +525,9 @@ def solve_packed(
     not depend on the loads. ``parallel``: blocks of ``block`` cases are handed to the threads, each
     block solved with one workspace.
 
-    Returns a dict: ``q`` (C, 5), ``force`` (C, 5), ``jac`` (C, 5, 5), ``converged``, ``diverged``,
-    ``refused``, ``broken`` (C,) bool, ``iterations``, ``evaluations``, ``coarse_evaluations`` (C,)
-    int, ``norm`` (C,),
+    Returns a :data:`PackedSolution`: ``q``, ``force`` (C, 5), ``stiffness`` (C, 5, 5), ``flags``
+    (4, C) bool (converged, diverged, refused, broken), ``counts`` (3, C) int (Newton iterations,
+    evaluations, coarse evaluations), ``norm`` (C,), ``bad`` the number of unconverged cases,
     ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers; ``roller_x``
     (C, T, 2): the tapered rollers' positions at q (NaN where unknown; T = 0 without tapered rows).
     """
@@ -525,49 +537,42 @@ def solve_packed(
         cache.update(_constants(mp, free, max_step, limit, options, cone))
         cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
         cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
-    out_q = np.empty((n, 5))
-    out_f = np.empty((n, 5))
-    out_j = np.empty((n, 5, 5))
-    out_i = np.empty((n, 8))
-    inner = np.zeros((n, 3))
-    out_x = np.empty((n, mp.tapered.gf.shape[0], 2))
-    q0, load = np.ascontiguousarray(q0, dtype=np.float64), np.ascontiguousarray(load, dtype=np.float64)
+    n_t = mp.tapered.gf.shape[0]
+    if n_t == 0 and n == 1 and "untouched" in cache:
+        # Written by nothing without tapered rows: one shared pair, not two allocations per solve.
+        inner, out_x = cache["untouched"]
+    else:
+        inner, out_x = np.zeros((n, 3)), np.empty((n, n_t, 2))
+        if n_t == 0 and n == 1:
+            cache["untouched"] = (inner, out_x)
+    q, force, stiffness = np.empty((n, 5)), np.empty((n, 5)), np.empty((n, 5, 5))
+    flags, counts, norm = np.empty((4, n), np.bool_), np.empty((3, n), np.int64), np.empty(n)
+    # The serial entry point skips numba's type checks: its arguments must keep their exact types.
+    if load.dtype != np.float64 or not load.flags.c_contiguous:
+        load = np.ascontiguousarray(load, dtype=np.float64)
+    if q0.dtype != np.float64 or not q0.flags.c_contiguous:
+        q0 = np.ascontiguousarray(q0, dtype=np.float64)
     tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
-    tail += (out_q, out_f, out_j, out_i, inner, out_x)
+    tail += (q, force, stiffness, flags, counts, norm, inner, out_x)
     if parallel:
         _solve_batch(q0, load, cache["free"], *cache["flat"], *tail, np.int64(block))
+        bad = n - int(np.count_nonzero(flags[0]))
     else:
         entry = cache.get("serial")
         if entry is None:
             args = (q0, load, cache["free"], mp, *tail)
-            _solve_serial(*args)
+            bad = _solve_serial(*args)
             cache["serial"] = _serial_entry(args)
         else:
-            entry(q0, load, cache["free"], mp, *tail)
-    # One conversion each for the flags and the counts (columns: see _solve_case).
-    flags = (out_i[:, :4] > 0.5).T
-    counts = out_i[:, 4:8].astype(int).T
-    return {
-        "q": out_q,
-        "force": out_f,
-        "jac": out_j,
-        "converged": flags[0],
-        "diverged": flags[1],
-        "refused": flags[2],
-        "broken": flags[3],
-        "iterations": counts[0],
-        "evaluations": counts[1],
-        "coarse_evaluations": counts[3],
-        "norm": out_i[:, 6],
-        "inner": inner,
-        "roller_x": out_x,
-    }
+            bad = entry(q0, load, cache["free"], mp, *tail)
+    return PackedSolution(q, force, stiffness, flags, counts, norm, bad, inner, out_x)
 
 
 __all__ = [
     "SUPPORTED_KINDS",
     "BallPack",
     "ModelPack",
+    "PackedSolution",
     "PointPack",
     "RollerPack",
     "TaperedPack",

@@ -240,14 +240,18 @@ def solve(
             checks.finite("displacement", q0, "m")
     offsets = _offsets_for(model, raceway_offsets)
     plan = _plan(model, free_key, options, offsets)
-    free = plan.free.copy()
+    free = plan.free  # read-only, shared by the results of this plan
     _check_directions(plan, load)
 
-    pack = _compiled_pack(model, options, offsets)
-    if pack is not None:
-        q, converged, st, diverged, broken, iterations = _solve_compiled(
-            plan, pack, q0, load, options, displacement is not None
-        )
+    extra = {}
+    if plan.pack is not None:
+        out = _solve_compiled(plan, q0, load, options, displacement is not None)
+        q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
+        converged, iterations = out.flags[0], out.counts[0]
+        extra["evaluations"], extra["coarse_evaluations"] = out.counts[1], out.counts[2]
+        if plan.tapered:
+            extra["_roller_x"] = out.roller_x
+        diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
     else:
         iterations = np.zeros(q0.shape[0], int)
         problem = plan.problem(load)
@@ -255,51 +259,49 @@ def solve(
         q, converged, st, diverged = _solve_numpy(
             problem, q0, load, free, options, displacement, iterations, coarse
         )
-        broken = None
-    # A case whose iterate or residual went non-finite failed numerically: report it, never return NaN.
-    if broken is None:
-        broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(st["norm"]))
+        norm, force, stiffness = st["norm"], st["force"], -st["jac"]
+        # A case whose iterate or residual went non-finite failed numerically: report it, never NaN.
+        broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(norm))
         if broken.any():
             q = np.where(broken[:, None], q0, q)
             converged = converged & ~broken
+        bad = q.shape[0] - int(np.count_nonzero(converged))
     reasons = [None] * q0.shape[0]
-    if not converged.all():
+    if bad:
         problem = plan.problem(load)
         for c in np.flatnonzero(~converged):
             reasons[c] = (
                 "numerical failure: the iterate became non-finite (load or offsets far beyond the contacts)"
                 if broken[c]
                 else cone.diagnose(
-                    problem.kernels, problem.scale, problem.idx, load[c], bool(diverged[c]), st["norm"][c]
+                    problem.kernels, problem.scale, problem.idx, load[c], bool(diverged[c]), norm[c]
                 )
             )
     reaction = load
     if not plan.all_free:
-        reaction[:, ~free] = -st["force"][:, ~free]
+        reaction[:, ~free] = -force[:, ~free]
     result = QuasiStaticResult(
         model=model,
         load=reaction,
         displacement=q,
         converged=converged,
         iterations=iterations,
-        residual_norm=st["norm"],
+        residual_norm=norm,
         reason=reasons,
-        stiffness=-st["jac"],
+        stiffness=stiffness,
         free=free,
         references=plan.references,
         offsets=offsets,
-        evaluations=st.get("evaluations"),
-        coarse_evaluations=st.get("coarse_evaluations"),
-        _roller_x=st.get("roller_x"),
+        **extra,
     )
     if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
         from bearingkit.analysis.speed import flag_beyond_model
 
         flag_beyond_model(result)
         converged = result.converged
-    if raise_on_failure and not converged.all():
-        bad = int(np.flatnonzero(~converged)[0])
-        raise ConvergenceError(f"case {bad} did not converge: {reasons[bad]}", result)
+    if raise_on_failure and (bad or speed is not None) and not converged.all():
+        bad_case = int(np.flatnonzero(~converged)[0])
+        raise ConvergenceError(f"case {bad_case} did not converge: {reasons[bad_case]}", result)
     return result
 
 
@@ -360,10 +362,11 @@ def _compiled_pack(model: BearingModel, options: SolverOptions, offsets):
     return pack
 
 
-def _solve_compiled(plan, pack, q0, load, options, given):
-    """The compiled core over every case (one thread per core); the numpy reference's outputs and the
-    Newton iterations per case."""
+def _solve_compiled(plan, q0, load, options, given):
+    """The compiled core over every case (one thread per core): its
+    :data:`~bearingkit.analysis.compiled_newton.PackedSolution`."""
     n = load.shape[0]
+    pack = plan.pack
     if "lead" not in plan.compiled:
         axes = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]}
         plan.compiled["lead"] = axes - {1}
@@ -388,12 +391,9 @@ def _solve_compiled(plan, pack, q0, load, options, given):
             numba.set_parallel_chunksize(previous)
     else:
         out = solve_packed(*args, parallel=False, cache=plan.compiled)
-    state = {"norm": out["norm"], "force": out["force"], "jac": out["jac"], "evaluations": out["evaluations"]}
-    state["coarse_evaluations"] = out["coarse_evaluations"]
     if plan.tapered:
-        _record_inner(plan.kernels, out["inner"])
-        state["roller_x"] = out["roller_x"]
-    return out["q"], out["converged"], state, out["diverged"], out["broken"], out["iterations"]
+        _record_inner(plan.kernels, out.inner)
+    return out
 
 
 #: Batches up to this many load values are checked for finiteness in Python (a numpy reduction costs
@@ -453,6 +453,7 @@ class _Plan:
 
     def __init__(self, model: BearingModel, free_key: tuple, options: SolverOptions, offsets):
         free = np.array(free_key, bool)
+        free.flags.writeable = False  # shared by every result of this plan
         ref = Problem(model.kernels, np.zeros((1, N_DOF)), free, options, offsets)
         self.kernels = ref.kernels
         self.free, self.options, self.offsets = free, options, offsets
@@ -468,6 +469,9 @@ class _Plan:
         self.tapered = any(hasattr(k, "inner_stats") for k in self.kernels)
         self._cone = None
         self.compiled = {}  # compiled core's constant arguments (compiled_newton.solve_packed)
+        # The compiled form, or None for the numpy reference: the backend is resolved once per plan
+        # (so $BEARINGKIT_BACKEND is read when a bearing is first solved with these options).
+        self.pack = _compiled_pack(model, options, offsets)
 
     @property
     def cone_matrix(self):
