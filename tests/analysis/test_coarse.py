@@ -1,7 +1,8 @@
 """The coarse stage of the solver (bearingkit.analysis.coarse): it moves the start, not the equilibrium.
 
 Both cores run the first Newton iterations on the bearing with its sliced rollers at a few slices;
-the full model then converges to ``rtol`` as before. Checked here: which rows are coarsened, that
+the full model then converges to ``rtol`` as before. Checked here: which rows are coarsened (and
+thinned), that
 the equilibrium and stiffness are those of a solve without the stage (to the solver tolerance),
 that the stage saves full evaluations, that the two cores still agree step by step, and that a
 given start or a disabled stage runs no coarse evaluation.
@@ -11,7 +12,7 @@ import numpy as np
 import pytest
 
 from bearingkit.analysis import backend
-from bearingkit.analysis.coarse import COARSE_SLICES, coarse_kernels
+from bearingkit.analysis.coarse import COARSE_SLICES, COARSE_THIN_FROM, coarse_kernels
 from bearingkit.analysis.model import BearingModel
 from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.standard import cylindrical_roller, deep_groove_ball
@@ -43,10 +44,21 @@ def test_only_finely_sliced_cylindrical_rows_are_coarsened():
     coarse = coarse_kernels(model.kernels)
     for fine, rough, row in zip(model.kernels, coarse, model.rows, strict=True):
         if row.kind == "cylindrical":
-            assert rough is not fine and rough.shape == (row.n_elements, COARSE_SLICES)
-            np.testing.assert_array_equal(rough.Ga, fine.Ga)  # the same rollers, fewer slices
+            # Rows of 31 and 97 rollers: thinned to ⌈Z/2⌉ rollers, fewer slices, the same total
+            # line stiffness (c_s scales with the slice width and the rollers each stands for).
+            z_coarse = -(-row.n_elements // 2)
+            assert row.n_elements >= COARSE_THIN_FROM
+            assert rough is not fine and rough.shape == (z_coarse, COARSE_SLICES)
+            total = lambda k: float(k.c_s.ravel()[0]) * k.shape[0] * k.shape[1]  # noqa: E731
+            assert total(rough) == pytest.approx(total(fine), rel=1e-14)
         else:
             assert rough is fine
+    # A row of fewer rollers keeps them: the same rollers, fewer slices.
+    nu = _nu_bearing()
+    (fine,), (rough,) = nu.kernels, coarse_kernels(nu.kernels)
+    assert nu.rows[0].n_elements < COARSE_THIN_FROM and rough.shape == (16, COARSE_SLICES)
+    np.testing.assert_array_equal(rough.Ga, fine.Ga)
+    assert float(rough.c_s.ravel()[0]) == pytest.approx(4 * float(fine.c_s.ravel()[0]), rel=1e-14)
     ball = deep_groove_ball(n_elements=9, element_diameter=0.0079, pitch_diameter=0.039)
     assert coarse_kernels(ball.kernels) is None
     assert coarse_kernels(_nu_bearing(n_slices=10).kernels) is None  # too few slices to pay

@@ -231,7 +231,8 @@ def solve(
     free_key = _free_key(free)
     n_cases = load.shape[0]
     if displacement is None:
-        q0 = np.zeros((n_cases, N_DOF))
+        # The compiled core only reads q0: one zero start per plan serves every single solve.
+        q0 = _ZERO_START if n_cases == 1 else np.zeros((n_cases, N_DOF))
     else:
         q0 = np.asarray(displacement, dtype=float)
         q0 = np.array(np.broadcast_to(q0, (max(n_cases, q0.shape[0] if q0.ndim == 2 else 1), N_DOF)))
@@ -254,6 +255,7 @@ def solve(
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
     else:
         iterations = np.zeros(q0.shape[0], int)
+        q0 = q0.copy() if q0 is _ZERO_START else q0  # the shared start stays untouched
         problem = plan.problem(load)
         coarse = backend.coarse_of(model) if offsets is None else None
         q, converged, st, diverged = _solve_numpy(
@@ -366,16 +368,12 @@ def _solve_compiled(plan, q0, load, options, given):
     """The compiled core over every case (one thread per core): its
     :data:`~bearingkit.analysis.compiled_newton.PackedSolution`."""
     n = load.shape[0]
-    pack = plan.pack
-    if "lead" not in plan.compiled:
-        axes = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]}
-        plan.compiled["lead"] = axes - {1}
-    if plan.compiled["lead"]:
-        _check_case_axis(plan.compiled["lead"], n)
+    if plan.lead:
+        _check_case_axis(plan.lead, n)
+    solve_packed = plan.solve_packed
+    args = (plan.pack, q0, load, plan.free, plan.scale, plan.max_step, plan.limit, options)
+    args += (plan.cone_matrix, given)
     threads = min(solver_threads(), n) if n > 1 else 1
-    solve_packed = backend.compiled_module().solve_packed
-    args = (pack, q0, load, plan.free, plan.scale, plan.max_step, plan.limit, options, plan.cone_matrix)
-    args += (given,)
     if threads > 1:
         import numba
 
@@ -390,11 +388,15 @@ def _solve_compiled(plan, q0, load, options, given):
         finally:
             numba.set_parallel_chunksize(previous)
     else:
-        out = solve_packed(*args, parallel=False, cache=plan.compiled)
+        out = solve_packed(*args, False, plan.compiled)
     if plan.tapered:
         _record_inner(plan.kernels, out.inner)
     return out
 
+
+#: The zero start of a single case (never written: the numpy path copies its start, the compiled
+#: core reads it).
+_ZERO_START = np.zeros((1, N_DOF))
 
 #: Batches up to this many load values are checked for finiteness in Python (a numpy reduction costs
 #: more than the whole check on a single case's five values).
@@ -402,9 +404,15 @@ _PY_CHECK_VALUES = 64
 
 
 def _all_finite(a: np.ndarray) -> bool:
-    """Whether every value of ``a`` is finite (cheap for a few values)."""
+    """Whether every value of ``a`` is finite (cheap for a few values).
+
+    For a few values, their sum is tested: it is finite when they all are, and a finite sum is
+    never the sum of a non-finite value. An overflowing sum of finite values (beyond 1e308) tests the
+    values one by one.
+    """
     if a.size <= _PY_CHECK_VALUES:
-        return all(map(math.isfinite, a.ravel().tolist()))
+        values = a.ravel().tolist()
+        return math.isfinite(sum(values)) or all(map(math.isfinite, values))
     return bool(np.isfinite(a).all())
 
 
@@ -471,7 +479,11 @@ class _Plan:
         self.compiled = {}  # compiled core's constant arguments (compiled_newton.solve_packed)
         # The compiled form, or None for the numpy reference: the backend is resolved once per plan
         # (so $BEARINGKIT_BACKEND is read when a bearing is first solved with these options).
-        self.pack = _compiled_pack(model, options, offsets)
+        self.pack = pack = _compiled_pack(model, options, offsets)
+        if pack is not None:
+            self.solve_packed = backend.compiled_module().solve_packed
+            # Case-axis lengths of per-case geometry (empty when every row's geometry is shared).
+            self.lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
 
     @property
     def cone_matrix(self):
