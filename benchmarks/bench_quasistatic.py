@@ -312,10 +312,11 @@ def arithmetic_limit(model, res, evaluations: float, coarse_evaluations: float =
     ninth root and 12 flops; per roller 20 flops for its approach and slope, per touching roller
     230 for its force and 5×5 stiffness; per ball 30 flops, per loaded ball 170 and two square roots
     (counted as roots). A coarse evaluation (:mod:`bearingkit.analysis.coarse`) counts the same with
-    the loaded slices of a coarsened row scaled by COARSE_SLICES / n_slices. Rates:
+    the loaded slices of a coarsened row scaled by COARSE_SLICES / n_slices, and its rollers, loaded
+    slices and touching rollers by ⌈Z/2⌉ / Z where the row is thinned (COARSE_THIN_FROM). Rates:
     :func:`_kernel_rates`, measured in the same run.
     """
-    from bearingkit.analysis.coarse import COARSE_FROM_SLICES, COARSE_SLICES
+    from bearingkit.analysis.coarse import COARSE_FROM_SLICES, COARSE_SLICES, COARSE_THIN_FROM
 
     t_root, t_flop = _kernel_rates()
     full, rough = np.zeros(2), np.zeros(2)  # (roots, flops) per full and per coarse evaluation
@@ -325,8 +326,11 @@ def arithmetic_limit(model, res, evaluations: float, coarse_evaluations: float =
             touching = (st.load > 0).sum(axis=1).mean()
             fixed = 20 * row.n_elements + 230 * touching
             full += (loaded, 12 * loaded + fixed)
-            share = COARSE_SLICES / row.n_slices if row.n_slices >= COARSE_FROM_SLICES else 1.0
-            rough += (loaded * share, 12 * loaded * share + fixed)
+            coarse = row.n_slices >= COARSE_FROM_SLICES
+            share = COARSE_SLICES / row.n_slices if coarse else 1.0
+            thinned = coarse and row.n_elements >= COARSE_THIN_FROM
+            thin = -(-row.n_elements // 2) / row.n_elements if thinned else 1.0
+            rough += (loaded * share * thin, (12 * loaded * share + fixed) * thin)
         elif row.kind == "ball":
             loaded = (st.load > 0).sum(axis=1).mean()
             ball = np.array([2 * loaded, 30 * row.n_elements + 170 * loaded])
@@ -438,9 +442,7 @@ def run(quick: bool = False) -> tuple[list[Record], dict]:
     )
     records.append(Record("arithmetic-limit estimate, CPU per case", limit * 1e6, "µs", note=note))
     records.append(
-        Record(
-            "CPU per case / arithmetic limit", small["cpu_per_case"] / limit, "x", note="1 = at the limit"
-        )
+        Record("CPU per case / arithmetic limit", small["cpu_per_case"] / limit, "x", note="1 = at the limit")
     )
     records.append(bench_numpy_reference(model, loads[: 500 if quick else 2000]))
     if not quick:

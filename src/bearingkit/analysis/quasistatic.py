@@ -228,7 +228,7 @@ def solve(
         raise InputError(f"load (shape {load.shape}) must have 5 components (F_x, F_y, F_z, M_x, M_y)")
     if not _all_finite(load):
         checks.finite("load", load, "N")  # raises, naming the values
-    free_key = _free_key(free)
+    free_key = _ALL_FREE if free is None else _free_key(free)
     n_cases = load.shape[0]
     if displacement is None:
         # The compiled core only reads q0: one zero start per plan serves every single solve.
@@ -239,21 +239,21 @@ def solve(
         load = np.array(np.broadcast_to(load, q0.shape))
         if not np.isfinite(q0).all():
             checks.finite("displacement", q0, "m")
-    offsets = _offsets_for(model, raceway_offsets)
+    offsets = _offsets_for(model, raceway_offsets) if raceway_offsets else None
     plan = _plan(model, free_key, options, offsets)
     free = plan.free  # read-only, shared by the results of this plan
-    _check_directions(plan, load)
+    if plan.idle_free.size:
+        _check_directions(plan, load)
 
-    extra = {}
     if plan.pack is not None:
         out = _solve_compiled(plan, q0, load, options, displacement is not None)
         q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
         converged, iterations = out.flags[0], out.counts[0]
-        extra["evaluations"], extra["coarse_evaluations"] = out.counts[1], out.counts[2]
-        if plan.tapered:
-            extra["_roller_x"] = out.roller_x
+        evaluations, coarse_evaluations = out.counts[1], out.counts[2]
+        roller_x = out.roller_x if plan.tapered else None
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
     else:
+        evaluations = coarse_evaluations = roller_x = None
         iterations = np.zeros(q0.shape[0], int)
         q0 = q0.copy() if q0 is _ZERO_START else q0  # the shared start stays untouched
         problem = plan.problem(load)
@@ -294,7 +294,9 @@ def solve(
         free=free,
         references=plan.references,
         offsets=offsets,
-        **extra,
+        evaluations=evaluations,
+        coarse_evaluations=coarse_evaluations,
+        _roller_x=roller_x,
     )
     if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
         from bearingkit.analysis.speed import flag_beyond_model
@@ -439,6 +441,10 @@ def _check_directions(plan, load: np.ndarray) -> None:
     if plan.idle_free.size and np.any(load[:, plan.idle_free] != 0.0):
         problem = plan.problem(load)
         cone.check_directions(problem.kernels, problem.scale, problem.idx, load)  # raises, naming the DOF
+
+
+#: The free-DOF key of a solve that frees all five.
+_ALL_FREE = (True,) * N_DOF
 
 
 def _free_key(free) -> tuple:
