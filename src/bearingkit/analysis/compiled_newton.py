@@ -515,6 +515,10 @@ def _serial_entry(args):
         return None
 
 
+#: The float64 dtype (compared by identity: the inputs' dtype is tested on every call).
+_F64 = np.dtype(np.float64)
+
+
 def solve_packed(
     mp: ModelPack, q0, load, free, scale, max_step, limit, options, cone, given, parallel, cache=None,
     block=32,
@@ -537,8 +541,10 @@ def solve_packed(
         cache.update(_constants(mp, free, max_step, limit, options, cone))
         cache["scale"] = np.ascontiguousarray(scale, dtype=np.float64)
         cache["free"] = np.ascontiguousarray(free, dtype=np.bool_)
-    n_t = mp.tapered.gf.shape[0]
-    if n_t == 0 and n == 1 and "untouched" in cache:
+        cache["const"] = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"])
+        cache["n_t"] = mp.tapered.gf.shape[0]
+    n_t = cache["n_t"]
+    if n == 1 and "untouched" in cache:
         # Written by nothing without tapered rows: one shared pair, not two allocations per solve.
         inner, out_x = cache["untouched"]
     else:
@@ -548,23 +554,23 @@ def solve_packed(
     q, force, stiffness = np.empty((n, 5)), np.empty((n, 5)), np.empty((n, 5, 5))
     flags, counts, norm = np.empty((4, n), np.bool_), np.empty((3, n), np.int64), np.empty(n)
     # The serial entry point skips numba's type checks: its arguments must keep their exact types.
-    if load.dtype != np.float64 or not load.flags.c_contiguous:
+    if load.dtype is not _F64 or not load.flags.c_contiguous:
         load = np.ascontiguousarray(load, dtype=np.float64)
-    if q0.dtype != np.float64 or not q0.flags.c_contiguous:
+    if q0.dtype is not _F64 or not q0.flags.c_contiguous:
         q0 = np.ascontiguousarray(q0, dtype=np.float64)
-    tail = (cache["scale"], cache["idx"], cache["p"], cache["fracs"], cache["cone"], bool(given))
-    tail += (q, force, stiffness, flags, counts, norm, inner, out_x)
     if parallel:
-        _solve_batch(q0, load, cache["free"], *cache["flat"], *tail, np.int64(block))
+        _solve_batch(q0, load, cache["free"], *cache["flat"], *cache["const"], bool(given),
+                     q, force, stiffness, flags, counts, norm, inner, out_x, np.int64(block))  # fmt: skip
         bad = n - int(np.count_nonzero(flags[0]))
     else:
         entry = cache.get("serial")
+        args = (q0, load, cache["free"], mp, *cache["const"], bool(given))
+        args += (q, force, stiffness, flags, counts, norm, inner, out_x)
         if entry is None:
-            args = (q0, load, cache["free"], mp, *tail)
             bad = _solve_serial(*args)
             cache["serial"] = _serial_entry(args)
         else:
-            bad = entry(q0, load, cache["free"], mp, *tail)
+            bad = entry(*args)
     return PackedSolution(q, force, stiffness, flags, counts, norm, bad, inner, out_x)
 
 
