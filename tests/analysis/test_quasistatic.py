@@ -207,6 +207,25 @@ def test_model_needs_rows_with_unique_names():
 def test_non_finite_load_is_refused(composite):
     with pytest.raises(InputError, match="load"):
         solve(composite, load_vector(F_z=np.nan))
+    for bad in (np.inf, -np.inf):  # one by one and in a sum that cancels them (inf − inf = nan)
+        with pytest.raises(InputError, match="must be finite"):
+            solve(composite, load_vector(F_x=bad, F_z=-bad))
+
+
+@pytest.mark.filterwarnings("ignore:overflow:RuntimeWarning")  # numpy's, in diagnosing such a load
+def test_finite_loads_whose_sum_overflows_are_accepted():
+    """The finiteness check of a small load sums it first; a finite load beyond 1e308 in sum is then
+    checked value by value, not refused (the solve itself reports what such a load does)."""
+    model = deep_groove_ball(n_elements=9, element_diameter=0.0127, pitch_diameter=0.065)
+    res = solve(model, load_vector(F_x=1.5e308, F_z=1.5e308))
+    assert not res.converged[0] and res.reason[0]
+
+
+def test_results_of_one_plan_share_a_read_only_free_mask(composite):
+    a, b = solve(composite, load_vector(F_z=2000.0)), solve(composite, load_vector(F_z=3000.0))
+    assert a.free is b.free and a.free.all()
+    with pytest.raises(ValueError, match="read-only"):
+        a.free[0] = False
 
 
 def test_result_exports(composite):
