@@ -367,7 +367,7 @@ def test_an_absurd_load_on_a_self_aligning_bearing_fails_in_one_line(tmp_path):
     """1e9 N on a 1209 emptied the cone check's active set (a numpy traceback; fuzz seed 2031)."""
     text = (EXAMPLES / "sabb_1209.toml").read_text(encoding="utf-8")
     path = tmp_path / "absurd.toml"
-    path.write_text(re.sub(r'(?m)^F_x = .*$', 'F_x = "1e9 N"', text, count=1), encoding="utf-8")
+    path.write_text(re.sub(r"(?m)^F_x = .*$", 'F_x = "1e9 N"', text, count=1), encoding="utf-8")
     r = runner.invoke(app, ["analyze", str(path), "--json"])
     assert r.exception is None or isinstance(r.exception, SystemExit)
     assert r.exit_code == 1 and len(r.stderr.strip().splitlines()) == 1

@@ -132,7 +132,6 @@ def _tag_notes(model: str, bearing_type: str, series: str | None) -> tuple[str, 
     return ("Palmgren f0/f1 tables are [M] (from memory of Harris & Kotzalas 2007 ch. 11, not verified)",)
 
 
-
 def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> EngineeringFrictionResult:
     """Run an engineering friction model by name.
 

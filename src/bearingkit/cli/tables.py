@@ -157,8 +157,16 @@ def duty_cycle_table(d: dict) -> Table:
     )
     table = Table(title=escape(title), caption=escape(caption))
     for col in (
-        "bin", f"{kind} %", "rev %", "speed r/min", "F_r kN", "F_a kN", "L10r 10⁶rev", "L_nmr 10⁶rev",
-        "s0", "damage %",
+        "bin",
+        f"{kind} %",
+        "rev %",
+        "speed r/min",
+        "F_r kN",
+        "F_a kN",
+        "L10r 10⁶rev",
+        "L_nmr 10⁶rev",
+        "s0",
+        "damage %",
     ):
         table.add_column(col, justify="left" if col == "bin" else "right", no_wrap=True)
     for b in d["bins"]:

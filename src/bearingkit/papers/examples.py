@@ -30,6 +30,8 @@ __all__ = ["STUDIES_DIR", "example", "resized", "run_example"]
 
 #: The example study files (src/bearingkit/papers/examples.py → ../../../examples/studies).
 STUDIES_DIR = Path(__file__).resolve().parents[3] / "examples" / "studies"
+
+
 def example(name: str) -> Path:
     """Path of ``examples/studies/<name>.toml``."""
     from bearingkit.errors import InputError

@@ -99,11 +99,13 @@ def _report_friction(analysis):
         shown = WholeBearingFriction(
             out.total, dict(out.components), {"whole bearing": out.total}, tuple(out.references), model
         )
-        note = [] if friction is not None else [
+        if friction is not None:
+            return shown, []
+        note = (
             f"friction: the component model does not apply here (its note says why); the report shows the "
             f"{model} catalogue model of the whole bearing"
-        ]
-        return shown, note
+        )
+        return shown, [note]
     return None, []
 
 

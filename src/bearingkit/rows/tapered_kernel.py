@@ -469,5 +469,3 @@ def _solve2(h, b):
         x0 = (a22[..., None] * b[..., 0] - a12[..., None] * b[..., 1]) / det[..., None]
         x1 = (-a21[..., None] * b[..., 0] + a11[..., None] * b[..., 1]) / det[..., None]
     return np.stack([x0, x1], axis=-1)
-
-

@@ -152,9 +152,7 @@ def _statics(rows: Sequence[str]) -> list[Quantity]:
                 )
             )
     out += [
-        Quantity(
-            "converged", "bool", "the case converged", "statics", lambda c: _first(c.converged, c.n)
-        ),
+        Quantity("converged", "bool", "the case converged", "statics", lambda c: _first(c.converged, c.n)),
         Quantity(
             "iterations", "count", "Newton iterations", "statics", lambda c: _first(c.statics.iterations, c.n)
         ),

@@ -221,4 +221,3 @@ def test_influence_memory_does_not_grow_with_cases(housing_stiffness):
     assert np.array_equal(many[2], one)
     couple = thin_ring.couple_influence(np.broadcast_to(psi, (3, 200)), psi, 0.2, 300.0, housing_stiffness)
     assert np.array_equal(couple[1], thin_ring.couple_influence(psi, psi, 0.2, 300.0, housing_stiffness))
-

@@ -20,7 +20,6 @@ SEED000_LABELS = {
 }
 
 
-
 def ranking(range_table) -> tuple[str, ...]:
     """Factor labels by decreasing range (the ``range`` table of a study's analysis)."""
     return tuple(range_table.sort_values("rank")["label"])

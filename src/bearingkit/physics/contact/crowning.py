@@ -5,7 +5,6 @@ deriving from :class:`~bearingkit.physics.contact.profile_base.Profile`; the reg
 :data:`bearingkit.physics.contact.profiles.PROFILES`.
 """
 
-
 from __future__ import annotations
 
 import math

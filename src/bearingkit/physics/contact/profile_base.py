@@ -5,7 +5,6 @@ All quantities are SI: lengths in m, loads in N, moduli in Pa. The profile kinds
 :mod:`bearingkit.physics.contact.profiles`.
 """
 
-
 from __future__ import annotations
 
 import dataclasses

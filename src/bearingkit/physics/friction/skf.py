@@ -69,6 +69,7 @@ references.add(
     "10000 EN (2012).",
 )
 
+
 # --- the model ------------------------------------------------------------------------------------
 def _to_skf_units(bore_diameter, outside_diameter, speed, kinematic_viscosity):
     d = np.asarray(bore_diameter, dtype=float) * M_TO_MM

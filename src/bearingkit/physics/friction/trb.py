@@ -107,6 +107,7 @@ SLIDING_MODELS = ("limiting_shear", "newtonian", "newtonian_mpa")
 #: constant 5.1e-9 (a unit slip the flattened eq. 10 admits; diagnostic only, it drops piezoviscosity).
 MPA_READING_SCALE = 1e-6  # [MPa/Pa]
 
+
 def rolling_friction_force(
     load,
     viscosity,

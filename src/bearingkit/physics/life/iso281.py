@@ -101,6 +101,7 @@ _FC_THRUST_BALL = "iso281_fc_thrust_ball.csv"
 _FC_THRUST_BALL_90 = "iso281_fc_thrust_ball_90.csv"
 _BM = "iso281_bm.csv"
 
+
 def _is_90(alpha):
     return np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
 

@@ -25,7 +25,6 @@ _THRUST_BALL_XE = np.array([[45.0, 1.25, 0.66], [60.0, 2.17, 0.92], [75.0, 4.67,
 E_TAN_FACTOR = 1.5
 
 
-
 def _ratio(fr, fa):
     # Fa/Fr with Fr = 0 treated as an infinite ratio
     with np.errstate(divide="ignore", invalid="ignore"):
