@@ -387,22 +387,31 @@ def bench_numpy_reference(model, loads: np.ndarray) -> Record:
     return Record(f"numpy reference: batch of {len(loads)}", rate, "cases/s", note="BEARINGKIT_BACKEND=numpy")
 
 
-def memory_100k(n: int) -> Record:
-    """Peak RSS [MB] of a fresh process solving n cases and reading every row's max load/pressure/count."""
+def fresh_process_peak_rss_mb(code: str) -> float:
+    """Peak RSS [MB] of a fresh interpreter that runs ``code`` from the repository root (NaN, with the
+    child's last error line printed, if it fails)."""
     import subprocess
 
-    code = (
-        "import resource, numpy as np, sys; sys.path.insert(0, '.');"
-        "from benchmarks.bench_quasistatic import random_loads;"
-        "from bearingkit.analysis.quasistatic import solve;"
-        "from bearingkit.bearings.turntable import composite_turntable as c; m = c();"
-        f"res = solve(m, random_loads({n})); "
-        "[(r.max_load, r.loaded_count, r.max_pressure.max(axis=-1)) for r in res.rows];"
-        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)"
+    code = f"import resource, sys; sys.path.insert(0, '.')\n{code}\n" + (
+        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)"  # Linux: kB
     )
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root)
-    value = float(out.stdout.strip() or "nan")
+    if out.returncode:
+        print(f"memory probe failed: {(out.stderr.strip().splitlines() or ['?'])[-1]}", file=sys.stderr)
+        return float("nan")
+    return float(out.stdout.strip().splitlines()[-1])
+
+
+def memory_100k(n: int) -> Record:
+    """Peak RSS [MB] of a fresh process solving n cases and reading every row's max load/pressure/count."""
+    value = fresh_process_peak_rss_mb(
+        "from benchmarks.bench_quasistatic import random_loads\n"
+        "from bearingkit.analysis.quasistatic import solve\n"
+        "from bearingkit.bearings.turntable import composite_turntable\n"
+        f"res = solve(composite_turntable(), random_loads({n}))\n"
+        "[(r.max_load, r.loaded_count, r.max_pressure.max(axis=-1)) for r in res.rows]"
+    )
     return Record(
         f"memory: {n} cases solved + result.rows statistics",
         value,

@@ -206,20 +206,14 @@ def _ptrb_nsga2() -> tuple[float, int, float, float]:
 
 def sweep_memory(n: int) -> float:
     """Peak RSS [MB] of a fresh process running an n-case seed-000 sweep through the study runner."""
-    import subprocess
-    import sys
+    from benchmarks.bench_quasistatic import fresh_process_peak_rss_mb
 
-    code = (
-        "import resource, sys; sys.path.insert(0, '.');"
-        "from benchmarks.bench_studies import _sweep_definition;"
-        "from bearingkit.studies.runner import run_study;"
-        f"res = run_study(_sweep_definition({n}), progress=False);"
-        "assert res.results['converged'].all();"
-        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)"
+    return fresh_process_peak_rss_mb(
+        "from benchmarks.bench_studies import _sweep_definition\n"
+        "from bearingkit.studies.runner import run_study\n"
+        f"res = run_study(_sweep_definition({n}), progress=False)\n"
+        "assert res.results['converged'].all()"
     )
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root)
-    return float(out.stdout.strip() or "nan")
 
 
 def sweep_records(n: int) -> list[dict]:
