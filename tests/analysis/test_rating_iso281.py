@@ -156,3 +156,40 @@ def test_json_cli_and_report_show_the_same_numbers(tmp_path):
     bk.analyze("7206 B", load={"F_x": "2 kN", "F_z": "4 kN"}, speed="1500 rpm").report(path)
     html = path.read_text()
     assert _plain(line) in _plain(re.sub(r"<[^>]+>", " ", html))
+
+
+def test_a_batch_with_refused_cases_gives_what_each_case_gives_alone():
+    """Cases without an ISO 281 P (here f0 Fa/C0r below Table 3) leave the others' P as computed alone;
+    each refused case gets its note; the valid cases are computed together, not one by one."""
+    from bearingkit.analysis import rating_iso281
+    from bearingkit.physics.life import iso281_load
+
+    c0, f0 = 20_400.0, 13.9
+    fr = np.array([10e3, 10e3, 4e3, 0.0, 2e3, 8e3])
+    fa = np.array([100.0, 1e3, 0.0, 3e3, 12e3, 50.0])  # 0, 5: below Table 3; 4: above it
+    notes = []
+    calls = []
+    law = iso281_load.equivalent_dynamic_load
+
+    def counted(*args, **kwargs):
+        calls.append(np.size(args[0]))
+        return law(*args, **kwargs)
+
+    iso281_load.equivalent_dynamic_load = counted
+    try:
+        p, failed = rating_iso281._equivalent_load(fr, fa, "deep_groove_ball", 0.0, 1, c0, f0, notes)
+    finally:
+        iso281_load.equivalent_dynamic_load = law
+    np.testing.assert_array_equal(failed, [True, False, False, False, True, True])
+    for c in np.flatnonzero(~failed):
+        assert p[c] == law(fr[c], fa[c], "deep_groove_ball", static_rating=c0, f0=f0)
+    assert [n.split(":")[0] for n in notes] == ["case 0", "case 4", "case 5"]
+    assert "table range [0.172, 6.89]" in notes[0] and "table range" in notes[1]
+    assert sorted(calls) == [1, 1, 1, 3, 6]  # the batch, the 3 valid cases together, each refused one
+
+
+def test_6209_with_a_small_axial_load_keeps_the_other_cases_rated():
+    a = bk.analyze("6209", load=[{"F_x": "10 kN", "F_z": "100 N"}, {"F_x": "10 kN", "F_z": "5 kN"}])
+    s0, s1 = _system(a, 0), _system(a, 1)
+    assert s0["P_iso281_N"] is None and "case 0: no ISO 281 basic rating life" in s0["iso281_note"]
+    assert s1["P_iso281_N"] > 10e3  # F_a/F_r = 0.5 > e: the axial load counts

@@ -367,3 +367,37 @@ def test_fc_thrust_roller_range(gamma, alpha, field):
         iso281.dynamic_rating_roller(
             20 * MM, 10 * MM, 50 * MM, np.pi / 2, 6, bearing_type="thrust_cylindrical_roller"
         )
+
+
+@pytest.mark.parametrize(
+    "law, alpha",
+    [
+        ("deep_groove_ball", 0.0),
+        ("angular_contact_ball", np.radians(40.0)),
+        ("self_aligning_ball", np.radians(12.0)),
+        ("radial_roller", 0.0),
+        ("radial_roller", np.radians(15.0)),
+        ("thrust_ball", np.pi / 2),
+        ("thrust_ball", np.radians(60.0)),
+        ("thrust_roller", np.pi / 2),
+        ("thrust_roller", np.radians(50.0)),
+    ],
+)
+def test_refused_cases_are_exactly_the_cases_the_law_refuses(law, alpha):
+    """The batch screen flags a case if and only if the law, asked for that case alone, raises."""
+    c0, f0 = 20_400.0, 13.9
+    rng = np.random.default_rng(281)
+    fr = np.concatenate([rng.uniform(0.0, 20e3, 300), [0.0, 0.0, 5e3, 5e3]])
+    fa = np.concatenate([rng.uniform(0.0, 12e3, 300) * rng.integers(0, 2, 300), [0.0, 3e3, 0.0, 1.0]])
+    # table edges of the deep groove law (f0 Fa/C0r = 0.172 and 6.89) and just outside them
+    fa[:4] = np.array([0.172, 6.89, 0.172 * (1 - 1e-9), 6.89 * (1 + 1e-9)]) * c0 / f0
+    refused = iso281_load.refused_cases(fr, fa, law, alpha, static_rating=c0, f0=f0)
+    alone = np.zeros(fr.shape, bool)
+    for c in range(fr.size):
+        try:
+            iso281_load.equivalent_dynamic_load(fr[c], fa[c], law, alpha, static_rating=c0, f0=f0)
+        except InputError:
+            alone[c] = True
+    np.testing.assert_array_equal(refused, alone)
+    if law in ("deep_groove_ball", "thrust_ball", "thrust_roller") or alpha == 0.0:
+        assert 0 < alone.sum() < fr.size  # both kinds of case are there

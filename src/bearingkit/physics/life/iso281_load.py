@@ -129,6 +129,56 @@ P_MODELS = {
 }
 
 
+def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, static_rating=None, f0=None):
+    """Cases whose loads :func:`equivalent_dynamic_load` refuses one by one (True: no P), in one pass.
+
+    The refusals that depend on a case's loads, not on the bearing (ISO 281:2007 5.2, 6.2, 7.2, 8.2):
+
+    - ``deep_groove_ball``: f0 Fa/C0r with Fa > 0 outside Table 3 (0.172 … 6.89);
+    - ``radial_roller`` with α = 0: Fa > 0;
+    - ``thrust_ball``/``thrust_roller``: Fr > 0 at α = 90°, and Fa/Fr <= e below 90° (single direction).
+
+    A screen for batches: the cases it clears are computed together. Refusals of the bearing itself
+    (a missing C0r, a contact angle outside a table) are not screened; the law still raises on them.
+
+    Parameters
+    ----------
+    load_radial, load_axial : array_like
+        Fr, Fa [N], >= 0.
+    bearing_type : str
+        One of :data:`P_MODELS`.
+    contact_angle : float
+        α [rad].
+    static_rating : float, optional
+        C0r [N] (deep groove ball bearings).
+    f0 : float, optional
+        f0 [MPa] of ISO 76 (deep groove ball bearings).
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        The shape of the broadcast loads.
+    """
+    fr, fa = np.broadcast_arrays(np.asarray(load_radial, float), np.asarray(load_axial, float))
+    alpha = float(contact_angle)
+    if bearing_type == "deep_groove_ball" and static_rating is not None and f0 is not None:
+        x = tables.column(_XY_RADIAL, "f0_fa_c0r")
+        rel = float(f0) * fa / float(static_rating)
+        tol = 1e-12 * max(1.0, abs(x[-1]))  # as tables.interp_strict
+        return (fa > 0) & ((rel < x[0] - tol) | (rel > x[-1] + tol))
+    if bearing_type == "radial_roller" and alpha == 0.0:
+        return fa > 0
+    if bearing_type.startswith("thrust") and alpha > RADIAL_MAX_ANGLE:
+        if _is_90(alpha):
+            return fr > 0
+        if bearing_type == "thrust_ball":
+            e = np.interp(np.degrees(alpha), _THRUST_BALL_XE[:, 0], _THRUST_BALL_XE[:, 1])
+        else:
+            e = E_TAN_FACTOR * np.tan(alpha)
+        return _ratio(fr, fa) <= e
+    return np.zeros(fr.shape, bool)
+
+
 def equivalent_dynamic_load(
     load_radial, load_axial, bearing_type, contact_angle=0.0, n_rows=1, static_rating=None, f0=None
 ):
