@@ -119,7 +119,9 @@ def mirror_upper(jac):
             jac[j, i] = jac[i, j]
 
 
-@njit(cache=True, error_model="numpy")
+# The three responses are inlined into the solver's one evaluation (numba IR inlining; each has one
+# call site there): measured 48.5 -> 47.3 µs per seed-000 single solve.
+@njit(cache=True, error_model="numpy", inline="always")
 def ball_response(c, q, bp, force, jac, rowf):
     """Add the ball rows' force (5,), Jacobian (upper triangle) and per-row force (rows, 5) of case c.
 
@@ -233,7 +235,7 @@ def roller_buffers(rp):
     return np.empty((2, max(n_r * rp.x.shape[2], 1))), np.empty(3 * n_r + 1, np.int64)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
     """Add the cylindrical rows' force, Jacobian (upper triangle) and per-row force of case c.
 
@@ -330,7 +332,7 @@ def roller_response(c, q, rp, force, jac, rowf, fbuf, ibuf):
     return energy
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def point_response(q, pp, force, jac, rowf):
     """Add the affine Hertz point contacts (threaded rows: δ = G·q + δ0, Q = k δ^1.5); return energy.
 
