@@ -401,3 +401,15 @@ def test_refused_cases_are_exactly_the_cases_the_law_refuses(law, alpha):
     np.testing.assert_array_equal(refused, alone)
     if law in ("deep_groove_ball", "thrust_ball", "thrust_roller") or alpha == 0.0:
         assert 0 < alone.sum() < fr.size  # both kinds of case are there
+
+
+def test_refused_cases_leaves_a_refused_bearing_to_the_law():
+    """No C0r (or C0r <= 0): the law refuses the bearing, not single cases; the screen flags nothing
+    (and divides by nothing)."""
+    fr, fa = np.array([1e3, 2e3]), np.array([10.0, 500.0])
+    for c0 in (None, 0.0, -1.0):
+        with np.errstate(all="raise"):
+            refused = iso281_load.refused_cases(fr, fa, "deep_groove_ball", 0.0, static_rating=c0, f0=13.9)
+        assert not refused.any()
+        with pytest.raises(InputError):
+            iso281_load.equivalent_dynamic_load(fr, fa, "deep_groove_ball", static_rating=c0, f0=13.9)

@@ -161,7 +161,9 @@ def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, stat
     """
     fr, fa = np.broadcast_arrays(np.asarray(load_radial, float), np.asarray(load_axial, float))
     alpha = float(contact_angle)
-    if bearing_type == "deep_groove_ball" and static_rating is not None and f0 is not None:
+    if bearing_type == "deep_groove_ball":
+        if static_rating is None or f0 is None or not (float(static_rating) > 0 and float(f0) > 0):
+            return np.zeros(fr.shape, bool)  # the law refuses the bearing itself: nothing to screen
         x = tables.column(_XY_RADIAL, "f0_fa_c0r")
         rel = float(f0) * fa / float(static_rating)
         tol = 1e-12 * max(1.0, abs(x[-1]))  # as tables.interp_strict
