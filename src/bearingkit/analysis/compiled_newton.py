@@ -111,8 +111,8 @@ def pack_model(kernels, coarse=None) -> ModelPack | None:
 # Numba counts references: a function takes a reference to every array of every argument on entry
 # and drops it on exit (atomic operations). The ModelPack holds ~45 arrays, so an evaluation takes
 # only the row packs and the scratch it needs, unpacked once per Newton call. Passing (mp, ws) through
-# two levels per evaluation had made 2,690 such operations per seed-000 single solve (1,608 in the
-# Newton loop; a quarter of the profile's samples); now 1,964.
+# two levels per evaluation had made 3,867 such operations per seed-000 single solve (1,800 of them in
+# those two functions; a quarter of the profile's samples); now 1,964.
 @njit(cache=True, error_model="numpy")
 def _state(c, q, load, balls, rollers, points, tapered, tws, fbuf, ibuf, inner, scale, idx, force, jac,
            rowf, residual):  # fmt: skip
