@@ -78,6 +78,22 @@ def text_column(name: str, col: str) -> tuple[str, ...]:
     return _read(name)[2][col]
 
 
+def outside(x, xp: np.ndarray) -> np.ndarray:
+    """Where ``x`` lies outside the table range ``[xp[0], xp[-1]]`` (what :func:`interp_strict` refuses).
+
+    A tolerance of 1e-12 relative absorbs the rounding of values computed exactly at a table edge.
+
+    Parameters
+    ----------
+    x : array_like
+        Abscissae, in the table's unit.
+    xp : numpy.ndarray
+        Table abscissae (increasing, finite), in the same unit.
+    """
+    tol = 1e-12 * max(1.0, abs(xp[-1]))
+    return (np.asarray(x, dtype=float) < xp[0] - tol) | (np.asarray(x, dtype=float) > xp[-1] + tol)
+
+
 def interp_strict(field: str, x, xp: np.ndarray, fp: np.ndarray, unit: str = "") -> np.ndarray:
     """Linear interpolation of ``fp(xp)`` at ``x``; values outside ``[xp[0], xp[-1]]`` raise InputError.
 
@@ -98,9 +114,7 @@ def interp_strict(field: str, x, xp: np.ndarray, fp: np.ndarray, unit: str = "")
     ok = np.isfinite(fp)
     xp, fp = xp[ok], fp[ok]
     arr = np.asarray(x, dtype=float)
-    # a tolerance of 1e-12 relative absorbs rounding of values computed exactly at a table edge
-    tol = 1e-12 * max(1.0, abs(xp[-1]))
-    if np.any(arr < xp[0] - tol) or np.any(arr > xp[-1] + tol):
+    if np.any(outside(arr, xp)):
         shown = f"{_fmt(arr)} {unit}".strip()
         raise InputError(f"{field} ({shown}) must lie in the table range [{xp[0]:g}, {xp[-1]:g}]")
     return np.interp(np.clip(arr, xp[0], xp[-1]), xp, fp)

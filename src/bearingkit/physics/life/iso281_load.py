@@ -93,6 +93,13 @@ def _p_radial_roller(fr, fa, alpha, n_rows, static_rating, f0):
     return np.where(zero, fr, p)
 
 
+def _thrust_e(alpha, ball: bool):
+    # e of a single-direction thrust bearing: ball, ISO 281:2007 Table 6; roller, 1.5 tan α (8.2)
+    if ball:
+        return np.interp(np.degrees(alpha), _THRUST_BALL_XE[:, 0], _THRUST_BALL_XE[:, 1])
+    return E_TAN_FACTOR * np.tan(alpha)
+
+
 def _p_thrust(fr, fa, alpha, ball: bool):
     if np.any(alpha <= RADIAL_MAX_ANGLE):
         raise InputError(f"contact_angle ({checks._fmt(alpha)} rad) must exceed pi/4 for a thrust bearing")
@@ -102,13 +109,12 @@ def _p_thrust(fr, fa, alpha, ball: bool):
             "load_radial must be 0 for a thrust bearing with contact_angle pi/2 (ISO 281 6.2, 8.2)"
         )
     a = np.where(is_90, np.pi / 3, alpha)
+    e = _thrust_e(a, ball)
     if ball:
         deg = np.where(is_90, 60.0, np.degrees(a))
         checks.in_range("contact_angle", deg, 45.0, 75.0, "deg")
-        e = np.interp(deg, _THRUST_BALL_XE[:, 0], _THRUST_BALL_XE[:, 1])
         x = np.interp(deg, _THRUST_BALL_XE[:, 0], _THRUST_BALL_XE[:, 2])
     else:
-        e = E_TAN_FACTOR * np.tan(a)
         x = np.tan(a)
     if np.any(~is_90 & (_ratio(fr, fa) <= e)):
         raise InputError(
@@ -164,20 +170,14 @@ def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, stat
     if bearing_type == "deep_groove_ball":
         if static_rating is None or f0 is None or not (float(static_rating) > 0 and float(f0) > 0):
             return np.zeros(fr.shape, bool)  # the law refuses the bearing itself: nothing to screen
-        x = tables.column(_XY_RADIAL, "f0_fa_c0r")
         rel = float(f0) * fa / float(static_rating)
-        tol = 1e-12 * max(1.0, abs(x[-1]))  # as tables.interp_strict
-        return (fa > 0) & ((rel < x[0] - tol) | (rel > x[-1] + tol))
+        return (fa > 0) & tables.outside(rel, tables.column(_XY_RADIAL, "f0_fa_c0r"))
     if bearing_type == "radial_roller" and alpha == 0.0:
         return fa > 0
     if bearing_type.startswith("thrust") and alpha > RADIAL_MAX_ANGLE:
         if _is_90(alpha):
             return fr > 0
-        if bearing_type == "thrust_ball":
-            e = np.interp(np.degrees(alpha), _THRUST_BALL_XE[:, 0], _THRUST_BALL_XE[:, 1])
-        else:
-            e = E_TAN_FACTOR * np.tan(alpha)
-        return _ratio(fr, fa) <= e
+        return _ratio(fr, fa) <= _thrust_e(alpha, bearing_type == "thrust_ball")
     return np.zeros(fr.shape, bool)
 
 
