@@ -43,7 +43,7 @@ def _load() -> float:
 
 
 def _study(n: int, outputs):
-    from bearingkit.studies import definition as sd
+    from bearingkit.studies.definition import load as sd
 
     head = {
         "name": "bench_6209",
@@ -80,9 +80,9 @@ def _study(n: int, outputs):
 
 def _raw_rate(definition) -> tuple[float, float]:
     """Cases/s of the bare batched solve of the study's own loads (same cases, same model)."""
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.io.loader import load_file
-    from bearingkit.studies.cases import build_cases
+    from bearingkit.studies.run.cases import build_cases
 
     cases = build_cases(definition)
     bearing = load_file(EXAMPLE)
@@ -99,7 +99,7 @@ def _raw_rate(definition) -> tuple[float, float]:
 
 
 def _study_rate(definition) -> tuple[float, float]:
-    from bearingkit.studies.runner import run_study
+    from bearingkit.studies.run.runner import run_study
 
     t0 = time.perf_counter()
     res = run_study(definition, progress=False)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.turntable import composite_turntable
 
 #: Seed 000's planar model (u_x, u_z, θ_y free; u_y, θ_x held at 0), design.md §3.
@@ -118,7 +118,7 @@ def first_solve_time() -> tuple[float, float]:
     import tempfile
 
     code = (
-        "import time; from bearingkit.analysis.quasistatic import solve, load_vector;"
+        "import time; from bearingkit.analysis.solver.quasistatic import solve, load_vector;"
         "from bearingkit.bearings.turntable import composite_turntable as c; m = c();"
         "t = time.perf_counter(); solve(m, load_vector(F_z=3000.0)); print(time.perf_counter() - t)"
     )
@@ -268,9 +268,8 @@ def bench_baseline(model, loads: np.ndarray, stats: dict, n_slices: int) -> list
 
 def _kernel_rates() -> tuple[float, float]:
     """Measured cost on this machine of one ninth root [s] (the compiled slice law) and one flop [s]."""
+    from bearingkit.rows.cylindrical.compiled import ninth_root
     from numba import njit
-
-    from bearingkit.rows.compiled_contacts import ninth_root
 
     @njit(cache=False)
     def roots(d, y, reps):
@@ -311,12 +310,12 @@ def arithmetic_limit(model, res, evaluations: float, coarse_evaluations: float =
     Operation count of one evaluation at the solution (compiled kernels): per loaded slice one
     ninth root and 12 flops; per roller 20 flops for its approach and slope, per touching roller
     230 for its force and 5×5 stiffness; per ball 30 flops, per loaded ball 170 and two square roots
-    (counted as roots). A coarse evaluation (:mod:`bearingkit.analysis.coarse`) counts the same with
+    (counted as roots). A coarse evaluation (:mod:`bearingkit.analysis.solver.coarse`) counts the same with
     the loaded slices of a coarsened row scaled by COARSE_SLICES / n_slices, and its rollers, loaded
     slices and touching rollers by ⌈Z/2⌉ / Z where the row is thinned (COARSE_THIN_FROM). Rates:
     :func:`_kernel_rates`, measured in the same run.
     """
-    from bearingkit.analysis.coarse import COARSE_FROM_SLICES, COARSE_SLICES, COARSE_THIN_FROM
+    from bearingkit.analysis.solver.coarse import COARSE_FROM_SLICES, COARSE_SLICES, COARSE_THIN_FROM
 
     t_root, t_flop = _kernel_rates()
     full, rough = np.zeros(2), np.zeros(2)  # (roots, flops) per full and per coarse evaluation
@@ -377,7 +376,7 @@ def bench_rates(model, loads: np.ndarray, sizes: tuple[int, ...]) -> tuple[list[
 
 def bench_numpy_reference(model, loads: np.ndarray) -> Record:
     """The numpy reference backend on the same cases (the compiled core's speed-up over it)."""
-    from bearingkit.analysis.quasistatic import SolverOptions
+    from bearingkit.analysis.solver.quasistatic import SolverOptions
 
     opts = SolverOptions(backend="numpy")
     solve(model, loads[:8], options=opts)
@@ -407,7 +406,7 @@ def memory_100k(n: int) -> Record:
     """Peak RSS [MB] of a fresh process solving n cases and reading every row's max load/pressure/count."""
     value = fresh_process_peak_rss_mb(
         "from benchmarks.bench_quasistatic import random_loads\n"
-        "from bearingkit.analysis.quasistatic import solve\n"
+        "from bearingkit.analysis.solver.quasistatic import solve\n"
         "from bearingkit.bearings.turntable import composite_turntable\n"
         f"res = solve(composite_turntable(), random_loads({n}))\n"
         "[(r.max_load, r.loaded_count, r.max_pressure.max(axis=-1)) for r in res.rows]"

@@ -6,7 +6,7 @@ SI units (N, m); times in s, throughputs in cases/s. All numbers come from one r
    e 0–0.4 m, axial ball clearance −6…−2 µm; 50,000 cases, 10,000 with ``quick``, or ``--cases N``)
    evaluated three ways, in this order:
 
-   - in-process (:class:`~bearingkit.studies.executors.InProcessExecutor`): the solver's own thread
+   - in-process (:class:`~bearingkit.studies.run.executors.InProcessExecutor`): the solver's own thread
      pool over every core — the reference a single machine gets without Dask;
    - a Dask LocalCluster of 1 worker process, 1 thread, 1 solver thread;
    - a Dask LocalCluster of 2 worker processes, 1 thread and 1 solver thread each
@@ -48,7 +48,7 @@ WARMUP_CASES = 200
 
 
 def _sweep_definition(n: int, chunk: int = CHUNK):
-    from bearingkit.studies import definition as sd
+    from bearingkit.studies.definition import load as sd
 
     return sd.from_dict(
         {
@@ -73,7 +73,7 @@ def _sweep_definition(n: int, chunk: int = CHUNK):
 
 def _warm_inputs(definition):
     from bearingkit.studies import evaluators
-    from bearingkit.studies.cases import build_cases
+    from bearingkit.studies.run.cases import build_cases
 
     warm = build_cases(definition).iloc[:WARMUP_CASES]
     ev = evaluators.get(definition.evaluator)
@@ -81,7 +81,7 @@ def _warm_inputs(definition):
 
 
 def _timed(definition, executor) -> tuple[float, float]:
-    from bearingkit.studies.runner import run_study
+    from bearingkit.studies.run.runner import run_study
 
     t0 = time.perf_counter()
     res = run_study(definition, executor=executor, progress=False)
@@ -97,9 +97,8 @@ def _note(seconds: float) -> str:
 
 
 def _inprocess_rate(definition) -> tuple[float, float]:
-    from bearingkit.analysis.quasistatic import solver_threads
-    from bearingkit.studies.evaluators import evaluate_chunk
-    from bearingkit.studies.executors import InProcessExecutor
+    from bearingkit.analysis.solver.quasistatic import solver_threads
+    from bearingkit.studies.run.executors import InProcessExecutor, evaluate_chunk
 
     assert solver_threads() == (os.cpu_count() or 1), "the reference must use every core"
     evaluate_chunk(definition.evaluator, _warm_inputs(definition))
@@ -107,14 +106,13 @@ def _inprocess_rate(definition) -> tuple[float, float]:
 
 
 def _solver_threads() -> int:
-    from bearingkit.analysis.quasistatic import solver_threads
+    from bearingkit.analysis.solver.quasistatic import solver_threads
 
     return solver_threads()
 
 
 def _dask_rate(n_workers: int, definition) -> tuple[float, float]:
-    from bearingkit.studies.evaluators import evaluate_chunk
-    from bearingkit.studies.executors import DaskExecutor
+    from bearingkit.studies.run.executors import DaskExecutor, evaluate_chunk
 
     ex = DaskExecutor(workers=n_workers, solver_threads=1)
     try:
@@ -133,8 +131,8 @@ def _dask_rate(n_workers: int, definition) -> tuple[float, float]:
 
 
 def _nsga2_seconds(pop: int = 100, gen: int = 100) -> tuple[float, int]:
-    from bearingkit.studies import definition as sd
-    from bearingkit.studies.runner import run_study
+    from bearingkit.studies.definition import load as sd
+    from bearingkit.studies.run.runner import run_study
 
     d = sd.from_dict(
         {
@@ -155,7 +153,7 @@ def _pymoo_alone(res) -> float:
     import numpy as np
     from pymoo.optimize import minimize
 
-    from bearingkit.studies import optimize as so
+    from bearingkit.studies.run import optimize as so
 
     d = res.definition
     names = [v.name for v in d.variables]
@@ -181,6 +179,7 @@ def _ptrb_nsga2() -> tuple[float, int, float, float]:
     time pymoo alone takes on the same run [s]."""
     from bearingkit.papers.zheng2022.study_runs import seed004_optimize
     from bearingkit.studies import evaluators
+    from bearingkit.studies.run import executors
 
     seed004_optimize("axial", pop_size=8, generations=2)  # imports, catalogue and unit tables
     t0 = time.perf_counter()
@@ -199,7 +198,7 @@ def _ptrb_nsga2() -> tuple[float, int, float, float]:
         chunks.append(cases)
     t0 = time.perf_counter()
     for cases in chunks:
-        evaluators.evaluate_chunk(res.definition.evaluator, cases)
+        executors.evaluate_chunk(res.definition.evaluator, cases)
     evaluator_s = time.perf_counter() - t0
     return total, len(history), evaluator_s, _pymoo_alone(res)
 
@@ -210,7 +209,7 @@ def sweep_memory(n: int) -> float:
 
     return fresh_process_peak_rss_mb(
         "from benchmarks.bench_studies import _sweep_definition\n"
-        "from bearingkit.studies.runner import run_study\n"
+        "from bearingkit.studies.run.runner import run_study\n"
         f"res = run_study(_sweep_definition({n}), progress=False)\n"
         "assert res.results['converged'].all()"
     )

@@ -17,7 +17,7 @@ import numpy as np
 
 def run(quick: bool) -> list[dict]:
     """Per-case time statistics; quick: 40 cases per variant."""
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
     from benchmarks.tapered_light_cases import cases
 
     per_variant = 40 if quick else 250

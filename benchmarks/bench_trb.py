@@ -8,7 +8,7 @@ import time
 
 def run(quick: bool) -> list[dict]:
     """Time a 10,000-realisation (quick: 1,000) Monte Carlo; target ≤ 1 s on 2 cores (issue 19)."""
-    from bearingkit.analysis.trb import monte_carlo
+    from bearingkit.analysis.scatter import monte_carlo
     from bearingkit.bearings.tapered import seed001_row
 
     n = 1_000 if quick else 10_000

@@ -158,10 +158,117 @@ def test_every_module_is_in_a_layer():
 @pytest.mark.parametrize("folder", ["studies"])
 def test_generic_machinery_holds_no_paper_module(folder):
     """studies/ is generic: no module names a seed paper (papers/ holds them)."""
-    for path in (PACKAGE / folder).glob("*.py"):
+    for path in (PACKAGE / folder).rglob("*.py"):
         text = path.read_text(encoding="utf-8").lower()
         for needle in ("seed0", "tian2025", "liu2022", "li2025", "zheng2022"):
             assert needle not in text, f"{path.name} mentions {needle}"
+
+
+#: Inside a package that holds sub-packages: the order of its parts (direct sub-packages and modules),
+#: top first. A module of one part may import a module of the same part or of a part in a LOWER layer,
+#: never one of its own layer or above (parts of one layer are independent). ``__init__`` and
+#: ``__main__`` are the package's faces and may import any part.
+SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
+    "analysis": (
+        ("rating", "friction"),
+        ("flexible", "slewing", "scatter", "clearance", "lubrication"),
+        ("solver",),
+    ),
+    "analysis.solver": (
+        ("quasistatic",),
+        ("backend",),
+        ("compiled_newton",),
+        ("compiled_linalg",),
+        ("newton", "coarse", "speed"),
+        ("cone", "solution"),
+        ("model",),
+    ),
+    "rows": (
+        ("ball", "cylindrical", "tapered", "threaded", "self_aligning"),
+        ("base", "numba_cache"),
+    ),
+    "studies": (
+        ("run",),
+        ("definition",),
+        ("generic",),
+        ("evaluators",),
+        ("designs", "results"),
+    ),
+    "io": (
+        ("loader",),
+        ("build", "load_cases", "export"),
+        ("schema_cycle", "schema_operating"),
+        ("messages",),
+        ("schema",),
+        ("sections",),
+        ("geometries",),
+        ("fields", "reading"),
+    ),
+}
+#: The most modules (``__init__.py`` aside) one folder may hold before it wants sub-packages by subject.
+MAX_MODULES_PER_FOLDER = 12
+
+
+def _part(package: str, module: str) -> str | None:
+    """The part of ``package`` that ``module`` belongs to (None: the package's ``__init__``/``__main__``)."""
+    rest = module[len("bearingkit." + package) + 1 :].split(".")
+    return None if rest[0] in ("", "__main__") else rest[0]
+
+
+def sideways(g: dict[str, set[str]], sublayers=None) -> list[str]:
+    """Imports inside a package with sub-layers that go up or across its layer order."""
+    sublayers = SUBLAYERS if sublayers is None else sublayers
+    bad = []
+    for package, order in sublayers.items():
+        rank = {name: i for i, names in enumerate(order) for name in names}
+        prefix = f"bearingkit.{package}."
+        for m, deps in g.items():
+            if not m.startswith(prefix) or (pm := _part(package, m)) is None:
+                continue
+            for d in deps:
+                if not d.startswith(prefix) or (pd := _part(package, d)) is None or pd == pm:
+                    continue
+                if rank[pd] <= rank[pm]:
+                    bad.append(f"{m} ({package}: {pm}) imports {d} ({pd}, not in a lower layer)")
+    return sorted(bad)
+
+
+def test_sub_packages_keep_their_layer_order():
+    assert sideways(graph()) == []
+
+
+def test_every_part_of_a_layered_package_is_placed():
+    """Each sub-package or module of a package in SUBLAYERS has its place (a new one must be given one)."""
+    for package, order in SUBLAYERS.items():
+        folder = PACKAGE.joinpath(*package.split("."))
+        parts = {p.stem for p in folder.glob("*.py")}
+        parts |= {p.name for p in folder.iterdir() if (p / "__init__.py").exists()}
+        parts -= {"__init__", "__main__"}
+        placed = {name for names in order for name in names}
+        assert parts == placed, f"{package}: unplaced {sorted(parts - placed)}, gone {sorted(placed - parts)}"
+
+
+def test_the_sub_layer_check_can_fail():
+    """The check finds a planted import across one layer (two kinds) and one upward (solver to rating)."""
+    g = {"bearingkit.rows.ball.row": {"bearingkit.rows.tapered.kernel"}}
+    assert sideways(g) == [
+        "bearingkit.rows.ball.row (rows: ball) imports bearingkit.rows.tapered.kernel"
+        " (tapered, not in a lower layer)"
+    ]
+    g = {"bearingkit.analysis.solver.model": {"bearingkit.analysis.rating.assembly"}}
+    assert len(sideways(g)) == 1
+    g = {"bearingkit.analysis.rating.assembly": {"bearingkit.analysis.solver.model"}}
+    assert sideways(g) == []
+
+
+def test_folders_stay_small():
+    """A folder of more than ~12 modules wants sub-packages by subject (design rule)."""
+    big = {}
+    for folder in [PACKAGE, *(p for p in PACKAGE.rglob("*") if p.is_dir())]:
+        n = len([p for p in folder.glob("*.py") if p.name != "__init__.py"])
+        if n > MAX_MODULES_PER_FOLDER:
+            big[str(folder.relative_to(SRC))] = n
+    assert big == {}
 
 
 def test_modules_stay_small():

@@ -19,7 +19,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the repository r
 
 from benchmarks.baseline_fsolve import BaselineTurntable
 
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.turntable import composite_turntable
 
 N_SLICES = 4

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from bearingkit.analysis.clearance import FitConditions, Temperatures, operating_clearance
-from bearingkit.analysis.quasistatic import solve
+from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.bearings.standard import deep_groove_ball
 from bearingkit.errors import InputError
 from bearingkit.materials import get_material

@@ -1,4 +1,5 @@
-"""The coarse stage of the solver (bearingkit.analysis.coarse): it moves the start, not the equilibrium.
+"""The coarse stage of the solver (bearingkit.analysis.solver.coarse): it moves the start, not the
+equilibrium.
 
 Both cores run the first Newton iterations on the bearing with its sliced rollers at a few slices;
 the full model then converges to ``rtol`` as before. Checked here: which rows are coarsened (and
@@ -11,10 +12,10 @@ given start or a disabled stage runs no coarse evaluation.
 import numpy as np
 import pytest
 
-from bearingkit.analysis import backend
-from bearingkit.analysis.coarse import COARSE_SLICES, COARSE_THIN_FROM, coarse_kernels
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver import backend
+from bearingkit.analysis.solver.coarse import COARSE_SLICES, COARSE_THIN_FROM, coarse_kernels
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.standard import cylindrical_roller, deep_groove_ball
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
 from bearingkit.errors import InputError

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
 from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.io.loader import load_file
@@ -44,7 +44,7 @@ def _agree(model, load, free=None, rtol=1e-12):
 
 
 def _compiled(model) -> bool:
-    from bearingkit.analysis import compiled_newton
+    from bearingkit.analysis.solver import compiled_newton
 
     return compiled_newton.pack_model(model.kernels) is not None
 
@@ -72,7 +72,7 @@ def test_seed000_composite_batch_agrees():
 
 def test_seed001_deviation_batch_and_pairs_agree():
     dev = np.stack([seed001_series(k) for k in range(1, 7)])
-    from bearingkit.analysis.model import BearingModel
+    from bearingkit.analysis.solver.model import BearingModel
 
     model = BearingModel((seed001_row(diameter_deviation=dev),))
     _agree(model, load_vector(F_z=np.full(6, 10_000.0)), free=[True, True, True, False, False])
@@ -83,7 +83,7 @@ def test_seed001_deviation_batch_and_pairs_agree():
 def test_without_numba_the_numpy_reference_runs_with_one_warning():
     code = (
         "import sys, warnings; sys.modules['numba'] = None\n"
-        "from bearingkit.analysis.quasistatic import solve, load_vector\n"
+        "from bearingkit.analysis.solver.quasistatic import solve, load_vector\n"
         "from bearingkit.bearings.turntable import composite_turntable\n"
         "m = composite_turntable()\n"
         "with warnings.catch_warnings(record=True) as w:\n"
@@ -109,8 +109,8 @@ def test_compiled_backend_refuses_what_it_cannot_take():
 
 def test_kernels_at_speed_run_the_numpy_path():
     """A ball row at speed is a subclass of the ball kernel with more physics: never packed as a plain one."""
-    from bearingkit.analysis import compiled_newton
-    from bearingkit.analysis.speed import model_at_speed
+    from bearingkit.analysis.solver import compiled_newton
+    from bearingkit.analysis.solver.speed import model_at_speed
 
     inp = load_file(Path(__file__).resolve().parents[2] / "examples" / "acbb_7209.toml")
     assert compiled_newton.pack_model(inp.model.kernels) is not None
@@ -124,8 +124,8 @@ def test_kernels_at_speed_run_the_numpy_path():
 def test_compiled_roller_loads_agree_with_roller_state():
     """The Monte Carlo's compiled per-roller loads against the numpy kernel's roller sub-problem
     (same algorithm from the same closed-form start: agreement to rounding, 1e-12 of the largest)."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.rows.compiled_tapered import roller_loads
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.rows.tapered.compiled import roller_loads
 
     dev = np.stack([seed001_series(k) for k in range(1, 7)])
     row = seed001_row(diameter_deviation=dev)

@@ -8,13 +8,13 @@ import numpy as np
 import pytest
 from scipy.optimize import nnls as scipy_nnls
 
-from bearingkit.analysis import cone
-from bearingkit.analysis import quasistatic as qs
+from bearingkit.analysis.solver import cone
+from bearingkit.analysis.solver import quasistatic as qs
 from bearingkit.bearings.turntable import composite_turntable
 
 
 def test_nnls_matches_scipy_on_random_problems():
-    from bearingkit.analysis.compiled_linalg import nnls_misfit
+    from bearingkit.analysis.solver.compiled_linalg import nnls_misfit
 
     rng = np.random.default_rng(7)
     for _ in range(30):
@@ -50,7 +50,7 @@ def test_load_inside_a_cone_of_thousands_of_slices_stops_at_round_off(turntable_
 
 
 def test_compiled_nnls_agrees_on_the_cycling_load(turntable_cone):
-    from bearingkit.analysis.compiled_linalg import nnls_misfit
+    from bearingkit.analysis.solver.compiled_linalg import nnls_misfit
 
     g, scale, idx = turntable_cone
     load = np.array([2.27919853e00, 0.0, 6.83715617e03, 0.0, -4.43125820e02])
@@ -74,8 +74,8 @@ def test_compiled_and_numpy_nnls_agree_where_the_inner_loop_meets_round_off():
     compiled NNLS took the NaN step and, stopped there, refused carriable loads (bench_generic)."""
     from pathlib import Path
 
-    from bearingkit.analysis.compiled_linalg import nnls_misfit
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.compiled_linalg import nnls_misfit
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.io.loader import load_file
 
     bearing = load_file(Path(__file__).resolve().parents[2] / "examples" / "dgbb_6209.toml")

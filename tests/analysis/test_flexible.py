@@ -5,7 +5,7 @@ import pytest
 
 from bearingkit.analysis import flexible as flex_mod
 from bearingkit.analysis.flexible import solve_flexible
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.ball_column import BallColumnGeometry, ball_column, outer_ring
 from bearingkit.errors import InputError
 from bearingkit.rings.flexible import FlexibleOuterRing

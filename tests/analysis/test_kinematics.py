@@ -5,7 +5,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingkit.analysis.kinematics import element_kinematics, row_kinematics, thrust_roller_kinematics
+from bearingkit.analysis.friction.kinematics import (
+    element_kinematics,
+    row_kinematics,
+    thrust_roller_kinematics,
+)
 from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.errors import InputError
 

@@ -5,8 +5,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.standard import (
     angular_contact_ball,
@@ -300,7 +300,7 @@ def test_uniform_radial_raceway_deflection_acts_as_clearance():
 
 
 def test_overlapping_rows_are_refused():
-    from bearingkit.rows.ball import BallRow
+    from bearingkit.rows.ball.row import BallRow
 
     a = BallRow(n_elements=12, element_diameter=0.01, pitch_diameter=0.08, contact_angle=0.3, name="a")
     b = BallRow(

@@ -1,4 +1,4 @@
-"""Tests of bearingkit.analysis.rating (ratings and lives of whole bearings). SI units throughout.
+"""Tests of bearingkit.analysis.rating.assembly (ratings and lives of whole bearings). SI units throughout.
 
 Reference values are closed forms of the standards (ISO 281 L10 = (C/P)^p, thrust ball equal loads,
 Weibull system life), invariants (scaling, system <= rows) and the warnings' triggering conditions.
@@ -13,14 +13,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
-from bearingkit.analysis.rating import (
-    WEIBULL_SLOPES,
-    rate,
-    register_row_rater,
-    system_life,
-)
+from bearingkit.analysis.rating.assembly import WEIBULL_SLOPES, rate, register_row_rater, system_life
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.standard import (
     angular_contact_ball,
@@ -32,7 +27,7 @@ from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.errors import InputError
 from bearingkit.physics.contact.profiles import make_profile
 from bearingkit.physics.life import iso281
-from bearingkit.rows.ball import BallRow
+from bearingkit.rows.ball.row import BallRow
 
 INCH = 25.4e-3
 # SKF 6205 internal geometry of the CWRU data set (see bearingkit.validation.literature_iso)
@@ -306,7 +301,7 @@ def test_row_rater_registry():
 
     def fake(row, state, ctx):
         calls.append(row.name)
-        from bearingkit.analysis.rating import rate_ball_row
+        from bearingkit.analysis.rating.assembly import rate_ball_row
 
         return rate_ball_row(row, state, ctx)
 
@@ -314,7 +309,7 @@ def test_row_rater_registry():
     try:
         rate(res)
     finally:
-        from bearingkit.analysis.rating import rate_ball_row
+        from bearingkit.analysis.rating.assembly import rate_ball_row
 
         register_row_rater("ball", rate_ball_row)
     assert calls == ["balls"]
@@ -362,7 +357,7 @@ def test_tapered_pure_axial_matches_closed_form():
     Q_e n_e = Q_i n_i + Q_f n_f (no centrifugal force) gives the cone load. The rater must give the TS life
     of these equal loads exactly, whichever ring rotates."""
     from bearingkit.bearings.tapered import seed001_bearing
-    from bearingkit.rows.tapered import TapGeometry
+    from bearingkit.rows.tapered.row import TapGeometry
 
     model = seed001_bearing()
     row = model.rows[0]
@@ -487,6 +482,6 @@ def test_threaded_combined_load(fr):
 
 
 def test_every_row_kind_has_a_rater():
-    from bearingkit.analysis.rating import ROW_RATERS
+    from bearingkit.analysis.rating.assembly import ROW_RATERS
 
     assert {"ball", "cylindrical", "tapered", "threaded"} <= set(ROW_RATERS)

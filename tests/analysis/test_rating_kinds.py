@@ -1,16 +1,16 @@
-"""Ratings of the bearing kinds (bearingkit.analysis.rating_kinds)."""
+"""Ratings of the bearing kinds (bearingkit.analysis.rating.kinds)."""
 
 import numpy as np
 import pytest
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.analysis.rating import ROW_RATERS, rate
+from bearingkit.analysis.rating.assembly import ROW_RATERS, rate
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings import self_aligning as sa
 from bearingkit.bearings import slewing
 from bearingkit.physics.life import iso76, iso281
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.four_point import FourPointRow
+from bearingkit.rows.ball.four_point import FourPointRow
+from bearingkit.rows.ball.row import BallRow
 
 DEG = np.pi / 180
 E_RED = 2.28e11

@@ -3,13 +3,13 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import load_vector, solve
 from bearingkit.analysis.slewing import (
     LOAD_COMBINATIONS,
     closed_form_capacities,
     reference_loads,
     static_load_diagram,
 )
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings import slewing
 from bearingkit.physics.contact import hertz
 

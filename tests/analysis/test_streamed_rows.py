@@ -12,8 +12,8 @@ amplifying a displacement difference).
 
 import numpy as np
 
-from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.analysis.solution import STATE_CHUNK
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.solution import STATE_CHUNK
 from bearingkit.bearings.turntable import composite_turntable
 
 

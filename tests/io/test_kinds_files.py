@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.io.kinds import KINDS
+from bearingkit.io.build.kinds import KINDS
 from bearingkit.io.loader import loads
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

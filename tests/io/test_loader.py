@@ -61,7 +61,7 @@ def test_registry_matches_schema_and_builders():
     from bearingkit.bearings import standard, turntable
 
     assert set(BUILDERS) == set(schema.GEOMETRY_MODELS)
-    from bearingkit.io.kinds import KINDS  # issue 17: builders in bearings.slewing / self_aligning
+    from bearingkit.io.build.kinds import KINDS  # issue 17: builders in bearings.slewing / self_aligning
 
     own_builders = {"tapered_roller", "ptrb", "ball_column"} | set(KINDS)  # loader functions over bearings.*
     for name in set(BUILDERS) - own_builders:

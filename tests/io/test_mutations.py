@@ -478,7 +478,7 @@ def _copy_examples(tmp: Path) -> None:
 
 def check_study(mutant: Mutant, tmp: Path, index: int) -> list[str]:
     """Validate a mutated study file (the study loader, no run): a definition or one line."""
-    from bearingkit.studies.definition import load_study
+    from bearingkit.studies.definition.load import load_study
 
     folder = tmp / "studies"
     folder.mkdir(exist_ok=True)

@@ -3,11 +3,11 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import solve
-from bearingkit.analysis.speed import OperatingSpeed, model_at_speed
+from bearingkit.analysis.solver.quasistatic import solve
+from bearingkit.analysis.solver.speed import OperatingSpeed, model_at_speed
 from bearingkit.bearings.standard import angular_contact_ball, angular_contact_pair, deep_groove_ball
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.ball_speed import BallSpeedKernel
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.ball.speed import BallSpeedKernel
 from bearingkit.rows.base import RacewayOffset
 
 RPM = np.pi / 30.0

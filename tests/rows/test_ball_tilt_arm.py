@@ -5,12 +5,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.standard import angular_contact_ball, angular_contact_pair
 from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import load_file
-from bearingkit.rows.ball import TILT_ARMS, BallRow
+from bearingkit.rows.ball.row import TILT_ARMS, BallRow
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

@@ -3,12 +3,12 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import solve
-from bearingkit.analysis.speed import model_at_speed
+from bearingkit.analysis.solver.quasistatic import solve
+from bearingkit.analysis.solver.speed import model_at_speed
 from bearingkit.bearings.standard import cylindrical_roller
 from bearingkit.physics.contact.profiles import make_profile
-from bearingkit.rows.cylindrical import CylindricalRow
-from bearingkit.rows.cylindrical_speed import CylindricalSpeedKernel
+from bearingkit.rows.cylindrical.row import CylindricalRow
+from bearingkit.rows.cylindrical.speed import CylindricalSpeedKernel
 
 RPM = np.pi / 30.0
 ROW = CylindricalRow(

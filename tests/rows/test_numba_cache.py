@@ -32,7 +32,7 @@ def test_cache_directory_changes_with_any_compiled_source(tmp_path, monkeypatch)
     monkeypatch.setattr(numba_cache, "_PACKAGE", copy)
     before = numba_cache.sources_hash()
     assert numba_cache.sources_hash() == before  # deterministic
-    row = copy / "rows/compiled_contacts.py"
+    row = copy / "rows/cylindrical/compiled.py"
     row.write_text(row.read_text(encoding="utf-8") + "\n# an edit\n", encoding="utf-8")
     assert numba_cache.sources_hash() != before
 
@@ -41,7 +41,7 @@ def test_a_fresh_process_uses_the_hashed_directory_under_the_users_base(tmp_path
     """A NUMBA_CACHE_DIR the user set stays the base; numba writes its index files below the hash."""
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
     env.pop("BEARINGKIT_NUMBA_BASE", None)
-    code = "import numba.core.config as c; from bearingkit.rows import compiled_contacts;print(c.CACHE_DIR)"
+    code = "import numba.core.config as c; from bearingkit.rows.cylindrical import compiled;print(c.CACHE_DIR)"
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     used = Path(out.stdout.strip().splitlines()[-1])
     assert used == tmp_path / numba_cache.sources_hash()

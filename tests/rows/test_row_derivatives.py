@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from bearingkit.physics.contact.profiles import make_profile
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.cylindrical import CylindricalRow
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.cylindrical.row import CylindricalRow
 
 E_RED = 2.28e11  # [Pa] any positive value; the derivative identities do not depend on it
 
@@ -138,7 +138,7 @@ def test_batched_geometry_equals_separate_rows():
 
 
 def test_dense_small_batch_path_equals_the_per_roller_path(monkeypatch):
-    import bearingkit.rows.cylindrical as cyl
+    import bearingkit.rows.cylindrical.row as cyl
 
     for row in list(_rows())[2:]:
         kernel = row.kernel()

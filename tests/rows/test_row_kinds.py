@@ -7,16 +7,16 @@ self-aligning ball rows (lines through the sphere centre) and needle rows.
 import numpy as np
 import pytest
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings import self_aligning as sa
 from bearingkit.bearings import slewing
 from bearingkit.physics.contact.profiles import make_profile
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.crossed import CrossedRollerRow
-from bearingkit.rows.cylindrical import CylindricalRow
-from bearingkit.rows.four_point import FourPointRow
-from bearingkit.rows.needle import NeedleRow
+from bearingkit.rows.ball.four_point import FourPointRow
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.cylindrical.crossed import CrossedRollerRow
+from bearingkit.rows.cylindrical.needle import NeedleRow
+from bearingkit.rows.cylindrical.row import CylindricalRow
 from bearingkit.rows.self_aligning import SelfAligningBallRow, SphericalRollerRow
 
 E_RED = 2.28e11  # [Pa] any positive value: the identities tested do not depend on it

@@ -5,8 +5,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
 from bearingkit.errors import InputError
 from bearingkit.physics.contact.profiles import make_profile

@@ -6,11 +6,12 @@ import numpy as np
 import pytest
 from bk_tapered_helpers import assert_equilibrium as _assert_equilibrium
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
 from bearingkit.bearings.tapered import seed001_pair, seed001_row
 from bearingkit.physics.contact.profiles import make_profile
-from bearingkit.rows import tapered, tapered_kernel
+from bearingkit.rows.tapered import kernel as tapered_kernel
+from bearingkit.rows.tapered import row as tapered
 
 #: Combined loads on a pair: (F_x, F_y, F_z [N], M_x, M_y [N·m]); the first is issue #4's stall.
 PAIR_LOADS = load_vector(

@@ -18,8 +18,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository r
 from benchmarks.tapered_light_cases import bearing, cases
 from bk_tapered_helpers import assert_equilibrium
 
-from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
-from bearingkit.rows import tapered_laws
+from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
+from bearingkit.rows.tapered import laws as tapered_laws
 
 #: A Δ = 0.25 µm roller of the 32008J: slice constant c [N/m^(10/9)] and Δ [m].
 C_S = 1.77e9

@@ -3,12 +3,12 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.ptrb import ptrb_model, ptrb_prototype
 from bearingkit.errors import InputError
 from bearingkit.physics.contact import hertz
 from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
-from bearingkit.rows.threaded import (
+from bearingkit.rows.threaded.row import (
     ThreadedRow,
     axial_tooth_distribution,
     contact_pairs,
@@ -140,7 +140,7 @@ def test_axial_distribution_bad_input():
 
 
 def test_threaded_rows_solve_batches_that_converge_at_different_iterations():
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.ptrb import ptrb_model
 
     res = solve(ptrb_model(), load_vector(F_z=[1000.0, 5000.0, 20000.0], F_x=[0.0, 2000.0, 500.0]))

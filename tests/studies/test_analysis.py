@@ -5,7 +5,8 @@ import pandas as pd
 import pytest
 from bk_study_helpers import EFFECTS, _additive
 
-from bearingkit.studies import analysis, generators
+from bearingkit.studies.designs import generators
+from bearingkit.studies.results import analysis
 
 
 @pytest.mark.parametrize("array", ["L9", "L27"])

@@ -10,7 +10,7 @@ import urllib.request
 import psutil
 import pytest
 
-from bearingkit.studies.executors import DaskExecutor
+from bearingkit.studies.run.executors import DaskExecutor
 
 #: Paths Dask's scheduler and workers serve by default (health, prometheus, info pages, JSON).
 PROBES = ("/health", "/metrics", "/info/main/workers.html", "/json/identity.json", "/status")

@@ -14,11 +14,12 @@ import pandas as pd
 import pytest
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
-from bearingkit.studies.cases import build_cases
-from bearingkit.studies.executors import DaskExecutor, ProcessPoolExecutor
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run import executors
+from bearingkit.studies.run.cases import build_cases
+from bearingkit.studies.run.executors import DaskExecutor, ProcessPoolExecutor
+from bearingkit.studies.run.runner import run_study
 
 #: The seed-000 sweep of benchmarks/bench_studies.py (its first 250 cases differed in 3 rows).
 SWEEP = {
@@ -54,9 +55,9 @@ def test_a_chunk_gives_the_same_bits_whatever_the_callers_blas_threads():
     """In-process (BLAS on every core) vs a worker (one BLAS thread): the same chunk, the same bits."""
     _, chunk = _chunk()
     with threadpool_limits(limits=2, user_api="blas"):
-        many = evaluators.evaluate_chunk("seed000_statics", chunk)
+        many = executors.evaluate_chunk("seed000_statics", chunk)
     with threadpool_limits(limits=1, user_api="blas"):
-        one = evaluators.evaluate_chunk("seed000_statics", chunk)
+        one = executors.evaluate_chunk("seed000_statics", chunk)
     assert many["converged"].all()
     pd.testing.assert_frame_equal(many, one, check_exact=True)
 
@@ -69,12 +70,12 @@ def test_chunks_in_other_threads_side_by_side_give_the_workers_bits():
     """
     _, chunk = _chunk()
     with threadpool_limits(limits=1, user_api="blas"):  # what a worker process computes
-        worker = evaluators.evaluate_chunk("seed000_statics", chunk)
+        worker = executors.evaluate_chunk("seed000_statics", chunk)
     got, start = {}, threading.Barrier(2)
 
     def run(key):
         start.wait(10)
-        got[key] = evaluators.evaluate_chunk("seed000_statics", chunk)
+        got[key] = executors.evaluate_chunk("seed000_statics", chunk)
 
     with threadpool_limits(limits=2, user_api="blas"):  # the caller's process: BLAS on two cores
         threads = [threading.Thread(target=run, args=(k,)) for k in ("a", "b")]

@@ -3,7 +3,8 @@
 import numpy as np
 import pandas as pd
 
-from bearingkit.studies.evaluators import Evaluator, Factor, evaluate_chunk, group_cases
+from bearingkit.studies.evaluators import Evaluator, Factor, group_cases
+from bearingkit.studies.run.executors import evaluate_chunk
 
 FACTORS = {
     "x": Factor("x", "dimensionless", 0.0),

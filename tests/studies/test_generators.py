@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.studies import generators as g
+from bearingkit.studies.designs import generators as g
 
 #: (runs, columns, levels of each column) of Taguchi's standard arrays (Phadke 1989, App. C).
 SHAPES = {

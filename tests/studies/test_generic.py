@@ -13,8 +13,8 @@ from typer.testing import CliRunner
 import bearingkit as bk
 from bearingkit.cli import app
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.runner import run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 DGBB = EXAMPLES / "dgbb_6209.toml"

@@ -12,8 +12,8 @@ import pytest
 from typer.testing import CliRunner
 
 from bearingkit.cli import app
-from bearingkit.studies import analysis, display, figures
-from bearingkit.studies.definition import PlotDef
+from bearingkit.studies.definition.load import PlotDef
+from bearingkit.studies.results import analysis, display, figures
 
 ROOT = Path(__file__).resolve().parents[2]
 STUDIES = ROOT / "examples" / "studies"

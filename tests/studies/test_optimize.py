@@ -4,10 +4,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
-from bearingkit.studies.optimize import knee_point, nearest
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.optimize import knee_point, nearest
+from bearingkit.studies.run.runner import run_study
 
 
 def zdt1_study(pop=60, gen=80, algorithm="nsga2", n_var=30):

@@ -16,9 +16,9 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from bearingkit.studies import outputs
 from bearingkit.studies.__main__ import run_cli
-from bearingkit.studies.outputs import OUTPUTS_DIR, publish
+from bearingkit.studies.run import publish as outputs
+from bearingkit.studies.run.publish import OUTPUTS_DIR, publish
 
 #: ZDT1 Monte Carlo studies: 33 columns, so results.csv takes a noticeable time to write.
 ROWS = {"run_a": 40_000, "run_b": 30_000}

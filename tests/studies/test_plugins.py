@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
-from bearingkit.studies.executors import ProcessPoolExecutor
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.executors import ProcessPoolExecutor
+from bearingkit.studies.run.runner import run_study
 
 HERE = Path(__file__).resolve().parent
 

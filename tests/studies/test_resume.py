@@ -10,9 +10,9 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.runner import run_study
 
 HERE = Path(__file__).resolve().parent
 N_CHUNKS = 10
@@ -109,7 +109,7 @@ std = "0.5 kN"
 
 def test_kill_and_resume_the_generic_evaluator(tmp_path, monkeypatch):
     """kill -9 of `bearingkit study` on a bearing file, then --resume: only the missing chunks run."""
-    from bearingkit.studies.generic import GenericModel
+    from bearingkit.studies.generic.evaluator import GenericModel
 
     n_chunks = 100
     study = tmp_path / "study.toml"

@@ -5,9 +5,9 @@ import pandas as pd
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
-from bearingkit.studies.executors import DaskExecutor, InProcessExecutor, ProcessPoolExecutor
-from bearingkit.studies.runner import build_cases, run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.executors import DaskExecutor, InProcessExecutor, ProcessPoolExecutor
+from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[2] / "examples" / "studies"
 
@@ -76,7 +76,7 @@ def test_parquet_store_holds_every_chunk(tmp_path, reference):
 
 
 def test_statics_evaluator_matches_direct_solve(reference):
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
     from bearingkit.bearings.common import eccentric_axial_load
     from bearingkit.bearings.turntable import composite_turntable
 

@@ -21,12 +21,12 @@ import pyarrow.parquet as pq
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
 from bearingkit.studies import evaluators
 from bearingkit.studies.__main__ import main, run_cli
-from bearingkit.studies.lock import LOCK_FILE
-from bearingkit.studies.runner import run_study
-from bearingkit.studies.store import STAMP_KEY
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.lock import LOCK_FILE
+from bearingkit.studies.run.runner import run_study
+from bearingkit.studies.run.store import STAMP_KEY
 
 HERE = Path(__file__).resolve().parent
 

@@ -16,8 +16,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
 from bearingkit.studies.__main__ import main
+from bearingkit.studies.definition import load as sd
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -173,7 +173,7 @@ def test_any_malformed_file_gives_one_line_or_loads(base, edits):
         assert "\n" not in msg and msg.startswith("f.toml: ") and len(msg) < 400, msg
     else:  # a file that loads is a study that can be planned (cases, bearing, evaluator)
         assert sd.case_count(d) <= sd.MAX_CASES
-        from bearingkit.studies.cases import plan_study
+        from bearingkit.studies.run.cases import plan_study
 
         try:
             plan = plan_study(d)

@@ -12,10 +12,12 @@ import pandas as pd
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.studies import analysis, evaluators, generators
-from bearingkit.studies import definition as sd
+from bearingkit.studies import evaluators
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.designs import generators
 from bearingkit.studies.evaluators import Evaluator, Factor
-from bearingkit.studies.runner import build_cases, run_study
+from bearingkit.studies.results import analysis
+from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "studies"
 
@@ -249,7 +251,7 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
 def test_dask_gives_the_in_process_results():
     from distributed import Client, LocalCluster
 
-    from bearingkit.studies.executors import DaskExecutor
+    from bearingkit.studies.run.executors import DaskExecutor
 
     d = study(per_point=10, chunk_size=16)
     ref = run_study(d, progress=False)

@@ -9,9 +9,9 @@ import os
 import pytest
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from bearingkit.analysis.quasistatic import THREADS_ENV, solver_threads
+from bearingkit.analysis.solver.quasistatic import THREADS_ENV, solver_threads
 from bearingkit.errors import InputError
-from bearingkit.studies import executors as ex
+from bearingkit.studies.run import executors as ex
 
 
 def _blas_threads() -> set[int]:

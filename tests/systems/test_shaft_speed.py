@@ -2,7 +2,7 @@
 
 The inner rings turn with the shaft, the outer rings stand; a bearing turned "-z" sees the speed with
 the opposite sign about its own axis. The checks compare the system against the single-bearing
-solver (:func:`bearingkit.analysis.quasistatic.solve` with ``speed=``) at the same state, and the
+solver (:func:`bearingkit.analysis.solver.quasistatic.solve` with ``speed=``) at the same state, and the
 physics a spindle engineer expects: a preloaded angular pair softens radially at 20,000 r/min (the
 balls' centrifugal force unloads the inner contacts and turns the outer contact angle down).
 """
@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import solve as solve_bearing
-from bearingkit.analysis.speed import ModelAtSpeed
+from bearingkit.analysis.solver.quasistatic import solve as solve_bearing
+from bearingkit.analysis.solver.speed import ModelAtSpeed
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
 from bearingkit.systems.loads import PointLoad, ShaftLoads

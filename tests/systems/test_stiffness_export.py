@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bearingkit.analysis.quasistatic import solve
+from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
 from bearingkit.systems.stiffness import bearing_stiffness_table, stiffness_column

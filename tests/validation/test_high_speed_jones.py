@@ -27,7 +27,7 @@ here are only inputs of both sides, so an error in them cannot make the test pas
 
 The limit speed is the model's own, found here from the independent solution. Under outer-raceway
 control nothing lifts off (the inner contacts carry F_a/(Z sin α_i) at every speed): the limit is
-the inner contact angle reaching :data:`bearingkit.rows.ball_speed.ANGLE_LIMIT` (the ball would ride
+the inner contact angle reaching :data:`bearingkit.rows.ball.speed.ANGLE_LIMIT` (the ball would ride
 over the inner land), near 79,000 rpm for this bearing. Under inner-raceway control the friction
 that reacts the gyroscopic moment at the inner contact carries a growing share of the thrust and
 the inner contacts lift off (Q_i → 0) near 31,000 rpm. The five speeds run from 0 to 97 % of the
@@ -40,12 +40,12 @@ import numpy as np
 import pytest
 from scipy import optimize, special
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import solve
-from bearingkit.analysis.speed import OperatingSpeed
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import solve
+from bearingkit.analysis.solver.speed import OperatingSpeed
 from bearingkit.physics.dynamics.ball_kinematics import ball_speeds
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.ball_speed import ANGLE_LIMIT
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.ball.speed import ANGLE_LIMIT
 
 RPM = np.pi / 30.0
 # Harris's 218 angular contact ball bearing [from memory, as quoted by Ricci 2009]: D, d_m, Z, f_i = f_o.
@@ -316,7 +316,7 @@ def test_beyond_the_model_limit_is_refused(control, limit_speeds):
 
 
 def test_hertz_constants_at_the_operating_angles_change_little():
-    """bearingkit evaluates K_i, K_o at the free contact angle (rows/ball_speed.py); Jones and Harris
+    """bearingkit evaluates K_i, K_o at the free contact angle (rows/ball/speed.py); Jones and Harris
     at each contact's operating angle. Up to 20,000 rpm (d_m n = 2.5e6 mm/min for the 218) the two
     differ by less than 0.02° in the angles and 0.05 % in the loads and F_c: the simplification is of
     second order, as stated."""

@@ -185,7 +185,7 @@ class ClearanceChain:
 def _row_geometry(row):
     """(contact angle, inner raceway diameter, outer raceway diameter, element diameter) or None (thrust)."""
     if row.kind == "tapered":
-        from bearingkit.rows.tapered import TapGeometry
+        from bearingkit.rows.tapered.row import TapGeometry
 
         geo = TapGeometry(row)
         return (

@@ -1,6 +1,6 @@
 """Coupled solve of a bearing with a flexible outer ring: contact equilibrium ↔ ring compliance.
 
-SI units (m, N, rad). The engine (:func:`bearingkit.analysis.quasistatic.solve`) solves the inner-
+SI units (m, N, rad). The engine (:func:`bearingkit.analysis.solver.quasistatic.solve`) solves the inner-
 ring equilibrium for given outer-raceway offsets (``raceway_offsets``); the ring
 (:class:`bearingkit.rings.FlexibleOuterRing`) maps the resulting element loads to new offsets. The
 coupled state is the fixed point x = T(x) of the offsets x (all radial offsets of the carried
@@ -53,7 +53,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from bearingkit import checks, references
-from bearingkit.analysis.quasistatic import QuasiStaticResult, SolverOptions, solve
+from bearingkit.analysis.solver.quasistatic import QuasiStaticResult, SolverOptions, solve
 from bearingkit.rows.base import RacewayOffset
 
 references.add(
@@ -373,7 +373,7 @@ def solve_flexible(
     max_iterations : int
         Largest number of coupling iterations.
     free : array_like of 5 bool, optional
-        Free inner-ring DOFs (as in :func:`~bearingkit.analysis.quasistatic.solve`).
+        Free inner-ring DOFs (as in :func:`~bearingkit.analysis.solver.quasistatic.solve`).
     options : SolverOptions, optional
         Options of every engine solve.
 

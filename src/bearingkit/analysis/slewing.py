@@ -199,7 +199,7 @@ def static_load_diagram(model, *, n_points=9, p_limit=None, solver_options=None)
     SlewingLoadDiagram
         The curve; a ray whose solve fails is marked ``converged = False`` (never NaN).
     """
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
 
     n = checks.integer("n_points", n_points, low=2)
     c0a, m0, element = closed_form_capacities(model, p_limit)

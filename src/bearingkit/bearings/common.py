@@ -29,7 +29,7 @@ def eccentric_axial_load(axial_load, eccentricity, radial_load=0.0) -> np.ndarra
     eccentricity : float or array [m]
     radial_load : float or array [N]
     """
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     checks.finite("eccentricity", eccentricity, "m")
     fa = np.asarray(axial_load, dtype=float)

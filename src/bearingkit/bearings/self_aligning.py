@@ -1,6 +1,6 @@
 """Builders of self-aligning bearings (spherical roller, self-aligning ball) and needle roller bearings.
 
-SI units. Each builder returns a :class:`~bearingkit.analysis.model.BearingModel` from the internal
+SI units. Each builder returns a :class:`~bearingkit.analysis.solver.model.BearingModel` from the internal
 geometry (per-row element count, element size, pitch diameter, osculations or conformity, contact
 angle, clearance), the parameters a designation catalogue estimates.
 
@@ -15,9 +15,9 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.rows.needle import NeedleRow
+from bearingkit.rows.cylindrical.needle import NeedleRow
 from bearingkit.rows.self_aligning import SelfAligningBallRow, SphericalRollerRow
 
 
@@ -172,7 +172,7 @@ def needle_roller(
     construction : str
         ``"machined"`` or ``"drawn_cup"`` (ISO 281 b_m).
     n_slices, profile, line_law
-        As :class:`~bearingkit.rows.cylindrical.CylindricalRow`.
+        As :class:`~bearingkit.rows.cylindrical.row.CylindricalRow`.
     """
     row = NeedleRow(
         n_elements=n_elements,

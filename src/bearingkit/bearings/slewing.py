@@ -1,6 +1,7 @@
 """Builders of four-point contact ball bearings (QJ) and slewing rings from their internal geometry.
 
-SI units. Each builder returns a :class:`~bearingkit.analysis.model.BearingModel`; the keyword arguments
+SI units. Each builder returns a :class:`~bearingkit.analysis.solver.model.BearingModel`; the keyword
+arguments
 are the internal geometry (element count and size, pitch diameter, conformities, contact angle,
 clearance), so a catalogue of designations can call them with its estimates.
 
@@ -18,10 +19,10 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.rows.crossed import CrossedRollerRow
-from bearingkit.rows.four_point import FourPointRow
+from bearingkit.rows.ball.four_point import FourPointRow
+from bearingkit.rows.cylindrical.crossed import CrossedRollerRow
 
 #: Design contact angle of QJ four-point contact ball bearings [rad] (SKF/ISO series QJ 2, QJ 3: 35°).
 QJ_CONTACT_ANGLE = np.radians(35.0)
@@ -215,7 +216,7 @@ def slewing_ring_crossed_roller(
     clearance_radial : float [m]
         Diametral radial clearance (negative = preload).
     n_slices, profile, line_law
-        As :class:`~bearingkit.rows.crossed.CrossedRollerRow`.
+        As :class:`~bearingkit.rows.cylindrical.crossed.CrossedRollerRow`.
     """
     row = CrossedRollerRow(
         n_elements=n_elements,

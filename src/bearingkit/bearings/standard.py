@@ -1,6 +1,6 @@
 """Builders of standard bearing types from their internal geometry. SI units.
 
-Each builder returns a :class:`~bearingkit.analysis.model.BearingModel`. Internal geometry (ball or
+Each builder returns a :class:`~bearingkit.analysis.solver.model.BearingModel`. Internal geometry (ball or
 roller diameter, pitch diameter, count, conformities, clearance) is what the mechanics needs;
 catalogue boundary dimensions alone do not determine it.
 """
@@ -10,10 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.cylindrical import CylindricalRow
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.cylindrical.row import CylindricalRow
 
 
 def deep_groove_ball(

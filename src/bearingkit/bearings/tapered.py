@@ -10,9 +10,9 @@ centrifugal force; the load distribution under axial load does not depend on it)
 from __future__ import annotations
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.rows.tapered import TaperedRow
+from bearingkit.rows.tapered.row import TaperedRow
 
 #: Seed 001 Table 1 (TRB 32008J) in SI, plus the assumed pitch diameter (see module docstring).
 SEED001_GEOMETRY = {
@@ -75,7 +75,7 @@ def tapered_pair(
     arrangement : str
         ``"DB"`` (back-to-back) or ``"DF"`` (face-to-face), :data:`PAIR_ARRANGEMENTS`.
     **row_kwargs
-        :class:`~bearingkit.rows.tapered.TaperedRow` fields (``direction``, ``axial_position`` and
+        :class:`~bearingkit.rows.tapered.row.TaperedRow` fields (``direction``, ``axial_position`` and
         ``name`` are set here).
     """
     checks.positive("spacing", spacing, "m")

@@ -27,10 +27,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.cylindrical import CylindricalRow
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.cylindrical.row import CylindricalRow
 
 #: Axial distance of each axial row's contact plane from the radial row [m]; assumed (seed 000 gives
 #: no section drawing dimensions). Only affects the radial–tilt coupling of the ball grooves.

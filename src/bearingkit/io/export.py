@@ -1,7 +1,7 @@
 """JSON-ready dicts of results, SI values with the unit in every key (``max_load_N``, ``u_x_m``).
 
 Faces (CLI, reports) call these; nothing here recomputes the mechanics: the load distribution comes
-from :meth:`bearingkit.analysis.quasistatic.QuasiStaticResult.to_dict`, the Hertz summary from
+from :meth:`bearingkit.analysis.solver.quasistatic.QuasiStaticResult.to_dict`, the Hertz summary from
 :func:`bearingkit.physics.contact.hertz.point_contact`. Output must never hold NaN or infinity:
 :func:`to_json` refuses them (``allow_nan=False``) and :func:`non_finite_paths` lists offenders.
 """
@@ -20,7 +20,7 @@ def case_dict(bearing, result, index: int) -> dict:
     Parameters
     ----------
     bearing : bearingkit.io.loader.BearingInput
-    result : bearingkit.analysis.quasistatic.QuasiStaticResult
+    result : bearingkit.analysis.solver.quasistatic.QuasiStaticResult
         The solve of ``bearing.cases`` (same order).
     index : int
         Case index.
@@ -58,7 +58,7 @@ def rating_dict(bearing, rating) -> dict:
     Parameters
     ----------
     bearing : bearingkit.io.loader.BearingInput
-    rating : bearingkit.analysis.rating.RatingResult
+    rating : bearingkit.analysis.rating.assembly.RatingResult
         Rating of the solve of ``bearing.cases`` (same order). Masked values are ``None``.
     """
     cases = [{"case": c.name, **rating.to_dict(i)} for i, c in enumerate(bearing.cases)]
@@ -71,9 +71,9 @@ def friction_case_dict(case_name: str, operating_point, friction, index: int) ->
     Parameters
     ----------
     case_name : str
-    operating_point : bearingkit.analysis.friction.OperatingPoint
+    operating_point : bearingkit.analysis.friction.components.OperatingPoint
         Speeds [rad/s] (scalar or per case), lubricant, temperature [°C].
-    friction : bearingkit.analysis.friction.FrictionResult
+    friction : bearingkit.analysis.friction.components.FrictionResult
     index : int
         Case index in ``friction`` (and in per-case speeds of ``operating_point``).
     """
@@ -101,7 +101,7 @@ def engineering_friction_case_dict(case_name: str, result, index: int, speed, te
     Parameters
     ----------
     case_name : str
-    result : bearingkit.analysis.engineering_friction.EngineeringFrictionResult
+    result : bearingkit.analysis.friction.engineering.EngineeringFrictionResult
         Batched over the cases (leading axis).
     index : int
     speed : ndarray (C,) [rad/s]

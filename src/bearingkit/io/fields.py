@@ -169,7 +169,7 @@ def _shoulder(value, info: ValidationInfo) -> dict:
 
 #: Groove shoulder height above the groove bottom (truncation of the contact ellipse, docs/ratings.md): a
 #: length (``"2.5 mm"``) or a TOML number, the fraction of the ball diameter (``0.35``). Stored as
-#: ``{"length": m}`` or ``{"fraction": h/D_w}``; :mod:`bearingkit.io.shoulders` turns it into per-row
+#: ``{"length": m}`` or ``{"fraction": h/D_w}``; :mod:`bearingkit.io.build.shoulders` turns it into per-row
 #: fractions checked against each groove.
 ShoulderHeight = Annotated[
     dict,

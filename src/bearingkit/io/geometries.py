@@ -227,7 +227,7 @@ Deviations = Annotated[
 
 
 class TaperedRollerGeometry(Envelope):
-    """Tapered roller bearing: one row (rows.tapered.TaperedRow fields) or a DB/DF pair."""
+    """Tapered roller bearing: one row (rows.tapered.row.TaperedRow fields) or a DB/DF pair."""
 
     arrangement: Literal["single", "DB", "DF"] = Field(
         "single", description="One row, or two rows back-to-back (DB) / face-to-face (DF)."
@@ -268,7 +268,7 @@ class TaperedRollerGeometry(Envelope):
 
 
 class PTRBGeometrySpec(Strict):
-    """Planetary thread roller bearing (rows.threaded_geometry.PTRBGeometry; E, ν from [material])."""
+    """Planetary thread roller bearing (rows.threaded.geometry.PTRBGeometry; E, ν from [material])."""
 
     bore: PositiveLength = Field(description="Bore d_0 (PTRBGeometry.bore_diameter).")
     outer_diameter: PositiveLength = Field(
@@ -403,8 +403,8 @@ GEOMETRY_MODELS: dict[str, type[BaseModel]] = {
 def _describe_defaults() -> None:
     """Put each builder default (SI) into the description of the matching optional field."""
     from bearingkit.bearings import standard, turntable
-    from bearingkit.rows.tapered import TaperedRow
-    from bearingkit.rows.threaded_geometry import PTRBGeometry
+    from bearingkit.rows.tapered.row import TaperedRow
+    from bearingkit.rows.threaded.geometry import PTRBGeometry
 
     def defaults(cls):
         return {f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING}

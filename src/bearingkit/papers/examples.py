@@ -1,9 +1,9 @@
 """Running the papers' example studies: locate, resize and run ``examples/studies/<name>.toml``.
 
 SI units throughout (N, m, N·m, rad); DataFrame columns carry their unit. Every study here is one of
-the example files in ``examples/studies`` run by :func:`bearingkit.studies.runner.run_study` (the same
+the example files in ``examples/studies`` run by :func:`bearingkit.studies.run.runner.run_study` (the same
 path as ``bearingkit study FILE``); the helpers only change sizes (population, samples) or one fixed
-value, and post-process the :class:`~bearingkit.studies.cases.StudyResult`:
+value, and post-process the :class:`~bearingkit.studies.run.cases.StudyResult`:
 
 - seed 000 (Tian et al. 2025) — ``seed000_l9.toml``: the L9(3^4) design of Tables 2–3, friction torque
   per run matched to Table 3 (:func:`seed000_table3`) and the range ranking (:func:`ranking`);
@@ -22,9 +22,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from bearingkit.studies.cases import StudyResult
-from bearingkit.studies.definition import StudyDefinition, load_study
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition.load import StudyDefinition, load_study
+from bearingkit.studies.run.cases import StudyResult
+from bearingkit.studies.run.runner import run_study
 
 __all__ = ["STUDIES_DIR", "example", "resized", "run_example"]
 

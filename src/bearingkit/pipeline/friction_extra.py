@@ -1,7 +1,7 @@
 """More friction in the pipeline: tapered rows from a file (seed 001), the side-by-side comparison.
 
 SI units (N·m, W, rad/s, °C). :func:`tapered` is the friction model of tapered-roller bearings
-(Liu et al. 2022, :mod:`bearingkit.analysis.trb_friction`), registered as ``"trb"`` and used by
+(Liu et al. 2022, :mod:`bearingkit.analysis.friction.tapered`), registered as ``"trb"`` and used by
 ``"components"`` when every row is tapered. :func:`compare` runs every model that applies to a bearing
 and says in one sentence when each applies (:data:`WHEN`).
 """
@@ -56,7 +56,7 @@ def tapered(analysis) -> FrictionOutcome:
     (Σ F_ro,i R_i), sliding (Σ F_rs,i R_i) and rib (F_fs × arm). Power loss = M_ir |ω| (an upper
     bound: the sliding traction dissipates F_rs v_s, far less, see the notes).
     """
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint, friction_from_state
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint, friction_from_state
 
     op, res = analysis.operating, analysis.statics
     rows = [(r, k) for r, k in zip(res.model.rows, res.model.kernels, strict=True) if r.kind == "tapered"]

@@ -24,7 +24,7 @@ from bearingkit.units import parse
 __all__ = ["DEFAULT_TEMPERATURE", "ROTATING_RINGS", "Operating"]
 
 #: Operating temperature [°C] when neither the load case nor the caller gives one (room temperature,
-#: the default of :class:`bearingkit.analysis.friction.OperatingPoint`).
+#: the default of :class:`bearingkit.analysis.friction.components.OperatingPoint`).
 DEFAULT_TEMPERATURE = 25.0
 #: Which ring turns relative to the load.
 ROTATING_RINGS = ("inner", "outer")

@@ -2,8 +2,9 @@
 
 SI inside: every function reads SI result arrays (N, Pa, m, rad, N·m) and converts only for the axis
 labels (kN, MPa, mm, degrees, N·mm). Faces never recompute physics: these functions only read
-:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult`,
-:class:`~bearingkit.analysis.friction.FrictionResult` and :class:`~bearingkit.analysis.rating.RatingResult`
+:class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult`,
+:class:`~bearingkit.analysis.friction.components.FrictionResult` and
+:class:`~bearingkit.analysis.rating.assembly.RatingResult`
 objects. Each ``*_figure`` returns a :class:`matplotlib.figure.Figure` (or None when there is nothing
 to draw); :func:`png_data_uri` turns one into an inline ``data:image/png;base64,…`` URI.
 

@@ -2,7 +2,7 @@
 
 SI inside (m, N, rad); only the axis labels convert (µm, N, degrees). The functions read
 :class:`~bearingkit.analysis.flexible.FlexibleResult` and
-:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` objects and never recompute mechanics.
+:class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` objects and never recompute mechanics.
 
 - :func:`ring_shape_figure` — unrolled against azimuth: top, the outward radial offset of the
   outer raceway at each element of the chosen rows (thin-ring bending + beam opening) for every

@@ -15,6 +15,7 @@ are rows of a matrix B(ψ, r, z) with u = B q, so a contact law written in the e
 from __future__ import annotations
 
 import copy
+import threading
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -198,3 +199,48 @@ def validate_common(row) -> None:
             f"({np.min(np.pi * np.asarray(row.pitch_diameter) / row.n_elements):.6g} m) must be at least "
             f"element_diameter ({np.max(row.element_diameter):.6g} m)"
         )
+
+
+def concat_cases(arrays):
+    """Concatenate per-row arrays along the element axis after broadcasting their case axes (1 or C).
+
+    What the compiled kernels' packers (``rows/*/compiled.py``) use to flatten every row of a kind.
+    """
+    lead = max(a.shape[0] for a in arrays)
+    arrays = [np.broadcast_to(a, (lead, *a.shape[1:])) for a in arrays]
+    return np.ascontiguousarray(np.concatenate(arrays, axis=1), dtype=np.float64)
+
+
+def steel_e_reduced() -> float:
+    """Reduced modulus E' [Pa] of two bearing-steel bodies (GCr15), every row kind's default."""
+    from bearingkit.materials import e_reduced, get_material
+
+    steel = get_material("GCr15")
+    return float(e_reduced(steel, steel))
+
+
+class InnerStats:
+    """Effort of a kernel's roller sub-problems, shared by the kernel and its per-case copies.
+
+    Attributes
+    ----------
+    calls : int
+        Roller solves so far.
+    iterations_max : int
+        Most Newton steps one solve took.
+    unconverged : int
+        Rollers, summed over solves, that reached the iteration cap without meeting the tolerance.
+    """
+
+    def __init__(self):
+        self.calls = 0
+        self.iterations_max = 0
+        self.unconverged = 0
+        self._lock = threading.Lock()  # copies of one kernel run on the solver's thread pool
+
+    def record(self, iterations: int, unconverged: int) -> None:
+        """Add one solve."""
+        with self._lock:
+            self.calls += 1
+            self.iterations_max = max(self.iterations_max, iterations)
+            self.unconverged += unconverged

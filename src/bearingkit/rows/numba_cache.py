@@ -1,8 +1,8 @@
 """Where numba keeps the compiled core: a cache directory per version of the compiled sources.
 
 numba's on-disk cache (``cache=True``) checks only the time stamp of the file that defines a
-function. The compiled Newton loop (``analysis/compiled_newton.py``) calls the row responses of
-``rows/compiled_contacts.py`` and ``rows/compiled_tapered.py``; after an edit of a row module alone
+function. The compiled Newton loop (``analysis/solver/compiled_newton.py``) calls the row responses of
+``rows/*/compiled.py``; after an edit of a row module alone
 (a ``git checkout``, a merge) the loop's cached machine code still holds the old responses and runs
 them silently. Keying the cache directory by a hash of every compiled source (and the numba
 version) makes any change recompile everything, and lets identical sources share one cache.
@@ -20,10 +20,12 @@ from pathlib import Path
 #: The modules holding ``@njit(cache=True)`` functions, relative to the package root. A new compiled
 #: module must be listed here (tests/rows/test_numba_cache.py checks that every one is).
 COMPILED_SOURCES = (
-    "rows/compiled_contacts.py",
-    "rows/compiled_tapered.py",
-    "analysis/compiled_linalg.py",
-    "analysis/compiled_newton.py",
+    "rows/ball/compiled.py",
+    "rows/cylindrical/compiled.py",
+    "rows/threaded/compiled.py",
+    "rows/tapered/compiled.py",
+    "analysis/solver/compiled_linalg.py",
+    "analysis/solver/compiled_newton.py",
 )
 
 _PACKAGE = Path(__file__).resolve().parent.parent

@@ -51,7 +51,15 @@ from typing import ClassVar
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.rows.base import KernelBase, RacewayOffset, RowResponse, RowState, azimuths, validate_common
+from bearingkit.rows.base import (
+    KernelBase,
+    RacewayOffset,
+    RowResponse,
+    RowState,
+    azimuths,
+    steel_e_reduced,
+    validate_common,
+)
 
 #: Hertz point-contact and line-contact load exponents (Harris & Kotzalas 2007 eq. 6.43; Kunert 1961).
 POINT_EXPONENT = 1.5
@@ -391,11 +399,10 @@ class SelfAligningKernel(KernelBase):
 
     def __init__(self, row):
         from bearingkit.physics.contact import hertz, line
-        from bearingkit.rows.ball import _steel_e_reduced
 
         self.row = row
         self.roller = row.kind == "spherical_roller"
-        self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else _steel_e_reduced()
+        self.e_reduced = float(row.e_reduced) if row.e_reduced is not None else steel_e_reduced()
         alpha, d, dm = float(row.contact_angle), float(row.element_diameter), float(row.pitch_diameter)
         self.psi = azimuths(row.n_elements, row.azimuth_phase)[0]  # (Z,)
         self.m_rz = (np.cos(alpha), np.sin(alpha))  # the unloaded line in each element's (r, z) plane

@@ -2,7 +2,7 @@
 [--allow-plugin MODULE:ATTR]``.
 
 SI units in every written table (units in the column names). :func:`run_cli` is what the
-``bearingkit study`` command calls; it runs the study (:func:`bearingkit.studies.runner.run_study`),
+``bearingkit study`` command calls; it runs the study (:func:`bearingkit.studies.run.runner.run_study`),
 streams chunks to ``DIR/chunks`` and writes, in ``DIR``:
 
 - ``results.parquet`` and ``results.csv`` — every case with its outputs;
@@ -61,15 +61,15 @@ def run_cli(
     -----
     Everything that can refuse the study (the file, the evaluator, the bearing file, the cases) is
     checked before ``out`` is created: a refused study leaves no folder. The final files are published
-    as one set (:func:`bearingkit.studies.outputs.publish`).
+    as one set (:func:`bearingkit.studies.run.publish.publish`).
     """
     from bearingkit.studies import evaluators
-    from bearingkit.studies.cases import plan_study
-    from bearingkit.studies.definition import load_study
-    from bearingkit.studies.executors import make_executor
-    from bearingkit.studies.outputs import publish
-    from bearingkit.studies.runner import run_study
-    from bearingkit.studies.store import ParquetStore
+    from bearingkit.studies.definition.load import load_study
+    from bearingkit.studies.run.cases import plan_study
+    from bearingkit.studies.run.executors import make_executor
+    from bearingkit.studies.run.publish import publish
+    from bearingkit.studies.run.runner import run_study
+    from bearingkit.studies.run.store import ParquetStore
 
     for spec in allow_plugins:
         evaluators.allow_plugin(spec)
@@ -104,7 +104,7 @@ def _bearing_of(file) -> str:
     """The bearing a ``--list-*`` request is about: FILE itself, or the ``bearing`` of a study FILE."""
     import tomllib
 
-    from bearingkit.studies.generic import is_designation
+    from bearingkit.studies.generic.evaluator import is_designation
 
     text = str(file)
     if is_designation(text):
@@ -135,8 +135,8 @@ def list_outputs(file) -> list[tuple[str, str, str]]:
     FILE is a bearing file, a designation, or a study file (its ``bearing`` is used).
     """
     from bearingkit.io.loader import from_dict
-    from bearingkit.studies import quantities
-    from bearingkit.studies.generic import load_bearing
+    from bearingkit.studies.generic import quantities
+    from bearingkit.studies.generic.evaluator import load_bearing
 
     source = _bearing_of(file)
     bearing = from_dict(load_bearing(source)[0], source)
@@ -151,8 +151,8 @@ def list_factors(file) -> list[tuple[str, str, str, str, str]]:
     """(path, SI unit, kind, nominal value, the names a text path takes) of every factor path of FILE
     (as :func:`list_outputs`)."""
     from bearingkit.io.loader import from_dict
-    from bearingkit.studies.generic import _paths as paths_of
-    from bearingkit.studies.generic import load_bearing
+    from bearingkit.studies.generic.evaluator import _paths as paths_of
+    from bearingkit.studies.generic.evaluator import load_bearing
 
     source = _bearing_of(file)
     bearing = from_dict(load_bearing(source)[0], source)
@@ -182,14 +182,14 @@ def _named(row) -> str:
 
 def _dimensions(d) -> dict:
     """Factor name → physical dimension (for the plots' display units)."""
-    from bearingkit.studies.definition import evaluator_of
+    from bearingkit.studies.definition.load import evaluator_of
 
     return {name: f.dimension for name, f in evaluator_of(d).factors.items()}
 
 
 def _writers(res, fingerprint: str, echo) -> dict:
     """Output name → function writing it (summary.json last: it lists the others with their sizes)."""
-    from bearingkit.studies import analysis
+    from bearingkit.studies.results import analysis
 
     d = res.definition
     w = {
@@ -223,7 +223,7 @@ def _writers(res, fingerprint: str, echo) -> dict:
         w["statistics.csv"] = lambda p: res.analysis["statistics"].to_csv(p, index=False)
         echo(f"{len(res.results)} draws → statistics.csv (mean, std, min, max, quantiles of every output)")
     if d.plots:
-        from bearingkit.studies import figures
+        from bearingkit.studies.results import figures
 
         dims = _dimensions(d)
         quantiles = d.monte_carlo.quantiles if d.monte_carlo is not None else d.quantiles

@@ -71,7 +71,7 @@ class Evaluator:
     """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors.
 
     ``fill_defaults`` False: the cases carry only the factors a study sets (the evaluator takes the
-    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic` does);
+    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic.evaluator` does);
     ``factor_noun`` says in messages what a factor is (default "a factor of evaluator NAME").
     """
 
@@ -111,7 +111,7 @@ class Evaluator:
             cases = self.complete(cases)
         else:  # a shallow copy (copy-on-write): the function may add columns without touching ours
             cases = cases.copy(deep=False)
-        if not _default_index(cases.index, len(cases)):
+        if not is_default_index(cases.index, len(cases)):
             cases = cases.reset_index(drop=True)
         out = self.function(cases)
         if len(out) != len(cases):
@@ -221,36 +221,7 @@ def get(name: str) -> Evaluator:
     )
 
 
-def evaluate_chunk(evaluator, cases, with_ids: bool = True):
-    """Evaluate one chunk (top-level, picklable: what executors send to workers).
-
-    ``evaluator`` is the :class:`Evaluator` itself (resolved once, by the process that read the study
-    file; a worker never resolves a name from data) or the name of a built-in. The chunk runs with
-    one BLAS thread in every executor (:func:`bearingkit.studies.executors.one_blas_thread`): OpenBLAS
-    splits a matrix product differently for another thread count and the last bits of a result
-    depend on it, so this is what makes the executors agree bit for bit.
-
-    Returns the cases' ``case`` ids (0… when ``cases`` has no ``case`` column) joined with the outputs;
-    ``with_ids`` False: the outputs alone, row for row (a caller that keeps the order itself).
-    """
-    from bearingkit.studies.executors import one_blas_thread
-
-    ev = evaluator if isinstance(evaluator, Evaluator) else get(evaluator)
-    ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))
-    if len(cases.columns) and cases.columns[0] == "case":
-        cases = cases.iloc[:, 1:]  # as drop(columns=["case"]), at a quarter of its cost in pandas 3
-    elif "case" in cases.columns:
-        cases = cases.drop(columns=["case"])
-    with one_blas_thread():
-        out = ev(cases)
-    if not _default_index(out.index, len(out)):
-        out = out.reset_index(drop=True)
-    if with_ids:
-        out.insert(0, "case", ids)
-    return out
-
-
-def _default_index(index, n: int) -> bool:
+def is_default_index(index, n: int) -> bool:
     """True for the RangeIndex 0…n−1 (what reset_index(drop=True) would make)."""
     import pandas as pd
 

@@ -1,14 +1,14 @@
 """Ratings, lives and friction of every bearing of a shaft, and the system life.
 
 SI units; lives in revolutions of the shaft (``*_rev``) and hours (``*_h``, at the cases' speed).
-Each bearing is rated at its seat state by the bearing API (:func:`bearingkit.analysis.rating.rate`,
+Each bearing is rated at its seat state by the bearing API (:func:`bearingkit.analysis.rating.assembly.rate`,
 ISO 76 / ISO 281 / ISO/TS 16281, inner ring rotating with the shaft). The system life combines the
 bearings as independently failing Weibull members (ISO 281:2007 eq. (7) and (12) slopes; Lundberg &
 Palmgren 1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8):
 
     L_sys = (Σ_i L_i^(−e))^(−1/e)     (one slope e: 10/9 balls, 9/8 rollers),
 
-computed by :func:`bearingkit.analysis.rating.system_life` over the rows of all bearings, which for
+computed by :func:`bearingkit.analysis.rating.assembly.system_life` over the rows of all bearings, which for
 rows of one slope per bearing is exactly this formula over the bearings and solves the Weibull
 equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed. :func:`combine_ratings` does
 the combination for bearings already rated (the shaft's pipeline analyses,
@@ -22,8 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.rating import HOUR, system_life
+from bearingkit.analysis.rating.assembly import HOUR, system_life
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso281
 
@@ -91,7 +91,7 @@ def rate_system(result, **options) -> SystemRating:
     ----------
     result : ShaftResult
     **options
-        Passed to :func:`bearingkit.analysis.rating.rate` (``reliability``, ``lubricant``,
+        Passed to :func:`bearingkit.analysis.rating.assembly.rate` (``reliability``, ``lubricant``,
         ``temperature_C``, ``contamination_factor``, ``load_ratings`` …). ``speed`` defaults to the
         load cases' shaft speed; ``rotating`` is "inner" (the shaft turns the inner rings).
 
@@ -99,7 +99,7 @@ def rate_system(result, **options) -> SystemRating:
     -------
     SystemRating
     """
-    from bearingkit.analysis.rating import rate
+    from bearingkit.analysis.rating.assembly import rate
 
     if "rotating" in options:
         raise InputError("rotating: the shaft turns the inner rings; rotating is not an option here")
@@ -171,7 +171,7 @@ def combine_ratings(ratings: dict, converged, speed=None) -> SystemRating:
 
 
 def friction_system(result, lubricant=None, temperature=None, **operating_point) -> tuple[dict, list]:
-    """Friction torque of every bearing (:func:`bearingkit.analysis.friction.friction_torque`).
+    """Friction torque of every bearing (:func:`bearingkit.analysis.friction.components.friction_torque`).
 
     Parameters
     ----------
@@ -181,9 +181,9 @@ def friction_system(result, lubricant=None, temperature=None, **operating_point)
         Default: each bearing's own input file's ``[lubricant]``.
     temperature : float, optional [°C]
         Default: the cases' temperatures (cases are grouped by temperature), else the default of
-        :class:`~bearingkit.analysis.friction.OperatingPoint`.
+        :class:`~bearingkit.analysis.friction.components.OperatingPoint`.
     **operating_point
-        Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields.
+        Further :class:`~bearingkit.analysis.friction.components.OperatingPoint` fields.
 
     Returns
     -------
@@ -191,7 +191,7 @@ def friction_system(result, lubricant=None, temperature=None, **operating_point)
         Total friction torque per bearing, and notes for the bearings without one (no lubricant, or
         a row kind the component model does not cover).
     """
-    from bearingkit.analysis.friction import OperatingPoint, friction_torque
+    from bearingkit.analysis.friction.components import OperatingPoint, friction_torque
 
     n = result.n_cases
     if result.loads.speed is None:
@@ -231,7 +231,7 @@ def friction_system(result, lubricant=None, temperature=None, **operating_point)
 
 def _cases_of(result, cases):
     """A QuasiStaticResult restricted to some cases (the per-element state is recomputed lazily)."""
-    from bearingkit.analysis.quasistatic import QuasiStaticResult
+    from bearingkit.analysis.solver.quasistatic import QuasiStaticResult
 
     return QuasiStaticResult(
         model=_model_of(result.model, cases, len(result.load)),
@@ -251,7 +251,7 @@ def _model_of(model, cases, n_cases: int):
     """A model whose per-case speeds (a ModelAtSpeed's) are restricted to ``cases`` of the batch."""
     import dataclasses
 
-    from bearingkit.analysis.speed import ModelAtSpeed, model_at_speed
+    from bearingkit.analysis.solver.speed import ModelAtSpeed, model_at_speed
 
     if not isinstance(model, ModelAtSpeed):
         return model

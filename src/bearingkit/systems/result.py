@@ -5,7 +5,7 @@ the reaction (force and moment of the bearing on the shaft, (F_x, F_y, F_z, M_x,
 displacement and tilt, and the outer ring's. In the bearing's own frame: the load it carries
 (= −contact force on its inner ring, the ``load`` of a single-bearing analysis), the relative
 displacement q its rows see (its misalignment is the relative tilt |(θ_x, θ_y)|), its tangent
-stiffness, and its full :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` (element loads,
+stiffness, and its full :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` (element loads,
 contact angles, pressures) from which ratings and friction follow through their usual API.
 
 Shaft lines. Nodal displacements (C, N, 5) are exact (:mod:`bearingkit.systems.beam`). Internal
@@ -23,7 +23,7 @@ from functools import cached_property
 import numpy as np
 from scipy.linalg import cho_solve
 
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
 from bearingkit.systems import beam
@@ -129,7 +129,7 @@ class ShaftResult:
         return self.system.bearings[i].law if self.laws is None else self.laws[i]
 
     def model(self, name: str):
-        """The bearing's model as solved: a :class:`~bearingkit.analysis.speed.ModelAtSpeed` when the
+        """The bearing's model as solved: a :class:`~bearingkit.analysis.solver.speed.ModelAtSpeed` when the
         shaft turns, else the bearing's own model (LinearBearing for a linear stiffness)."""
         return self.law(name).bearing
 
@@ -186,13 +186,13 @@ class ShaftResult:
         return out
 
     def bearing_result(self, name: str):
-        """The bearing's :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` at its seat state.
+        """The bearing's :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` at its seat state.
 
         Load = what the bearing carries (bearing frame), displacement = q; convergence and residual are
         the system's; its model has the rows at the cases' shaft speed (:meth:`model`). Not available
         for a :class:`~bearingkit.systems.supports.LinearBearing`.
         """
-        from bearingkit.analysis.quasistatic import QuasiStaticResult
+        from bearingkit.analysis.solver.quasistatic import QuasiStaticResult
 
         b = self.system.bearings[self._index(name)]
         if not isinstance(b.bearing, BearingModel):
@@ -235,9 +235,9 @@ class ShaftResult:
 
     # -- lives ----------------------------------------------------------------------------------
     def rating(self, **options):
-        """Ratings of every bearing (:func:`bearingkit.analysis.rating.rate`) and the system life.
+        """Ratings of every bearing (:func:`bearingkit.analysis.rating.assembly.rate`) and the system life.
 
-        ``options`` go to :func:`~bearingkit.analysis.rating.rate` (``reliability``, ``lubricant``,
+        ``options`` go to :func:`~bearingkit.analysis.rating.assembly.rate` (``reliability``, ``lubricant``,
         ``temperature_C``, ``contamination_factor`` …); the speed is the load cases' shaft speed and
         the inner rings rotate. Returns a :class:`bearingkit.systems.life.SystemRating`.
         """

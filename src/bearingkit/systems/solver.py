@@ -15,7 +15,7 @@ analytic Jacobian J_b and energy U_b. Equilibrium
     R(x) = F − K x + Σ_b P_bᵀ f_b(P_b x + c_b) = 0
 
 is the stationary point of the convex potential Π = ½ xᵀ K x − F·x + Σ_b U_b, so the damped Newton
-of the single-bearing solver (:mod:`bearingkit.analysis.quasistatic`) applies unchanged: a vanishing
+of the single-bearing solver (:mod:`bearingkit.analysis.solver.quasistatic`) applies unchanged: a vanishing
 Levenberg term (no contact closed at the start), steps capped to 2 % of the smallest element diameter,
 Armijo backtracking on the cases still backtracking only, steps never along unloaded zero-stiffness
 mechanisms (an unloaded floating bearing's outer ring), load continuation for the cases that fail;
@@ -26,7 +26,7 @@ pitch radius L so the residual is one relative number: max |R| (moments / L) ≤
 Speed: each bearing's law has its rows at the load case's shaft speed
 (:meth:`~bearingkit.systems.supports.BearingSeat.law_at`, per case), and a case where a bearing at
 speed is beyond what the speed model holds is marked not converged with the reason, as a
-single-bearing solve at speed (:func:`bearingkit.analysis.speed.flag_beyond_model`).
+single-bearing solve at speed (:func:`bearingkit.analysis.solver.speed.flag_beyond_model`).
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ import numpy as np
 from scipy.linalg import cho_factor, cho_solve
 
 from bearingkit import checks
-from bearingkit.analysis.quasistatic import _merge, _newton
+from bearingkit.analysis.solver.quasistatic import _merge, _newton
 from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.rows.base import LOAD_NAMES, N_DOF
 from bearingkit.systems.beam import NODE_DOF
@@ -214,7 +214,7 @@ class ShaftSystem:
 
 
 class _Problem:
-    """The condensed, scaled system for the Newton of :mod:`bearingkit.analysis.quasistatic`."""
+    """The condensed, scaled system for the Newton of :mod:`bearingkit.analysis.solver.quasistatic`."""
 
     def __init__(self, laws, projections, offsets, stiffness, scale, options, limit, max_step):
         self.laws = laws
@@ -469,8 +469,8 @@ def solve(
 
 def _flag_beyond_model(result) -> None:
     """Cases where a bearing at speed is beyond what the speed model holds: not converged, with the
-    reason (:func:`bearingkit.analysis.speed.flag_beyond_model` on each bearing's state), in place."""
-    from bearingkit.analysis.speed import ModelAtSpeed, flag_beyond_model
+    reason (:func:`bearingkit.analysis.solver.speed.flag_beyond_model` on each bearing's state), in place."""
+    from bearingkit.analysis.solver.speed import ModelAtSpeed, flag_beyond_model
 
     for b, law in zip(result.system.bearings, result.laws, strict=True):
         if not isinstance(law.bearing, ModelAtSpeed):

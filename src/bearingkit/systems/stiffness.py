@@ -11,7 +11,7 @@ k_xy come from a radial load that is not along x or y and from tilt coupling.
 A table is a list of operating points (load (5,), speed) with their K: from a grid of loads × speeds
 on one bearing (:func:`bearing_stiffness_table`, one batched solve per speed) or from the seats of a
 solved shaft (:func:`shaft_stiffness_table`, one point per load case). Speed enters both as it enters
-``bearingkit analyze --speed`` (:mod:`bearingkit.analysis.speed`): ball rows with their balls'
+``bearingkit analyze --speed`` (:mod:`bearingkit.analysis.solver.speed`): ball rows with their balls'
 centrifugal force and gyroscopic moment, cylindrical and tapered rows with the rollers' centrifugal
 force; a shaft's table is the tangent of each bearing as the shaft solved it, at the case's speed.
 """
@@ -149,7 +149,7 @@ class StiffnessTable:
 def speed_dependent(model) -> bool:
     """Whether any row of the model changes with speed: the kinds with a speed kernel (ball
     centrifugal force and gyroscopic moment, cylindrical and tapered roller centrifugal force)."""
-    from bearingkit.analysis.speed import SPEED_KERNELS
+    from bearingkit.analysis.solver.speed import SPEED_KERNELS
 
     return any(r.kind in SPEED_KERNELS or hasattr(r, "speed") for r in model.rows)
 
@@ -165,7 +165,7 @@ def bearing_stiffness_table(model, loads, speeds=(0.0,), *, free=None, options=N
     speeds : array_like (S,) [rad/s]
         Inner-ring speeds; with no speed-dependent row the table is solved once and repeated.
     free : array_like of 5 bool, optional
-        DOFs solved for (see :func:`bearingkit.analysis.quasistatic.solve`); K is the full tangent
+        DOFs solved for (see :func:`bearingkit.analysis.solver.quasistatic.solve`); K is the full tangent
         stiffness either way.
     options : SolverOptions, optional
     name : str, optional
@@ -176,7 +176,7 @@ def bearing_stiffness_table(model, loads, speeds=(0.0,), *, free=None, options=N
     StiffnessTable
         L × S points, load-major (point l·S + s is load l at speed s).
     """
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
 
     loads = np.atleast_2d(np.asarray(loads, dtype=float))
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))

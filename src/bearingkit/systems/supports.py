@@ -20,7 +20,7 @@ single angular contact or tapered bearings set against each other.
 
 Speed. The inner rings turn with the shaft at the load case's shaft speed Ω, the outer rings stand.
 A bearing's rows then include their rolling elements' inertia exactly as a single-bearing solve at
-speed (:func:`bearingkit.analysis.speed.model_at_speed`: ball rows with centrifugal force and
+speed (:func:`bearingkit.analysis.solver.speed.model_at_speed`: ball rows with centrifugal force and
 gyroscopic moment, cylindrical and tapered rows with the rollers' centrifugal force), per load case.
 About its own axis z' a bearing turned ``"-z"`` sees the inner ring turn at −Ω (only the sign of
 friction torques depends on it; the inertia terms depend on Ω²). Element density and raceway control
@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.rows.base import N_DOF, RowResponse
 
@@ -217,13 +217,14 @@ class BearingSeat:
         return self.transform[2, 2] * np.asarray(shaft_speed, dtype=float)
 
     def speed_of(self, shaft_speed):
-        """The :class:`~bearingkit.analysis.speed.OperatingSpeed` of this bearing at shaft speed Ω (C,).
+        """The :class:`~bearingkit.analysis.solver.speed.OperatingSpeed` of this bearing at shaft speed Ω
+        (C,).
 
         Inner ring at :meth:`seat_speed`, outer ring at rest; element density from the bearing file's
-        material (else :data:`~bearingkit.analysis.speed.DEFAULT_ELEMENT_DENSITY`) and the file's
+        material (else :data:`~bearingkit.analysis.solver.speed.DEFAULT_ELEMENT_DENSITY`) and the file's
         ``[operating] raceway_control`` (else "outer"), as a single-bearing analysis at speed.
         """
-        from bearingkit.analysis.speed import DEFAULT_ELEMENT_DENSITY, OperatingSpeed
+        from bearingkit.analysis.solver.speed import DEFAULT_ELEMENT_DENSITY, OperatingSpeed
 
         src = self.source
         density = getattr(getattr(src, "material", None), "density", None) or DEFAULT_ELEMENT_DENSITY
@@ -241,7 +242,7 @@ class BearingSeat:
         """
         if shaft_speed is None or not isinstance(self.bearing, BearingModel):
             return self.law
-        from bearingkit.analysis.speed import model_at_speed
+        from bearingkit.analysis.solver.speed import model_at_speed
 
         speed = self.speed_of(shaft_speed)
         if not speed.moving:

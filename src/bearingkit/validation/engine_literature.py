@@ -40,7 +40,7 @@ _E = 2.3e11  # [Pa] E′ of steel; the ratios checked here do not depend on it
 
 
 def _many_ball_row(contact_angle):
-    from bearingkit.rows.ball import BallRow
+    from bearingkit.rows.ball.row import BallRow
 
     return BallRow(
         n_elements=_Z,
@@ -56,8 +56,8 @@ def _many_ball_row(contact_angle):
 
 def harris_integrals(eps: float) -> dict:
     """J_r, J_a and F_r tan α / F_a of a Z = 180 angular row at ratio ε (displacement control)."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.analysis.solver.quasistatic import solve
 
     model = BearingModel((_many_ball_row(_ALPHA),))
     delta_r = 1e-7  # small against A0 = 600 µm, so the contact angle stays at α (Harris assumes it fixed)
@@ -74,8 +74,8 @@ def harris_integrals(eps: float) -> dict:
 
 def stribeck_ball() -> float:
     """Q_max Z cos α / F_r for a zero-clearance radial ball row under pure radial load."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
 
     model = BearingModel((_many_ball_row(0.0),))
     res = solve(model, load_vector(F_x=2000.0), free=[True, True, False, False, False], raise_on_failure=True)
@@ -84,9 +84,9 @@ def stribeck_ball() -> float:
 
 def stribeck_line() -> float:
     """Q_max Z / F_r for a zero-clearance radial row of straight rollers under pure radial load."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.analysis.quasistatic import load_vector, solve
-    from bearingkit.rows.cylindrical import CylindricalRow
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
+    from bearingkit.rows.cylindrical.row import CylindricalRow
 
     row = CylindricalRow(
         n_elements=_Z,
@@ -108,7 +108,7 @@ def stribeck_line() -> float:
 
 def pure_axial_ratio() -> float:
     """Q·Z·sin α / F_a for an angular contact row under pure axial load (exactly 1: equal loads)."""
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.standard import angular_contact_ball
 
     model = angular_contact_ball(

@@ -19,7 +19,7 @@ _DEG = np.pi / 180
 
 def _four_point_moment_factor() -> float:
     """Q_max Z d_m sin α / M of a zero-clearance four-point row under a pure moment (1/J_r, point)."""
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.slewing import slewing_ring_four_point
 
     ring = slewing_ring_four_point(n_elements=120, element_diameter=0.02, pitch_diameter=1.0)
@@ -31,7 +31,7 @@ def _four_point_moment_factor() -> float:
 
 def _crossed_radial_factor() -> float:
     """Q_max Z cos α / F_r of a zero-clearance crossed roller row under a radial load (1/J_r, line)."""
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.slewing import slewing_ring_crossed_roller
 
     ring = slewing_ring_crossed_roller(
@@ -43,7 +43,7 @@ def _crossed_radial_factor() -> float:
 
 def _self_aligning_axial() -> float:
     """Pure axial load on a spherical roller bearing: Q Z sin α_op / F_a (one row carries; exact 1)."""
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.self_aligning import spherical_roller
 
     srb = spherical_roller(

@@ -39,8 +39,8 @@ def _dgbb_rating() -> float:
 
 
 def _thrust_life() -> float:
-    from bearingkit.analysis.quasistatic import load_vector, solve
-    from bearingkit.analysis.rating import rate
+    from bearingkit.analysis.rating.assembly import rate
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.standard import thrust_ball
 
     res = solve(thrust_ball(**_THRUST), load_vector(F_z=_FA))
@@ -48,8 +48,8 @@ def _thrust_life() -> float:
 
 
 def _dgbb_life() -> float:
-    from bearingkit.analysis.quasistatic import load_vector, solve
-    from bearingkit.analysis.rating import rate
+    from bearingkit.analysis.rating.assembly import rate
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.standard import deep_groove_ball
 
     res = solve(deep_groove_ball(**_DGBB), load_vector(F_x=_FR), free=[True, True, False, False, False])

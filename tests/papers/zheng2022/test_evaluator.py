@@ -4,11 +4,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
+from bearingkit.analysis.friction.threaded import RPM, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_ratings
 from bearingkit.papers.zheng2022 import evaluators as zev
 from bearingkit.papers.zheng2022.design import design_geometry
-from bearingkit.studies.evaluators import evaluate_chunk
+from bearingkit.studies.run.executors import evaluate_chunk
 
 #: (α [deg], n, R_rr [m], d_R [m]): the prototype, corners of the §5 ranges, a Table 6-like design.
 DESIGNS = [

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.ptrb_friction import RPM, PTRBFrictionParameters, ptrb_friction
+from bearingkit.analysis.friction.threaded import RPM, PTRBFrictionParameters, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype
 from bearingkit.papers.zheng2022 import studies as s
 from bearingkit.papers.zheng2022 import validation_friction as v

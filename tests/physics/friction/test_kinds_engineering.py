@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from bearingkit.analysis import engineering_friction as ef
+from bearingkit.analysis.friction import engineering as ef
 from bearingkit.errors import InputError
 from bearingkit.physics.friction import palmgren, skf
 

@@ -5,7 +5,7 @@ import pytest
 from scipy import integrate
 from scipy.special import ellipe
 
-from bearingkit.analysis.ptrb_friction import RPM, PTRBFrictionParameters, ptrb_friction
+from bearingkit.analysis.friction.threaded import RPM, PTRBFrictionParameters, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
 from bearingkit.papers.zheng2022 import validation_friction as v

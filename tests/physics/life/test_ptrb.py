@@ -65,7 +65,7 @@ def test_dynamic_rating_large_ball_branch_continuous_enough():
 def test_calibration_reproduces_published_static_ratings():
     """The calibration constants are what C0a = 38.36 kN and C0r = 19.93 kN require (flat flanks)."""
     from bearingkit.bearings.ptrb import ptrb_prototype
-    from bearingkit.rows.threaded import contact_pairs
+    from bearingkit.rows.threaded.row import contact_pairs
 
     g = ptrb_prototype()
     p = contact_pairs(g)["inner"]

@@ -5,7 +5,7 @@ SI units (m, N). ``examples/studies/seed002_clearance_map.toml``.
 
 from __future__ import annotations
 
-from bearingkit.studies.cases import StudyResult
+from bearingkit.studies.run.cases import StudyResult
 
 #: Columns of the generic evaluator's study (paths into ball_column_condition1.toml) → short names.
 GENERIC_COLUMNS = {
@@ -37,7 +37,7 @@ def seed002_clearance_map(result: StudyResult):
 
 def plot_clearance_map(table, path):
     """Heat maps of the roller share at each load over ball × roller clearance [µm] (PNG)."""
-    from bearingkit.studies.analysis import _plt
+    from bearingkit.studies.results.analysis import _plt
 
     plt = _plt()
     cols = [c for c in table.columns if c.startswith("roller_share_")]

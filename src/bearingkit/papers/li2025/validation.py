@@ -43,7 +43,7 @@ _OVAL = (
 
 
 def _count(row: str, scale: float | None, bending: bool = False) -> float:
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.bearings.ball_column import BallColumnGeometry
     from bearingkit.papers.li2025.studies import CONDITIONS, solve_case
 

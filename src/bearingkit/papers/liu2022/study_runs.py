@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.papers.examples import example, resized
-from bearingkit.studies.definition import load_study
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition.load import load_study
+from bearingkit.studies.run.runner import run_study
 
 
 def seed001_monte_carlo(magnitudes=None, *, samples=None, store_dir=None, executor=None, progress=False):
@@ -33,7 +33,7 @@ def seed001_monte_carlo(magnitudes=None, *, samples=None, store_dir=None, execut
     """
     import pandas as pd
 
-    from bearingkit.analysis.trb_friction import SEED001_MAGNITUDES
+    from bearingkit.analysis.friction.tapered import SEED001_MAGNITUDES
 
     mags = SEED001_MAGNITUDES if magnitudes is None else tuple(float(m) for m in magnitudes)
     base = load_study(example("seed001_monte_carlo"))
@@ -80,7 +80,7 @@ def seed001_summary(realisations):
 
 def plot_seed001(realisations, path):
     """Histograms of the max contact force and of the sliding increment, one colour per S_d (PNG)."""
-    from bearingkit.studies.analysis import _plt
+    from bearingkit.studies.results.analysis import _plt
 
     plt = _plt()
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))

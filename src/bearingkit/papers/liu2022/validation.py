@@ -39,7 +39,7 @@ _CACHE: dict = {}
 
 def _table3():
     if "stats" not in _CACHE:
-        from bearingkit.analysis.trb import contact_forces
+        from bearingkit.analysis.scatter import contact_forces
         from bearingkit.bearings.tapered import seed001_row
         from bearingkit.physics.deviations import seed001_series
 
@@ -49,7 +49,7 @@ def _table3():
 
 
 def _ideal_max():
-    from bearingkit.analysis.trb import contact_forces
+    from bearingkit.analysis.scatter import contact_forces
     from bearingkit.bearings.tapered import seed001_row
 
     return float(contact_forces(seed001_row(), AXIAL_LOAD).max_contact_force[0])

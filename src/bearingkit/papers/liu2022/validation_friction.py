@@ -63,7 +63,7 @@ _CACHE: dict = {}
 
 def _solved():
     if "solved" not in _CACHE:
-        from bearingkit.analysis.trb_friction import SEED001_SPEED, solve_rollers
+        from bearingkit.analysis.friction.tapered import SEED001_SPEED, solve_rollers
         from bearingkit.bearings.tapered import seed001_row
         from bearingkit.physics.deviations import seed001_series
 
@@ -73,7 +73,7 @@ def _solved():
 
 
 def _friction(cage_slip, sliding_model=None):
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint
 
     key = ("friction", cage_slip, sliding_model)
     if key not in _CACHE:

@@ -123,7 +123,7 @@ STATICS = register(
 
 # ------------------------------------------------------------------------------ seed 000 friction
 def _friction_factors() -> dict[str, Factor]:
-    from bearingkit.analysis.friction import OperatingPoint
+    from bearingkit.analysis.friction.components import OperatingPoint
 
     defaults = {f.name: f.default for f in dataclasses.fields(OperatingPoint)}
     out = dict(SEED000_FACTORS)
@@ -139,7 +139,8 @@ def seed000_friction(cases):
     """Statics (:func:`seed000_statics`) plus the friction torque of the seed-000 bearing [N·m].
 
     Operating point: inner ring at ``speed`` [rad/s], outer ring fixed, ``lubricant`` at ``temperature``
-    [°C], ``viscosity_factor`` and ``cage_mass`` [kg] as :class:`bearingkit.analysis.friction.OperatingPoint`.
+    [°C], ``viscosity_factor`` and ``cage_mass`` [kg] as
+    :class:`bearingkit.analysis.friction.components.OperatingPoint`.
     """
 
     def conditions(sub, key) -> dict:

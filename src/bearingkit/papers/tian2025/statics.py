@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.studies.cases import StudyResult
+from bearingkit.studies.run.cases import StudyResult
 
 #: Seed 000 §6.2 / Fig. 20: eccentricity D > axial roller clearance A > groove curvature C > ball clearance B.
 SEED000_PUBLISHED_RANKING = ("D", "A", "C", "B")
@@ -77,7 +77,7 @@ def seed000_published_ranges() -> dict:
     """Range R [N·m] of each factor label computed from the published Table 3 torques (§6.2 method)."""
     import pandas as pd
 
-    from bearingkit.studies import analysis
+    from bearingkit.studies.results import analysis
 
     t = pd.DataFrame(_table3(), columns=[*SEED000_LABELS, "torque_Nmm"])
     t["torque_Nm"] = t["torque_Nmm"] / 1e3

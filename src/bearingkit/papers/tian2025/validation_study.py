@@ -1,7 +1,7 @@
 """Validation cases of Tian et al. (2025) computed through the study machinery: Table 3 and its ranges.
 
 SI values (N·m). The group runs ONE study (``examples/studies/seed000_l9.toml`` through
-:func:`bearingkit.studies.runner.run_study`, in process, memory store), cached per process:
+:func:`bearingkit.studies.run.runner.run_study`, in process, memory store), cached per process:
 
 * ``seed000/study/table3/run<k>/friction-torque`` (k = 1..9) — Table 3 from the L9 study; published
   values, tolerance and known deviations are those of the direct cases

@@ -18,7 +18,7 @@ from bearingkit.studies.evaluators import (
 
 # ------------------------------------------------------------------------------ seed 004 PTRB objectives
 def _seed004_factors() -> dict[str, Factor]:
-    from bearingkit.analysis.ptrb_friction import RPM, TEST_TEMPERATURE_C
+    from bearingkit.analysis.friction.threaded import RPM, TEST_TEMPERATURE_C
     from bearingkit.bearings.ptrb import ptrb_prototype
 
     p = ptrb_prototype()

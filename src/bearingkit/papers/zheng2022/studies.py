@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
+from bearingkit.analysis.friction.threaded import RPM, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype, ptrb_ratings
 from bearingkit.errors import InputError
 from bearingkit.papers.zheng2022.design import design_geometry
@@ -134,7 +134,7 @@ def table5_sweep(parameter: str, values=None, load=20.0 * KN, speed=4000.0 * RPM
     speed : float
         ω [rad/s].
     **friction_kwargs
-        Passed to :func:`bearingkit.analysis.ptrb_friction.ptrb_friction`.
+        Passed to :func:`bearingkit.analysis.friction.threaded.ptrb_friction`.
     """
     unit, factor, vals = _values(parameter, values)
     rows = []
@@ -314,7 +314,7 @@ def table6_at_published_designs(parameters=None, roller_count=None) -> pd.DataFr
     None: :data:`TABLE6_ROLLER_COUNT`; an int: that Z everywhere). Columns: ``point``, ``n_elements``,
     computed ``C0a_N, Ca_N, mu_a, C0r_N, Cr_N, mu_r``, the published values (``*_pub``) and relative
     errors (``*_err``). ``parameters``: a
-    :class:`~bearingkit.analysis.ptrb_friction.PTRBFrictionParameters` (None: the defaults).
+    :class:`~bearingkit.analysis.friction.threaded.PTRBFrictionParameters` (None: the defaults).
     """
     from bearingkit.papers.zheng2022.design import ptrb_objectives
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.papers.examples import run_example
-from bearingkit.studies.cases import StudyResult
+from bearingkit.studies.run.cases import StudyResult
 
 
 def seed004_optimize(case: str = "axial", *, pop_size=None, generations=None, **run) -> StudyResult:
@@ -86,7 +86,7 @@ def table6_comparison(result: StudyResult, case: str | None = None):
 
 def export_front(result: StudyResult, out_dir) -> dict:
     """Write the Pareto front, the selections and the Table 6 comparison (CSV) and a front plot (PNG)."""
-    from bearingkit.studies import analysis
+    from bearingkit.studies.results import analysis
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

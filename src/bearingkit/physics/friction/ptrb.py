@@ -153,7 +153,7 @@ DEFAULT_VISCOUS_PROJECTION = {k: v[0] for k, v in PROJECTIONS_OF_CONVENTION.item
 #:   against the book); within 1 % of ``"ball"`` on Tables 5, 7 and 8.
 VISCOUS_RADII_Y = ("ball", "flank", "rolling")
 #: The complete power-balance reading (the default before the literal one), as keyword arguments of
-#: :func:`contact_torques` and :class:`bearingkit.analysis.ptrb_friction.PTRBFrictionParameters`:
+#: :func:`contact_torques` and :class:`bearingkit.analysis.friction.threaded.PTRBFrictionParameters`:
 #: Tables 7–8 within 5.3 %, Table 5 directions 7/10 (d_R both loads and α axial opposite).
 POWER_BALANCE_OPTIONS = {
     "convention": "power",

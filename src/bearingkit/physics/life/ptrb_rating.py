@@ -21,7 +21,7 @@ The load-distribution coefficients f_amax (axial: largest tooth load over the me
 f_rmax (radial: share of F_r carried by the most loaded roller) come from an earlier paper (Zheng et
 al. 2020) and are not published; :func:`calibrated_distribution_coefficients` is the ONE place where
 bearingkit calibrates them (against C0a and C0r of the prototype only). The physical model of the
-distribution is in :mod:`bearingkit.rows.threaded_distribution`.
+distribution is in :mod:`bearingkit.rows.threaded.distribution`.
 
 References: ``zheng2022`` (doi:10.3390/machines10111051), ``zheng2021`` (doi:10.1115/1.4048983),
 ``zheng2020`` (doi:10.1155/2020/9593051), ``iso76``, ``iso281``, ``harris2007``.
@@ -437,8 +437,8 @@ def calibrated_distribution_coefficients(n_elements):
 
     C_a and C_r are not touched by the calibration (C_r does not contain f_rmax; C_a uses f_amax from
     C_0a). The physical distribution model
-    (:func:`bearingkit.rows.threaded_distribution.axial_tooth_distribution`,
-    :func:`bearingkit.rows.threaded_distribution.radial_roller_distribution`) gives f_amax ≈ 1.0 … 1.1 and
+    (:func:`bearingkit.rows.threaded.distribution.axial_tooth_distribution`,
+    :func:`bearingkit.rows.threaded.distribution.radial_roller_distribution`) gives f_amax ≈ 1.0 … 1.1 and
     f_rmax = 4.37/Z … 3.95/Z, the same order.
 
     Parameters

@@ -1,0 +1,28 @@
+"""Friction assemblies on a solved bearing (SI units: N·m, W, rad/s).
+
+- ``components`` — the physical component model (hysteresis, differential sliding, viscous rolling,
+  ball spin, cage; :func:`friction_torque`) on the element kinematics of ``kinematics``;
+- ``engineering`` — the SKF four-component and Palmgren catalogue models of standard bearings;
+- ``tapered`` — seed 001's tapered-roller model (EHL rolling, sliding, flange, cage slip);
+- ``threaded`` — seed 004's planetary thread-roller model.
+
+The physics of each (pure functions) is in :mod:`bearingkit.physics.friction`. The public names of the
+component model are importable from here: ``from bearingkit.analysis.friction import friction_torque``.
+"""
+
+from importlib import import_module
+
+_EXPORTS = {
+    "friction_torque": "components",
+    "OperatingPoint": "components",
+    "FrictionResult": "components",
+    "engineering_friction_moment": "engineering",
+    "EngineeringFrictionResult": "engineering",
+}
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name):  # the re-exports load on first use: importing the package stays cheap
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

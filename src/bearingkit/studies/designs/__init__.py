@@ -1,0 +1,1 @@
+"""Case generators of design studies (``generators``): sweeps, factorials, orthogonal arrays, Monte Carlo."""
