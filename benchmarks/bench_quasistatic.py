@@ -268,8 +268,9 @@ def bench_baseline(model, loads: np.ndarray, stats: dict, n_slices: int) -> list
 
 def _kernel_rates() -> tuple[float, float]:
     """Measured cost on this machine of one ninth root [s] (the compiled slice law) and one flop [s]."""
-    from bearingkit.rows.cylindrical.compiled import ninth_root
     from numba import njit
+
+    from bearingkit.rows.cylindrical.compiled import ninth_root
 
     @njit(cache=False)
     def roots(d, y, reps):

@@ -24,7 +24,7 @@ from bearingkit.physics.deviations import seed001_series
 #: Every example file of one bearing (shaft-system files hold several and are solved by systems/).
 EXAMPLES = [
     p
-    for p in sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
+    for p in sorted((Path(__file__).resolve().parents[3] / "examples").glob("*.toml"))
     if "bearing" in tomllib.loads(p.read_text(encoding="utf-8"))
 ]
 COMPILED = SolverOptions(backend="compiled")
@@ -112,7 +112,7 @@ def test_kernels_at_speed_run_the_numpy_path():
     from bearingkit.analysis.solver import compiled_newton
     from bearingkit.analysis.solver.speed import model_at_speed
 
-    inp = load_file(Path(__file__).resolve().parents[2] / "examples" / "acbb_7209.toml")
+    inp = load_file(Path(__file__).resolve().parents[3] / "examples" / "acbb_7209.toml")
     assert compiled_newton.pack_model(inp.model.kernels) is not None
     fast = model_at_speed(inp.model, np.full(len(inp.cases), 2000.0))
     assert compiled_newton.pack_model(fast.kernels) is None

@@ -78,7 +78,7 @@ def test_compiled_and_numpy_nnls_agree_where_the_inner_loop_meets_round_off():
     from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.io.loader import load_file
 
-    bearing = load_file(Path(__file__).resolve().parents[2] / "examples" / "dgbb_6209.toml")
+    bearing = load_file(Path(__file__).resolve().parents[3] / "examples" / "dgbb_6209.toml")
     plan = qs._plan(bearing.model, qs._free_key(bearing.free), bearing.options, None)
     g = np.ascontiguousarray(plan.cone_matrix)
     # Full precision: the round-off path needs the exact values (bench_generic's 6209 cases).
