@@ -10,7 +10,7 @@ The physics of each (pure functions) is in :mod:`bearingkit.physics.friction`. T
 component model are importable from here: ``from bearingkit.analysis.friction import friction_torque``.
 """
 
-from importlib import import_module
+from bearingkit.lazy import exports
 
 _EXPORTS = {
     "friction_torque": "components",
@@ -21,8 +21,4 @@ _EXPORTS = {
 }
 __all__ = sorted(_EXPORTS)
 
-
-def __getattr__(name):  # the re-exports load on first use: importing the package stays cheap
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__ = exports(__name__, _EXPORTS)  # loaded on first use: importing the package stays cheap

@@ -5,7 +5,7 @@ Layers inside, bottom first: ``model``, ``cone``, ``solution`` → ``newton``, `
 The public names are importable from here: ``from bearingkit.analysis.solver import solve``.
 """
 
-from importlib import import_module
+from bearingkit.lazy import exports
 
 _EXPORTS = {
     "solve": "quasistatic",
@@ -17,8 +17,4 @@ _EXPORTS = {
 }
 __all__ = sorted(_EXPORTS)
 
-
-def __getattr__(name):  # the re-exports load on first use: importing the package stays cheap
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__ = exports(__name__, _EXPORTS)  # loaded on first use: importing the package stays cheap
