@@ -41,6 +41,11 @@ def _num(x, scale: float, fmt: str = ".3g") -> str:
     return "—" if x is None else format(x * scale, fmt)
 
 
+def _hours(x) -> str:
+    """Hours as whole numbers up to 10⁷ h, beyond in powers of ten (no '2.33e+04 h' for 23 300 h)."""
+    return "—" if x is None else (f"{x:.0f}" if x < 1e7 else f"{x:.3g}")
+
+
 @app.command()
 @one_line_errors
 def catalogue(
@@ -178,8 +183,8 @@ def select(
                 _num(c["C_iso281_N"], 1e-3),
                 c["C_source"],
                 _num(c["P_iso281_N"], 1e-3),
-                _num(c["L10h_iso281_h"], 1.0, ".4g"),
-                _num(c["L10h_iso16281_h"], 1.0, ".4g"),
+                _hours(c["L10h_iso281_h"]),
+                _hours(c["L10h_iso16281_h"]),
                 _num(c["static_safety"], 1.0),
             )
         console.print(table)
