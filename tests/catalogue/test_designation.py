@@ -25,7 +25,7 @@ def test_bore_codes(code, bore):
         ("61805-2RS1", "deep_groove_ball", "61805", None, ("2RS1",)),
         ("16008", "deep_groove_ball", "16008", None, ()),
         ("7206B", "angular_contact_ball", "7206B", None, ()),
-        ("7206 BECBP", "angular_contact_ball", "7206B", None, ("ECBP",)),
+        ("7206 BECBP", "angular_contact_ball", "7206B", None, ("E", "CB", "P")),
         ("7308AC", "angular_contact_ball", "7308AC", None, ()),
         ("3205 A", "double_row_angular_contact_ball", "3205", None, ()),
         ("QJ 308", "four_point_contact_ball", "QJ308", None, ()),
@@ -67,17 +67,33 @@ def test_unknown_type_suggests_nearest():
     assert "\n" not in msg and "nearest:" in msg and "6205" in msg
 
 
-def test_unknown_suffix_names_the_token():
-    with pytest.raises(InputError, match=r"suffix 'XYZ' not recognised") as exc:
-        parse("6205-XYZ")
-    assert "\n" not in str(exc.value)
+def test_unknown_suffix_is_kept_and_named():
+    # a maker's code bearingkit does not know is not refused: it is kept and named in a note
+    d = parse("6205-XYZ")
+    assert d.base == "6205" and d.unknown == ("XYZ",)
+    assert any("XYZ" in n and "not known" in n for n in d.notes)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "nearest"),
+    [
+        ("6308-2RS1/C7", "clearance class", "C5"),
+        ("6205-P3", "tolerance class", "P4"),
+        ("6205-2RX", "seal", "2RS"),
+    ],
+)
+def test_wrong_enumerated_suffix_answers_nearest_spellings(text, kind, nearest):
+    with pytest.raises(InputError) as exc:
+        parse(text)
+    msg = str(exc.value)
+    assert "\n" not in msg and kind in msg and "nearest valid spellings" in msg and nearest in msg
 
 
 def test_bore_outside_table_names_range_and_nearest():
     with pytest.raises(InputError) as exc:
         parse("6299")
     msg = str(exc.value)
-    assert "bore 495 mm" in msg and "10–80 mm of series 62" in msg and "nearest: 6216" in msg
+    assert "bore 495 mm" in msg and "10–200 mm of series 62" in msg and "nearest: 6240" in msg
 
 
 def test_angular_contact_needs_angle_suffix():

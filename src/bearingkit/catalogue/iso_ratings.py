@@ -7,8 +7,9 @@ bearing (one rating for the whole bearing, on the basis the catalogue prints, :d
 - radial ball / roller rows: C_r with i rows, C_0r (ISO 281 cl. 5.1, 7.1; ISO 76 cl. 6.1, 7.1);
   spherical roller bearings i = 2 with b_m = 1.15, needle roller bearings b_m = 1.1 (machined rings);
 - thrust rows (α = 90°): C_a, C_0a (ISO 281 cl. 6.1, 8.1; ISO 76 cl. 8.1, 9.1);
-- self-aligning ball: C_r, C_0r with i = 2 and the f_c, f0 of :mod:`bearingkit.physics.life.kinds`
-  (derived there, not transcribed: ISO 281 Table 2 column 3 and ISO 76 Table 1 column 2 are not shipped);
+- self-aligning ball: C_r, C_0r with i = 2, the f_c of :mod:`bearingkit.physics.life.kinds` (derived
+  there: ISO 281 Table 2 column 3 is not shipped) and ISO 76 Table 1 column 2's f0 (shipped from memory,
+  checked against the stress definition: ``kinds.f0_self_aligning_ball_table``);
 - four-point (QJ): rated as the double-row angular contact ball bearing at 35° that ISO's equivalent-load
   factors describe (ISO 281 Table 3 / ISO 76 Table 2, double-row column: e = 0.95, Y = 1.07 for
   F_a/F_r > e, Y0 = 0.58 — the factors SKF prints for QJ bearings, P = 0.6 F_r + 1.07 F_a,
@@ -84,7 +85,9 @@ def ratings(est: Estimate) -> tuple[float | None, float | None]:
         c = iso281.dynamic_rating_ball(
             dw, dm, a, z, est.rows, kind, fc=life_kinds.fc_self_aligning_ball(gamma, fi)
         )
-        c0 = iso76.static_rating_ball(dw, dm, a, z, est.rows, f0=life_kinds.f0_self_aligning_ball(gamma, fi))
+        c0 = iso76.static_rating_ball(
+            dw, dm, a, z, est.rows, f0=life_kinds.f0_self_aligning_ball_table(gamma)
+        )
         return float(c), float(c0)
     if est.effective_length is None:
         c = iso281.dynamic_rating_ball(dw, dm, a, z, est.rows, kind)

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from bearingkit.catalogue import clearances as clearance_mod
 from bearingkit.catalogue import designation as designation_mod
-from bearingkit.catalogue import tables
+from bearingkit.catalogue import pairs, tables
 from bearingkit.catalogue.internal import Estimate, envelope_margins, estimate, with_element_diameter
 from bearingkit.catalogue.iso_ratings import ratings
 from bearingkit.errors import InputError
@@ -37,8 +37,11 @@ class Resolved:
     geometry : dict
         ``[geometry]`` fields in SI (m, rad; counts and conformities as numbers).
     C, C0 : float or None [N]
-        ISO 281 / ISO 76 ratings of the estimated geometry.
+        ISO 281 / ISO 76 ratings of the estimated geometry (one bearing; a pair's are in ISO 281's
+        paired-unit law, :func:`bearingkit.physics.life.iso281.paired_unit_ratings`).
     notes : tuple of str
+    preload_force : float or None [N]
+        The axial preload of a DB/DF pair (a class or a given force; :mod:`.pairs`), None without.
     """
 
     designation: object
@@ -48,6 +51,7 @@ class Resolved:
     C: float | None
     C0: float | None
     notes: tuple
+    preload_force: float | None = None
 
     @property
     def source(self) -> str:
@@ -55,8 +59,8 @@ class Resolved:
         return "; ".join(self.notes)
 
 
-def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) -> Resolved:
-    """Resolve ``text`` (e.g. ``"6205-2RS C3"``).
+def resolve(text: str, C: float | None = None, clearance_position: float = 0.5, preload=None) -> Resolved:
+    """Resolve ``text`` (e.g. ``"6205-2RS C3"``, ``"7014 C DB"``).
 
     Parameters
     ----------
@@ -67,6 +71,9 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) 
         ±:data:`CALIBRATION_BAND` so the ISO 281 C of the estimate equals it (count and pitch kept).
     clearance_position : float
         Where in the ISO 5753-1 class range the radial clearance is taken (0 min, 0.5 mean, 1 max).
+    preload : str or float, optional
+        Preload of a DB/DF pair: a class (``"light"`` …, :data:`.pairs.PRELOAD_FRACTIONS`) or a force [N];
+        replaces the designation's preload class (``DBB``, ``GA``, ``UL`` …).
     """
     des = designation_mod.parse(text)
     entry = tables.entries(des.family)[des.base]
@@ -77,14 +84,53 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) 
     notes = list(est.notes)
     bearing_type = tables.FAMILIES[des.family][1]
     geometry = _geometry(est, des, notes, clearance_position)
-    plain = [s for s in des.suffixes if s not in designation_mod.BORE_SUFFIXES]
+    acting = (des.arrangement, des.preload_code, des.tapered_bore)
+    plain = [s for s in des.suffixes if s not in acting]
     if plain:
         notes.append(f"suffixes {' '.join(plain)} noted (no effect on the mechanics)")
+    notes.extend(des.notes)
     if entry.C is not None:
         notes.append(
             f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
         )
-    return Resolved(des, est, bearing_type, geometry, c, c0, tuple(notes))
+    force = None
+    if des.is_pair:
+        bearing_type, force = _pair(des, est, geometry, notes, preload, entry.C or c)
+    elif preload is not None:
+        raise InputError(
+            f"preload ({preload!r}): {des.base} is a single bearing; a preload is set on a pair, e.g. "
+            f"'{des.text} DB' (DB back-to-back, DF face-to-face)"
+        )
+    return Resolved(des, est, bearing_type, geometry, c, c0, tuple(notes), force)
+
+
+def _pair(des, est: Estimate, geometry: dict, notes: list, preload, rating: float):
+    """Bearing type and preload force [N] of a DB/DF/DT pair; the pair's fields go into ``geometry``."""
+    spacing = pairs.row_spacing(est.entry.width)
+    what = "T" if des.family == "tapered_roller" else "B"
+    notes.append(
+        f"matched pair {des.arrangement} of two {des.base}: rows {what} = {spacing * 1e3:g} mm apart "
+        "(bearings side by side without spacer)"
+    )
+    geometry.update(arrangement=des.arrangement, row_spacing=spacing)
+    if des.family == "angular_contact_ball":
+        geometry.pop("clearance", None)
+        geometry["clearance_axial"] = 0.0
+        bearing_type = "angular_contact_pair"
+    else:
+        bearing_type = "tapered_roller"
+    chosen = preload if preload is not None else des.preload_class
+    if chosen is None:
+        notes.append(
+            "no preload given: the rows touch without play or preload (give a preload class or force)"
+        )
+        return bearing_type, None
+    if des.arrangement == "DT":
+        notes.append(f"preload {chosen}: a tandem pair carries load in one direction only; no preload is set")
+        return bearing_type, None
+    force, note = pairs.preload_force(chosen, rating)
+    notes.append(note)
+    return bearing_type, force
 
 
 def _calibrate(est: Estimate, target: float) -> Estimate:
@@ -263,4 +309,4 @@ def _clearance(est: Estimate, des, notes: list, position: float) -> float | None
 
 
 def _tapered_bore(des) -> bool:
-    return any(s in designation_mod.BORE_SUFFIXES for s in des.suffixes)
+    return des.tapered_bore is not None

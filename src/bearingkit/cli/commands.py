@@ -24,6 +24,7 @@ from bearingkit.cli.common import (
     _JSON_OPTION,
     _LOAD_OPTION,
     _LUBRICANT_OPTION,
+    _PRELOAD_OPTION,
     _ROTATING_OPTION,
     _SPEED_OPTION,
     _TEMPERATURE_OPTION,
@@ -95,10 +96,11 @@ def analyze(
     load: list[str] = _LOAD_OPTION,
     case: list[str] = _CASE_OPTION,
     speed: str = _SPEED_OPTION,
+    preload: str = _PRELOAD_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """Quasi-static load distribution of every load case with its warnings; exit 1 if one diverges."""
-    a = _analysis(file, load, case, speed=speed)
+    a = _analysis(file, load, case, preload=preload, speed=speed)
     data = a.statics_dict()
     if as_json:
         _print_json(file, data)
@@ -142,6 +144,7 @@ def rating(
     load_rating: list[str] = typer.Option(
         None, "--load-rating", help="ROW=C replacing the ISO 281 rating of a row, e.g. roller_upper=50kN."
     ),
+    preload: str = _PRELOAD_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing."""
@@ -149,6 +152,7 @@ def rating(
         file,
         load,
         case,
+        preload=preload,
         speed=speed,
         temperature=temperature,
         rotating=rotating,
@@ -352,65 +356,6 @@ def report(
     )
     path = a.report(output)
     console.print(f"wrote {path}")
-
-
-@app.command()
-@one_line_errors
-def catalogue(
-    pattern: str = typer.Argument("*", help="Designation pattern, e.g. '62*', 'NU22*', '7206*'."),
-    as_json: bool = _JSON_OPTION,
-):
-    """List standard bearings: d, D, B and the catalogue and estimated ISO 281 C / ISO 76 C0."""
-    from bearingkit.catalogue import basis, estimate, find, ratings
-    from bearingkit.cli.tables import _num
-
-    rows = find(pattern)
-    if not rows:
-        raise InputError(f"catalogue pattern ({pattern!r}) matches no designation; try '62*' or '*'")
-    out = []
-    for e in rows:
-        try:
-            c, c0 = ratings(estimate(e))
-        except InputError:
-            c = c0 = None
-        out.append(
-            {
-                "designation": e.designation,
-                "family": e.family,
-                "d_m": e.bore,
-                "D_m": e.outer_diameter,
-                "B_m": e.width,
-                "C_catalogue_N": e.C,
-                "C0_catalogue_N": e.C0,
-                "C_estimate_N": c,
-                "C0_estimate_N": c0,
-                "rating_basis": basis(e.family),
-                "source": e.source,
-            }
-        )
-    if as_json:
-        sys.stdout.write(json.dumps(out, indent=1) + "\n")
-        return
-    table = Table(title=f"bearingkit catalogue {pattern}: {len(out)} designations (C, C0 in kN)")
-    for col in ("designation", "d mm", "D mm", "B mm", "C cat.", "C est.", "C0 cat.", "C0 est.", "source"):
-        table.add_column(col, justify="left" if col in ("designation", "source") else "right", no_wrap=True)
-    for r in out:
-        table.add_row(
-            r["designation"],
-            f"{r['d_m'] * 1e3:g}",
-            f"{r['D_m'] * 1e3:g}",
-            f"{r['B_m'] * 1e3:g}",
-            _num(r["C_catalogue_N"], 1e-3, ".3g"),
-            _num(r["C_estimate_N"], 1e-3, ".3g"),
-            _num(r["C0_catalogue_N"], 1e-3, ".3g"),
-            _num(r["C0_estimate_N"], 1e-3, ".3g"),
-            r["source"],
-        )
-    console.print(table)
-    console.print("C est., C0 est.: ISO 281 / ISO 76 of the ESTIMATED internal geometry (docs/catalogue.md)")
-    for fam in dict.fromkeys(r["family"] for r in out):
-        if basis(fam) != "radial":
-            console.print(f"{fam.replace('_', ' ')}: C, C0 are {basis(fam)}")
 
 
 @app.command()

@@ -74,6 +74,12 @@ _ROTATING_OPTION = typer.Option(
     "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
 )
 _LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
+_PRELOAD_OPTION = typer.Option(
+    None,
+    "--preload",
+    help="Preload of a pair named by designation ('7014 C DB'): extra_light, light, medium, heavy (a rule "
+    "on C, docs/catalogue.md) or a force such as 480N.",
+)
 _CONTAMINATION_OPTION = typer.Option(
     None,
     "--contamination",
@@ -90,8 +96,9 @@ _OPTION_UNITS = {
 }
 
 
-def _analysis(file: Path, load, case, **operating):
-    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some)."""
+def _analysis(file: Path, load, case, preload: str | None = None, **operating):
+    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some);
+    ``preload`` is ``--preload`` (a pair named by designation)."""
     from bearingkit.io.loader import parse_load_options
     from bearingkit.pipeline import analyze, load_input
     from bearingkit.units import parse
@@ -102,7 +109,7 @@ def _analysis(file: Path, load, case, **operating):
     if operating.get("rotating", "inner") not in ("inner", "outer"):
         raise InputError(f"--rotating ({operating['rotating']!r}) must be one of inner, outer")
 
-    bearing = load_input(file)
+    bearing = load_input(file, preload=preload)
     if load:
         if case:
             raise InputError("--case selects file load cases; it cannot be combined with --load")

@@ -53,6 +53,11 @@ class BearingHeader(Strict):
         description="Where in the clearance class of the designation the clearance is taken: min, mean, "
         "max or a percentile 0 … 100 of the class range (with designation).",
     )
+    preload: str | None = Field(
+        None,
+        description="Preload of a DB/DF pair named by designation ('7014 C DB'): extra_light, light, "
+        "medium, heavy (a rule on C, docs/catalogue.md) or a force such as '480 N'.",
+    )
     name: str = Field("", description="Designation shown in results and reports.")
     source: str = Field(
         "", description="Where the geometry comes from (paper, table, catalogue, assumption)."
@@ -87,6 +92,11 @@ class BearingHeader(Strict):
             raise InputError("type: missing required field (or give designation = '6205-2RS C3')")
         if self.C is not None and self.designation is None:
             raise InputError("C: calibrates an estimated geometry; give it together with designation")
+        if self.preload is not None and self.designation is None:
+            raise InputError(
+                "preload: sets the preload of a pair named by designation ('7014 C DB'); for a bearing "
+                "given by its geometry use [operating] preload_force"
+            )
         if self.clearance_position != "mean" and self.designation is None:
             raise InputError(
                 "clearance_position: picks a clearance in a designation's class; give designation"

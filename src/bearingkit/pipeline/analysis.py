@@ -243,10 +243,17 @@ class Analysis(AnalysisOutput):
         entry = tables.entries(des.family).get(des.base)
         given = getattr(header, "C", None)
         if given is not None:
-            return float(given), None if entry is None else entry.C0
-        if entry is None or entry.C is None:
+            c, c0 = float(given), None if entry is None else entry.C0
+        elif entry is None or entry.C is None:
             return None
-        return entry.C, entry.C0
+        else:
+            c, c0 = entry.C, entry.C0
+        if des.is_pair:  # the catalogue rates one bearing: ISO 281's paired unit (C 2^0.7, 2^(7/9); C0 2)
+            from bearingkit.physics.life.iso281 import paired_unit_ratings
+
+            element = tables.FAMILIES[des.family][2]
+            c, c0 = (None if x is None else float(x) for x in paired_unit_ratings(c, c0, element, 2))
+        return c, c0
 
     def _shoulder_heights(self):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""

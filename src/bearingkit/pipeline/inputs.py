@@ -47,13 +47,26 @@ def load_cases_from(load, name: str = "load") -> list:
     return [loader.parse_load_options(_as_items(load), name)]
 
 
+#: Endings of input files: a text ending so is a path even when no such file exists.
+_FILE_SUFFIXES = (".toml", ".json")
+
+
 def _is_designation(source) -> bool:
-    """Text that names no existing file and no TOML/JSON path is a bearing designation (``6205-2RS C3``)."""
-    path = Path(source)
-    return not path.exists() and path.suffix.lower() not in (".toml", ".json") and "/" not in str(source)
+    """Text that names no existing file and does not end in .toml/.json is a bearing designation.
+
+    Designations contain slashes (``6308-2RS1/C3``, ``7014 CD/P4A``, ``302/22``): a slash alone does not
+    make a path (the command line hands every argument over as a Path).
+    """
+    text = str(source)
+    if text.strip().lower().endswith(_FILE_SUFFIXES):
+        return False
+    try:
+        return not Path(text).exists()
+    except (OSError, ValueError):  # a name the file system refuses (too long, NUL) is no file
+        return True
 
 
-def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> loader.BearingInput:
+def load_input(source, *, load=None, cases: Sequence[str] | None = None, preload=None) -> loader.BearingInput:
     """The bearing input an analysis runs on.
 
     Parameters
@@ -66,6 +79,9 @@ def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> load
         Load case(s) replacing the file's (see :func:`load_cases_from`).
     cases : sequence of str, optional
         Only the file's load cases with these names (not with ``load``).
+    preload : str, optional
+        Preload of a pair named by designation (``"7014 C DB"``): ``"light"`` … or a force ``"480 N"``
+        (``[bearing] preload``, docs/catalogue.md); only with a designation.
 
     Returns
     -------
@@ -78,7 +94,15 @@ def load_input(source, *, load=None, cases: Sequence[str] | None = None) -> load
         bearing = loader.from_dict(dict(source))
     elif isinstance(source, (str, Path)):
         if _is_designation(source):
-            bearing = loader.from_dict({"bearing": {"designation": str(source)}}, source=str(source))
+            header = {"designation": str(source)}
+            if preload is not None:
+                header["preload"] = str(preload)
+            bearing = loader.from_dict({"bearing": header}, source=str(source))
+        elif preload is not None:
+            raise InputError(
+                f"{source}: preload sets a pair named by designation ('7014 C DB'); in a bearing file give "
+                "[operating] preload_force"
+            )
         else:
             bearing = loader.load_file(Path(source))
     else:

@@ -8,10 +8,12 @@ lubrication inputs, L_nm = a1 a_ISO L10 with a_ISO from the rows' κ, e_C and C_
 
 Which bearings have an ISO 281 P: one row (deep groove, angular contact, thrust ball; cylindrical,
 tapered, thrust roller; four-point, self-aligning, spherical, needle through
-:data:`bearingkit.physics.life.kinds.KIND_LOAD_LAWS`) and two equal rows of opposite contact angle (or 0°)
-side by side, rated as a double-row bearing with C = i^0.7 C_row (ball) or i^(7/9) C_row (roller) and
-C0 = i C0_row (ISO 281 eq. (2), (9); ISO 76 eq. (1), (3)). Anything else (composites of unequal rows,
-tandem sets, crossed roller and slewing rings, threaded rows) gets a note instead of an invented X/Y.
+:data:`bearingkit.physics.life.kinds.KIND_LOAD_LAWS`) and two equal ball or tapered rows side by side,
+rated as ISO 281's paired unit (:func:`bearingkit.physics.life.iso281.paired_unit_ratings`): C = 2^0.7
+C_row (ball) or 2^(7/9) C_row (roller), C0 = 2 C0_row, with the double-row X, Y for rows of opposite
+contact angle (DB, DF; or 0°) and the single-row X, Y for a tandem set (DT). Anything else (composites
+of unequal rows, two cylindrical rows, crossed roller and slewing rings, threaded rows) gets a note
+instead of an invented X/Y.
 """
 
 from __future__ import annotations
@@ -25,9 +27,6 @@ from bearingkit.errors import InputError
 from bearingkit.physics.life import iso76, iso281, iso281_life, iso281_load
 from bearingkit.physics.life import kinds as life_kinds
 
-#: Exponent of the row count in C of a multi-row bearing of equal rows: ISO 281:2007 eq. (2) (ball, i^0.7)
-#: and eq. (9) (roller, (i L_we)^(7/9)).
-ROW_COUNT_EXPONENT = {"ball": 0.7, "roller": 7.0 / 9.0}
 #: Relative tolerance for "equal rows" (element size, pitch diameter, |α|).
 _SAME = 1e-9
 #: F_r or F_a below this fraction of the larger one is round-off of a fixed DOF's reaction (taken as 0).
@@ -84,8 +83,15 @@ def _equal(a, b) -> bool:
     return bool(np.allclose(np.asarray(a, float), np.asarray(b, float), rtol=_SAME, atol=0.0))
 
 
-def _law(model, ratings) -> tuple[str, int, float] | str:
-    """(ISO 281 P law, number of rows i, nominal α [rad]) of the bearing, or the reason it has none."""
+def _direction(row):
+    """Sign of the axial load a row carries: its contact angle (ball) or direction (tapered)."""
+    if row.kind == "tapered":
+        return np.sign(float(getattr(row, "direction", 1)))
+    return np.sign(np.asarray(getattr(row, "contact_angle", 0.0), float))
+
+
+def _law(model, ratings) -> tuple[str, int, float, int] | str:
+    """(ISO 281 P law, rows i, nominal α [rad], rows of the X, Y) of the bearing, or why it has none."""
     rows = list(model.rows)
     kind = rows[0].kind
     if getattr(model, "metadata", {}).get(_SLEWING_KEY):
@@ -103,21 +109,22 @@ def _law(model, ratings) -> tuple[str, int, float] | str:
         same = a.kind == b.kind and all(
             _equal(getattr(a, k), getattr(b, k)) for k in ("element_diameter", "pitch_diameter", "n_elements")
         )
-        signs = np.sign(np.asarray(getattr(a, "contact_angle", 0.0), float)) * np.sign(
-            np.asarray(getattr(b, "contact_angle", 0.0), float)
-        )
-        if not same or not _equal(_alpha(a), _alpha(b)) or kind in ("tapered", "cylindrical"):
+        signs = _direction(a) * _direction(b)
+        if not same or not _equal(_alpha(a), _alpha(b)) or kind == "cylindrical":
             return (
                 "ISO 281 gives no X, Y for this two-row composite (unequal rows, or rows ISO 281 does not "
                 "rate as one bearing): no ISO 281 basic rating life (see L10r)"
             )
-        if alpha > 0 and np.any(signs > 0) and kind == "ball":
-            return (
-                "ISO 281 X, Y of a tandem pair are not implemented: no ISO 281 basic rating life (see L10r)"
-            )
+        if alpha > 0 and np.all(signs > 0) and kind in ("ball", "tapered"):
+            arrangement = "DT"  # a tandem set: the single-row X, Y (ISO 281 paired mounting)
+        elif alpha > 0 and np.any(signs > 0):
+            return "ISO 281 gives no X, Y for rows of mixed directions: no ISO 281 basic rating life"
+        else:
+            arrangement = "DB"  # DB or DF: one double-row bearing
     n_rows = len(rows)
+    xy_rows = iso281.PAIRED_UNIT_XY_ROWS[arrangement] if n_rows == 2 else n_rows
     if kind in life_kinds.KIND_LOAD_LAWS:
-        return life_kinds.KIND_LOAD_LAWS[kind][0], n_rows, alpha
+        return life_kinds.KIND_LOAD_LAWS[kind][0], n_rows, alpha, xy_rows
     btype = ratings[0].bearing_type
     law = {
         "deep_groove_ball": "deep_groove_ball",
@@ -130,7 +137,7 @@ def _law(model, ratings) -> tuple[str, int, float] | str:
     }.get(btype)
     if law is None:
         return f"ISO 281 gives no X, Y for a {btype} bearing: no ISO 281 basic rating life (see L10r)"
-    return law, n_rows, alpha
+    return law, n_rows, alpha, xy_rows
 
 
 def _equivalent_load(fr, fa, p_law, alpha, n_rows, c0, f0, notes):
@@ -182,14 +189,20 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
     law = _law(result.model, ratings)
     if isinstance(law, str):
         return _none(n, law)
-    p_law, n_rows, alpha = law
+    p_law, n_rows, alpha, xy_rows = law
     row, rr = result.model.rows[0], ratings[0]
     element = rr.element
     c_row = np.ma.getdata(rr.load_rating)[0] if not np.ma.getmaskarray(rr.load_rating)[0] else None
     c0_row = np.ma.getdata(rr.static_rating)[0] if not np.ma.getmaskarray(rr.static_rating)[0] else None
     source = "given" if rr.name in opts.load_ratings else "computed"
-    c = None if c_row is None else float(c_row) * n_rows ** ROW_COUNT_EXPONENT[element]
-    c0 = None if c0_row is None else float(c0_row) * n_rows
+    c = c0 = None
+    if c_row is not None:  # i rows of one bearing or a paired unit: the same i^0.7 / i^(7/9) law
+        c, c0 = (
+            None if x is None else float(x)
+            for x in iso281.paired_unit_ratings(c_row, c0_row, element, n_rows)
+        )
+    elif c0_row is not None:
+        c0 = float(c0_row) * n_rows
     c0_cu = c0
     if catalogue is not None and catalogue[0] is not None:
         c, source = float(catalogue[0]), "catalogue"
@@ -215,7 +228,7 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
     if p_law == "deep_groove_ball":
         gamma = float(np.max(row.element_diameter)) / float(np.max(row.pitch_diameter))
         f0 = iso76.f0_radial_ball(gamma)
-    p, failed = _equivalent_load(fr, fa, p_law, alpha, n_rows, c0, f0, notes)
+    p, failed = _equivalent_load(fr, fa, p_law, alpha, xy_rows, c0, f0, notes)
     if failed.all():
         return _none(n, "; ".join(notes))
     mask = ~np.asarray(result.converged, bool) | ~(p > 0) | failed

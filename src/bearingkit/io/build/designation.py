@@ -30,9 +30,12 @@ def from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFil
 
     header = spec.bearing
     try:
-        found = resolve(header.designation, C=header.C, clearance_position=header.class_position())
+        preload = _preload(header.preload)
+        found = resolve(
+            header.designation, C=header.C, clearance_position=header.class_position(), preload=preload
+        )
     except InputError as exc:
-        field = "bearing." if str(exc).startswith("designation") else ""
+        field = "bearing." if str(exc).startswith(("designation", "preload")) else ""
         raise InputError(f"{source}: {field}{exc}") from None
     if header.type and header.type != found.bearing_type:
         raise InputError(
@@ -51,4 +54,29 @@ def from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFil
             "source": header.source or note,
         }
     )
-    return spec.model_copy(update={"bearing": bearing, "geometry": geometry})
+    update = {"bearing": bearing, "geometry": geometry}
+    operating = dict(spec.operating or {})
+    if found.preload_force is not None:
+        if "preload_force" in operating or "preload_displacement" in operating:
+            note += "; [operating] preload of the file used, not the designation's class"
+            bearing = bearing.model_copy(update={"source": header.source or note})
+            update["bearing"] = bearing
+        else:
+            operating["preload_force"] = f"{found.preload_force!r} N"
+            update["operating"] = operating
+    return spec.model_copy(update=update)
+
+
+def _preload(value: str | None):
+    """``[bearing] preload``: a class name, or a force with its unit → N; None when not given."""
+    from bearingkit.catalogue.suffixes import PRELOAD_CLASSES
+    from bearingkit.units import parse
+
+    if value is None or value in PRELOAD_CLASSES:
+        return value
+    try:
+        return parse(value, "force", "preload")
+    except InputError:
+        raise InputError(
+            f"preload ({value!r}) must be one of {', '.join(PRELOAD_CLASSES)} or a force such as '480 N'"
+        ) from None

@@ -54,6 +54,7 @@ __all__ = [
     "life_in_seconds",
     "life_modification_factor",
     "modified_rating_life",
+    "paired_unit_ratings",
     "rating_factor",
     "reference_viscosity",
     "reliability_factor",
@@ -459,3 +460,49 @@ def combine_thrust_rows(n_elements, ratings, element_kind, effective_length=None
     checks.positive("effective_length", effective_length, "m")
     zl = z * np.asarray(effective_length, float)
     return zl.sum(axis=-1) * ((zl / c) ** 4.5).sum(axis=-1) ** (-2.0 / 9.0)
+
+
+#: Paired mounting (ISO 281:2007 5.1.3 ball, 7.1.3 roller; ISO 76:2006 6.1.3, 7.1.3 [clause numbers from
+#: memory]): arrangement of two similar single-row angular contact ball or tapered roller bearings that
+#: operate as a unit → rows whose X, Y (X0, Y0) apply: back-to-back and face-to-face are one double-row
+#: bearing; a tandem set keeps the single-row factors.
+PAIRED_UNIT_XY_ROWS = {"DB": 2, "DF": 2, "DT": 1}
+
+
+def paired_unit_ratings(rating, static_rating, element_kind, n_bearings=2):
+    """Basic ratings of similar single-row bearings mounted side by side as a unit (ISO 281:2007 5.1.3,
+    7.1.3; ISO 76:2006 6.1.3, 7.1.3).
+
+    .. math:: C_{unit} = n^{0.7} C\\ (\\text{ball}),\\qquad C_{unit} = n^{7/9} C\\ (\\text{roller}),
+        \\qquad C_{0,unit} = n\\,C_0
+
+    the i^0.7 and i^(7/9) of ISO 281 eq. (2) and (9) with i = n rows, and ISO 76's i C0: the same law for
+    DB, DF (one double-row bearing) and DT (tandem) sets; the arrangement chooses only the X, Y
+    (:data:`PAIRED_UNIT_XY_ROWS`).
+
+    Parameters
+    ----------
+    rating : array_like
+        C of one bearing [N].
+    static_rating : array_like or None
+        C0 of one bearing [N].
+    element_kind : {"ball", "roller"}
+    n_bearings : int
+        Bearings in the set (2 for a pair).
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray or None)
+        C and C0 of the unit [N].
+    """
+    checks.one_of("element_kind", element_kind, LIFE_EXPONENTS)
+    n = checks.integer("n_bearings", n_bearings)
+    if n < 1:
+        raise InputError(f"n_bearings ({n}) must be at least 1")
+    checks.positive("rating", rating, "N")
+    exponent = BALL_ROW_EXP if element_kind == "ball" else ROLLER_ROW_EXP
+    c = float(n) ** exponent * np.asarray(rating, float)
+    if static_rating is None:
+        return c, None
+    checks.positive("static_rating", static_rating, "N")
+    return c, float(n) * np.asarray(static_rating, float)
