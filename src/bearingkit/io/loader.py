@@ -329,6 +329,25 @@ def lubricant_of(source: str, spec) -> object:
     return lubricant_from_fields(fields, where=f"{source}: lubricant")
 
 
+def load_lubricant_file(path) -> object:
+    """The Lubricant of a lubricant file: a TOML file with a ``[lubricant]`` table, or its fields at the
+    top (``--lubricant-file``); validated by the same model as a bearing file's ``[lubricant]``."""
+    from bearingkit.io.reading import load_toml
+
+    source = str(path)
+    data = load_toml(path)
+    table = data.get("lubricant", data) if isinstance(data, dict) else data
+    prefix = ("lubricant",) if isinstance(data, dict) and "lubricant" in data else ()
+    if not isinstance(table, dict):
+        raise InputError(f"{source}: lubricant must be a table of fields (name, nu_40, nu_100, base_oil …)")
+    try:
+        spec = schema.LubricantSpec.model_validate(table)
+    except ValidationError as exc:
+        models = {".".join(prefix): schema.LubricantSpec}
+        raise one_line(source, exc, prefix, models) from None
+    return lubricant_of(source, spec)
+
+
 def _profile_as_table(geometry: dict) -> dict:
     """Accept ``profile = "iso16281"`` as shorthand for ``profile = {name = "iso16281"}``."""
     if isinstance(geometry.get("profile"), str):

@@ -245,6 +245,9 @@ class BearingFile(Strict):
     lubrication: dict[str, Any] | None = Field(
         None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
     )
+    thermal: dict[str, Any] | None = Field(
+        None, description="Heat balance: the operating temperature found (io.schema_operating.ThermalSpec)."
+    )
 
     @field_validator("load_cases", mode="before")
     @classmethod
