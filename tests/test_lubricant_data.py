@@ -239,3 +239,39 @@ def test_bad_lubricants_are_one_line(form, shown):
         as_lubricant(form)
     msg = str(err.value)
     assert shown in msg and "\n" not in msg
+
+
+# --- the must-show of issue 35 through a file ---------------------------------------------------------
+def _rating(lubricant_table: str):
+    import bearingkit as bk
+    from bearingkit.io.loader import loads
+
+    text = f'[bearing]\ndesignation = "6208"\n[lubricant]\n{lubricant_table}\n'
+    return bk.analyze(loads(text, "oil.toml"), load={"F_x": "4 kN"}, speed="6000 rpm", temperature="70 degC")
+
+
+def test_a_file_with_nu40_and_nu100_gives_the_kappa_of_the_preset_of_that_vi():
+    preset = LUBRICANTS["ISO_VG68"]
+    vi = float(viscosity_index(preset.kinematic_viscosity_40, preset.kinematic_viscosity_100))
+    by_data = _rating('nu_40 = "68 mm^2/s"\nnu_100 = "8.7 mm^2/s"')
+    by_vi = _rating(f"iso_vg = 68\nvi = {vi!r}")
+    by_name = _rating('name = "ISO_VG68"')
+    k = [float(a.lubrication.result.kappa["balls"][0]) for a in (by_data, by_vi, by_name)]
+    assert k[0] == pytest.approx(k[2], rel=0.01) and k[1] == pytest.approx(k[2], rel=0.01)
+    assert k[0] == pytest.approx(k[2], rel=1e-9)  # the same ν(T): the same Walther line
+
+
+def test_an_ester_of_the_same_viscosity_gives_another_film():
+    mineral = _rating('nu_40 = "68 mm^2/s"\nnu_100 = "8.7 mm^2/s"')
+    ester = _rating('nu_40 = "68 mm^2/s"\nnu_100 = "8.7 mm^2/s"\nbase_oil = "ester"')
+    km, ke = (float(a.lubrication.result.kappa["balls"][0]) for a in (mineral, ester))
+    assert km == pytest.approx(ke, rel=1e-12)  # κ rests on ν only
+    hm = mineral.lubrication.result.film("balls").film_minimum_inner.max()
+    he = ester.lubrication.result.film("balls").film_minimum_inner.max()
+    # Hamrock–Dowson h_min ∝ U^0.68 G^0.49 at equal load: (η_e/η_m)^0.68 (α_e/α_m)^0.49 (equal ν, but the
+    # ester is denser, so its η is higher)
+    lm, le = mineral.operating.lubricant, ester.operating.lubricant
+    am, ae = float(lm.pressure_viscosity_at(70.0)), float(le.pressure_viscosity_at(70.0))
+    em, ee = float(lm.viscosity(70.0)), float(le.viscosity(70.0))
+    assert ae < 0.75 * am
+    assert he / hm == pytest.approx((ee / em) ** 0.68 * (ae / am) ** 0.49, rel=2e-3)
