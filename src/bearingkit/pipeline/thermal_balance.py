@@ -364,15 +364,17 @@ def with_thermal_equilibrium(analysis, given=None):
         if res.no_root[i]:
             carried = res.scale[i] - res.value[i]
             why = (
-                f"no equilibrium below {MAX_TEMPERATURE:g} °C: friction heat {res.scale[i]:.3g} W > "
-                f"{carried:.3g} W carried away at {res.x[i]:.4g} °C"
+                f"no thermal equilibrium below {MAX_TEMPERATURE:g} °C (last temperature {res.x[i]:.4g} °C: "
+                f"friction heat {res.scale[i]:.3g} W > {carried:.3g} W carried away)"
             )
         else:
-            why = f"the balance did not close in {MAX_ITERATIONS} iterations (residual {res.value[i]:.3g} W)"
+            why = (
+                f"the heat balance did not close in {MAX_ITERATIONS} iterations (last temperature "
+                f"{res.x[i]:.4g} °C, residual {res.value[i]:.3g} W)"
+            )
         raise ThermalRunaway(
-            f"heat balance, case {analysis.case_names[i]!r}: {why}; last temperature {res.x[i]:.4g} °C; "
-            "remedy: more heat dissipation ([thermal] heat_dissipation or oil_flow), a thinner oil, less "
-            "speed or load"
+            f"case {analysis.case_names[i]!r}: {why}; remedy: more [thermal] heat_dissipation or oil_flow, "
+            "a thinner oil, less speed or load"
         )
     final = last["analysis"]
     notes = [

@@ -1,5 +1,10 @@
 """A batched, safeguarded secant (Newton) iteration for a heat balance F(T) = 0 decreasing in T.
 
+Units: those of the caller (bearingkit calls it with temperatures in °C and heat flows in W, SI
+otherwise). The safeguarded secant is the textbook combination of the secant step with bisection
+inside a bracket (Brent R.P. (1973) Algorithms for Minimization without Derivatives, ch. 4; Dekker's
+method of 1969), batched here over cases.
+
 The heat balance of a bearing, F(T) = P(T) − Φ(T) (friction heat minus heat carried away), is
 positive at the lowest temperature the heat can flow to (the bearing cannot be cooler than its sink)
 and decreases with T: the friction power falls as the oil thins while the dissipated heat grows. Each
