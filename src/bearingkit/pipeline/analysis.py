@@ -494,7 +494,7 @@ def analyze(
         from bearingkit.pipeline.conditions import _sections
 
         thermal = _sections(bearing).thermal is not None
-    if thermal is False:
+    if thermal is False or out.n_cases == 0:  # no load case (a duty cycle alone): nothing to balance
         return out
     if temperature is not None:
         raise InputError(

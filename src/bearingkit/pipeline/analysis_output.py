@@ -151,6 +151,8 @@ class AnalysisOutput:
                 }
         if self.load_diagram is not None:
             out["load_diagram"] = self.load_diagram.to_dict()
+        if self.operating.lubricant is not None:  # what the lubricant analysed is (docs/lubricants.md)
+            out["lubricant"] = self.operating.lubricant.to_dict()
         out["notes"] = self.notes
         out["references"] = self.references
         return out
