@@ -9,8 +9,8 @@ import pytest
 
 import bearingkit as bk
 from bearingkit.errors import InputError
-from bearingkit.studies import definition as sd
-from bearingkit.studies.runner import run_study
+from bearingkit.studies.definition import load as sd
+from bearingkit.studies.run.runner import run_study
 
 DGBB = Path(__file__).resolve().parents[2] / "examples" / "dgbb_6209.toml"
 FIXED = {"operating.speed": "3000 rpm", "operating.temperature": "70 degC", "lubricant.name": "ISO_VG68"}

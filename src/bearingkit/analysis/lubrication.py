@@ -3,7 +3,7 @@
 SI units (m, m²/s, Pa·s, rad/s; temperatures in °C). For every loaded contact of every row:
 
 - ball rows: Hamrock–Dowson point-contact film (central and minimum) with the contact's own load
-  and operating angle (inner and outer differ at speed, :mod:`bearingkit.rows.ball_speed`), curvature
+  and operating angle (inner and outer differ at speed, :mod:`bearingkit.rows.ball.speed`), curvature
   from the groove conformity and the entrainment speed of pure rolling, u = |Ω| r_c (Ω the ring's
   speed relative to the cage, r_c the contact radius);
 - radial cylindrical and tapered rows: Pan–Hamrock line-contact film with the roller's load on that
@@ -27,7 +27,7 @@ from bearingkit.physics.contact import hertz
 from bearingkit.physics.life import iso281_life
 from bearingkit.physics.lubrication import ehl
 
-#: Default RMS roughness of elements and raceways [m] (as the friction model, bearingkit.analysis.friction).
+#: Default RMS roughness of elements and raceways [m] (as the friction model, bearingkit.analysis.friction.components).
 ROUGHNESS_ELEMENT = 0.05e-6
 ROUGHNESS_RACEWAY = 0.10e-6
 

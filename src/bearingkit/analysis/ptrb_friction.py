@@ -6,7 +6,7 @@ SI units: N, m, rad/s, N·m. ``ptrb_friction`` sums the per-contact torques of
 * axial load F_a: every roller carries F_a/Z on one flank of each of its n teeth,
   Q_i = f_a,i F_a/(Z n sin α); M_PTRBa = Z Σ_i (M_I,i + M_O,i) + M_h (eq. 14);
 * radial load F_r: roller j carries f_r,j F_r (Stribeck share of
-  :func:`bearingkit.rows.threaded_distribution.radial_roller_distribution`) on both flanks of its n teeth,
+  :func:`bearingkit.rows.threaded.distribution.radial_roller_distribution`) on both flanks of its n teeth,
   Q_j = f_r,j F_r/(2n cos α); M_PTRBr = 2n Σ_j (M_I,j + M_O,j) + M_h (eq. 15).
 
 The prototype of the paper, its design rules, the calibration of the contact traction and the §6
@@ -26,8 +26,8 @@ from bearingkit.errors import InputError
 from bearingkit.lubricants import as_lubricant
 from bearingkit.physics.friction import ptrb as pf
 from bearingkit.physics.friction import ptrb_laws as pl
-from bearingkit.rows.threaded_distribution import axial_tooth_distribution, radial_roller_distribution
-from bearingkit.rows.threaded_geometry import PTRBGeometry
+from bearingkit.rows.threaded.distribution import axial_tooth_distribution, radial_roller_distribution
+from bearingkit.rows.threaded.geometry import PTRBGeometry
 
 __all__ = [
     "CASES",
@@ -43,7 +43,7 @@ RPM = 2.0 * np.pi / 60.0
 CASES = ("axial", "radial")
 #: Tooth shares under axial load: equal (f_a,i = 1, the default; the paper's f_amax ≈ 1.07 changes M by
 #: < 0.5 %) or from the thread-connection model
-#: :func:`~bearingkit.rows.threaded_distribution.axial_tooth_distribution`.
+#: :func:`~bearingkit.rows.threaded.distribution.axial_tooth_distribution`.
 TOOTH_DISTRIBUTIONS = ("uniform", "model")
 #: Temperature of the paper's friction tests (§7.2.2) [°C].
 TEST_TEMPERATURE_C = 40.0

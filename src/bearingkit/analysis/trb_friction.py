@@ -3,7 +3,7 @@
 SI units inside (N, m, Pa, Pa·s, rad/s, N·m); the lubricant temperature is in °C (the lubricant API).
 Result keys carry their unit (``torque_inner_Nm`` …).
 
-Method (Liu et al. 2022, eqs. 7–13): the quasi-static solve of a :class:`~bearingkit.rows.tapered.
+Method (Liu et al. 2022, eqs. 7–13): the quasi-static solve of a :class:`~bearingkit.rows.tapered.row.
 TaperedRow` gives per roller the cone, cup and rib loads (per slice for sliced rows). With outer-raceway
 control (cage slip S_c, :func:`~bearingkit.physics.friction.trb.outer_control_kinematics`) every
 roller carries EHL rolling resistance F_ro on both raceways, sliding traction F_rs on the cone
@@ -31,9 +31,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.analysis.trb import SEED001_FREE
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
+from bearingkit.analysis.scatter import SEED001_FREE
 from bearingkit.errors import InputError
 from bearingkit.lubricants import Lubricant, as_lubricant
 from bearingkit.physics.deviations import gaussian_deviations
@@ -41,7 +41,7 @@ from bearingkit.physics.friction import trb as tf
 from bearingkit.physics.friction import trb_rheology as rh
 from bearingkit.physics.lubrication import ehl
 from bearingkit.physics.lubrication.traction import MU_BOUNDARY, flange_friction_force
-from bearingkit.rows.tapered import TaperedRow
+from bearingkit.rows.tapered.row import TaperedRow
 
 #: Default lubricant (seed 001 gives none): ISO VG 46 mineral oil, a usual grade for small TRBs at
 #: 1000 rpm; at 40 °C its ν = 46 mm²/s is the ISO 3448 reference value itself (no extrapolation).

@@ -68,7 +68,7 @@ class Analysis(AnalysisOutput):
     load_ratings : dict, optional
         Row name → C [N] replacing ISO 281 ratings (catalogue values).
     friction_options : dict, optional
-        Further fields of :class:`bearingkit.analysis.friction.OperatingPoint` for the component model
+        Further fields of :class:`bearingkit.analysis.friction.components.OperatingPoint` for the component model
         (``viscosity_factor``, ``cage_mass``, roughness, traction …).
     """
 
@@ -125,7 +125,7 @@ class Analysis(AnalysisOutput):
         )
         if setup.plain and same:
             return self.input.solve()
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         b = self.input
         return self._in_file(
@@ -206,7 +206,7 @@ class Analysis(AnalysisOutput):
 
     @functools.cached_property
     def _rating(self):
-        from bearingkit.analysis.rating import rate
+        from bearingkit.analysis.rating.assembly import rate
 
         op = self.operating
         speed = op.abs_speed if np.all(op.abs_speed > 0) else None
@@ -254,7 +254,7 @@ class Analysis(AnalysisOutput):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""
         if isinstance(self.input, ModelInput):
             return None
-        from bearingkit.io.shoulders import shoulder_fractions
+        from bearingkit.io.build.shoulders import shoulder_fractions
 
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
@@ -321,7 +321,7 @@ class Analysis(AnalysisOutput):
             )
             out.extend(f"thermal: {n}" for n in self.thermal.notes)
         out.extend(self.setup.notes)
-        from bearingkit.analysis.speed import speed_notes
+        from bearingkit.analysis.solver.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
         lub = self.lubrication
@@ -454,7 +454,7 @@ def analyze(
     load_ratings : dict, optional
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
-        Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields of the component model.
+        Further :class:`~bearingkit.analysis.friction.components.OperatingPoint` fields of the component model.
     thermal : bool or dict, optional
         Find the operating temperature by the heat balance
         (:mod:`bearingkit.pipeline.thermal_balance`): True, or a dict of ``[thermal]`` fields

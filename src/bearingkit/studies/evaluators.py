@@ -75,7 +75,7 @@ class Evaluator:
     """A named pure function ``function(cases: DataFrame) -> DataFrame`` with its declared factors.
 
     ``fill_defaults`` False: the cases carry only the factors a study sets (the evaluator takes the
-    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic` does);
+    others from its input, as the generic evaluator of :mod:`bearingkit.studies.generic.evaluator` does);
     ``factor_noun`` says in messages what a factor is (default "a factor of evaluator NAME").
     """
 
@@ -230,14 +230,14 @@ def evaluate_chunk(evaluator, cases, with_ids: bool = True):
 
     ``evaluator`` is the :class:`Evaluator` itself (resolved once, by the process that read the study
     file; a worker never resolves a name from data) or the name of a built-in. The chunk runs with
-    one BLAS thread in every executor (:func:`bearingkit.studies.executors.one_blas_thread`): OpenBLAS
+    one BLAS thread in every executor (:func:`bearingkit.studies.run.executors.one_blas_thread`): OpenBLAS
     splits a matrix product differently for another thread count and the last bits of a result
     depend on it, so this is what makes the executors agree bit for bit.
 
     Returns the cases' ``case`` ids (0… when ``cases`` has no ``case`` column) joined with the outputs;
     ``with_ids`` False: the outputs alone, row for row (a caller that keeps the order itself).
     """
-    from bearingkit.studies.executors import one_blas_thread
+    from bearingkit.studies.run.executors import one_blas_thread
 
     ev = evaluator if isinstance(evaluator, Evaluator) else get(evaluator)
     ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))

@@ -85,7 +85,7 @@ def factor_of(ev, fname, where: str, source: str):
     if not isinstance(fname, str) or fname not in ev.factors:
         near = ""
         if isinstance(fname, str):
-            from bearingkit.studies.paths import nearest
+            from bearingkit.studies.generic.paths import nearest
 
             near = f"; nearest: {', '.join(nearest(fname, ev.factors))}"
         raise InputError(f"{source}: {where} ({short(fname)}) is not {ev.noun}{near}")
@@ -107,7 +107,7 @@ def factor_list(ev, items, where: str, source: str) -> list[dict]:
                 raise InputError(f"{w}.levels ([]) must list at least one value")
             f["levels"] = tuple(si_value(v, spec, f"{w}.levels") for v in f["levels"])
         if f.get("clearance_class") is not None:
-            from bearingkit.studies.generic import clearance_class_range
+            from bearingkit.studies.generic.evaluator import clearance_class_range
 
             low, high = clearance_class_range(ev, spec.name, f["clearance_class"], w)
             f.update(distribution="uniform", low=low, high=high)
