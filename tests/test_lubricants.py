@@ -31,7 +31,6 @@ WALTHER_PRESETS = [k for k, v in LUBRICANTS.items() if not v.is_constant_viscosi
 def _oil(**over) -> Lubricant:
     kw = dict(
         name="test",
-        base="mineral",
         pressure_viscosity=2e-8,
         density_15C=870.0,
         thermal_expansion=6.5e-4,
@@ -211,7 +210,7 @@ def test_every_preset_validates_again():
         ({"thermal_expansion": 0.01}, "thermal_expansion", "0.01"),
         ({"thermal_conductivity": math.nan}, "thermal_conductivity", "nan"),
         ({"temperature_viscosity_coefficient": -0.03}, "temperature_viscosity_coefficient", "-0.03"),
-        ({"base": "vegetable"}, "base", "vegetable"),
+        ({"base_oil": "vegetable"}, "base_oil", "vegetable"),
     ],
 )
 def test_bad_input_names_field_and_value(over, field, value):

@@ -57,6 +57,9 @@ SI_UNITS: dict[str, str] = {
     "power": "W",
     "thermal_conductance": "W/K",
     "volume_flow": "m^3/s",
+    "specific_heat": "J/(kg*K)",
+    "heat_transfer_coefficient": "W/(m^2*K)",
+    "area": "m^2",
     "dimensionless": "",
 }
 
@@ -85,6 +88,9 @@ UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
     "power": ("W", "kW", "mW"),
     "thermal_conductance": ("W/K", "kW/K"),
     "volume_flow": ("m^3/s", "l/min", "mm^3/s"),
+    "specific_heat": ("J/(kg*K)", "kJ/(kg*K)"),
+    "heat_transfer_coefficient": ("W/(m^2*K)",),
+    "area": ("m^2", "mm^2", "cm^2"),
     "dimensionless": (),
 }
 

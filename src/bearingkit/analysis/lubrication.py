@@ -174,7 +174,7 @@ def lubrication(
     temps = np.broadcast_to(np.asarray(temperature_C, dtype=float), (c,))
     nu = np.asarray(lubricant.kinematic_viscosity(temps), dtype=float)
     eta = np.asarray(lubricant.viscosity(temps), dtype=float).reshape(-1, 1)
-    alpha_p = float(lubricant.pressure_viscosity)
+    alpha_p = np.asarray(lubricant.pressure_viscosity_at(temps), dtype=float).reshape(-1, 1)  # α(T) per case
     films, nu1, kappa, skipped = [], {}, {}, []
     relative = np.abs(w_i - w_o)[:, 0]
     for row, kernel, state in zip(result.model.rows, result.model.kernels, result.rows, strict=True):

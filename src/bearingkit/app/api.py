@@ -213,12 +213,14 @@ def create_app(
     @app.get("/api/meta")
     def meta():
         from bearingkit import __version__
-        from bearingkit.lubricants import LUBRICANTS
+        from bearingkit.lubricants import BASE_OILS, THICKENERS, lubricant_names
 
         return {
             "version": __version__,
             "examples": examples(),
-            "lubricants": list(LUBRICANTS),
+            "lubricants": list(lubricant_names()),
+            "base_oils": list(BASE_OILS),
+            "thickeners": list(THICKENERS),
             "friction_models": list(FRICTION_CHOICES),
             "max_file_bytes": MAX_TOML_BYTES,
             "max_sweep_points": MAX_POINTS,

@@ -75,6 +75,14 @@ class Source(StrictModel):
 
 #: One value of the form (a number with its unit, a preset name): short text.
 FormText = Annotated[str, Field(max_length=64)]
+#: Fields of the lubricant editor (those of a file's [lubricant], bearingkit.lubricants.FIELDS).
+LubricantField = Literal[
+    "iso_vg", "nu_40", "nu_100", "vi", "base_oil", "thickener", "nlgi", "temperature_max"
+]
+#: Fields of the heat balance (those of a file's [thermal]).
+ThermalField = Literal["ambient", "heat_dissipation", "oil_flow", "oil_inlet_temperature"]
+#: Editor fields that are plain numbers in a file (TOML numbers, not text).
+_NUMBER_FIELDS = ("iso_vg", "vi")
 
 
 class OpenRequest(StrictModel):
@@ -95,6 +103,11 @@ class AnalyzeRequest(StrictModel):
     temperature: FormText = ""
     geometry: dict[Annotated[str, Field(max_length=64)], FormText] = Field(default_factory=dict, max_length=8)
     lubricant: FormText = ""
+    lubricant_data: dict[LubricantField, FormText] = Field(
+        default_factory=dict, description="The lubricant editor: an oil's (or grease's) data."
+    )
+    heat: bool | None = Field(None, description="Heat balance on/off (None: as the file's [thermal]).")
+    thermal: dict[ThermalField, FormText] = Field(default_factory=dict)
     contamination: FormText = ""
     friction_model: Literal["components", "skf", "palmgren"] = "components"
 
@@ -206,9 +219,43 @@ def build_document(request: AnalyzeRequest) -> tuple[dict, str]:
                 )
             if value.strip():
                 geometry[key] = value.strip()
-    if request.lubricant.strip():
-        document["lubricant"] = {"name": request.lubricant.strip()}
+    _lubricant_table(document, request, source)
+    _thermal_table(document, request, case, source)
     return document, source
+
+
+def _lubricant_table(document: dict, request: AnalyzeRequest, source: str) -> None:
+    """``[lubricant]`` from the chosen name and the editor's data (given fields replace the entry's)."""
+    data = {k: v.strip() for k, v in request.lubricant_data.items() if v.strip()}
+    for key in _NUMBER_FIELDS:
+        if key in data:
+            try:
+                data[key] = float(data[key])
+            except ValueError:
+                raise InputError(f"{source}: lubricant.{key} ({data[key]!r}) must be a number") from None
+    name = request.lubricant.strip()
+    if not name and not data:
+        return
+    own = document.get("lubricant") if isinstance(document.get("lubricant"), dict) else {}
+    table = {"name": name} if name else dict(own)  # the editor's fields replace the entry's
+    table.update(data)
+    document["lubricant"] = table
+
+
+def _thermal_table(document: dict, request: AnalyzeRequest, case: dict, source: str) -> None:
+    """``[thermal]`` when the heat balance is on (the page's switch; None keeps the file's)."""
+    if request.heat is False:
+        document.pop("thermal", None)
+        return
+    if request.heat is None and "thermal" not in document:
+        return
+    own = document.get("thermal") if isinstance(document.get("thermal"), dict) else {}
+    document["thermal"] = {**own, **{k: v.strip() for k, v in request.thermal.items() if v.strip()}}
+    if case.get("temperature"):
+        raise InputError(
+            f"{source}: temperature ({case['temperature']!r}): the heat balance finds the operating "
+            "temperature; clear the temperature or switch the heat balance off"
+        )
 
 
 def bearing_type_of(header: dict) -> str | None:
@@ -236,6 +283,7 @@ class Opened(BaseModel):
     clearances: dict[str, str]
     lubricant: str | None
     free_dofs: list[str]
+    thermal: bool = False
 
 
 def _text(value) -> str:
@@ -272,6 +320,7 @@ def open_source(source: Source) -> Opened:
         clearances=clearances,
         lubricant=None if bearing.lubricant is None else bearing.lubricant.name,
         free_dofs=free,
+        thermal="thermal" in document,
     )
 
 
@@ -301,6 +350,8 @@ def field_of(message: str, source: str) -> str:
         return head
     if head.startswith("lubricant"):
         return "lubricant"
+    if head.startswith("thermal") or text.startswith("heat balance"):
+        return "thermal"
     if head in ("speed", "temperature", "contamination"):
         return head
     return "source"

@@ -21,8 +21,10 @@ from bearingkit.cli.common import (
     _CASE_OPTION,
     _CONTAMINATION_OPTION,
     _FILE_ARGUMENT,
+    _HEAT_OPTION,
     _JSON_OPTION,
     _LOAD_OPTION,
+    _LUBRICANT_FILE_OPTION,
     _LUBRICANT_OPTION,
     _PRELOAD_OPTION,
     _ROTATING_OPTION,
@@ -139,7 +141,9 @@ def rating(
     reliability: str = typer.Option("0.9", "--reliability", help="Reliability of L_nr, 0.9 … 0.9995."),
     rotating: str = _ROTATING_OPTION,
     lubricant: str = _LUBRICANT_OPTION,
+    lubricant_file: Path = _LUBRICANT_FILE_OPTION,
     temperature: str = _TEMPERATURE_OPTION,
+    heat: bool = _HEAT_OPTION,
     contamination: str = _CONTAMINATION_OPTION,
     load_rating: list[str] = typer.Option(
         None, "--load-rating", help="ROW=C replacing the ISO 281 rating of a row, e.g. roller_upper=50kN."
@@ -147,7 +151,10 @@ def rating(
     preload: str = _PRELOAD_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
-    """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing."""
+    """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing.
+
+    With --heat (or a [thermal] section) the operating temperature is found by the heat balance and
+    κ, a_ISO, the lives and the friction are those at it."""
     a = _analysis(
         file,
         load,
@@ -157,6 +164,8 @@ def rating(
         temperature=temperature,
         rotating=rotating,
         lubricant=lubricant,
+        lubricant_file=lubricant_file,
+        heat=heat,
         contamination=contamination,
         reliability=reliability,
         load_ratings=_load_ratings(load_rating),
@@ -167,17 +176,29 @@ def rating(
             "bearingkit.lubricants.LUBRICANTS) to the file or use --lubricant"
         )
     if a.operating.contamination is not None and not a.operating.temperature_given.all():
-        raise InputError(f"{file}: --contamination needs a temperature: give --temperature 60degC")
+        raise InputError(
+            f"{file}: --contamination needs a temperature: give --temperature 60degC (or --heat to find it)"
+        )
     data = a.rating_dict()
     if as_json:
         _print_json(file, data)
     else:
         _header(a, file)
-        from bearingkit.cli.operating_tables import lubrication_table
+        from bearingkit.cli.operating_tables import lubrication_table, thermal_text
 
         for c in data["cases"]:
+            if "thermal" in c:
+                console.print(thermal_text(c["thermal"]))
             console.print(rating_table(c))
             console.print(lubrication_table(c))
+            if "friction" in c:
+                f = c["friction"]
+                console.print(
+                    f"  friction at the found temperature ({f['model']}): M = {f['torque_Nm']:.4g} N·m, "
+                    f"P = {f['power_loss_W']:.4g} W",
+                    markup=False,
+                    highlight=False,
+                )
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
         if "duty_cycle" in data:
@@ -206,6 +227,7 @@ def friction(
     ),
     temperature: str = _TEMPERATURE_OPTION,
     lubricant: str = _LUBRICANT_OPTION,
+    lubricant_file: Path = _LUBRICANT_FILE_OPTION,
     model: str = typer.Option(
         "components",
         "--model",
@@ -216,7 +238,10 @@ def friction(
         False, "--compare", help="Every model that applies side by side, with when each applies."
     ),
     heat: bool = typer.Option(
-        False, "--heat", help="Heat balance (operating temperature) and thermal reference speed (ISO 15312)."
+        False,
+        "--heat",
+        help="Find the operating temperature by the heat balance (friction heat = heat carried away), give "
+        "the friction at it, with the thermal reference speed (ISO 15312 method).",
     ),
     as_json: bool = _JSON_OPTION,
 ):
@@ -226,9 +251,17 @@ def friction(
     if model not in MODELS:
         raise InputError(f"--model ({model!r}) must be one of {', '.join(MODELS)}")
     a = _analysis(
-        file, load, case, speed=speed, temperature=temperature, rotating=rotating, lubricant=lubricant
+        file,
+        load,
+        case,
+        speed=speed,
+        temperature=temperature,
+        rotating=rotating,
+        lubricant=lubricant,
+        lubricant_file=lubricant_file,
+        heat=heat,
+        friction_model=model,
     )
-    a.friction_model = model
     if not (a.operating.speed != 0).any() and speed is None:
         raise InputError(
             f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
@@ -236,29 +269,34 @@ def friction(
         )
     if model == "components":
         _fail_unconverged(file, a)
-    if compare or heat:
-        from bearingkit.cli.operating_tables import comparison_text, heat_text
+    from bearingkit.cli.operating_tables import comparison_text, heat_text, thermal_text
 
-        data = a.friction_comparison() if compare else a.heat_dict(model)
-        if compare and heat:
+    if compare:
+        data = a.friction_comparison()
+        if heat:
             data["heat"] = a.heat_dict(model)
         if as_json:
             _print_json(file, data)
             return
         _header(a, file)
-        if compare:
-            console.print(comparison_text(data))
+        console.print(comparison_text(data))
         if heat:
-            console.print(heat_text(data["heat"] if compare else data))
+            console.print(heat_text(data["heat"]))
         return
     data = a.friction_dict(model)
+    if heat:
+        data["heat"] = a.heat_dict(model)
     if as_json:
         _print_json(file, data)
     else:
         _header(a, file)
         for c in data["cases"]:
+            if "thermal" in c:
+                console.print(thermal_text(c["thermal"]))
             console.print(friction_table(c))
             console.print(warnings_text(c["warnings"]))
+        if heat:
+            console.print(heat_text(data["heat"]))
         console.print(warnings_text([], data["notes"]))
 
 
@@ -324,6 +362,8 @@ def report(
     speed: str = _SPEED_OPTION,
     temperature: str = _TEMPERATURE_OPTION,
     lubricant: str = _LUBRICANT_OPTION,
+    lubricant_file: Path = _LUBRICANT_FILE_OPTION,
+    heat: bool = _HEAT_OPTION,
     contamination: str = _CONTAMINATION_OPTION,
 ):
     """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings.
@@ -334,6 +374,7 @@ def report(
     if is_shaft_file(file):
         given = [f for f, v in (("--load", load), ("--case", case), ("--speed", speed)) if v]
         given += [f for f, v in (("--temperature", temperature), ("--lubricant", lubricant)) if v]
+        given += [f for f, v in (("--lubricant-file", lubricant_file), ("--heat", heat)) if v]
         if given:
             raise InputError(
                 f"{file}: {', '.join(given)} apply to a bearing file; a shaft file's [[load_cases]] and "
@@ -352,6 +393,8 @@ def report(
         speed=speed,
         temperature=temperature,
         lubricant=lubricant,
+        lubricant_file=lubricant_file,
+        heat=heat,
         contamination=contamination,
     )
     path = a.report(output)

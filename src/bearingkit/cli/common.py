@@ -73,12 +73,28 @@ _TEMPERATURE_OPTION = typer.Option(
 _ROTATING_OPTION = typer.Option(
     "inner", "--rotating", help="Ring rotating relative to the load: inner|outer."
 )
-_LUBRICANT_OPTION = typer.Option(None, "--lubricant", help="Lubricant preset (default: the file's).")
 _PRELOAD_OPTION = typer.Option(
     None,
     "--preload",
     help="Preload of a pair named by designation ('7014 C DB'): extra_light, light, medium, heavy (a rule "
     "on C, docs/catalogue.md) or a force such as 480N.",
+)
+_LUBRICANT_OPTION = typer.Option(
+    None,
+    "--lubricant",
+    help="Lubricant: a name (ISO_VG68, VG68_PAO, SKF_LGMT2 …) or its data as text: 'VG68 ester', 'VG46 VI150 "
+    "pao', 'nu_40=68mm^2/s nu_100=8.7mm^2/s' (docs/lubricants.md); default: the file's.",
+)
+_LUBRICANT_FILE_OPTION = typer.Option(
+    None,
+    "--lubricant-file",
+    help="TOML file with a [lubricant] table (the fields of a bearing file's [lubricant]).",
+)
+_HEAT_OPTION = typer.Option(
+    False,
+    "--heat",
+    help="Find the operating temperature by the heat balance (friction heat = heat carried away; the file's "
+    "[thermal] or the ISO 15312 reference housing) and give everything at it.",
 )
 _CONTAMINATION_OPTION = typer.Option(
     None,
@@ -109,6 +125,19 @@ def _analysis(file: Path, load, case, preload: str | None = None, **operating):
     if operating.get("rotating", "inner") not in ("inner", "outer"):
         raise InputError(f"--rotating ({operating['rotating']!r}) must be one of inner, outer")
 
+    lubricant_file = operating.pop("lubricant_file", None)
+    if lubricant_file is not None:
+        if operating.get("lubricant") is not None:
+            raise InputError("--lubricant and --lubricant-file both give the lubricant; give one")
+        from bearingkit.io.loader import load_lubricant_file
+
+        operating["lubricant"] = load_lubricant_file(lubricant_file)
+    if operating.pop("heat", False):
+        if operating.get("temperature") is not None:
+            raise InputError(
+                "--temperature and --heat both set the operating temperature; give one (--heat finds it)"
+            )
+        operating["thermal"] = True
     bearing = load_input(file, preload=preload)
     if load:
         if case:

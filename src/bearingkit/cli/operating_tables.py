@@ -110,6 +110,26 @@ def comparison_text(data: dict) -> Group:
     return Group(table, *lines)
 
 
+def thermal_text(thermal: dict) -> Text:
+    """The found operating temperature of one case and its heat balance, one line."""
+    oil = ""
+    if thermal["oil_flow_m3_s"] > 0:
+        oil = (
+            f" + oil {thermal['oil_heat_W']:.4g} W ({thermal['oil_flow_m3_s'] * 6e4:.3g} l/min from "
+            f"{thermal['oil_inlet_C']:g} °C)"
+        )
+    return Text(
+        f"  thermal equilibrium (temperature FOUND, not given): {thermal['temperature_C']:.4g} °C — "
+        "friction heat "
+        f"{thermal['friction_heat_W']:.4g} W = seats/housing {thermal['conducted_heat_W']:.4g} W "
+        f"({thermal['heat_dissipation_W_K']:.3g} W/K to {thermal['ambient_C']:g} °C){oil}; balance closed to "
+        f"{thermal['balance_relative']:.1e} in {thermal['iterations']} iterations "
+        f"({thermal['friction_model']} "
+        "friction)",
+        style="bold",
+    )
+
+
 def heat_text(data: dict) -> Group:
     """Heat balance per case and the thermal reference speed."""
     lines = []

@@ -311,16 +311,41 @@ def _material(source: str, spec: schema.MaterialSpec | None):
 
 
 def _lubricant(source: str, spec: schema.LubricantSpec | None):
-    from bearingkit.lubricants import LUBRICANTS
+    """The file's ``[lubricant]`` through the one lubricant builder (a name, or the oil's data)."""
+    return lubricant_of(source, spec)
+
+
+def lubricant_of(source: str, spec) -> object:
+    """The Lubricant of a parsed ``[lubricant]`` table (None when absent); one line naming the file.
+
+    Every input that has a ``[lubricant]`` (bearing files, shaft files) reads it here, with
+    :func:`bearingkit.lubricants.lubricant_from_fields` (the builder the CLI, the app and studies use).
+    """
+    from bearingkit.lubricants import lubricant_from_fields
 
     if spec is None:
         return None
-    if spec.name not in LUBRICANTS:
-        raise InputError(
-            f"{source}: lubricant.name ({quote(spec.name)}) must be one of {', '.join(LUBRICANTS)}"
-            f"{did_you_mean(spec.name, LUBRICANTS)}"
-        )
-    return LUBRICANTS[spec.name]
+    fields = spec.model_dump(exclude_none=True) if hasattr(spec, "model_dump") else dict(spec)
+    return lubricant_from_fields(fields, where=f"{source}: lubricant")
+
+
+def load_lubricant_file(path) -> object:
+    """The Lubricant of a lubricant file: a TOML file with a ``[lubricant]`` table, or its fields at the
+    top (``--lubricant-file``); validated by the same model as a bearing file's ``[lubricant]``."""
+    from bearingkit.io.reading import load_toml
+
+    source = str(path)
+    data = load_toml(path)
+    table = data.get("lubricant", data) if isinstance(data, dict) else data
+    prefix = ("lubricant",) if isinstance(data, dict) and "lubricant" in data else ()
+    if not isinstance(table, dict):
+        raise InputError(f"{source}: lubricant must be a table of fields (name, nu_40, nu_100, base_oil …)")
+    try:
+        spec = schema.LubricantSpec.model_validate(table)
+    except ValidationError as exc:
+        models = {".".join(prefix): schema.LubricantSpec}
+        raise one_line(source, exc, prefix, models) from None
+    return lubricant_of(source, spec)
 
 
 def _profile_as_table(geometry: dict) -> dict:

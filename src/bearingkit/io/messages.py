@@ -89,7 +89,8 @@ def _valid_fields(key, model, errors) -> str:
         return ""
     names = list(model.model_fields)
     missing = {str(e["loc"][-1]) for e in errors if e["type"] == "missing" and e["loc"]}
-    near = nearest(str(key), names)
+    alias = getattr(model, "FIELD_ALIASES", {}).get(str(key).lower())  # a known other spelling
+    near = [alias] if alias else nearest(str(key), names)
     if near:
         note = " (required, missing)" if near[0] in missing else ""
         return f"; did you mean {near[0]!r}{note}?"

@@ -1,4 +1,4 @@
-"""Input sections of the operating conditions: ``[operating]``, ``[fits]``, ``[lubrication]``.
+"""Input sections of the operating conditions: ``[operating]``, ``[fits]``, ``[lubrication]``, ``[thermal]``.
 
 SI after validation (m, N, rad, rad/s, W/K; temperatures in °C), as the rest of the schema
 (:mod:`bearingkit.io.schema`, whose unit-carrying types these models use). The sections are kept as
@@ -86,27 +86,57 @@ class LubricationSpec(Strict):
     )
 
 
+class ThermalSpec(Strict):
+    """``[thermal]``: find the operating temperature by a heat balance (docs/operating.md, "Thermal
+    equilibrium"). Its presence switches the balance on: friction heat = heat through the seats and
+    housing + heat carried away by a circulating oil."""
+
+    ambient: Temperature | None = Field(None, description="Ambient (heat sink) temperature, default 20 °C.")
+    heat_dissipation: quantity("thermal_conductance", "positive") | None = Field(
+        None, description="Heat flow through seats and housing per kelvin above ambient (H)."
+    )
+    housing_area: quantity("area", "positive") | None = Field(
+        None, description="Heat-transferring outer surface of the housing (H = area × coefficient)."
+    )
+    heat_transfer_coefficient: quantity("heat_transfer_coefficient", "positive") | None = Field(
+        None, description="Convection plus radiation from the housing surface, e.g. '15 W/(m^2*K)'."
+    )
+    oil_flow: quantity("volume_flow", "non_negative") | None = Field(
+        None, description="Circulating oil through the bearing, e.g. '0.5 l/min'."
+    )
+    oil_inlet_temperature: Temperature | None = Field(
+        None, description="Temperature of the circulating oil at the inlet (default: the ambient)."
+    )
+
+
 @dataclass(frozen=True)
 class OperatingSections:
-    """The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections (None where absent)."""
+    """The parsed ``[operating]``, ``[fits]``, ``[lubrication]`` and ``[thermal]`` sections (None where
+    absent)."""
 
     operating: OperatingSpec | None = None
     fits: FitsSpec | None = None
     lubrication: LubricationSpec | None = None
+    thermal: ThermalSpec | None = None
 
 
 #: Section name → model.
-SECTION_MODELS = {"operating": OperatingSpec, "fits": FitsSpec, "lubrication": LubricationSpec}
+SECTION_MODELS = {
+    "operating": OperatingSpec,
+    "fits": FitsSpec,
+    "lubrication": LubricationSpec,
+    "thermal": ThermalSpec,
+}
 
 
 def validate_sections(spec, source: str, one_line) -> OperatingSections:
-    """Validate the three sections of a parsed file.
+    """Validate the operating sections of a parsed file.
 
     ``one_line(source, exc, prefix, models)`` turns a validation error into the one-line InputError.
     """
     out = {}
     for name, model in SECTION_MODELS.items():
-        raw = getattr(spec, name)
+        raw = getattr(spec, name, None)
         if raw is None:
             continue
         try:

@@ -7,7 +7,7 @@ geometry table depends on ``bearing.type`` and is validated by :mod:`bearingkit.
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any, ClassVar, Literal
 
 from pydantic import Field, field_validator, model_validator
 
@@ -24,6 +24,7 @@ from bearingkit.io.fields import (
     PositivePressure,
     Strict,
     Temperature,
+    quantity,
 )
 from bearingkit.io.geometries import GEOMETRY_MODELS
 
@@ -133,9 +134,58 @@ class MaterialSpec(Strict):
 
 
 class LubricantSpec(Strict):
-    """``[lubricant]``: a preset of :data:`bearingkit.lubricants.LUBRICANTS` (used by friction)."""
+    """``[lubricant]``: a preset or library name, or the oil's (or grease's) data (docs/lubricants.md).
 
-    name: str = Field(description="Preset name (ISO_VG100, L-AN46, seed000_grease_assumed, …).")
+    The fields are those of :data:`bearingkit.lubricants.FIELDS`; the one builder
+    :func:`bearingkit.lubricants.lubricant_from_fields` turns them into a lubricant (every face uses it).
+    With a ``name`` of a preset or library entry, the fields given replace that entry's.
+    """
+
+    #: Other spellings of the fields (the one-line message suggests the field they mean).
+    FIELD_ALIASES: ClassVar[dict[str, str]] = {
+        "viscosity_40": "nu_40",
+        "viscosity_100": "nu_100",
+        "kinematic_viscosity_40": "nu_40",
+        "kinematic_viscosity_100": "nu_100",
+        "nu40": "nu_40",
+        "nu100": "nu_100",
+        "viscosity_index": "vi",
+        "iso_vg_grade": "iso_vg",
+        "grade": "iso_vg",
+        "base": "base_oil",
+        "alpha": "pressure_viscosity",
+    }
+
+    name: str | None = Field(
+        None,
+        description="Preset or library name (ISO_VG100, VG68_PAO, SKF_LGMT2 …), or a label for an oil given "
+        "by its data.",
+    )
+    iso_vg: Dimensionless | None = Field(None, description="ISO 3448 grade (nu_40 = the grade in mm²/s).")
+    nu_40: quantity("kinematic_viscosity", "positive") | None = Field(
+        None, description="Kinematic viscosity at 40 °C (of the base oil for a grease)."
+    )
+    nu_100: quantity("kinematic_viscosity", "positive") | None = Field(
+        None, description="Kinematic viscosity at 100 °C (or give vi)."
+    )
+    vi: Dimensionless | None = Field(None, description="Viscosity index (ASTM D2270), instead of nu_100.")
+    base_oil: str | None = Field(None, description="mineral (default), pao, ester or pag.")
+    density: PositiveDensity | None = Field(None, description="Density at 15 °C (default: the base oil's).")
+    pressure_viscosity: quantity("pressure_viscosity", "positive") | None = Field(
+        None, description="Pressure-viscosity coefficient at 40 °C (default: the base oil's law)."
+    )
+    thermal_conductivity: quantity("thermal_conductivity", "positive") | None = None
+    specific_heat: quantity("specific_heat", "positive") | None = Field(
+        None, description="Specific heat (heat carried away by a circulating oil)."
+    )
+    thickener: str | None = Field(None, description="A grease's thickener (lithium, polyurea, …).")
+    nlgi: str | int | None = Field(None, description="A grease's NLGI consistency class (000 … 6).")
+    life_class: str | None = Field(
+        None, description="A grease's class in the grease-life formula: general_purpose or wide_range."
+    )
+    temperature_min: Temperature | None = Field(None, description="A grease's lower temperature limit.")
+    temperature_max: Temperature | None = Field(None, description="A grease's upper temperature limit.")
+    source: str | None = Field(None, description="Where the data come from (a data sheet).")
 
 
 class LoadCaseSpec(Strict):
@@ -204,6 +254,9 @@ class BearingFile(Strict):
     )
     lubrication: dict[str, Any] | None = Field(
         None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
+    )
+    thermal: dict[str, Any] | None = Field(
+        None, description="Heat balance: the operating temperature found (io.schema_operating.ThermalSpec)."
     )
 
     @field_validator("load_cases", mode="before")

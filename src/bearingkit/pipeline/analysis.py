@@ -95,6 +95,9 @@ class Analysis(AnalysisOutput):
         self._friction_errors: dict[str, str] = {}
         #: ISO 281 level name the contamination factor came from (None: a number or not given).
         self.contamination_level: str | None = None
+        #: The heat balance that found the operating temperature (None: the temperature was an input),
+        #: :class:`~bearingkit.pipeline.thermal_balance.ThermalEquilibrium`.
+        self.thermal = None
 
     # ------------------------------------------------------------------------------- parts
     @property
@@ -318,6 +321,13 @@ class Analysis(AnalysisOutput):
             out.append("ratings: no contamination factor e_C given, so no a_ISO and no L_nm")
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
+        if self.thermal is not None:
+            out.append(
+                "operating temperature FOUND by the heat balance (not an input): viscosity, κ, a_ISO, "
+                "friction "
+                "and the operating clearance are at the found temperature of each case (its thermal block)"
+            )
+            out.extend(f"thermal: {n}" for n in self.thermal.notes)
         out.extend(self.setup.notes)
         from bearingkit.analysis.solver.speed import speed_notes
 
@@ -422,6 +432,7 @@ def analyze(
     friction_model: str = "components",
     load_ratings=None,
     friction_options=None,
+    thermal=None,
 ) -> Analysis:
     """Analyse a bearing: the entry point of the library, the CLI, the report, studies and the app.
 
@@ -453,11 +464,18 @@ def analyze(
     friction_options : dict, optional
         Further :class:`~bearingkit.analysis.friction.components.OperatingPoint` fields of the component
         model.
+    thermal : bool or dict, optional
+        Find the operating temperature by the heat balance
+        (:mod:`bearingkit.pipeline.thermal_balance`): True, or a dict of ``[thermal]`` fields
+        (``ambient``, ``heat_dissipation``, ``housing_area``, ``heat_transfer_coefficient``,
+        ``oil_flow``, ``oil_inlet_temperature``; text with units or SI); False: never. Default: when
+        the file has a ``[thermal]`` section.
 
     Returns
     -------
     Analysis
-        Nothing is computed until a part is asked for.
+        Nothing is computed until a part is asked for (with ``thermal``: the balance is solved here and
+        the Analysis returned is the one at the found temperature).
     """
     from bearingkit.pipeline.operating_output import resolve_contamination
 
@@ -481,4 +499,17 @@ def analyze(
         friction_options=friction_options,
     )
     out.contamination_level = level
-    return out
+    if thermal is None:
+        from bearingkit.pipeline.conditions import _sections
+
+        thermal = _sections(bearing).thermal is not None
+    if thermal is False or out.n_cases == 0:  # no load case (a duty cycle alone): nothing to balance
+        return out
+    if temperature is not None:
+        raise InputError(
+            f"{bearing.source}: temperature ({temperature!r}) and the heat balance both set the operating "
+            "temperature; give one (drop --temperature, or --heat / [thermal])"
+        )
+    from bearingkit.pipeline.thermal_balance import with_thermal_equilibrium
+
+    return out._in_file(with_thermal_equilibrium, out, thermal if isinstance(thermal, dict) else None)

@@ -50,6 +50,8 @@ class AnalysisOutput:
                 d["clearance"] = self.clearance.to_dict(i)
             if self.flexible is not None:
                 d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
+            if self.thermal is not None:
+                d["thermal"] = self.thermal.to_dict(i)
             d["warnings"] = self.warnings[i]
             cases.append(d)
         # the DOFs the statics were solved with (the default fixed tilt of a single row included)
@@ -68,6 +70,15 @@ class AnalysisOutput:
         cases = []
         for i, c in enumerate(self.input.cases):
             d = {"case": c.name, **self.rating.to_dict(i)}
+            if self.thermal is not None:
+                d["thermal"] = self.thermal.to_dict(i)
+                friction = self.friction
+                if friction is not None:
+                    d["friction"] = {
+                        "model": friction.model,
+                        "torque_Nm": float(friction.total[i]),
+                        "power_loss_W": float(friction.power_loss[i]),
+                    }
             if self.lubrication is not None:
                 d["lubrication"] = self.lubrication.to_dict(i)
             d["warnings"] = list(dict.fromkeys([*self.warnings[i], *d.get("warnings", [])]))
@@ -84,6 +95,8 @@ class AnalysisOutput:
         for i, d in enumerate(outcome.case_dicts):
             d = dict(d)
             d["friction"] = {**d["friction"], "power_loss_W": float(outcome.power_loss[i])}
+            if self.thermal is not None:
+                d["thermal"] = self.thermal.to_dict(i)
             d["warnings"] = self.warnings[i]
             cases.append(d)
         return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
@@ -97,11 +110,15 @@ class AnalysisOutput:
 
     def heat_dict(self, model: str | None = None) -> dict:
         """Heat balance (operating temperature) and the model's thermal reference speed (ISO 15312
-        method), JSON-ready (:mod:`bearingkit.pipeline.thermal`)."""
+        method), JSON-ready (:mod:`bearingkit.pipeline.thermal`; the balance of
+        :mod:`bearingkit.pipeline.thermal_balance`, the analysis's own when it found its temperature)."""
         from bearingkit.pipeline import thermal
 
         model = model or self.friction_model
-        balance = self._in_file(thermal.heat_balance, self, model)
+        if self.thermal is not None and self.thermal.model == model:
+            balance = thermal.HeatBalance.of(self.thermal)
+        else:
+            balance = self._in_file(thermal.heat_balance, self, model)
         try:
             n_ref = self._in_file(
                 thermal.thermal_reference_speed, self, "skf" if model == "components" else model
@@ -121,6 +138,7 @@ class AnalysisOutput:
         out = self.statics_dict()
         for i, d in enumerate(out["cases"]):
             d["operating"] = self.operating.to_dict(i)
+            d["operating"]["temperature_found"] = self.thermal is not None
             if self.rating is not None:
                 d["rating"] = self.rating.to_dict(i)
             if self.lubrication is not None:
@@ -133,6 +151,8 @@ class AnalysisOutput:
                 }
         if self.load_diagram is not None:
             out["load_diagram"] = self.load_diagram.to_dict()
+        if self.operating.lubricant is not None:  # what the lubricant analysed is (docs/lubricants.md)
+            out["lubricant"] = self.operating.lubricant.to_dict()
         out["notes"] = self.notes
         out["references"] = self.references
         return out
@@ -145,6 +165,7 @@ class AnalysisOutput:
         cols: dict[str, object] = {"case": self.case_names}
         cols["speed_rad_s"] = self.operating.speed
         cols["temperature_C"] = self.operating.temperature
+        cols["temperature_found"] = np.full(self.n_cases, self.thermal is not None)
         for k, name in enumerate(("u_x_m", "u_y_m", "u_z_m", "theta_x_rad", "theta_y_rad")):
             cols[name] = res.displacement[:, k]
         cols["converged"] = np.asarray(res.converged, bool)

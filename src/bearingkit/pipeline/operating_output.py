@@ -16,6 +16,7 @@ __all__ = [
     "KAPPA_LOW",
     "LAMBDA_LOW",
     "LubricationOutcome",
+    "contamination_values",
     "lubrication",
     "operating_warnings",
     "preload_state",
@@ -55,6 +56,14 @@ def resolve_contamination(bearing, value):
         except InputError:
             contamination_factor(value, 1.0)  # raises the one-line error listing the levels
     return float(value), None
+
+
+def contamination_values(bearing) -> dict[str, float]:
+    """ISO 281 level name → e_C for ``bearing`` (its pitch diameter selects the Table 13 column): what a
+    level name means wherever a contamination is given (files, command line, studies)."""
+    from bearingkit.physics.life.iso281_contamination import contamination_levels
+
+    return {level: resolve_contamination(bearing, level)[0] for level in contamination_levels()}
 
 
 def preload_state(analysis) -> dict | None:
@@ -184,7 +193,11 @@ def lubrication(analysis):
     if not np.all(op.abs_speed > 0):
         notes.append("no speed in some cases: no film, ν1 or κ there")
     grease = None
-    if spec is not None and spec.grease is not None:
+    grease_class = None if spec is None else spec.grease
+    if grease_class is None and spec is not None and spec.grease_limiting_speed is not None:
+        if op.lubricant.is_grease:  # the grease's own class (its data) when [lubrication] names none
+            grease_class = op.lubricant.grease.life_class
+    if grease_class is not None:
         if spec.grease_limiting_speed is None:
             notes.append(
                 "grease life: give [lubrication] grease_limiting_speed (the catalogue limiting speed)"
@@ -197,7 +210,7 @@ def lubrication(analysis):
             outer = op.temperature
             if opsec is not None and opsec.temperature_outer_ring is not None:
                 outer = np.full_like(op.temperature, opsec.temperature_outer_ring)
-            grease = grease_life(op.abs_speed, spec.grease_limiting_speed, outer, spec.grease)
+            grease = grease_life(op.abs_speed, spec.grease_limiting_speed, outer, grease_class)
             notes.append(
                 "grease life: NSK catalogue formula for sealed deep groove ball bearings (loads ≤ C/10)"
             )
@@ -260,6 +273,15 @@ def operating_warnings(analysis, case: int) -> list[str]:
                     "drive the "
                     "ball set — ball–cage overspeed / skidding risk; add load or preload"
                 )
+    lube = analysis.operating.lubricant
+    limit = None if lube is None or lube.grease is None else lube.grease.temperature_max_C
+    t = float(analysis.operating.temperature[case])
+    if limit is not None and t > limit:
+        found = "found " if getattr(analysis, "thermal", None) is not None else ""
+        out.append(
+            f"the {found}operating temperature {t:.4g} °C is above the upper limit of grease {lube.name!r} "
+            f"({limit:g} °C, its data sheet): choose a grease for higher temperatures or cool the bearing"
+        )
     lub = analysis.lubrication
     if lub is not None:
         for f in lub.result.films:

@@ -7,10 +7,10 @@ SI units (W, W/K, rad/s; temperatures in °C).
   5 % of C0) equals the reference heat flow q_r A_r (:mod:`bearingkit.physics.friction.iso15312`). The
   friction comes from one of bearingkit's models (default SKF), not from the standard's f0r/f1r tables,
   which bearingkit does not carry: the result is that model's thermal reference speed.
-- :func:`heat_balance`: the temperature T at which the friction power at T equals the heat carried away,
-  P(T) = H (T − T_amb), H the bearing's heat dissipation [W/K] (``[operating] heat_dissipation``; default
-  the ISO 15312 reference housing, H = q_r A_r / 50 K). The friction power falls with T (the oil thins),
-  so the balance is found by bisection; none below 250 °C means thermal runaway (a warning).
+- :func:`heat_balance`: the temperature T at which the friction power at T equals the heat carried away
+  — the balance of :mod:`bearingkit.pipeline.thermal_balance` (seats/housing and circulating oil,
+  safeguarded secant over all cases, closed to 1e-6 of the heat), returned in the compact form of
+  ``friction --heat``; none below 250 °C means thermal runaway (NaN and a note).
 """
 
 from __future__ import annotations
@@ -22,50 +22,12 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.physics.friction import iso15312
+from bearingkit.pipeline.thermal_balance import reference_surface_of
 
 __all__ = ["HeatBalance", "heat_balance", "reference_surface_of", "thermal_reference_speed"]
 
 #: Highest temperature searched by the heat balance [°C] (the lubricants' law ends at 250 °C).
 MAX_TEMPERATURE = 250.0
-#: Temperature tolerance of the heat balance [K].
-TEMPERATURE_TOL = 0.01
-
-
-def _width(analysis) -> float | None:
-    geometry = analysis.input.geometry.model_dump()
-    if geometry.get("width") is not None:
-        return float(geometry["width"])
-    designation = analysis.input.spec.bearing.designation
-    if designation is None:
-        return None
-    from bearingkit.catalogue import resolve
-
-    try:
-        return float(resolve(designation).estimate.entry.width)
-    except (InputError, AttributeError):
-        return None
-
-
-def reference_surface_of(analysis) -> float:
-    """ISO 15312 reference surface A_r [m²] of the analysed bearing (needs d, D and, radial, B)."""
-    geometry = analysis.input.geometry.model_dump()
-    d, big_d = geometry.get("bore"), geometry.get("outer_diameter")
-    if d is None or big_d is None:
-        raise InputError("heat: the bearing's bore and outer_diameter are needed (give them in [geometry])")
-    thrust = all(
-        (r.kind == "ball" and abs(float(np.max(r.contact_angle))) > np.radians(60))
-        or (r.kind == "cylindrical" and r.direction != 0)
-        for r in analysis.input.model.rows
-    )
-    if thrust:
-        return iso15312.reference_surface(d, big_d, kind="thrust")
-    width = _width(analysis)
-    if width is None:
-        raise InputError(
-            "heat: the bearing width B is needed for the ISO 15312 reference surface (give a designation, "
-            "or [operating] heat_dissipation directly)"
-        )
-    return iso15312.reference_surface(d, big_d, width, "radial")
 
 
 def _sibling(analysis, *, temperature=None, speed=None, load=None, lubricant=None):
@@ -156,10 +118,25 @@ class HeatBalance:
     ambient: float
     model: str
     notes: list = field(default_factory=list)
+    thermal: object = None
+
+    @classmethod
+    def of(cls, equilibrium) -> HeatBalance:
+        """The compact form of a :class:`~bearingkit.pipeline.thermal_balance.ThermalEquilibrium`."""
+        s = equilibrium.settings
+        return cls(
+            np.asarray(equilibrium.temperature, float),
+            np.asarray(equilibrium.friction_heat, float),
+            s.conductance,
+            s.ambient,
+            equilibrium.model,
+            [],  # the Analysis's notes carry the balance's
+            equilibrium,
+        )
 
     def to_dict(self, case: int) -> dict:
         t = float(self.temperature[case])
-        return {
+        out = {
             "temperature_C": None if np.isnan(t) else t,
             "power_loss_W": float(self.power_loss[case]),
             "heat_dissipation_W_K": self.dissipation,
@@ -167,57 +144,47 @@ class HeatBalance:
             "friction_model": self.model,
             "notes": list(self.notes),
         }
+        if self.thermal is not None:
+            out["balance"] = self.thermal.to_dict(case)
+        return out
 
 
 def heat_balance(analysis, model: str | None = None, dissipation=None, ambient=None) -> HeatBalance:
-    """Operating temperature at which the friction power equals the heat flow (module docstring)."""
-    from bearingkit.pipeline.conditions import _sections
+    """Operating temperature at which the friction power equals the heat flow (module docstring).
+
+    Parameters
+    ----------
+    analysis : Analysis
+    model : str, optional
+        Friction model (default the analysis's).
+    dissipation : float [W/K], optional
+        Heat flow through seats and housing per kelvin (default: ``[thermal]``/``[operating]`` of the
+        file, else the ISO 15312 reference housing).
+    ambient : float [°C], optional
+
+    Returns
+    -------
+    HeatBalance
+        NaN temperatures and a "runaway" note when some case has no balance below 250 °C.
+    """
+    from bearingkit.pipeline.thermal_balance import ThermalRunaway, thermal_settings, with_thermal_equilibrium
 
     model = model or analysis.friction_model
-    spec = _sections(analysis.input).operating
-    notes = []
-    if ambient is None:
-        ambient = (
-            iso15312.REFERENCE_AMBIENT_TEMPERATURE
-            if spec is None or spec.temperature_ambient is None
-            else (spec.temperature_ambient)
+    start = _sibling(analysis)
+    start.friction_model = model
+    given = {
+        k: float(v) for k, v in (("heat_dissipation", dissipation), ("ambient", ambient)) if v is not None
+    }
+    try:
+        return HeatBalance.of(with_thermal_equilibrium(start, given).thermal)
+    except ThermalRunaway as exc:
+        s = thermal_settings(start, given)
+        n = analysis.n_cases
+        return HeatBalance(
+            np.full(n, np.nan),
+            np.full(n, np.nan),
+            s.conductance,
+            s.ambient,
+            model,
+            [f"no heat balance below {MAX_TEMPERATURE:g} °C (thermal runaway): {exc}"],
         )
-    if dissipation is None and spec is not None and spec.heat_dissipation is not None:
-        dissipation = spec.heat_dissipation
-    if dissipation is None:
-        area = reference_surface_of(analysis)
-        dissipation = float(iso15312.reference_heat_flow(area)) / (
-            iso15312.REFERENCE_BEARING_TEMPERATURE - iso15312.REFERENCE_AMBIENT_TEMPERATURE
-        )
-        notes.append(
-            f"heat dissipation {dissipation:.3g} W/K of the ISO 15312 reference housing (q_r A_r / 50 K); "
-            "give "
-            "[operating] heat_dissipation for the real housing"
-        )
-    n = analysis.n_cases
-
-    def excess(temps):
-        p = _sibling(analysis, temperature=temps).friction_by(model).power_loss
-        return p - dissipation * (temps - ambient), p
-
-    lo = np.full(n, float(ambient) + TEMPERATURE_TOL)
-    hi = np.full(n, MAX_TEMPERATURE)
-    f_hi, _ = excess(hi)
-    runaway = f_hi > 0
-    for _ in range(40):
-        mid = 0.5 * (lo + hi)
-        f_mid, _ = excess(mid)
-        lo = np.where(f_mid > 0, mid, lo)
-        hi = np.where(f_mid > 0, hi, mid)
-        if np.all(hi - lo < TEMPERATURE_TOL):
-            break
-    temps = 0.5 * (lo + hi)
-    _, power = excess(temps)
-    temps = np.where(runaway, np.nan, temps)
-    if runaway.any():
-        notes.append(
-            f"no heat balance below {MAX_TEMPERATURE:g} °C in {int(runaway.sum())} case(s): the friction "
-            "power "
-            "exceeds what the housing carries away (thermal runaway)"
-        )
-    return HeatBalance(temps, power, float(dissipation), float(ambient), model, notes)

@@ -51,6 +51,12 @@ def describe_operating_point(analysis) -> str:
 
     op = analysis.operating
     lube = "none given" if op.lubricant is None else op.lubricant.name
+    if getattr(analysis, "thermal", None) is not None:
+        return (
+            f"Operating point: {op.rotating} ring at {listed(op.speed, _RPM)} r/min (sign = direction of "
+            f"rotation); temperature FOUND by the heat balance: {listed(op.temperature)} °C (see each case's "
+            f"thermal equilibrium); lubricant {lube}."
+        )
     extra = "".join(f"; {k} {v:g}" for k, v in analysis.friction_options.items() if isinstance(v, float))
     return (
         f"Operating point: {op.rotating} ring at {listed(op.speed, _RPM)} r/min (sign = direction of "
@@ -136,6 +142,8 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
             for i, c in enumerate(analysis.input.cases)
         ]
     )
+    if op.lubricant is not None:  # the lubricant analysed (a --lubricant replaces the file's)
+        shown = dataclasses.replace(shown, lubricant=op.lubricant)
     from bearingkit.report.html_operating import operating_html
 
     statics = analysis.statics_dict()["cases"]

@@ -135,23 +135,49 @@ def _inputs_html(bearing) -> str:
     if lub is None:
         parts.append("<p>No lubricant given: friction needs one.</p>")
     else:
+        grease = lub.grease
+        kind = (
+            "oil"
+            if grease is None
+            else f"grease: {grease.thickener}, NLGI {grease.nlgi}"
+            + ("" if grease.temperature_max_C is None else f", ≤ {grease.temperature_max_C:g} °C")
+        )
+        vi = lub.viscosity_index
         parts.append(
             _table(
-                ["name", "base", "ν40 [mm²/s]", "ν100 [mm²/s]", "η const. [Pa·s]", "α_p [1/GPa]", "source"],
+                [
+                    "name",
+                    "kind",
+                    "base oil",
+                    "ν40 [mm²/s]",
+                    "ν100 [mm²/s]",
+                    "VI",
+                    "η const. [Pa·s]",
+                    "α_p(40 °C) [1/GPa]",
+                    "source",
+                ],
                 [
                     [
                         _e(lub.name),
-                        _e(lub.base),
+                        _e(kind),
+                        _e(lub.base_oil),
                         fmt(lub.kinematic_viscosity_40, 4, 1e6),
                         fmt(lub.kinematic_viscosity_100, 4, 1e6),
+                        fmt(vi, 3),
                         fmt(lub.constant_viscosity),
                         fmt(lub.pressure_viscosity, 4, 1e9),
                         _e(lub.source or "—"),
                     ]
                 ],
-                left=2,
+                left=3,
             )
         )
+        if lub.pressure_viscosity_exponent:
+            parts.append(
+                "<p>α_p follows the viscosity: α_p(T) = α_p(40 °C) (η(T)/η(40 °C))^"
+                f"{lub.pressure_viscosity_exponent:.3g} "
+                f"(the {_e(lub.base_oil)} base-oil law).</p>"
+            )
     parts.append("<h3>Load cases</h3>")
     free = [n for n, f in zip(("u_x", "u_y", "u_z", "θ_x", "θ_y"), bearing.free, strict=True) if f]
     parts.append(f"<p>Free inner-ring DOFs: {_e(', '.join(free))} (the others are held at zero).</p>")

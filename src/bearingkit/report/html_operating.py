@@ -18,9 +18,43 @@ def _deg(values) -> str:
     return f"{lo:.2f}" if abs(hi - lo) < 0.005 else f"{lo:.2f} – {hi:.2f}"
 
 
+def thermal_html(thermal: dict) -> str:
+    """The found operating temperature and its heat balance (the ``thermal`` dict of a case)."""
+    oil = thermal["oil_flow_m3_s"] > 0
+    rows = [
+        ["friction heat P(T)", fmt(thermal["friction_heat_W"], 5)],
+        [
+            f"through seats and housing, {fmt(thermal['heat_dissipation_W_K'], 4)} W/K × (T − "
+            f"{fmt(thermal['ambient_C'], 4)} °C)",
+            fmt(thermal["conducted_heat_W"], 5),
+        ],
+    ]
+    if oil:
+        rows.append(
+            [
+                f"circulating oil {fmt(thermal['oil_flow_m3_s'] * 6e4, 3)} l/min from "
+                f"{fmt(thermal['oil_inlet_C'], 4)} °C",
+                fmt(thermal["oil_heat_W"], 5),
+            ]
+        )
+    rows.append(["residual P − Φ", f"{thermal['balance_residual_W']:.2g}"])
+    return (
+        f'<p class="thermal"><b>Operating temperature FOUND by the heat balance: '
+        f"{fmt(thermal['temperature_C'], 4)} °C</b> ({_e(thermal['method'])}; "
+        f"{_e(thermal['friction_model'])} friction; H from {_e(thermal['heat_dissipation_from'])}; closed to "
+        f"{thermal['balance_relative']:.1e} of the heat in {thermal['iterations']} iterations). "
+        "Viscosity, κ, "
+        "a_ISO, friction and the operating clearance below are at this temperature.</p>"
+        + _table(["term", "heat [W]"], rows, left=1, cls="thermal")
+    )
+
+
 def operating_html(case: dict, lubrication: dict | None, number: str) -> str:
-    """HTML of one case: rows at speed, clearance chain, preload, lubrication (empty when none apply)."""
+    """HTML of one case: found temperature, rows at speed, clearance chain, preload, lubrication (empty
+    when none apply)."""
     parts = []
+    if "thermal" in case:
+        parts.append(thermal_html(case["thermal"]))
     speed_rows = [r for r in case["rows"] if "centrifugal_force_N" in r]
     if speed_rows:
         rows = [

@@ -58,12 +58,16 @@ class Factor:
     batched : bool
         True when cases differing in this factor can share one vectorised solve; False groups the
         cases by its value (one solve per group).
+    named : tuple of (str, float)
+        Values a study may give by name, with their SI value (ISO 281 contamination levels →
+        e_C of the study's bearing); a name is turned into its value where the study file is read.
     """
 
     name: str
     dimension: str
     default: object
     batched: bool = True
+    named: tuple = ()
 
 
 @dataclass(frozen=True)

@@ -407,15 +407,9 @@ def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
         opts = {
             k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
         }
-    lubricant = None
-    if spec.lubricant is not None:
-        from bearingkit.lubricants import LUBRICANTS
+    from bearingkit.io.loader import lubricant_of
 
-        if spec.lubricant.name not in LUBRICANTS:
-            raise InputError(
-                f"lubricant.name ({spec.lubricant.name!r}) must be one of {', '.join(LUBRICANTS)}"
-            )
-        lubricant = LUBRICANTS[spec.lubricant.name]
+    lubricant = lubricant_of(source, spec.lubricant)  # the one lubricant builder (a name or the data)
     _check_contamination(spec.lubrication)
     return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
 

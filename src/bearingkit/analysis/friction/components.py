@@ -321,7 +321,7 @@ def friction_torque(result, operating_point: OperatingPoint) -> FrictionResult:
         "wi_n": np.where(moving, wi / scale, 1.0),
         "wo_n": np.where(moving, wo / scale, 0.0),
         "eta": float(op.lubricant.viscosity(op.temperature)) * op.viscosity_factor,
-        "alpha_p": float(op.lubricant.pressure_viscosity),
+        "alpha_p": float(op.lubricant.pressure_viscosity_at(op.temperature)),  # α at T (base-oil law)
     }
     components = {k: np.zeros(c) for k in COMPONENT_NAMES}
     by_row, per_element = {}, {}

@@ -312,7 +312,7 @@ def engineering_friction_torque(
             load_radial=load_radial,
             load_axial=load_axial,
             lubrication=lubrication,
-            lubricant_base=lub.base,
+            lubricant_base=lub.ehl_class,  # a grease by its base oil (mineral or synthetic)
             **kw,
         )
     else:

@@ -148,7 +148,9 @@ class TRBOperatingPoint:
         """Roelands index Z used in the tractive integral [-]."""
         if self.roelands_exponent is not None:
             return float(self.roelands_exponent)
-        return float(rh.roelands_exponent(self.lubricant.pressure_viscosity, self.viscosity))
+        return float(
+            rh.roelands_exponent(self.lubricant.pressure_viscosity_at(self.temperature_C), self.viscosity)
+        )
 
 
 #: Share of M_ir carried by cone sliding traction above which the result warns [-] (bearingkit's
@@ -279,7 +281,11 @@ def friction_from_state(
     q_e = np.asarray(roller_state["slice_load_outer"], dtype=float)
     q_f = np.asarray(roller_state["load_flange"], dtype=float)
     width = geo.length / row.n_slices
-    eta, alpha, e_red = op.viscosity, float(op.lubricant.pressure_viscosity), kernel.e_reduced
+    eta, alpha, e_red = (
+        op.viscosity,
+        float(op.lubricant.pressure_viscosity_at(op.temperature_C)),
+        kernel.e_reduced,
+    )
     rho_f = 0.5 * geo.d_l - geo.flange_height
     kin = tf.outer_control_kinematics(
         op.speed, op.cage_slip, geo.radius_inner, geo.radius_outer, geo.r_m, geo.radius_flange, rho_f

@@ -180,7 +180,7 @@ class PTRBFrictionResult:
 
 def _lubricant_props(lubricant, temperature_C):
     lub = as_lubricant(lubricant)
-    return float(lub.viscosity(temperature_C)), float(lub.pressure_viscosity)
+    return float(lub.viscosity(temperature_C)), float(lub.pressure_viscosity_at(temperature_C))
 
 
 def _sum_contacts(geom: dict, loads_in, loads_out, weights, speed, params, viscosity, alpha_p):

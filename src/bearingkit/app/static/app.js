@@ -144,6 +144,10 @@ function fillForm(o) {
   const lube = $("lubricant");
   const own = o.lubricant ? `file: ${o.lubricant}` : "none (no κ, a_ISO)";
   lube.replaceChildren(el("option", { value: "" }, own), ...state.meta.lubricants.map((n) => el("option", { value: n }, n)));
+  $("lube-base_oil").replaceChildren(el("option", { value: "" }, "(as chosen)"), ...(state.meta.base_oils || []).map((n) => el("option", { value: n }, n)));
+  $("lube-thickener").replaceChildren(el("option", { value: "" }, "(oil)"), ...(state.meta.thickeners || []).map((n) => el("option", { value: n }, n)));
+  for (const input of document.querySelectorAll("[data-lube], [data-thermal]")) input.value = "";
+  $("heat").checked = Boolean(o.thermal);
   fillSweepFactors(o);
 }
 
@@ -170,6 +174,9 @@ function request() {
     temperature: $("temperature").value.trim(),
     geometry,
     lubricant: $("lubricant").value,
+    lubricant_data: Object.fromEntries([...document.querySelectorAll("[data-lube]")].map((i) => [i.dataset.lube, i.value.trim()]).filter(([, v]) => v)),
+    heat: $("heat").checked,
+    thermal: Object.fromEntries([...document.querySelectorAll("[data-thermal]")].map((i) => [i.dataset.thermal, i.value.trim()]).filter(([, v]) => v)),
     contamination: $("contamination").value.trim(),
     friction_model: $("friction-model").value,
   };
@@ -212,6 +219,7 @@ function render(data) {
   state.last = data;
   $("case-title").textContent = `case ${c.case}${c.converged ? "" : " (NOT converged)"}`;
   renderSummary(c);
+  renderThermal(c);
   const warn = $("warnings");
   warn.replaceChildren(...c.warnings.map((w) => el("li", {}, w)));
   renderPolar(c);
@@ -248,6 +256,14 @@ function metric(id, name, value, scale, unit, digits = 4, bad = false) {
     el("div", { class: "name" }, name),
     el("span", { class: "value", id, "data-value": value === null || value === undefined ? "" : String(value) }, shown),
     el("span", { class: "unit" }, unit));
+}
+
+function renderThermal(c) {
+  const box = $("thermal"), t = c.thermal;
+  box.hidden = !t;
+  if (!t) return;
+  const oil = t.oil_flow_m3_s > 0 ? ` + oil ${fmt(t.oil_heat_W, 4)} W` : "";
+  box.textContent = `Operating temperature FOUND by the heat balance: ${fmt(t.temperature_C, 4)} °C — friction heat ${fmt(t.friction_heat_W, 4)} W = seats/housing ${fmt(t.conducted_heat_W, 4)} W (${fmt(t.heat_dissipation_W_K, 3)} W/K to ${fmt(t.ambient_C, 3)} °C)${oil}; closed to ${t.balance_relative.toExponential(1)} in ${t.iterations} iterations (${t.friction_model} friction). κ, a_ISO, friction and clearance are at this temperature.`;
 }
 
 function renderSummary(c) {
@@ -562,7 +578,8 @@ async function start() {
     $(id).addEventListener("change", scheduleAnalyze);
     $(id).addEventListener("keydown", (e) => e.key === "Enter" && scheduleAnalyze());
   }
-  for (const id of ["lubricant", "friction-model"]) $(id).addEventListener("change", scheduleAnalyze);
+  for (const id of ["lubricant", "friction-model", "heat", "lube-base_oil", "lube-thickener"]) $(id).addEventListener("change", scheduleAnalyze);
+  for (const input of document.querySelectorAll("[data-lube], [data-thermal]")) input.addEventListener("change", scheduleAnalyze);
   $("analyze").addEventListener("click", analyze);
   $("sweep-factor").addEventListener("change", sweepDefaults);
   $("sweep-run").addEventListener("click", runSweep);

@@ -3,7 +3,8 @@
 SI units (pitch diameter in m). ISO 281:2007 Table 13 gives guideline ranges of e_C for seven levels
 of contamination, one column for bearings with a pitch diameter D_pw below 100 mm and one at or above;
 bearingkit uses the middle of each range (a documented choice: the standard gives ranges). The values
-are in ``bearingkit/data/iso281_contamination.csv`` with their status (from memory of the standard).
+are in ``bearingkit/data/iso281_contamination.csv``: the middles are confirmed by two public bearing-life
+tools (the ranges themselves are from memory of the standard).
 
 References: ISO 281:2007 Rolling bearings — Dynamic load ratings and rating life, clause 9.3.3,
 Table 13.

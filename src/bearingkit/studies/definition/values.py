@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from bearingkit import units
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, did_you_mean
 
 
 def si_value(value, factor, where: str):
@@ -30,6 +30,14 @@ def si_value(value, factor, where: str):
         if not float(x).is_integer():
             raise InputError(f"{where} ({value!r}) must be an integer")
         return int(x)
+    named = dict(getattr(factor, "named", ()) or ())
+    if named and isinstance(value, str) and not units.is_number(value.strip()):
+        key = value.strip()
+        if key not in named:
+            raise InputError(
+                f"{where} ({value!r}) must be a number or one of {', '.join(named)}{did_you_mean(key, named)}"
+            )
+        return float(named[key])
     return units.parse(value, dim, where)
 
 

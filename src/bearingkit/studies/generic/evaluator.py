@@ -322,7 +322,7 @@ def _paths(bearing) -> dict:
 
 
 def _factor(p: pathmod.InputPath) -> Factor:
-    return Factor(p.path, p.dimension, p.nominal, batched=p.kind == "case")
+    return Factor(p.path, p.dimension, p.nominal, batched=p.kind == "case", named=p.named)
 
 
 def choose_load_case(bearing, head: dict, names, source: str) -> str:

@@ -12,14 +12,17 @@ A path names a field of the input file (docs/input-format.md):
   ``geometry.profile.crown_radius`` when the file gives a profile);
 - ``material.name`` (text), ``material.youngs_modulus``, ``material.poisson_ratio``,
   ``material.density`` (setting a constant of a named material sets all three from the preset first);
-- ``lubricant.name`` (text);
+- ``lubricant.name`` (text: a preset or library entry), and every other field of ``[lubricant]``
+  (``lubricant.nu_40``, ``lubricant.vi``, ``lubricant.base_oil`` …; a name set with them starts from that
+  entry, docs/lubricants.md);
 - ``load_cases.<case>.<field>`` — F_x, F_y, F_z, M_x, M_y, eccentricity, speed, temperature of a load
   case of the file (``<case>`` its name);
 - ``duty_cycle.<bin>.<field>`` — the same fields of a duty-cycle bin (not eccentricity);
 - ``solver.rtol``, ``solver.max_iterations``;
 - ``operating.speed``, ``operating.temperature`` — the speed and temperature of the study's load case;
   ``operating.rotating`` (inner | outer), ``operating.reliability``, ``operating.contamination``
-  (ISO 281 e_C), ``operating.friction_model`` (components | skf | palmgren) — the analysis's settings;
+  (ISO 281 e_C, a number or a level name such as ``"normal_cleanliness"``),
+  ``operating.friction_model`` (components | skf | palmgren) — the analysis's settings;
 - any field of the further sections a bearing file may have (their models in
   ``bearingkit.io.schema_operating.SECTION_MODELS`` when that module exists).
 
@@ -70,6 +73,8 @@ class InputPath:
     choices : tuple of str
         The accepted text values, where the schema lists them.
     description : str
+    named : tuple of (str, float)
+        Values given by name and their SI value (the ISO 281 contamination levels of this bearing).
     """
 
     path: str
@@ -78,6 +83,7 @@ class InputPath:
     kind: str
     choices: tuple = ()
     description: str = ""
+    named: tuple = ()
 
     @property
     def unit(self) -> str:
@@ -169,8 +175,9 @@ def _extra_sections() -> dict:
 
 def input_paths(bearing) -> dict[str, InputPath]:
     """Every path of ``bearing`` (a loaded :class:`~bearingkit.io.loader.BearingInput`), by name."""
-    from bearingkit.lubricants import LUBRICANTS
+    from bearingkit.lubricants import lubricant_names
     from bearingkit.materials import MATERIALS
+    from bearingkit.pipeline.operating_output import contamination_values
 
     spec = bearing.spec
     out = model_paths("geometry", schema.GEOMETRY_MODELS[bearing.bearing_type], bearing.geometry.model_dump())
@@ -185,9 +192,11 @@ def input_paths(bearing) -> dict[str, InputPath]:
             p = mat[f"material.{key}"]
             mat[p.path] = InputPath(p.path, p.dimension, getattr(preset, key), "file", (), p.description)
     out.update(mat)
+    given = spec.lubricant.model_dump(exclude_none=True) if spec.lubricant is not None else {}
+    out.update(model_paths("lubricant", schema.LubricantSpec, given))  # every field of [lubricant]
     lube = None if bearing.lubricant is None else bearing.lubricant.name
     out["lubricant.name"] = InputPath(
-        "lubricant.name", "text", lube, "file", tuple(LUBRICANTS), "lubricant preset"
+        "lubricant.name", "text", lube, "file", tuple(lubricant_names()), "lubricant preset or library entry"
     )
     solver = spec.solver.model_dump()
     for key in ("rtol", "max_iterations"):
@@ -230,6 +239,10 @@ def input_paths(bearing) -> dict[str, InputPath]:
     )
     for key, (dim, choices, text) in ANALYSIS_SETTINGS.items():
         out[f"operating.{key}"] = InputPath(f"operating.{key}", dim, None, "analysis", choices, text)
+    # e_C by an ISO 281 level name too, as files and the command line take it (its value for this bearing)
+    levels = tuple(contamination_values(bearing).items())
+    p = out["operating.contamination"]
+    out[p.path] = InputPath(p.path, p.dimension, None, "analysis", (), p.description, levels)
     return out
 
 
@@ -276,7 +289,9 @@ def apply(data: dict, values: Mapping[str, object], paths: Mapping[str, InputPat
     from bearingkit.materials import MATERIALS
 
     out = copy.deepcopy(data)
-    for path, value in values.items():
+    # a lubricant name first (it replaces the table), then the lubricant fields set with it
+    ordered = sorted(values.items(), key=lambda kv: kv[0] != "lubricant.name")
+    for path, value in ordered:
         p = paths[path]
         if p.kind != "file" or value is None or (isinstance(value, float) and value != value):
             continue
@@ -310,8 +325,11 @@ def apply(data: dict, values: Mapping[str, object], paths: Mapping[str, InputPat
                     }
                 )
             mat[parts[1]] = text
-        elif section == "lubricant":
-            out["lubricant"] = {"name": text}
+        elif section == "lubricant":  # a name starts a new table; the other fields edit it
+            if parts[1] == "name":
+                out["lubricant"] = {"name": text}
+            else:
+                _table(out, "lubricant")[parts[1]] = text
         else:
             table = _table(out, section)
             for key in parts[1:-1]:

@@ -1,0 +1,1 @@
+"""Heat flows out of a bearing and the batched root finder of a heat balance (pure functions)."""
