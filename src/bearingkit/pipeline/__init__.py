@@ -4,11 +4,11 @@ SI units inside. The faces (CLI, HTML report, flagship, studies, web app) call :
 the parts of the returned :class:`Analysis`; none of them orchestrates by itself.
 """
 
-from bearingkit.pipeline import friction_extra  # noqa: F401  (registers the "trb" model)
 from bearingkit.pipeline.analysis import RENDERERS, Analysis, analyze
-from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
+from bearingkit.pipeline.friction import extra as friction_extra  # noqa: F401  (registers the "trb" model)
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome, register_friction_model
+from bearingkit.pipeline.friction.slewing import slewing_friction  # registers friction model "slewing"
 from bearingkit.pipeline.inputs import ModelInput, load_cases_from, load_input
-from bearingkit.pipeline.kinds import slewing_friction  # registers friction model "slewing"
 from bearingkit.pipeline.operating import DEFAULT_TEMPERATURE, Operating
 
 __all__ = [

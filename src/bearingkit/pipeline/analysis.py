@@ -8,7 +8,7 @@ when asked for, and only once:
 - :attr:`Analysis.statics` — the batched quasi-static solve of every load case (rigid rings);
 - :attr:`Analysis.flexible` — the coupled flexible-ring solve, where the input configures one;
 - :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
-  :data:`~bearingkit.pipeline.friction.FRICTION_MODELS`;
+  :data:`~bearingkit.pipeline.friction.models.FRICTION_MODELS`;
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
 - :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
   pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
@@ -28,7 +28,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.pipeline.analysis_output import AnalysisOutput
-from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome
 from bearingkit.pipeline.inputs import ModelInput, load_input
 from bearingkit.pipeline.operating import Operating
 
@@ -96,7 +96,7 @@ class Analysis(AnalysisOutput):
         #: ISO 281 level name the contamination factor came from (None: a number or not given).
         self.contamination_level: str | None = None
         #: The heat balance that found the operating temperature (None: the temperature was an input),
-        #: :class:`~bearingkit.pipeline.thermal_balance.ThermalEquilibrium`.
+        #: :class:`~bearingkit.pipeline.thermal.balance.ThermalEquilibrium`.
         self.thermal = None
 
     # ------------------------------------------------------------------------------- parts
@@ -466,7 +466,7 @@ def analyze(
         model.
     thermal : bool or dict, optional
         Find the operating temperature by the heat balance
-        (:mod:`bearingkit.pipeline.thermal_balance`): True, or a dict of ``[thermal]`` fields
+        (:mod:`bearingkit.pipeline.thermal.balance`): True, or a dict of ``[thermal]`` fields
         (``ambient``, ``heat_dissipation``, ``housing_area``, ``heat_transfer_coefficient``,
         ``oil_flow``, ``oil_inlet_temperature``; text with units or SI); False: never. Default: when
         the file has a ``[thermal]`` section.
@@ -510,6 +510,6 @@ def analyze(
             f"{bearing.source}: temperature ({temperature!r}) and the heat balance both set the operating "
             "temperature; give one (drop --temperature, or --heat / [thermal])"
         )
-    from bearingkit.pipeline.thermal_balance import with_thermal_equilibrium
+    from bearingkit.pipeline.thermal.balance import with_thermal_equilibrium
 
     return out._in_file(with_thermal_equilibrium, out, thermal if isinstance(thermal, dict) else None)

@@ -12,7 +12,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.physics.friction import slewing as makers
-from bearingkit.pipeline.friction import FrictionOutcome, register_friction_model
+from bearingkit.pipeline.friction.models import FrictionOutcome, register_friction_model
 
 #: Row kind → element of the makers' formula.
 ELEMENTS = {"four_point": "ball", "crossed_roller": "roller"}

@@ -11,7 +11,7 @@ temperature T at which the friction heat equals the heat carried away,
 (:mod:`bearingkit.physics.heat.dissipation`: the form of DIN 732, the heat balance of a single rolling
 bearing whose reference state is ISO 15312's; ISO/TR 14179-1/-2 balance whole gear units — housing
 surface, gears, churning — and enter only through the housing term H = k·A). P(T) is the friction
-power of the Analysis's friction model (the pipeline's registry, :data:`~bearingkit.pipeline.friction.
+power of the Analysis's friction model (the pipeline's registry, :data:`~bearingkit.pipeline.friction.models.
 FRICTION_MODELS`) at T: the oil's viscosity (and its pressure–viscosity coefficient) at T, and the
 statics at T where the operating clearance depends on it (fits and thermal growth,
 :mod:`bearingkit.pipeline.conditions`). The root is found for all cases at once by a safeguarded secant

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome, register_friction_model
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome, register_friction_model
 
 __all__ = ["COMPONENT_MODEL_GAPS", "WHEN", "compare", "tapered"]
 

@@ -8,7 +8,7 @@ SI units (W, W/K, rad/s; temperatures in °C).
   friction comes from one of bearingkit's models (default SKF), not from the standard's f0r/f1r tables,
   which bearingkit does not carry: the result is that model's thermal reference speed.
 - :func:`heat_balance`: the temperature T at which the friction power at T equals the heat carried away
-  — the balance of :mod:`bearingkit.pipeline.thermal_balance` (seats/housing and circulating oil,
+  — the balance of :mod:`bearingkit.pipeline.thermal.balance` (seats/housing and circulating oil,
   safeguarded secant over all cases, closed to 1e-6 of the heat), returned in the compact form of
   ``friction --heat``; none below 250 °C means thermal runaway (NaN and a note).
 """
@@ -22,7 +22,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.physics.friction import iso15312
-from bearingkit.pipeline.thermal_balance import reference_surface_of
+from bearingkit.pipeline.thermal.balance import reference_surface_of
 
 __all__ = ["HeatBalance", "heat_balance", "reference_surface_of", "thermal_reference_speed"]
 
@@ -122,7 +122,7 @@ class HeatBalance:
 
     @classmethod
     def of(cls, equilibrium) -> HeatBalance:
-        """The compact form of a :class:`~bearingkit.pipeline.thermal_balance.ThermalEquilibrium`."""
+        """The compact form of a :class:`~bearingkit.pipeline.thermal.balance.ThermalEquilibrium`."""
         s = equilibrium.settings
         return cls(
             np.asarray(equilibrium.temperature, float),
@@ -167,7 +167,11 @@ def heat_balance(analysis, model: str | None = None, dissipation=None, ambient=N
     HeatBalance
         NaN temperatures and a "runaway" note when some case has no balance below 250 °C.
     """
-    from bearingkit.pipeline.thermal_balance import ThermalRunaway, thermal_settings, with_thermal_equilibrium
+    from bearingkit.pipeline.thermal.balance import (
+        ThermalRunaway,
+        thermal_settings,
+        with_thermal_equilibrium,
+    )
 
     model = model or analysis.friction_model
     start = _sibling(analysis)
