@@ -311,6 +311,9 @@ class Analysis(AnalysisOutput):
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
         out.extend(self.setup.notes)
+        from bearingkit.pipeline.mounting import mounting_notes
+
+        out.extend(mounting_notes(self))
         from bearingkit.analysis.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
@@ -358,8 +361,10 @@ class Analysis(AnalysisOutput):
                 notes.append("the flexible-ring coupling did not converge")
             if rating is not None:
                 notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
+            from bearingkit.pipeline.mounting import mounting_warnings
             from bearingkit.pipeline.operating_output import operating_warnings
 
+            notes.extend(mounting_warnings(self, c))
             notes.extend(operating_warnings(self, c))
             out.append(list(dict.fromkeys(notes)))
         return out
@@ -414,6 +419,8 @@ def analyze(
     friction_model: str = "components",
     load_ratings=None,
     friction_options=None,
+    hold=(),
+    free=(),
 ) -> Analysis:
     """Analyse a bearing: the entry point of the library, the CLI, the report, studies and the app.
 
@@ -444,6 +451,9 @@ def analyze(
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
         Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields of the component model.
+    hold, free : sequence of str, optional
+        Inner-ring DOFs (``u_x`` … ``theta_y``) to hold at 0 (their loads become reactions) or to free,
+        over the file's [solver] free and the defaults (``bearingkit analyze --hold u_z``).
 
     Returns
     -------
@@ -453,6 +463,10 @@ def analyze(
     from bearingkit.pipeline.operating_output import resolve_contamination
 
     bearing = source if isinstance(source, ModelInput) else load_input(source, load=load, cases=cases)
+    if hold or free:
+        if isinstance(bearing, ModelInput):
+            raise InputError("hold/free: a model built in code takes its free DOFs from ModelInput.free")
+        bearing = bearing.with_dofs(hold, free)
     e_c, level = resolve_contamination(bearing, contamination)
     operating = Operating.of(
         bearing,
