@@ -33,13 +33,16 @@ def test_rating_30205_under_radial_load_alone_is_answered():
 @pytest.mark.parametrize("designation", ["30205", "30210", "32008 X"])
 def test_held_reaction_is_the_induced_axial_force_of_iso281(designation):
     """With u_z held at zero clearance half the rollers carry load (ε = 0.5), so the axial reaction is the
-    force the radial load induces: 0.5 F_r / Y with ISO 281's Y = 0.4 cot α (α the cup angle) — within 1 %
-    (the slice-free whole-roller law and 17-23 discrete rollers against the integral)."""
+    force the radial load induces. For a line contact (load ∝ δ^(10/9)) that is ISO 281's 0.5 F_r / Y,
+    Y = 0.4 cot α (α the cup angle), i.e. 1.25 F_r tan α; the crowned rollers of a catalogue row (TS
+    profile) stiffen like a point contact at light load, whose ε = 0.5 force is F_r tan α / 0.8225 =
+    1.216 F_r tan α (Harris & Kotzalas 2007, Table 7.4). The reaction lies between the two (±0.5 % for
+    17-23 discrete rollers)."""
     a = bk.analyze(designation, load={"F_x": "5 kN"})
     assert not a.setup.free[2]
-    alpha = float(a.input.model.rows[0].contact_angle_outer)
-    expected = 0.5 * 5e3 / (0.4 / np.tan(alpha))
-    assert a.statics.load[0, 2] == pytest.approx(expected, rel=0.01)
+    tan = np.tan(float(a.input.model.rows[0].contact_angle_outer))
+    line, point = 0.5 * 5e3 / (0.4 / tan), 5e3 * tan / 0.8225
+    assert 0.995 * point <= a.statics.load[0, 2] <= 1.005 * line
 
 
 @pytest.mark.parametrize("designation", ["7208 B", "7206 C", "7308 AC"])

@@ -28,12 +28,12 @@ Harris & Kotzalas 2007 vol. 2 ch. 8; Zaretsky (2013) NASA/TP-2013-215305.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life
+from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life, catalogue_row_ratings
 from bearingkit.analysis.rating_options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
@@ -194,6 +194,8 @@ class RatingResult:
         Keys of :mod:`bearingkit.references`.
     iso281 : Iso281Life or None
         ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating_iso281`).
+    notes : list of str
+        What holds for every case (e.g. the rows' C derived from the catalogue C).
     """
 
     bearing: str
@@ -210,6 +212,7 @@ class RatingResult:
     warnings: list
     references: tuple = _REFERENCES
     iso281: Iso281Life | None = None
+    notes: list = field(default_factory=list)
 
     @property
     def n_cases(self) -> int:
@@ -391,7 +394,9 @@ def rate(
         C [N] per row name, replacing ISO 281 (catalogue values; thrust roller rows).
     catalogue_rating : (float, float or None), optional
         The published (C, C0) [N] of the bearing (a designation): the C of the whole-bearing ISO 281
-        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry).
+        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry) and,
+        divided over the rows as ISO 281 combines them, the C the rows' ISO/TS 16281 raceway ratings start
+        from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so).
 
     Returns
     -------
@@ -422,13 +427,26 @@ def rate(
             f"{[r.name for r in result.model.rows]}"
         )
     converged = np.asarray(result.converged, dtype=bool)
-    ctx = RowContext(options=opts, converged=converged, n_cases=n_cases)
-    rows = []
-    for row, state in zip(result.model.rows, result.rows, strict=True):
-        rater: Callable | None = ROW_RATERS.get(row.kind)
-        if rater is None:
-            raise InputError(f"row kind ({row.kind!r}) has no rater; known kinds: {sorted(ROW_RATERS)}")
-        rows.append(rater(row, state, ctx))
+    rows = _rate_rows(result, RowContext(options=opts, converged=converged, n_cases=n_cases))
+    rating_notes = []
+    from_catalogue = {
+        k: v
+        for k, v in catalogue_row_ratings(result.model, rows, catalogue_rating).items()
+        if k not in opts.load_ratings
+    }
+    if from_catalogue:  # ISO/TS 16281 starts from the bearing's C: the catalogue's, as ISO 281 does
+        geometry_c = {
+            r.name: np.ma.getdata(r.load_rating)[0] for r in rows if not np.ma.getmaskarray(r.load_rating)[0]
+        }
+        opts = replace(opts, catalogue_ratings=from_catalogue)
+        rows = _rate_rows(result, RowContext(options=opts, converged=converged, n_cases=n_cases))
+        per_row = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in from_catalogue.items())
+        computed = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in geometry_c.items())
+        rating_notes.append(
+            f"ISO/TS 16281 raceway ratings from the catalogue C = {float(catalogue_rating[0]) / 1e3:.4g} kN "
+            f"(per row: {per_row}), the C ISO 281 uses; the estimated geometry's ISO 281 C would be "
+            f"{computed or 'unavailable'}"
+        )
 
     a1 = float(iso281.reliability_factor(opts.reliability))
     life, sys_notes = _combine(rows, "life", n_cases)
@@ -471,4 +489,16 @@ def rate(
         warnings=warnings,
         references=refs,
         iso281=bearing_life(result, rows, opts, catalogue_rating),
+        notes=rating_notes,
     )
+
+
+def _rate_rows(result, ctx: RowContext) -> list[RowRating]:
+    """Every row of ``result`` rated by the rater of its kind (:data:`ROW_RATERS`)."""
+    rows = []
+    for row, state in zip(result.model.rows, result.rows, strict=True):
+        rater: Callable | None = ROW_RATERS.get(row.kind)
+        if rater is None:
+            raise InputError(f"row kind ({row.kind!r}) has no rater; known kinds: {sorted(ROW_RATERS)}")
+        rows.append(rater(row, state, ctx))
+    return rows

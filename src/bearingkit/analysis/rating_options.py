@@ -90,6 +90,10 @@ class RatingOptions:
     load_ratings : Mapping[str, float]
         Basic dynamic load rating C [N] per row name, replacing the ISO 281 computation (catalogue values,
         or rows whose ISO 281 factors are not shipped, e.g. thrust cylindrical rollers).
+    catalogue_ratings : Mapping[str, float]
+        C [N] per row derived from the catalogue C of the bearing (set by :func:`rate` for a designation,
+        :func:`bearingkit.analysis.rating_iso281.catalogue_row_ratings`); used like ``load_ratings`` but
+        not reported as the user's.
     """
 
     rotating: str = "inner"
@@ -102,6 +106,7 @@ class RatingOptions:
     edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO
     edge_stress_factor: str = "auto"
     load_ratings: Mapping = field(default_factory=dict)
+    catalogue_ratings: Mapping = field(default_factory=dict)
 
     def __post_init__(self):
         checks.one_of("rotating", self.rotating, ("inner", "outer"))

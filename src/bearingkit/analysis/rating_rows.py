@@ -348,10 +348,13 @@ def check_shoulders(row_name: str, heights, conformities, seams=(0.0, 0.0)):
 
 
 def _given_rating(ctx: RowContext, row, notes):
+    """C [N] of the row given by the user (noted) or derived from the bearing's catalogue C (the rating's
+    notes say so once), else None (computed by ISO 281 from the geometry)."""
     c = ctx.options.load_ratings.get(row.name)
     if c is not None:
         notes.append(f"C = {float(c):.6g} N given by the user (load_ratings), not computed by ISO 281")
-    return c
+        return c
+    return ctx.options.catalogue_ratings.get(row.name)
 
 
 def _one_class(name, values):

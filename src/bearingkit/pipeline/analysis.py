@@ -310,6 +310,8 @@ class Analysis(AnalysisOutput):
             out.append("ratings: no contamination factor e_C given, so no a_ISO and no L_nm")
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
+        if self.rating is not None:
+            out.extend(f"ratings: {n}" for n in self.rating.notes)
         out.extend(self.setup.notes)
         from bearingkit.pipeline.mounting import mounting_notes
 
