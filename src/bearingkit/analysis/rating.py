@@ -33,6 +33,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from bearingkit import checks
+from bearingkit.analysis.rating_compare import compare, headline
 from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life, catalogue_row_ratings
 from bearingkit.analysis.rating_options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
@@ -196,6 +197,8 @@ class RatingResult:
         ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating_iso281`).
     notes : list of str
         What holds for every case (e.g. the rows' C derived from the catalogue C).
+    comparison : list of dict or None
+        Per case, why L10r differs from ISO 281's L10 (:func:`bearingkit.analysis.rating_compare.compare`).
     """
 
     bearing: str
@@ -213,6 +216,7 @@ class RatingResult:
     references: tuple = _REFERENCES
     iso281: Iso281Life | None = None
     notes: list = field(default_factory=list)
+    comparison: list = field(default_factory=list)
 
     @property
     def n_cases(self) -> int:
@@ -274,19 +278,27 @@ class RatingResult:
             "reliability": self.reliability,
             "a1": self.a1,
             "rows": rows,
-            "system": {
-                "L10r_rev": val(self.life),
-                "L10h_h": val(self.hours(self.life)),
-                "Lnr_rev": val(self.life_reliability),
-                "Lnr_h": val(self.hours(self.life_reliability)),
-                "Lnmr_rev": val(self.modified_life),
-                "Lnmr_h": val(self.hours(self.modified_life)),
-                "static_safety": val(self.static_safety),
-                **self._iso281_dict(val),
-            },
+            "system": self._system_dict(case, val),
             "warnings": list(self.warnings[case]),
             "references": list(self.references),
         }
+
+    def _system_dict(self, case: int, val) -> dict:
+        """The bearing's lives of one case: the headline first (ISO 281 where it rates the bearing), the
+        ISO 281 keys, the ISO/TS 16281 keys, and the line saying why the two differ."""
+        system = {
+            **self._iso281_dict(val),
+            "L10r_rev": val(self.life),
+            "L10h_h": val(self.hours(self.life)),
+            "Lnr_rev": val(self.life_reliability),
+            "Lnr_h": val(self.hours(self.life_reliability)),
+            "Lnmr_rev": val(self.modified_life),
+            "Lnmr_h": val(self.hours(self.modified_life)),
+            "static_safety": val(self.static_safety),
+        }
+        diff = self.comparison[case] if case < len(self.comparison) else None
+        system["life_difference"] = None if diff is None else diff["text"]
+        return {"headline": headline(system), **system}
 
     def _iso281_dict(self, val) -> dict:
         """The system's ISO 281 keys (P, C and its source, L10, L10h, L_nm; None where not given)."""
@@ -474,6 +486,8 @@ def rate(
             )
         warnings.append(notes)
     refs = tuple(dict.fromkeys(_REFERENCES + tuple(k for r in rows for k in r.references)))
+    iso = bearing_life(result, rows, opts, catalogue_rating)
+    free = np.asarray(getattr(result, "free", np.ones(5, bool)), bool)
     return RatingResult(
         bearing=result.model.name,
         rows=rows,
@@ -488,8 +502,9 @@ def rate(
         converged=converged,
         warnings=warnings,
         references=refs,
-        iso281=bearing_life(result, rows, opts, catalogue_rating),
+        iso281=iso,
         notes=rating_notes,
+        comparison=compare(result, rows, life, iso, free),
     )
 
 

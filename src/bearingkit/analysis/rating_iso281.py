@@ -289,7 +289,8 @@ def _fmt(x, scale: float = 1.0) -> str:
 def caption(system: dict) -> str | None:
     """One line of the ISO 281 basic rating life from a case's ``system`` dict (CLI table and HTML report
     show the same text): ``ISO 281: P = … kN, C = … kN (catalogue|computed|given), L10 = … 10⁶ rev,
-    L10h = … h[, L_nm = … 10⁶ rev]``; the note when there is none; None for a dict without the keys."""
+    L10h = … h[, a_ISO = …, L_nm = … 10⁶ rev, L_nmh = … h]``; the note when there is none; None for a dict
+    without the keys."""
     if "C_iso281_N" not in system:
         return None
     note = system.get("iso281_note")
@@ -304,4 +305,6 @@ def caption(system: dict) -> str | None:
         text += (
             f", a_ISO = {_fmt(system['a_ISO_iso281'])}, L_nm = {_fmt(system['Lnm_iso281_rev'], 1e-6)} 10⁶ rev"
         )
+        if system.get("Lnm_iso281_h") is not None:
+            text += f", L_nmh = {_fmt(system['Lnm_iso281_h'])} h"
     return text + (f" ({note})" if note else "")

@@ -214,9 +214,12 @@ class Analysis(AnalysisOutput):
                 "temperature_C": op.temperature,
                 "contamination_factor": op.contamination,
             }
+        from bearingkit.pipeline.rating_statics import ts_statics
+
         try:
-            return rate(
-                self.statics,
+            statics, arm_note = ts_statics(self)
+            rated = rate(
+                statics,
                 speed=speed,
                 rotating=op.rotating,
                 reliability=op.reliability,
@@ -224,7 +227,10 @@ class Analysis(AnalysisOutput):
                 shoulder_height=self._shoulder_heights(),
                 catalogue_rating=self._catalogue_rating(),
                 **life,
-            ), None
+            )
+            if arm_note:
+                rated.notes.append(arm_note)
+            return rated, None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
 
