@@ -4,7 +4,8 @@ Written from the standard's equations, not from bearingkit's code: the slice mod
 bearing (eq. (36)-(46): steel slice stiffness c_L = 35948 L_we^(8/9) N/mm^(10/9) of the whole roller,
 c_s = c_L / n_s, q_jk = c_s δ_jk^(10/9), δ_jk = δ_r cos ψ_j − s/2 − 2 P(x_k), the logarithmic profile
 P(x) = 0.00035 D_we ln[1/(1 − (2x/L_we)²)] of eq. (42) for L_we <= 2.5 D_we, radial equilibrium solved for
-δ_r) and the life assembly (eq. (47)-(65)):
+δ_r; eq. (43) for longer rollers: no drop over the middle L_we − 2.5 D_we, 0.0005 D_we ln[1/(1 − u²)],
+u = (2|x| − (L_we − 2.5 D_we))/(2.5 D_we), towards the ends) and the life assembly (eq. (47)-(65)):
 
 - Q_ci = C/(λν 0.378 Z cos α i^(7/9)) (1 + T^(9/2))^(2/9), Q_ce = C/(λν 0.364 Z cos α i^(7/9))
   (1 + T^(−9/2))^(2/9), T = 1.038 ((1−γ)/(1+γ))^(143/108), λν = 0.83 (radial), eq. (47)-(49);
@@ -37,10 +38,19 @@ def edge_factor(n_s: int) -> np.ndarray:
     return np.where(x > 0, 1.0 - 0.01 / np.log(np.where(x > 0, x, 0.5)), 1.0)
 
 
+def profile_drop(x, dwe, lwe):
+    """P(x) [mm] of eq. (42) (L_we <= 2.5 D_we) and eq. (43) (longer rollers: flat middle, log ends)."""
+    if lwe <= 2.5 * dwe:
+        return 0.00035 * dwe * np.log(1.0 / (1.0 - (2.0 * x / lwe) ** 2))
+    flat = (lwe - 2.5 * dwe) / 2.0
+    u = np.clip((2.0 * np.abs(x) - (lwe - 2.5 * dwe)) / (2.5 * dwe), 0.0, None)
+    return np.where(np.abs(x) <= flat, 0.0, 0.0005 * dwe * np.log(1.0 / (1.0 - u**2)))
+
+
 def slice_loads(fr, *, z, dwe, lwe, dpw, n_s, clearance=0.0, profile=True):
     """q_jk [N], (Z, n_s): rollers at ψ_j = 2πj/Z (roller 0 under the load), eq. (36)-(46)."""
     x = (np.arange(n_s) - n_s / 2 + 0.5) * lwe / n_s
-    drop = 0.00035 * dwe * np.log(1.0 / (1.0 - (2.0 * x / lwe) ** 2)) if profile else np.zeros(n_s)
+    drop = profile_drop(x, dwe, lwe) if profile else np.zeros(n_s)
     c_s = STEEL_LINE_STIFFNESS * lwe ** (8.0 / 9.0) / n_s
     psi = 2.0 * np.pi * np.arange(z) / z
 

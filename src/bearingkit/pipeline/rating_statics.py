@@ -19,6 +19,9 @@ __all__ = ["TS_TILT_ARM", "ts_statics"]
 
 #: The tilt lever arm of ISO/TS 16281:2008's moment equation (rows.ball.TILT_ARMS).
 TS_TILT_ARM = "pitch_radius"
+#: A tilt below this [rad] is the solver's round-off of a symmetric case (1e-19 rad on a DB pair under a
+#: radial force), not a tilt: the two arms give the same contacts to far below it.
+TILT_ROUND_OFF = 1e-12
 
 
 def ts_statics(analysis):
@@ -33,7 +36,7 @@ def ts_statics(analysis):
     other = [
         r.name for r in model.rows if r.kind == "ball" and getattr(r, "tilt_arm", TS_TILT_ARM) != TS_TILT_ARM
     ]
-    tilted = np.any(np.abs(np.asarray(res.displacement)[:, 3:5]) > 0.0)
+    tilted = np.any(np.abs(np.asarray(res.displacement)[:, 3:5]) > TILT_ROUND_OFF)
     if not other or not tilted:
         return res, None
     from bearingkit.analysis.quasistatic import solve
