@@ -43,6 +43,8 @@ from bearingkit.analysis.rating_options import (
 )
 from bearingkit.analysis.rating_rows import (
     _REFERENCES,
+    EDGE_FACTOR_KINDS,
+    EDGE_FACTOR_MAX_MISALIGNMENT,
     ISO281_CONFORMITY_LIMITS,
     WEIBULL_SLOPES,
     RowContext,
@@ -470,9 +472,17 @@ def rate(
     safety = np.ma.min(np.ma.stack([r.static_safety for r in rows]), axis=0)
     safety = _masked(np.ma.getdata(safety), np.ma.getmaskarray(safety) | ~converged)
 
+    beyond = _edge_factor_beyond_range(result, opts)
     warnings = []
     for c in range(n_cases):
         notes = []
+        if beyond[c]:
+            tilt = float(np.degrees(np.hypot(*np.asarray(result.displacement[c, 3:5], float))) * 60.0)
+            notes.append(
+                f"edge-stress factor f_k of ISO/TS 16281 eq. (60) used at a ring misalignment of "
+                f"{tilt:.3g}′, above the 4′ the TS states it for: the roller-end slices' share of L10r is "
+                "approximate"
+            )
         if not converged[c]:
             notes.append(
                 f"case {c} did not converge ({result.reason[c]}): no rating, life or static safety returned"
@@ -506,6 +516,16 @@ def rate(
         notes=rating_notes,
         comparison=compare(result, rows, life, iso, free),
     )
+
+
+def _edge_factor_beyond_range(result, opts: RatingOptions) -> np.ndarray:
+    """Per case: a row applies eq. (60) (:func:`~bearingkit.analysis.rating_rows._edge_checks`) while the
+    rings are misaligned beyond :data:`~bearingkit.analysis.rating_rows.EDGE_FACTOR_MAX_MISALIGNMENT`."""
+    uses = opts.edge_stress_factor != "never" and any(
+        r.kind in EDGE_FACTOR_KINDS and getattr(r, "n_slices", 1) >= 2 for r in result.model.rows
+    )
+    tilt = np.hypot(*np.asarray(result.displacement, float)[:, 3:5].T)
+    return uses & (tilt > EDGE_FACTOR_MAX_MISALIGNMENT) & np.asarray(result.converged, bool)
 
 
 def _rate_rows(result, ctx: RowContext) -> list[RowRating]:

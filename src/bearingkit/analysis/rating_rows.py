@@ -434,6 +434,11 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
 #: Profiles ISO/TS 16281 states its edge-stress factor eq. (60) for: its logarithmic profiles eq. (42)-(44)
 #: (registry names of :mod:`bearingkit.physics.contact.profiles`).
 TS_PROFILES = ("iso16281", "iso16281_tapered")
+#: Row kinds whose raters apply eq. (60) through :func:`_edge_checks`.
+EDGE_FACTOR_KINDS = ("cylindrical", "tapered", "needle", "crossed_roller")
+#: Total misalignment of the rings up to which ISO/TS 16281 states eq. (60): 4′ [rad] (the TS's note, as a
+#: public implementation quotes it); beyond it the rating warns that the end-slice factor is approximate.
+EDGE_FACTOR_MAX_MISALIGNMENT = np.radians(4.0 / 60.0)
 
 
 def _edge_checks(row, state, ctx: RowContext, notes: list):
