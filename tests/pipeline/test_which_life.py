@@ -97,3 +97,12 @@ def test_the_ts_rating_reads_the_pitch_radius_tilt_arm():
         tomllib.loads((ROOT / "examples" / "acbb_7209_DB.toml").read_text()), load={"F_x": "3 kN"}
     )
     assert not any("pitch-radius tilt arm" in n for n in plain.notes)
+
+
+def test_the_ts_arm_solve_at_speed():
+    """At speed the statics' model is a speed wrapper: the TS-arm solve starts from the built model."""
+    a = bk.analyze(
+        ROOT / "examples" / "seed000_composite.toml", load={"F_z": "5 kN", "M_y": "500 N*m"}, speed="5 rpm"
+    )
+    assert a.rating is not None and any("pitch-radius tilt arm" in n for n in a.rating.notes)
+    assert a.rating.life[0] > 0

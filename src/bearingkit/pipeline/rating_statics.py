@@ -32,7 +32,7 @@ def ts_statics(analysis):
     row on :data:`TS_TILT_ARM`.
     """
     res = analysis.statics
-    model = res.model
+    model = analysis.input.model  # the model as built (res.model may be its speed wrapper)
     other = [
         r.name for r in model.rows if r.kind == "ball" and getattr(r, "tilt_arm", TS_TILT_ARM) != TS_TILT_ARM
     ]
