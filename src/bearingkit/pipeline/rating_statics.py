@@ -27,9 +27,10 @@ TILT_ROUND_OFF = 1e-12
 def ts_statics(analysis):
     """(QuasiStaticResult the ISO/TS 16281 rating reads, note or None).
 
-    ``analysis.statics`` itself when no ball row takes another arm or no case tilts; else the same cases
-    (loads, DOFs, imposed displacements, speed, offsets of :attr:`Analysis.setup`) solved with every ball
-    row on :data:`TS_TILT_ARM`.
+    ``analysis.statics`` itself when no ball row takes another arm, no case tilts or every DOF is held (an
+    imposed state, e.g. a shaft's seat); else the same cases (loads, DOFs, speed, offsets of
+    :attr:`Analysis.setup`; held DOFs at the statics' values) solved with every ball row on
+    :data:`TS_TILT_ARM`.
     """
     res = analysis.statics
     model = analysis.input.model  # the model as built (res.model may be its speed wrapper)
@@ -37,18 +38,21 @@ def ts_statics(analysis):
         r.name for r in model.rows if r.kind == "ball" and getattr(r, "tilt_arm", TS_TILT_ARM) != TS_TILT_ARM
     ]
     tilted = np.any(np.abs(np.asarray(res.displacement)[:, 3:5]) > TILT_ROUND_OFF)
-    if not other or not tilted:
+    setup = analysis.setup
+    # every DOF held: an evaluation at an imposed state (a shaft's seat displacement, docs/systems.md) —
+    # the state is the system's solution on the statics' arm, rated as it is
+    if not other or not tilted or not np.any(setup.free):
         return res, None
     from bearingkit.analysis.quasistatic import solve
 
     rows = tuple(dataclasses.replace(r, tilt_arm=TS_TILT_ARM) if r.name in other else r for r in model.rows)
-    setup, b = analysis.setup, analysis.input
+    b = analysis.input
     ts = analysis._in_file(
         solve,
         dataclasses.replace(model, rows=rows),
         setup.load,
         free=setup.free,
-        displacement=setup.displacement,
+        displacement=res.displacement,  # the held DOFs' values, and the start of the free ones
         options=b.options,
         raceway_offsets=setup.offsets,
         speed=setup.speed,
