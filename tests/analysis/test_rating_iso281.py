@@ -18,7 +18,7 @@ import pytest
 from typer.testing import CliRunner
 
 import bearingkit as bk
-from bearingkit.analysis.rating_iso281 import caption
+from bearingkit.analysis.rating.iso281 import caption
 from bearingkit.catalogue import find
 from bearingkit.cli import app
 from bearingkit.physics.life import iso76
@@ -164,7 +164,7 @@ def test_json_cli_and_report_show_the_same_numbers(tmp_path):
 def test_a_batch_with_refused_cases_gives_what_each_case_gives_alone():
     """Cases without an ISO 281 P (here f0 Fa/C0r below Table 3) leave the others' P as computed alone;
     each refused case gets its note; the valid cases are computed together, not one by one."""
-    from bearingkit.analysis import rating_iso281
+    from bearingkit.analysis.rating import iso281 as rating_iso281
     from bearingkit.physics.life import iso281_load
 
     c0, f0 = 20_400.0, 13.9

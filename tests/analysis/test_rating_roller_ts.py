@@ -24,8 +24,8 @@ import numpy as np
 import pytest
 import ts16281_roller_reference as ref
 
-from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.analysis.rating import rate
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
+from bearingkit.analysis.rating.assembly import rate
 from bearingkit.bearings.standard import cylindrical_roller
 from bearingkit.physics.contact.profiles import make_profile
 

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 import bearingkit as bk
-from bearingkit.analysis.quasistatic import load_vector, solve
-from bearingkit.analysis.rating import rate
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
+from bearingkit.analysis.rating.assembly import rate
 from bearingkit.bearings.self_aligning import self_aligning_ball
 from bearingkit.bearings.slewing import four_point_contact_ball
 from bearingkit.bearings.standard import deep_groove_ball

@@ -4,10 +4,10 @@ SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s,
 (``*_rev``) or hours (``*_h`` in the JSON output only), temperatures in °C (``temperature_C``, as in
 :mod:`bearingkit.lubricants`).
 
-:func:`rate` takes a :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` and, for every row,
+:func:`rate` takes a :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` and, for every row,
 
 - rates the row as a single-row bearing of its own geometry: ISO 76 C0 and ISO 281 C (the row raters
-  live in :mod:`bearingkit.analysis.rating_rows` and are re-exported here; :data:`ROW_RATERS` maps
+  live in :mod:`bearingkit.analysis.rating.rows` and are re-exported here; :data:`ROW_RATERS` maps
   ``row.kind`` to a rater — ball, cylindrical, tapered, threaded — and new row kinds register themselves
   with :func:`register_row_rater`);
 - computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
@@ -34,14 +34,14 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.rating_compare import compare, headline
-from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life, catalogue_row_ratings
-from bearingkit.analysis.rating_options import (
+from bearingkit.analysis.rating.iso281 import Iso281Life, bearing_life, catalogue_row_ratings
+from bearingkit.analysis.rating.options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
     EDGE_STRESS_MODES,
     RatingOptions,
 )
-from bearingkit.analysis.rating_rows import (
+from bearingkit.analysis.rating.rows import (
     _REFERENCES,
     EDGE_FACTOR_KINDS,
     EDGE_FACTOR_MAX_MISALIGNMENT,
@@ -54,7 +54,7 @@ from bearingkit.analysis.rating_rows import (
     rate_cylindrical_row,
     rate_tapered_row,
 )
-from bearingkit.analysis.rating_threaded import rate_threaded_row
+from bearingkit.analysis.rating.threaded import rate_threaded_row
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso281
 
@@ -196,7 +196,7 @@ class RatingResult:
     references : tuple of str
         Keys of :mod:`bearingkit.references`.
     iso281 : Iso281Life or None
-        ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating_iso281`).
+        ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating.iso281`).
     notes : list of str
         What holds for every case (e.g. the rows' C derived from the catalogue C).
     comparison : list of dict or None
@@ -399,7 +399,7 @@ def rate(
     shoulder_height : None, float or Mapping[str, float or (float, float)]
         Groove shoulder height over ball diameter [-] for the truncation check: one value, or per row
         name a value or an (inner, outer) pair; None = the kind's default
-        (:data:`~bearingkit.analysis.rating_options.DEFAULT_SHOULDER_HEIGHTS`).
+        (:data:`~bearingkit.analysis.rating.options.DEFAULT_SHOULDER_HEIGHTS`).
     edge_pressure_ratio : float
         End-slice pressure over the row's maximum slice pressure that flags edge loading [-].
     edge_stress_factor : {"auto", "always", "never"}
@@ -519,8 +519,8 @@ def rate(
 
 
 def _edge_factor_beyond_range(result, opts: RatingOptions) -> np.ndarray:
-    """Per case: a row applies eq. (60) (:func:`~bearingkit.analysis.rating_rows._edge_checks`) while the
-    rings are misaligned beyond :data:`~bearingkit.analysis.rating_rows.EDGE_FACTOR_MAX_MISALIGNMENT`."""
+    """Per case: a row applies eq. (60) (:func:`~bearingkit.analysis.rating.rows._edge_checks`) while the
+    rings are misaligned beyond :data:`~bearingkit.analysis.rating.rows.EDGE_FACTOR_MAX_MISALIGNMENT`."""
     uses = opts.edge_stress_factor != "never" and any(
         r.kind in EDGE_FACTOR_KINDS and getattr(r, "n_slices", 1) >= 2 for r in result.model.rows
     )

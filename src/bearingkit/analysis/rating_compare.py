@@ -1,7 +1,7 @@
 """Which life comes first, and why ISO/TS 16281 differs from ISO 281 for this bearing and case.
 
 SI units: loads in N, lives in revolutions, lengths in m. For a bearing ISO 281 rates (one row, or two
-equal rows: :mod:`bearingkit.analysis.rating_iso281`) the headline life is ISO 281's — the catalogue
+equal rows: :mod:`bearingkit.analysis.rating.iso281`) the headline life is ISO 281's — the catalogue
 method, what SKF's calculators and the commercial tools print first — and the ISO/TS 16281:2008 life from
 the load distribution stands beside it with one line saying what the difference comes from. Where ISO 281
 has no equivalent load (slewing rings, crossed roller, composites, threaded rows) the headline is the TS's.

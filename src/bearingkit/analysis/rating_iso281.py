@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearingkit.analysis.rating_options import RatingOptions
+from bearingkit.analysis.rating.options import RatingOptions
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso76, iso281, iso281_life, iso281_load
 from bearingkit.physics.life import kinds as life_kinds

@@ -1,8 +1,8 @@
-"""Settings of a bearing rating (:func:`bearingkit.analysis.rating.rate`), validated on construction.
+"""Settings of a bearing rating (:func:`bearingkit.analysis.rating.assembly.rate`), validated on construction.
 
 SI units throughout: speeds in rad/s, loads in N; temperatures in °C (``temperature_C``, as in
 :mod:`bearingkit.lubricants`). Shared by the rating assembly and the per-row raters
-(:mod:`bearingkit.analysis.rating_rows`). ISO 281:2007 (reliability, e_C), ISO/TS 16281:2008 (edge-stress
+(:mod:`bearingkit.analysis.rating.rows`). ISO 281:2007 (reliability, e_C), ISO/TS 16281:2008 (edge-stress
 factor).
 """
 
@@ -92,7 +92,7 @@ class RatingOptions:
         or rows whose ISO 281 factors are not shipped, e.g. thrust cylindrical rollers).
     catalogue_ratings : Mapping[str, float]
         C [N] per row derived from the catalogue C of the bearing (set by :func:`rate` for a designation,
-        :func:`bearingkit.analysis.rating_iso281.catalogue_row_ratings`); used like ``load_ratings`` but
+        :func:`bearingkit.analysis.rating.iso281.catalogue_row_ratings`); used like ``load_ratings`` but
         not reported as the user's.
     """
 

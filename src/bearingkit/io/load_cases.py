@@ -92,7 +92,7 @@ def parse_load_options(items: Sequence[str], name: str = "command line") -> Load
 
 def load_case_of(spec: schema.LoadCaseSpec) -> LoadCase:
     """The load case of a validated spec (SI): an eccentricity e along +x adds M_y = −e·F_z."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     m_y = spec.M_y - (spec.eccentricity or 0.0) * spec.F_z
     load = load_vector(F_x=spec.F_x, F_y=spec.F_y, F_z=spec.F_z, M_x=spec.M_x, M_y=m_y)
@@ -110,7 +110,7 @@ def one_way_row(model):
     if row.kind == "tapered":
         return row, int(row.direction)
     if row.kind == "ball":
-        from bearingkit.rows.ball import one_sided_row
+        from bearingkit.rows.ball.row import one_sided_row
 
         alpha = np.asarray(row.contact_angle, float)
         if alpha.size == 1 and float(alpha) != 0.0 and one_sided_row(row, alpha):

@@ -8,7 +8,7 @@ when asked for, and only once:
 - :attr:`Analysis.statics` — the batched quasi-static solve of every load case (rigid rings);
 - :attr:`Analysis.flexible` — the coupled flexible-ring solve, where the input configures one;
 - :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
-  :data:`~bearingkit.pipeline.friction.FRICTION_MODELS`;
+  :data:`~bearingkit.pipeline.friction.models.FRICTION_MODELS`;
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
 - :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
   pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
@@ -28,7 +28,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.pipeline.analysis_output import AnalysisOutput
-from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome
 from bearingkit.pipeline.inputs import ModelInput, load_input
 from bearingkit.pipeline.operating import Operating
 
@@ -68,7 +68,7 @@ class Analysis(AnalysisOutput):
     load_ratings : dict, optional
         Row name → C [N] replacing ISO 281 ratings (catalogue values).
     friction_options : dict, optional
-        Further fields of :class:`bearingkit.analysis.friction.OperatingPoint` for the component model
+        Further fields of :class:`bearingkit.analysis.friction.components.OperatingPoint` for the component model
         (``viscosity_factor``, ``cage_mass``, roughness, traction …).
     """
 
@@ -122,7 +122,7 @@ class Analysis(AnalysisOutput):
         )
         if setup.plain and same:
             return self.input.solve()
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         b = self.input
         return self._in_file(
@@ -203,7 +203,7 @@ class Analysis(AnalysisOutput):
 
     @functools.cached_property
     def _rating(self):
-        from bearingkit.analysis.rating import rate
+        from bearingkit.analysis.rating.assembly import rate
 
         op = self.operating
         speed = op.abs_speed if np.all(op.abs_speed > 0) else None
@@ -257,7 +257,7 @@ class Analysis(AnalysisOutput):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""
         if isinstance(self.input, ModelInput):
             return None
-        from bearingkit.io.shoulders import shoulder_fractions
+        from bearingkit.io.build.shoulders import shoulder_fractions
 
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
@@ -322,7 +322,7 @@ class Analysis(AnalysisOutput):
         from bearingkit.pipeline.mounting import mounting_notes
 
         out.extend(mounting_notes(self))
-        from bearingkit.analysis.speed import speed_notes
+        from bearingkit.analysis.solver.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
         lub = self.lubrication
@@ -458,7 +458,7 @@ def analyze(
     load_ratings : dict, optional
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
-        Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields of the component model.
+        Further :class:`~bearingkit.analysis.friction.components.OperatingPoint` fields of the component model.
     hold, free : sequence of str, optional
         Inner-ring DOFs (``u_x`` … ``theta_y``) to hold at 0 (their loads become reactions) or to free,
         over the file's [solver] free and the defaults (``bearingkit analyze --hold u_z``).

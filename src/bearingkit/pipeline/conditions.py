@@ -2,10 +2,10 @@
 
 SI units (m, N, rad, rad/s; temperatures in °C). :func:`statics_setup` turns an input's
 ``[operating]`` and ``[fits]`` sections and the operating point into the arguments of
-:func:`bearingkit.analysis.quasistatic.solve`:
+:func:`bearingkit.analysis.solver.quasistatic.solve`:
 
 - **speed**: the rolling elements' inertia at the rotating ring's speed (per case), unless
-  ``[operating] speed_effects = false`` (:mod:`bearingkit.analysis.speed`);
+  ``[operating] speed_effects = false`` (:mod:`bearingkit.analysis.solver.speed`);
 - **fits and temperatures**: the clearance chain of every radial row (:mod:`bearingkit.analysis.
   clearance`) as a radial shift of its outer raceway;
 - **tilt**: a single-row bearing (all rows in one axial plane) whose file does not say which DOFs are
@@ -129,7 +129,7 @@ def preload_for_force(model, force: float, options=None, base_offsets=None) -> f
     float [m]
         The preload displacement (bisection on the monotone force–displacement curve).
     """
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
 
     opposed = _opposed(model)
     if opposed is None:
@@ -205,7 +205,7 @@ def _negligible(analysis, density: float) -> bool:
 
 
 def _speed(analysis, spec):
-    from bearingkit.analysis.speed import OperatingSpeed
+    from bearingkit.analysis.solver.speed import OperatingSpeed
 
     op = analysis.operating
     if spec is not None and spec.speed_effects is False:

@@ -1,7 +1,7 @@
 """The load distribution the ISO/TS 16281 rating reads: the TS's own tilt lever arm for ball rows.
 
 SI units (m, N, rad). ISO/TS 16281:2008 writes the tilt term of a ball's approach as θ (d_m/2) cos ψ: the
-ring tilts about the pitch circle (``tilt_arm = "pitch_radius"`` of :class:`~bearingkit.rows.ball.BallRow`),
+ring tilts about the pitch circle (``tilt_arm = "pitch_radius"`` of :class:`~bearingkit.rows.ball.row.BallRow`),
 as commercial tools implementing the TS apply it. bearingkit's statics default to the groove-centre arm
 (Harris & Kotzalas 2007, §8.1; docs/engine.md). The two give the same contacts without a tilt and differ
 slightly under one; so that the life labelled ISO/TS 16281 is the TS's, the rating reads the cases solved
@@ -43,7 +43,7 @@ def ts_statics(analysis):
     # the state is the system's solution on the statics' arm, rated as it is
     if not other or not tilted or not np.any(setup.free):
         return res, None
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
 
     rows = tuple(dataclasses.replace(r, tilt_arm=TS_TILT_ARM) if r.name in other else r for r in model.rows)
     b = analysis.input

@@ -334,7 +334,7 @@ def edge_stress_factor(n_slices):
     :func:`roller_reference_life`. The TS gives it as the approximation of its pressure-based factors
     eq. (58)-(59), valid for rollers with its logarithmic profile eq. (42)-(44) under medium load and a
     misalignment below 4' (the TS's note, as quoted by a public implementation); the raters apply it to
-    every sliced roller row (:data:`bearingkit.analysis.rating_options.EDGE_STRESS_MODES`). Formula as
+    every sliced roller row (:data:`bearingkit.analysis.rating.options.EDGE_STRESS_MODES`). Formula as
     transcribed by two public implementations of the TS (not checked against the TS text).
 
     Parameters
