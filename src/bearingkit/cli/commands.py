@@ -21,7 +21,9 @@ from bearingkit.cli.common import (
     _CASE_OPTION,
     _CONTAMINATION_OPTION,
     _FILE_ARGUMENT,
+    _FREE_OPTION,
     _HEAT_OPTION,
+    _HOLD_OPTION,
     _JSON_OPTION,
     _LOAD_OPTION,
     _LUBRICANT_FILE_OPTION,
@@ -99,10 +101,12 @@ def analyze(
     case: list[str] = _CASE_OPTION,
     speed: str = _SPEED_OPTION,
     preload: str = _PRELOAD_OPTION,
+    hold: list[str] = _HOLD_OPTION,
+    free: list[str] = _FREE_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """Quasi-static load distribution of every load case with its warnings; exit 1 if one diverges."""
-    a = _analysis(file, load, case, preload=preload, speed=speed)
+    a = _analysis(file, load, case, hold, free, preload=preload, speed=speed)
     data = a.statics_dict()
     if as_json:
         _print_json(file, data)
@@ -149,6 +153,8 @@ def rating(
         None, "--load-rating", help="ROW=C replacing the ISO 281 rating of a row, e.g. roller_upper=50kN."
     ),
     preload: str = _PRELOAD_OPTION,
+    hold: list[str] = _HOLD_OPTION,
+    free: list[str] = _FREE_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety of every row and the bearing.
@@ -159,6 +165,8 @@ def rating(
         file,
         load,
         case,
+        hold,
+        free,
         preload=preload,
         speed=speed,
         temperature=temperature,

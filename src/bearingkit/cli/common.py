@@ -60,6 +60,15 @@ _LOAD_OPTION = typer.Option(
     help="NAME=VALUE replacing the file's load cases, e.g. --load Fa=5kN --load My=600N*m.",
 )
 _CASE_OPTION = typer.Option(None, "--case", "-c", help="Only the load case(s) with this name.")
+_HOLD_OPTION = typer.Option(
+    None,
+    "--hold",
+    help="Hold an inner-ring DOF at 0 (u_x, u_y, u_z, theta_x, theta_y): its load becomes a reaction, e.g. "
+    "--hold u_z for a single tapered bearing mounted against an opposite one.",
+)
+_FREE_OPTION = typer.Option(
+    None, "--free", help="Free an inner-ring DOF the file or the defaults hold, e.g. --free theta_x."
+)
 _JSON_OPTION = typer.Option(False, "--json", help="Print JSON (SI values, units in keys).")
 _SPEED_OPTION = typer.Option(
     None,
@@ -112,9 +121,10 @@ _OPTION_UNITS = {
 }
 
 
-def _analysis(file: Path, load, case, preload: str | None = None, **operating):
-    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some);
-    ``preload`` is ``--preload`` (a pair named by designation)."""
+def _analysis(file: Path, load, case, hold=None, free=None, preload: str | None = None, **operating):
+    """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some),
+    ``--hold`` / ``--free`` over its DOFs and ``preload``, the ``--preload`` of a pair named by
+    designation."""
     from bearingkit.io.loader import parse_load_options
     from bearingkit.pipeline import analyze, load_input
     from bearingkit.units import parse
@@ -145,6 +155,8 @@ def _analysis(file: Path, load, case, preload: str | None = None, **operating):
         bearing = bearing.with_cases([parse_load_options(load)])
     else:
         bearing = bearing.select(case)
+    if hold or free:
+        bearing = bearing.with_dofs(hold or (), free or ())
     try:
         return analyze(bearing, **{k: v for k, v in operating.items() if v is not None})
     except InputError as exc:

@@ -114,14 +114,17 @@ def rating_table(c: dict) -> Table:
     speed = "speed not given" if c["speed_rad_s"] is None else f"{c['speed_rad_s'] * 30 / math.pi:.4g} r/min"
     title = f"case {c['case']!r}: {c['rotating']} ring rotating, {speed}, reliability {c['reliability']:g}"
     s = c["system"]
-    caption = (
-        f"bearing: L10r = {_num(s['L10r_rev'], 1e-6)} 10⁶ rev, L10h = {_num(s['L10h_h'])} h, "
-        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}, "
-        f"s0 = {_num(s['static_safety'], fmt='.3g')}"
+    ts = (
+        f"ISO/TS 16281: L10r = {_num(s['L10r_rev'], 1e-6)} 10⁶ rev, L10h = {_num(s['L10h_h'])} h, "
+        f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}; "
+        f"bearing s0 = {_num(s['static_safety'], fmt='.3g')}"
     )
     iso281 = iso281_caption(s)
-    if iso281:
-        caption += "\n" + iso281
+    # the headline life first: ISO 281 where it rates the bearing (analysis.rating.compare.headline)
+    lines = [iso281, ts] if s.get("headline", {}).get("method") == "ISO 281" else [ts, iso281]
+    if s.get("life_difference"):
+        lines.append(f"why they differ: {s['life_difference']}")
+    caption = "\n".join(line for line in lines if line)
     # as wide as its title and caption lines (up to 120 columns): a narrow table wraps them mid-phrase
     width = min(max(len(line) for line in (title, *caption.split("\n"))) + 2, 120)
     table = Table(title=escape(title), caption=escape(caption), min_width=width, caption_justify="left")

@@ -99,23 +99,94 @@ def load_case_of(spec: schema.LoadCaseSpec) -> LoadCase:
     return LoadCase(spec.name, load, spec.speed, spec.temperature)
 
 
-def check_single_tapered(source: str, model, cases, free) -> None:
-    """A lone tapered row carries axial load one way only: F_z·direction must be positive if u_z is free.
-
-    With u_z free and no axial load towards the row's cone the inner ring lifts off (no equilibrium).
-    """
+def one_way_row(model):
+    """The row of a bearing whose single row carries axial load one way only, and that way (+1/−1):
+    a lone tapered row (its ``direction``) or a lone one-sided angular contact ball row (sign of α);
+    None for any other bearing."""
     rows = model.rows
-    if len(rows) != 1 or rows[0].kind != "tapered" or not free[2]:
-        return
-    sign = rows[0].direction
+    if len(rows) != 1:
+        return None
+    row = rows[0]
+    if row.kind == "tapered":
+        return row, int(row.direction)
+    if row.kind == "ball":
+        from bearingkit.rows.ball.row import one_sided_row
+
+        alpha = np.asarray(row.contact_angle, float)
+        if alpha.size == 1 and float(alpha) != 0.0 and one_sided_row(row, alpha):
+            return row, int(np.sign(float(alpha)))
+    return None
+
+
+def mounted_free(source: str, model, cases, free, user_set: bool = False):
+    """The DOFs a single one-way row is solved with, and the note of an automatic hold.
+
+    A lone tapered or angular contact row carries axial load one way only: with u_z free it needs
+    F_z·direction > 0 in every case (otherwise the inner ring lifts off: no equilibrium). When every case
+    gives F_z = 0 and the user set no DOFs, u_z is held at 0 — the bearing as mounted against an opposite
+    one with zero end play, which is how commercial tools answer for a single bearing — and the axial
+    reaction is that bearing's load. A tapered row with a case of F_z·direction < 0, or with some cases at
+    F_z = 0 and others not, is refused (one line naming the remedy).
+
+    Returns
+    -------
+    (ndarray (5,) of bool, tuple of str)
+        The free DOFs and the notes (empty when nothing was held).
+    """
+    found = one_way_row(model)
+    free = np.asarray(free, bool)
+    if found is None or not free[2] or not len(cases):
+        return free, ()
+    row, sign = found
+    fz = np.array([c.load[2] for c in cases]) * sign
+    if np.all(fz > 0.0):
+        return free, ()
+    what = "tapered roller" if row.kind == "tapered" else "angular contact ball"
+    if np.all(fz == 0.0) and not user_set:
+        held = free.copy()
+        held[2] = False
+        note = (
+            f"u_z held: a single {what} row under no axial load cannot balance the axial force its radial "
+            "load induces, so it is solved with the axial displacement held at 0, as mounted against an "
+            "opposite bearing with zero end play; the axial reaction F_z (* in the tables) is the load that "
+            "bearing takes. Give F_a towards the row to solve it with u_z free"
+        )
+        return held, (note,)
+    if row.kind != "tapered":
+        return free, ()  # the solver says why a reversed load on a ball row has no equilibrium
     word = "positive" if sign > 0 else "negative"
-    for c in cases:
-        if not c.load[2] * sign > 0.0:
-            raise InputError(
-                f"{source}: load case {c.name!r}: F_z ({c.load[2]:.6g} N) must be {word}: a single tapered "
-                "row carries axial load one way only and lifts off otherwise; use "
-                "arrangement DB or DF for reversing loads, or fix u_z in [solver] free"
-            )
+    c = cases[int(np.flatnonzero(~(fz > 0.0))[0])]
+    raise InputError(
+        f"{source}: load case {c.name!r}: F_z ({c.load[2]:.6g} N) must be {word}: a single tapered "
+        "row carries axial load one way only and lifts off otherwise; hold u_z (--hold u_z, or leave "
+        "u_z out of [solver] free) to solve it against an opposite bearing, give F_z in every case, "
+        "or use arrangement DB or DF for reversing loads"
+    )
+
+
+def check_single_tapered(source: str, model, cases, free) -> None:
+    """A lone tapered row with u_z free must get F_z·direction > 0 in every case (:func:`mounted_free`
+    with the user's DOFs: nothing is held automatically)."""
+    mounted_free(source, model, cases, free, user_set=True)
+
+
+def override_free(source: str, free, hold=(), release=()):
+    """``free`` with the DOFs named in ``hold`` fixed and those in ``release`` freed (names of
+    :data:`DOF_NAMES`); InputError for an unknown name or a DOF both held and freed."""
+    out = np.array(free, bool)
+    for names, value, option in ((hold, False, "--hold"), (release, True, "--free")):
+        for name in names:
+            if name not in DOF_NAMES:
+                raise InputError(
+                    f"{source}: {option} ({name!r}) must name a DOF: one of {', '.join(DOF_NAMES)}"
+                )
+            out[DOF_NAMES.index(name)] = value
+    both = set(hold) & set(release)
+    if both:
+        raise InputError(
+            f"{source}: {', '.join(sorted(both))} both held (--hold) and freed (--free); give one"
+        )
+    return out
 
 
 def check_fixed_loads(source: str, cases, free) -> None:
@@ -130,5 +201,5 @@ def check_fixed_loads(source: str, cases, free) -> None:
         c, i = cases[k], fixed[j]
         raise InputError(
             f"{source}: load case {c.name!r}: {LOAD_NAMES[i]} ({c.load[i]:.6g} {LOAD_UNITS[i]}) "
-            f"acts on {DOF_NAMES[i]}, which [solver] free keeps fixed; free it or remove the load"
+            f"acts on {DOF_NAMES[i]}, which is held ([solver] free or --hold); free it or remove the load"
         )

@@ -39,6 +39,8 @@ from bearingkit.io.load_cases import (
     check_fixed_loads,
     check_single_tapered,
     load_case_of,
+    mounted_free,
+    override_free,
     parse_load_options,
 )
 from bearingkit.io.messages import one_line, prefix_field, section_models
@@ -105,6 +107,13 @@ class BearingInput:
         The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
     tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
         The ``[[tolerances]]`` a tolerance study samples (values keep their units).
+    file_free : ndarray (5,) of bool or None
+        The free DOFs of the file ([solver] free, else all) before an automatic hold or a caller's
+        override changed ``free`` (None: ``free`` is the file's).
+    dof_overrides : tuple of (str, bool)
+        DOFs the caller held (False) or freed (True) over the file's (:meth:`with_dofs`).
+    free_notes : tuple of str
+        Why ``free`` differs from the file's (an automatic hold of a single one-way row, an override).
     """
 
     source: str
@@ -119,6 +128,9 @@ class BearingInput:
     sections: object = None
     duty_cycle: object = None
     tolerances: tuple = ()
+    file_free: np.ndarray | None = None
+    dof_overrides: tuple = ()
+    free_notes: tuple = ()
 
     @property
     def bearing_type(self) -> str:
@@ -148,11 +160,40 @@ class BearingInput:
         return self
 
     def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
-        """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
+        """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs; a single
+        one-way row is mounted again for them, :func:`~bearingkit.io.load_cases.mounted_free`)."""
         _check_case_count(self.source, self.model, len(cases))
-        check_fixed_loads(self.source, cases, self.free)
-        check_single_tapered(self.source, self.model, cases, self.free)
-        return dataclasses.replace(self, cases=tuple(cases))
+        return self._with_free(tuple(cases), self.dof_overrides)
+
+    def with_dofs(self, hold: Sequence[str] = (), release: Sequence[str] = ()) -> BearingInput:
+        """A copy with the DOFs named in ``hold`` fixed (at 0: their loads become reactions) and those in
+        ``release`` freed, over the file's [solver] free (the CLI's ``--hold`` / ``--free``)."""
+        override_free(self.source, self.free, hold, release)  # names checked before anything else
+        given = dict(self.dof_overrides)
+        given.update({n: False for n in hold})
+        given.update({n: True for n in release})
+        return self._with_free(self.cases, tuple(given.items()))
+
+    def _with_free(self, cases: tuple, overrides: tuple) -> BearingInput:
+        base = self.free if self.file_free is None else self.file_free
+        hold = [n for n, v in overrides if not v]
+        release = [n for n, v in overrides if v]
+        free = override_free(self.source, base, hold, release)
+        user_set = self.spec.solver.free is not None or bool(overrides)
+        notes: tuple = ()
+        if overrides:
+            said = [f"{n} {'freed' if v else 'held at 0'}" for n, v in overrides]
+            notes = (f"DOFs set by the caller over the file's: {', '.join(said)}",)
+        check_fixed_loads(self.source, cases, free)
+        free, mounted = mounted_free(self.source, self.model, cases, free, user_set=user_set)
+        return dataclasses.replace(
+            self,
+            cases=cases,
+            free=free,
+            file_free=base,
+            dof_overrides=overrides,
+            free_notes=notes + mounted,
+        )
 
     def load_matrix(self) -> np.ndarray:
         """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases."""
@@ -235,7 +276,8 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     cases = tuple(load_case_of(c) for c in spec.load_cases)
     _check_case_count(source, model, len(cases))
     check_fixed_loads(source, cases, free)
-    check_single_tapered(source, model, cases, free)
+    file_free = free
+    free, free_notes = mounted_free(source, model, cases, free, user_set=spec.solver.free is not None)
     duty = schema_cycle.duty_cycle_of(source, cycle.get("duty_cycle"), load_case_of)
     if duty is not None:
         _check_case_count(source, model, len(duty.bins), "duty_cycle")
@@ -254,6 +296,8 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         sections=sections,
         duty_cycle=duty,
         tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
+        file_free=file_free,
+        free_notes=free_notes,
     )
 
 

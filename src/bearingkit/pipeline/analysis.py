@@ -218,9 +218,12 @@ class Analysis(AnalysisOutput):
                 "temperature_C": op.temperature,
                 "contamination_factor": op.contamination,
             }
+        from bearingkit.pipeline.rating_statics import ts_statics
+
         try:
-            return rate(
-                self.statics,
+            statics, arm_note = ts_statics(self)
+            rated = rate(
+                statics,
                 speed=speed,
                 rotating=op.rotating,
                 reliability=op.reliability,
@@ -228,7 +231,10 @@ class Analysis(AnalysisOutput):
                 shoulder_height=self._shoulder_heights(),
                 catalogue_rating=self._catalogue_rating(),
                 **life,
-            ), None
+            )
+            if arm_note:
+                rated.notes.append(arm_note)
+            return rated, None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
 
@@ -328,7 +334,12 @@ class Analysis(AnalysisOutput):
                 "and the operating clearance are at the found temperature of each case (its thermal block)"
             )
             out.extend(f"thermal: {n}" for n in self.thermal.notes)
+        if self.rating is not None:
+            out.extend(f"ratings: {n}" for n in self.rating.notes)
         out.extend(self.setup.notes)
+        from bearingkit.pipeline.mounting import mounting_notes
+
+        out.extend(mounting_notes(self))
         from bearingkit.analysis.solver.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
@@ -376,8 +387,10 @@ class Analysis(AnalysisOutput):
                 notes.append("the flexible-ring coupling did not converge")
             if rating is not None:
                 notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
+            from bearingkit.pipeline.mounting import mounting_warnings
             from bearingkit.pipeline.operating_output import operating_warnings
 
+            notes.extend(mounting_warnings(self, c))
             notes.extend(operating_warnings(self, c))
             out.append(list(dict.fromkeys(notes)))
         return out
@@ -433,6 +446,8 @@ def analyze(
     load_ratings=None,
     friction_options=None,
     thermal=None,
+    hold=(),
+    free=(),
 ) -> Analysis:
     """Analyse a bearing: the entry point of the library, the CLI, the report, studies and the app.
 
@@ -470,6 +485,9 @@ def analyze(
         (``ambient``, ``heat_dissipation``, ``housing_area``, ``heat_transfer_coefficient``,
         ``oil_flow``, ``oil_inlet_temperature``; text with units or SI); False: never. Default: when
         the file has a ``[thermal]`` section.
+    hold, free : sequence of str, optional
+        Inner-ring DOFs (``u_x`` … ``theta_y``) to hold at 0 (their loads become reactions) or to free,
+        over the file's [solver] free and the defaults (``bearingkit analyze --hold u_z``).
 
     Returns
     -------
@@ -480,6 +498,10 @@ def analyze(
     from bearingkit.pipeline.operating_output import resolve_contamination
 
     bearing = source if isinstance(source, ModelInput) else load_input(source, load=load, cases=cases)
+    if hold or free:
+        if isinstance(bearing, ModelInput):
+            raise InputError("hold/free: a model built in code takes its free DOFs from ModelInput.free")
+        bearing = bearing.with_dofs(hold, free)
     e_c, level = resolve_contamination(bearing, contamination)
     operating = Operating.of(
         bearing,

@@ -313,8 +313,11 @@ def statics_setup(analysis) -> StaticsSetup:
         notes.append(
             f"imposed misalignment theta_{'xy'[k]} = {value * 1e3:.4g} mrad (inner ring against outer)"
         )
+    notes += list(getattr(b, "free_notes", ()))
+    set_by_caller = {name for name, _ in getattr(b, "dof_overrides", ())}
     default_tilt = (
         b.spec.solver.free is None
+        and not set_by_caller & {"theta_x", "theta_y"}
         and all(t is None for t in tilt)
         and _coplanar(model)
         and not np.any(load[:, 3:5] != 0.0)

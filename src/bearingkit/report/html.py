@@ -149,18 +149,24 @@ def _rating_html(rating, case: int, n: int) -> str:
         )
     s = d["system"]
     speed = "—" if d["speed_rad_s"] is None else fmt(d["speed_rad_s"], 5, 30.0 / math.pi)
-    heads = ["system", "L10r [rev]", "L10h [h]"]
-    cells = ["bearing", fmt(s["L10r_rev"], 4), fmt(s["L10h_h"], 4)]
+    heads = ["system (ISO/TS 16281)", "L10r [rev]", "L10h [h]", "L_nmr [h]"]
+    cells = ["bearing", fmt(s["L10r_rev"], 4), fmt(s["L10h_h"], 4), fmt(s["Lnmr_h"], 4)]
     if d["a1"] != 1.0:
         heads.append(f"L{fmt((1 - d['reliability']) * 100, 3)}r [rev]")
         cells.append(fmt(s["Lnr_rev"], 4))
     system = _table([*heads, "static safety s0"], [[*cells, fmt(s["static_safety"], 4)]])
     iso281 = iso281_caption(s)
+    first = s.get("headline", {}).get("method") == "ISO 281"
+    iso_html = ""
     if iso281:
-        system += (
-            f"<p>{_e(iso281)}.</p><p>ISO 281 basic rating life of the whole bearing from P = X F_r + Y F_a "
-            "of the applied load, beside the ISO/TS 16281 life L10r from the load distribution.</p>"
+        iso_html = (
+            f"<p><b>{_e(iso281)}</b>.</p><p>ISO 281 basic rating life of the whole bearing from "
+            "P = X F_r + Y F_a of the applied load (the catalogue method, shown first), beside the "
+            "ISO/TS 16281:2008 life L10r from the load distribution.</p>"
         )
+    system = iso_html + system if first else system + iso_html
+    if s.get("life_difference"):
+        system += f"<p>Why they differ: {_e(s['life_difference'])}.</p>"
     return (
         f"<h4>{n}. Ratings and static safety</h4>"
         f"<p>Rotating ring: {_e(d['rotating'])}; speed {speed} r/min; reliability "

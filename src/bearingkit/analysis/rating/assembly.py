@@ -28,12 +28,13 @@ Harris & Kotzalas 2007 vol. 2 ch. 8; Zaretsky (2013) NASA/TP-2013-215305.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.rating.iso281 import Iso281Life, bearing_life
+from bearingkit.analysis.rating.compare import compare, headline
+from bearingkit.analysis.rating.iso281 import Iso281Life, bearing_life, catalogue_row_ratings
 from bearingkit.analysis.rating.options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
@@ -42,6 +43,8 @@ from bearingkit.analysis.rating.options import (
 )
 from bearingkit.analysis.rating.rows import (
     _REFERENCES,
+    EDGE_FACTOR_KINDS,
+    EDGE_FACTOR_MAX_MISALIGNMENT,
     ISO281_CONFORMITY_LIMITS,
     WEIBULL_SLOPES,
     RowContext,
@@ -194,6 +197,10 @@ class RatingResult:
         Keys of :mod:`bearingkit.references`.
     iso281 : Iso281Life or None
         ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating.iso281`).
+    notes : list of str
+        What holds for every case (e.g. the rows' C derived from the catalogue C).
+    comparison : list of dict or None
+        Per case, why L10r differs from ISO 281's L10 (:func:`bearingkit.analysis.rating.compare.compare`).
     """
 
     bearing: str
@@ -210,6 +217,8 @@ class RatingResult:
     warnings: list
     references: tuple = _REFERENCES
     iso281: Iso281Life | None = None
+    notes: list = field(default_factory=list)
+    comparison: list = field(default_factory=list)
 
     @property
     def n_cases(self) -> int:
@@ -271,19 +280,27 @@ class RatingResult:
             "reliability": self.reliability,
             "a1": self.a1,
             "rows": rows,
-            "system": {
-                "L10r_rev": val(self.life),
-                "L10h_h": val(self.hours(self.life)),
-                "Lnr_rev": val(self.life_reliability),
-                "Lnr_h": val(self.hours(self.life_reliability)),
-                "Lnmr_rev": val(self.modified_life),
-                "Lnmr_h": val(self.hours(self.modified_life)),
-                "static_safety": val(self.static_safety),
-                **self._iso281_dict(val),
-            },
+            "system": self._system_dict(case, val),
             "warnings": list(self.warnings[case]),
             "references": list(self.references),
         }
+
+    def _system_dict(self, case: int, val) -> dict:
+        """The bearing's lives of one case: the headline first (ISO 281 where it rates the bearing), the
+        ISO 281 keys, the ISO/TS 16281 keys, and the line saying why the two differ."""
+        system = {
+            **self._iso281_dict(val),
+            "L10r_rev": val(self.life),
+            "L10h_h": val(self.hours(self.life)),
+            "Lnr_rev": val(self.life_reliability),
+            "Lnr_h": val(self.hours(self.life_reliability)),
+            "Lnmr_rev": val(self.modified_life),
+            "Lnmr_h": val(self.hours(self.modified_life)),
+            "static_safety": val(self.static_safety),
+        }
+        diff = self.comparison[case] if case < len(self.comparison) else None
+        system["life_difference"] = None if diff is None else diff["text"]
+        return {"headline": headline(system), **system}
 
     def _iso281_dict(self, val) -> dict:
         """The system's ISO 281 keys (P, C and its source, L10, L10h, L_nm; None where not given)."""
@@ -391,7 +408,9 @@ def rate(
         C [N] per row name, replacing ISO 281 (catalogue values; thrust roller rows).
     catalogue_rating : (float, float or None), optional
         The published (C, C0) [N] of the bearing (a designation): the C of the whole-bearing ISO 281
-        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry).
+        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry) and,
+        divided over the rows as ISO 281 combines them, the C the rows' ISO/TS 16281 raceway ratings start
+        from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so).
 
     Returns
     -------
@@ -422,13 +441,26 @@ def rate(
             f"{[r.name for r in result.model.rows]}"
         )
     converged = np.asarray(result.converged, dtype=bool)
-    ctx = RowContext(options=opts, converged=converged, n_cases=n_cases)
-    rows = []
-    for row, state in zip(result.model.rows, result.rows, strict=True):
-        rater: Callable | None = ROW_RATERS.get(row.kind)
-        if rater is None:
-            raise InputError(f"row kind ({row.kind!r}) has no rater; known kinds: {sorted(ROW_RATERS)}")
-        rows.append(rater(row, state, ctx))
+    rows = _rate_rows(result, RowContext(options=opts, converged=converged, n_cases=n_cases))
+    rating_notes = []
+    from_catalogue = {
+        k: v
+        for k, v in catalogue_row_ratings(result.model, rows, catalogue_rating).items()
+        if k not in opts.load_ratings
+    }
+    if from_catalogue:  # ISO/TS 16281 starts from the bearing's C: the catalogue's, as ISO 281 does
+        geometry_c = {
+            r.name: np.ma.getdata(r.load_rating)[0] for r in rows if not np.ma.getmaskarray(r.load_rating)[0]
+        }
+        opts = replace(opts, catalogue_ratings=from_catalogue)
+        rows = _rate_rows(result, RowContext(options=opts, converged=converged, n_cases=n_cases))
+        per_row = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in from_catalogue.items())
+        computed = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in geometry_c.items())
+        rating_notes.append(
+            f"ISO/TS 16281 raceway ratings from the catalogue C = {float(catalogue_rating[0]) / 1e3:.4g} kN "
+            f"(per row: {per_row}), the C ISO 281 uses; the estimated geometry's ISO 281 C would be "
+            f"{computed or 'unavailable'}"
+        )
 
     a1 = float(iso281.reliability_factor(opts.reliability))
     life, sys_notes = _combine(rows, "life", n_cases)
@@ -440,9 +472,17 @@ def rate(
     safety = np.ma.min(np.ma.stack([r.static_safety for r in rows]), axis=0)
     safety = _masked(np.ma.getdata(safety), np.ma.getmaskarray(safety) | ~converged)
 
+    beyond = _edge_factor_beyond_range(result, opts)
     warnings = []
     for c in range(n_cases):
         notes = []
+        if beyond[c]:
+            tilt = float(np.degrees(np.hypot(*np.asarray(result.displacement[c, 3:5], float))) * 60.0)
+            notes.append(
+                f"edge-stress factor f_k of ISO/TS 16281 eq. (60) used at a ring misalignment of "
+                f"{tilt:.3g}′, above the 4′ the TS states it for: the roller-end slices' share of L10r is "
+                "approximate"
+            )
         if not converged[c]:
             notes.append(
                 f"case {c} did not converge ({result.reason[c]}): no rating, life or static safety returned"
@@ -456,6 +496,8 @@ def rate(
             )
         warnings.append(notes)
     refs = tuple(dict.fromkeys(_REFERENCES + tuple(k for r in rows for k in r.references)))
+    iso = bearing_life(result, rows, opts, catalogue_rating)
+    free = np.asarray(getattr(result, "free", np.ones(5, bool)), bool)
     return RatingResult(
         bearing=result.model.name,
         rows=rows,
@@ -470,5 +512,28 @@ def rate(
         converged=converged,
         warnings=warnings,
         references=refs,
-        iso281=bearing_life(result, rows, opts, catalogue_rating),
+        iso281=iso,
+        notes=rating_notes,
+        comparison=compare(result, rows, life, iso, free),
     )
+
+
+def _edge_factor_beyond_range(result, opts: RatingOptions) -> np.ndarray:
+    """Per case: a row applies eq. (60) (:func:`~bearingkit.analysis.rating.rows._edge_checks`) while the
+    rings are misaligned beyond :data:`~bearingkit.analysis.rating.rows.EDGE_FACTOR_MAX_MISALIGNMENT`."""
+    uses = opts.edge_stress_factor != "never" and any(
+        r.kind in EDGE_FACTOR_KINDS and getattr(r, "n_slices", 1) >= 2 for r in result.model.rows
+    )
+    tilt = np.hypot(*np.asarray(result.displacement, float)[:, 3:5].T)
+    return uses & (tilt > EDGE_FACTOR_MAX_MISALIGNMENT) & np.asarray(result.converged, bool)
+
+
+def _rate_rows(result, ctx: RowContext) -> list[RowRating]:
+    """Every row of ``result`` rated by the rater of its kind (:data:`ROW_RATERS`)."""
+    rows = []
+    for row, state in zip(result.model.rows, result.rows, strict=True):
+        rater: Callable | None = ROW_RATERS.get(row.kind)
+        if rater is None:
+            raise InputError(f"row kind ({row.kind!r}) has no rater; known kinds: {sorted(ROW_RATERS)}")
+        rows.append(rater(row, state, ctx))
+    return rows

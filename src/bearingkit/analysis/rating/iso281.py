@@ -66,6 +66,39 @@ class Iso281Life:
     note: str | None = None
 
 
+#: ISO rows per model row where one model row holds several (a four-point row: its two diagonals, each
+#: rated as a single-row angular contact bearing, while ISO 281 and the catalogues rate the bearing as the
+#: double-row angular contact bearing, i = 2).
+ROWS_PER_MODEL_ROW = {"four_point": 2}
+
+
+def catalogue_row_ratings(model, ratings, catalogue) -> dict:
+    """C [N] per row derived from the catalogue C of the whole bearing, {} when there is none.
+
+    The inverse of the combination :func:`bearing_life` uses: C_row = C / i^0.7 (ball) or C / i^(7/9)
+    (roller), i the ISO rows (ISO 281:2007 eq. (2), (9)); only for the bearings that have an ISO 281 P
+    (one row, or two equal rows; :func:`_law`). ISO/TS 16281 derives its raceway ratings from the
+    bearing's C, so both methods then start from the same C.
+
+    Parameters
+    ----------
+    model : BearingModel
+    ratings : list of RowRating
+        The rows rated once (their element kind and bearing type).
+    catalogue : (float, float or None) or None
+        The designation's published (C, C0) [N].
+    """
+    if catalogue is None or catalogue[0] is None or not ratings:
+        return {}
+    law = _law(model, ratings)
+    if isinstance(law, str):
+        return {}
+    i = law[1] * ROWS_PER_MODEL_ROW.get(model.rows[0].kind, 1)
+    unit, _ = iso281.paired_unit_ratings(1.0, None, ratings[0].element, i)  # i^0.7 or i^(7/9)
+    c_row = float(catalogue[0]) / float(unit)
+    return {row.name: c_row for row in model.rows}
+
+
 def _none(n: int, note: str) -> Iso281Life:
     empty = np.ma.masked_array(np.zeros(n), mask=np.ones(n, bool))
     return Iso281Life(empty, None, None, empty.copy(), empty.copy(), empty.copy(), note)
@@ -269,7 +302,8 @@ def _fmt(x, scale: float = 1.0) -> str:
 def caption(system: dict) -> str | None:
     """One line of the ISO 281 basic rating life from a case's ``system`` dict (CLI table and HTML report
     show the same text): ``ISO 281: P = … kN, C = … kN (catalogue|computed|given), L10 = … 10⁶ rev,
-    L10h = … h[, L_nm = … 10⁶ rev]``; the note when there is none; None for a dict without the keys."""
+    L10h = … h[, a_ISO = …, L_nm = … 10⁶ rev, L_nmh = … h]``; the note when there is none; None for a dict
+    without the keys."""
     if "C_iso281_N" not in system:
         return None
     note = system.get("iso281_note")
@@ -284,4 +318,6 @@ def caption(system: dict) -> str | None:
         text += (
             f", a_ISO = {_fmt(system['a_ISO_iso281'])}, L_nm = {_fmt(system['Lnm_iso281_rev'], 1e-6)} 10⁶ rev"
         )
+        if system.get("Lnm_iso281_h") is not None:
+            text += f", L_nmh = {_fmt(system['Lnm_iso281_h'])} h"
     return text + (f" ({note})" if note else "")

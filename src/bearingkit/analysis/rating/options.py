@@ -53,8 +53,11 @@ DEFAULT_SHOULDER_HEIGHTS = {
 #: pressure has an edge peak the slice model does not resolve. Engineering choice; valid (0, 1].
 DEFAULT_EDGE_PRESSURE_RATIO = 0.8
 
-#: When the ISO/TS 16281 edge-stress factor f_k multiplies the slice loads: ``"auto"`` for rollers
-#: without a crowning profile (profile None), ``"always"``, ``"never"``.
+#: When the ISO/TS 16281 edge-stress factor f_k (eq. (60)) multiplies the slice loads: ``"auto"`` (the
+#: default) and ``"always"`` on every sliced roller row (n_s >= 2), ``"never"`` not at all. The TS states
+#: eq. (60) for rollers with its own logarithmic profile (eqs. (42)-(44), the profile of catalogue rows),
+#: under medium load and a misalignment below 4'; for other profiles it asks for the pressure-based factors
+#: of eqs. (58)-(59), which bearingkit does not have, so eq. (60) stands in there (the rater notes it).
 EDGE_STRESS_MODES = ("auto", "always", "never")
 
 
@@ -87,6 +90,10 @@ class RatingOptions:
     load_ratings : Mapping[str, float]
         Basic dynamic load rating C [N] per row name, replacing the ISO 281 computation (catalogue values,
         or rows whose ISO 281 factors are not shipped, e.g. thrust cylindrical rollers).
+    catalogue_ratings : Mapping[str, float]
+        C [N] per row derived from the catalogue C of the bearing (set by :func:`rate` for a designation,
+        :func:`bearingkit.analysis.rating.iso281.catalogue_row_ratings`); used like ``load_ratings`` but
+        not reported as the user's.
     """
 
     rotating: str = "inner"
@@ -99,6 +106,7 @@ class RatingOptions:
     edge_pressure_ratio: float = DEFAULT_EDGE_PRESSURE_RATIO
     edge_stress_factor: str = "auto"
     load_ratings: Mapping = field(default_factory=dict)
+    catalogue_ratings: Mapping = field(default_factory=dict)
 
     def __post_init__(self):
         checks.one_of("rotating", self.rotating, ("inner", "outer"))

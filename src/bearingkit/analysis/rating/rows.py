@@ -350,10 +350,13 @@ def check_shoulders(row_name: str, heights, conformities, seams=(0.0, 0.0)):
 
 
 def _given_rating(ctx: RowContext, row, notes):
+    """C [N] of the row given by the user (noted) or derived from the bearing's catalogue C (the rating's
+    notes say so once), else None (computed by ISO 281 from the geometry)."""
     c = ctx.options.load_ratings.get(row.name)
     if c is not None:
         notes.append(f"C = {float(c):.6g} N given by the user (load_ratings), not computed by ISO 281")
-    return c
+        return c
+    return ctx.options.catalogue_ratings.get(row.name)
 
 
 def _one_class(name, values):
@@ -430,20 +433,38 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
     )
 
 
+#: Profiles ISO/TS 16281 states its edge-stress factor eq. (60) for: its logarithmic profiles eq. (42)-(44)
+#: (registry names of :mod:`bearingkit.physics.contact.profiles`).
+TS_PROFILES = ("iso16281", "iso16281_tapered")
+#: Row kinds whose raters apply eq. (60) through :func:`_edge_checks`.
+EDGE_FACTOR_KINDS = ("cylindrical", "tapered", "needle", "crossed_roller")
+#: Total misalignment of the rings up to which ISO/TS 16281 states eq. (60): 4′ [rad] (the TS's note, as a
+#: public implementation quotes it); beyond it the rating warns that the end-slice factor is approximate.
+EDGE_FACTOR_MAX_MISALIGNMENT = np.radians(4.0 / 60.0)
+
+
 def _edge_checks(row, state, ctx: RowContext, notes: list):
     """Edge-stress factor f_k to apply (or None) and the ``edge_loading`` flag of a sliced roller row.
 
-    f_k (ISO/TS 16281 eq. (60)) is used per ``edge_stress_factor`` ("auto": rollers with ``profile=None``).
+    f_k (ISO/TS 16281:2008 eq. (60)) multiplies the slice loads per ``edge_stress_factor`` ("auto" and
+    "always": every row with n_s >= 2). The TS gives eq. (60) as the approximation of its pressure-based
+    factors eq. (58)-(59) for rollers with its own profile (eq. (42)-(44)); on a straight roller or another
+    crowning it stands in for eq. (58)-(59), which bearingkit does not implement, and a note says so.
     Edge loading: an end slice whose Hertz pressure (inner or outer raceway, ``extras['slice_pressure_*']``)
     reaches ``edge_pressure_ratio`` of the row's largest slice pressure; not assessed for n_s = 1.
     """
     opts, n_s = ctx.options, row.n_slices
-    use_fk = opts.edge_stress_factor == "always" or (
-        opts.edge_stress_factor == "auto" and row.profile is None
-    )
+    use_fk = opts.edge_stress_factor in ("auto", "always")
     if use_fk and n_s < 2:
         notes.append("edge-stress factor not applied: n_slices = 1")
         use_fk = False
+    profile = getattr(getattr(row, "profile", None), "name", None)
+    if use_fk and profile not in TS_PROFILES:
+        notes.append(
+            f"edge-stress factor f_k of ISO/TS 16281 eq. (60) applied to a {profile or 'straight'} roller: "
+            "the TS states it for its logarithmic profile (eq. (42)-(44)) and asks for pressure-based "
+            "factors otherwise"
+        )
     edge = np.zeros(ctx.n_cases, bool)
     if n_s < 2:
         notes.append("edge loading not assessed: n_slices = 1")

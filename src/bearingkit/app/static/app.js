@@ -278,9 +278,14 @@ function renderSummary(c) {
   $("summary").replaceChildren(
     metric("max-load", "max element load Q_max", qmax, 1e-3, "kN"),
     metric("max-pressure", "max contact pressure", pmax, 1e-6, "MPa"),
+    // the headline life first: ISO 281 where it rates the bearing (system.headline), the TS's beside it
+    ...(sys.headline && sys.headline.method === "ISO 281"
+      ? [metric("l10-iso281", "L10h (ISO 281)", sys.L10h_iso281_h ?? null, 1, "h"),
+         metric("lnm-iso281", "L_nmh (ISO 281, a_ISO)", sys.Lnm_iso281_h ?? null, 1, "h")]
+      : []),
     metric("l10", "L10r (ISO/TS 16281)", sys.L10r_rev ?? null, 1e-6, "10⁶ rev"),
-    metric("l10h", "L10h", sys.L10h_h ?? null, 1, "h"),
-    metric("lnm", "Lnmr (with a_ISO)", sys.Lnmr_h ?? null, 1, "h"),
+    metric("l10h", "L10rh (ISO/TS 16281)", sys.L10h_h ?? null, 1, "h"),
+    metric("lnm", "Lnmr (ISO/TS 16281, a_ISO)", sys.Lnmr_h ?? null, 1, "h"),
     metric("s0", "static safety s0", s0 ?? null, 1, "", 3, s0 !== undefined && s0 !== null && s0 < 1),
     metric("kappa", "viscosity ratio κ", kappa ?? null, 1, "", 3),
     metric("torque", "friction torque", fr.total_Nm ?? null, 1e3, "N·mm"),
@@ -469,7 +474,10 @@ function renderRatings(c) {
   const total = el("tr", {}, el("td", {}, el("b", {}, "bearing")), el("td", {}), el("td", {}), el("td", {}),
     el("td", {}, fmt((sys.L10r_rev ?? null) === null ? null : sys.L10r_rev * 1e-6, 4)), el("td", {}, fmt(sys.L10h_h ?? null, 4)),
     el("td", {}), el("td", {}, fmt(sys.Lnmr_h ?? null, 4)), el("td", {}, fmt(sys.static_safety ?? null, 3)), el("td", {}));
-  box.replaceChildren(el("div", { class: "table-wrap" }, el("table", {}, head, ...body, total)),
+  const lines = [];
+  if (sys.headline) lines.push(el("p", { class: "small", id: "life-headline" }, `${sys.headline.method} first: ${sys.headline.why}.`));
+  if (sys.life_difference) lines.push(el("p", { class: "small", id: "life-difference" }, `Why they differ: ${sys.life_difference}.`));
+  box.replaceChildren(el("div", { class: "table-wrap" }, el("table", {}, head, ...body, total)), ...lines,
     el("p", { class: "muted small" }, `reliability ${c.rating.reliability}, a1 = ${c.rating.a1}; lives in hours need a speed; a_ISO and Lnmr need a lubricant, a temperature and e_C.`));
 }
 

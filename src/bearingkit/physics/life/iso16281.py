@@ -12,9 +12,15 @@ The modified reference rating life is ``a1 · a_ISO · L10r`` with the factors o
 :mod:`bearingkit.physics.life.iso281` (:func:`~bearingkit.physics.life.iso281.modified_rating_life`),
 a_ISO being evaluated with the reference equivalent load of :func:`reference_equivalent_load`.
 
+Edition: every equation here is the 2008 Technical Specification's, ISO/TS 16281:2008. ISO 16281:2025 has
+replaced it (an International Standard that also covers multi-row and thrust bearings); its text was not
+available, so nothing here follows it, and where bearingkit rates multi-row or thrust bearings it applies
+the 2008 equations row by row.
+
 References: ISO/TS 16281:2008 (``cite("iso16281")``) eq. (19)-(29) ball, (47)-(65) roller (equation
-numbers as used by a public implementation of the TS; the TS text itself was not available);
-Lundberg & Palmgren (1947, 1952); Harris & Kotzalas 2007 vol. 2 ch. 8 (``cite("harris2007")``).
+numbers and constants as two public implementations of the TS transcribe them — minzhun/ISO16281 and the
+``axisforge`` ISO/TS 16281 solver, which also quotes the TS's note on eq. (60); the TS text itself was not
+available); Lundberg & Palmgren (1947, 1952); Harris & Kotzalas 2007 vol. 2 ch. 8 (``cite("harris2007")``).
 """
 
 from __future__ import annotations
@@ -73,7 +79,11 @@ ROLLER_ROTATING_MEAN = 4.0
 ROLLER_STATIONARY_MEAN = 4.5
 ROLLER_LIFE_EXP = -8.0 / 9.0
 #: λν: reduction factor for edge stresses and non-uniform load that ISO 281 builds into C; ISO/TS 16281
-#: divides it out because the slice loads resolve the load along the roller (ISO/TR 1281-1).
+#: divides it out because the slice loads resolve the load along the roller (ISO/TR 1281-1). ISO/TS
+#: 16281:2008 eq. (49) (radial, 0.83) and (52) (thrust, 0.73), as both public implementations cited above
+#: transcribe them; b_m (ISO 281 Table 1) is not divided out. Consequence: with uniform slice loads a
+#: roller row's L10r is (C/(λν P))^4 against ISO 281's (C/P)^(10/3), i.e. λν^-4 (C/P)^(2/3) times longer
+#: (2.1x at P = C, 9.8x at C/P = 10) before the profile and f_k shorten it (docs/ratings.md).
 LAMBDA_NU = {"radial": 0.83, "thrust": 0.73}
 #: ISO/TS 16281 eq. (60) edge-stress factor constants f_k = 1 - 0.01 / ln(1.985 |(2k - n_s - 1)/(2 n_s - 2)|)
 EDGE_A, EDGE_B = 0.01, 1.985
@@ -319,10 +329,13 @@ def edge_stress_factor(n_slices):
 
     .. math:: f_k = 1 - \\frac{0.01}{\\ln\\bigl(1.985\\,\\bigl|\\frac{2k - n_s - 1}{2n_s - 2}\\bigr|\\bigr)}
 
-    1 at the roller centre, rising to ≈ 2.33 at the end slices. It multiplies the slice loads in the
-    equivalent-load sums when ``slice_factor`` is passed to :func:`roller_reference_life`; the TS applies
-    it for rollers whose profile does not relieve the edges. Formula as transcribed in formulas.md A5 and
-    a public implementation of the TS (not checked against the TS text).
+    1 at the roller centre, rising to ≈ 2.33 at the end slices (for any n_s). It multiplies the slice
+    loads of both rings (f_i = f_e) in the equivalent-load sums when ``slice_factor`` is passed to
+    :func:`roller_reference_life`. The TS gives it as the approximation of its pressure-based factors
+    eq. (58)-(59), valid for rollers with its logarithmic profile eq. (42)-(44) under medium load and a
+    misalignment below 4' (the TS's note, as quoted by a public implementation); the raters apply it to
+    every sliced roller row (:data:`bearingkit.analysis.rating.options.EDGE_STRESS_MODES`). Formula as
+    transcribed by two public implementations of the TS (not checked against the TS text).
 
     Parameters
     ----------
