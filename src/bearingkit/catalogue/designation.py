@@ -5,7 +5,8 @@ A designation is a *basic designation* (type and dimension series, bore code) fo
 Bore codes: 00 = 10 mm, 01 = 12, 02 = 15, 03 = 17, from 04 on the code × 5, and ``/dd`` = dd mm
 (``302/22``, ``NA49/22``) (ISO 15 cl. 7 and every catalogue's designation system). Needle roller
 bearings: ``NA`` with inner ring, ``RNA`` without (the shaft is the raceway). Suffixes: seals and shields
-(Z, 2Z, ZZ, RS, 2RS, 2RS1, RSR, 2RSR, RZ, 2RZ, LLU, LLB, DDU, VV), snap ring (N, NR), internal clearance
+(Z, 2Z, ZZ, RS, 2RS, 2RS1, RSH, 2RSH, RSL, 2RSL, RSR, 2RSR, RZ, 2RZ, LLU, LLH, LLB, DDU, DD, VV;
+:mod:`bearingkit.catalogue.seals`), snap ring (N, NR), internal clearance
 (C2, CN, C3, C4, C5), design and cage (E, EC, ECP, ECJ, ECM, J, J2, X, XJ, TN9, M, MA, P, CBP, …;
 spherical roller E, EA, C, CC, CD, CA, CAM, E4, W33; four-point N2), tapered bore (K 1:12, K30 1:30),
 tolerance (P6, P5). The clearance class, the contact-angle suffix of angular contact bearings and the
@@ -20,6 +21,7 @@ import re
 from dataclasses import dataclass
 
 from bearingkit.catalogue import tables
+from bearingkit.catalogue.seals import SEALS
 from bearingkit.errors import InputError
 
 #: Basic designation patterns, tried in order: (family, regex with groups series, bore code, rest).
@@ -40,11 +42,13 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
 )
 #: Known suffixes (longest first when matching). Clearance classes are extracted separately.
 SEAL_SUFFIXES = (
+    "2RSL",
     "2RS1",
     "2RSR",
     "2RSH",
     "2RS",
     "RS1",
+    "RSL",
     "RSR",
     "RSH",
     "RS",
@@ -170,6 +174,16 @@ def _split_suffixes(text: str, rest: str) -> list[str]:
                 f"{', '.join(DESIGN_SUFFIXES[:8])}… (e.g. '6205-2RS C3')"
             )
     return out
+
+
+def seal_suffix(suffixes) -> str | None:
+    """The seal or shield suffix among a designation's ``suffixes`` (``"2RS1"``, ``"ZZ"``), or None.
+
+    Snap-ring suffixes (``N``, ``NR``) share :data:`SEAL_SUFFIXES` with the seals but close nothing; they
+    are skipped. :mod:`bearingkit.catalogue.seals` says what each suffix means.
+    """
+    found = [s for s in suffixes if s in SEALS]
+    return found[0] if found else None
 
 
 def nearest(text: str, n: int = 3) -> list[str]:

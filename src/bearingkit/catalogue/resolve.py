@@ -77,7 +77,12 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5) 
     notes = list(est.notes)
     bearing_type = tables.FAMILIES[des.family][1]
     geometry = _geometry(est, des, notes, clearance_position)
-    plain = [s for s in des.suffixes if s not in designation_mod.BORE_SUFFIXES]
+    seal = designation_mod.seal_suffix(des.suffixes)
+    if seal is not None:
+        notes.append(
+            f"seal {seal}: in the friction (SKF seal term) and the seal speed limit, not the statics"
+        )
+    plain = [s for s in des.suffixes if s not in designation_mod.BORE_SUFFIXES and s != seal]
     if plain:
         notes.append(f"suffixes {' '.join(plain)} noted (no effect on the mechanics)")
     if entry.C is not None:

@@ -187,7 +187,7 @@ def rating(
 
 
 #: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).
-FRICTION_MODELS = ("components", "skf", "palmgren")
+FRICTION_MODELS = ("auto", "components", "skf", "palmgren")
 
 
 @app.command()
@@ -203,10 +203,11 @@ def friction(
     temperature: str = _TEMPERATURE_OPTION,
     lubricant: str = _LUBRICANT_OPTION,
     model: str = typer.Option(
-        "components",
+        "auto",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard and self-aligning bearings) | trb "
-        "(tapered rows) | slewing (slewing rings).",
+        help="auto (default: skf for standard bearings, slewing for slewing rings, components for the seed "
+        "composites; the output says which and why) | components (physics, per contact) | skf | palmgren "
+        "(standard and self-aligning bearings) | trb (tapered rows) | slewing (slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
@@ -230,7 +231,9 @@ def friction(
             f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
             "[[load_cases]]"
         )
-    if model == "components":
+    from bearingkit.pipeline.friction_choice import AUTO, choose
+
+    if (choose(a)[0] if model == AUTO else model) == "components":
         _fail_unconverged(file, a)
     if compare or heat:
         from bearingkit.cli.operating_tables import comparison_text, heat_text
@@ -252,6 +255,9 @@ def friction(
         _print_json(file, data)
     else:
         _header(a, file)
+        console.print(
+            f"friction model: {data['friction_model']} ({data['friction_model_why']})", markup=False
+        )
         for c in data["cases"]:
             console.print(friction_table(c))
             console.print(warnings_text(c["warnings"]))

@@ -64,7 +64,8 @@ class Analysis(AnalysisOutput):
     operating : Operating
         Per-case operating conditions.
     friction_model : str
-        Default model of :attr:`friction` (a key of :data:`FRICTION_MODELS`).
+        Default model of :attr:`friction` (a key of :data:`FRICTION_MODELS`); ``"auto"`` picks the model
+        of the bearing's kind (:func:`bearingkit.pipeline.friction_choice.choose`).
     load_ratings : dict, optional
         Row name → C [N] replacing ISO 281 ratings (catalogue values).
     friction_options : dict, optional
@@ -77,7 +78,7 @@ class Analysis(AnalysisOutput):
         bearing,
         operating: Operating,
         *,
-        friction_model: str = "components",
+        friction_model: str = "auto",
         load_ratings=None,
         friction_options=None,
     ):
@@ -317,11 +318,17 @@ class Analysis(AnalysisOutput):
         lub = self.lubrication
         if lub is not None:
             out.extend(f"lubrication: {n}" for n in lub.notes)
-        for model, why in self._friction_errors.items():
+        errors = self._friction_errors
+        for model, why in errors.items():
+            if model == "auto" and why in [w for m, w in errors.items() if m != "auto"]:
+                continue  # the default's error is the chosen model's, already listed
             out.append(f"friction ({model}) not computed: {why}")
+        auto = self._friction.get("auto")
+        if auto is not None:
+            out.append(f"friction: the {auto.model} model by default: {auto.why}")
         for outcome in self._friction.values():
             out.extend(f"friction ({outcome.model}): {n}" for n in outcome.notes)
-        return out
+        return list(dict.fromkeys(out))  # the default's outcome repeats the chosen model's notes
 
     def _free_tilt(self, case: int) -> str | None:
         res, free = self.statics, self.setup.free
@@ -411,7 +418,7 @@ def analyze(
     lubricant=None,
     contamination=None,
     reliability=0.9,
-    friction_model: str = "components",
+    friction_model: str = "auto",
     load_ratings=None,
     friction_options=None,
 ) -> Analysis:
@@ -439,7 +446,9 @@ def analyze(
     reliability : float or str
         Reliability of L_nr, 0.9 … 0.9995.
     friction_model : str
-        ``"components"``, ``"skf"`` or ``"palmgren"`` (:data:`FRICTION_MODELS`).
+        ``"auto"`` (default: the model of the bearing's kind, see
+        :func:`bearingkit.pipeline.friction_choice.choose`), ``"components"``, ``"skf"``, ``"palmgren"``
+        … (:data:`FRICTION_MODELS`).
     load_ratings : dict, optional
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
@@ -464,6 +473,9 @@ def analyze(
         reliability=reliability,
     )
     _check_lubricant_range(bearing, operating)
+    from bearingkit.pipeline.friction_choice import check_inputs
+
+    check_inputs(bearing)
     out = Analysis(
         bearing,
         operating,

@@ -86,7 +86,13 @@ class AnalysisOutput:
             d["friction"] = {**d["friction"], "power_loss_W": float(outcome.power_loss[i])}
             d["warnings"] = self.warnings[i]
             cases.append(d)
-        return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
+        return {
+            **self._header(),
+            "friction_model": outcome.model,
+            "friction_model_why": outcome.why,
+            "cases": cases,
+            "notes": self.notes,
+        }
 
     def friction_comparison(self) -> dict:
         """Every friction model that applies, side by side, with when each applies

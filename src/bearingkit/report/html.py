@@ -89,16 +89,21 @@ def _friction_html(friction, case: int, n: int) -> str:
         [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
+    model = _e(getattr(friction, "model", "") or "components")
+    power = getattr(friction, "power_loss", None)
+    shown_power = "" if power is None else f", power loss P = <b>{fmt(float(power[case]), 4)} W</b>"
     if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
-        split = f" ({_e(friction.model)} catalogue model of the whole bearing; no split between the rings)."
+        split = f" ({model} catalogue model of the whole bearing; no split between the rings)."
     else:
         split = (
             f"; on the inner ring {fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
             f"{fmt(friction.torque_outer[case], 5)} N·m (about +z)."
         )
+    why = getattr(friction, "why", "")
+    chosen = f'<p class="sub">Friction model: {model} — {_e(why)}.</p>' if why else ""
     return (
-        f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{split}</p>"
+        f"<h4>{n}. Friction torque and power loss</h4>"
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{shown_power}{split}</p>{chosen}"
         + _table(["component", "M [N·m]", "share [%]"], comp)
         + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
@@ -284,6 +289,7 @@ def _summary_html(bearing, result, friction, rating, warnings) -> str:
         "max p_max [MPa]",
         "min s0 [-]",
         "friction [N·m]",
+        "power loss [W]",
         "system L10r [rev]",
         "warnings",
     ]
@@ -298,6 +304,9 @@ def _summary_html(bearing, result, friction, rating, warnings) -> str:
                 fmt(p_max, 5, 1e-6),
                 "—" if rating is None else fmt(rating.static_safety[c], 4),
                 "—" if friction is None else fmt(friction.total[c], 5),
+                "—"
+                if getattr(friction, "power_loss", None) is None
+                else fmt(float(friction.power_loss[c]), 4),
                 "—" if rating is None else fmt(rating.life[c], 4),
                 str(n_warn),
             ]
