@@ -104,11 +104,12 @@ def analyze(
         _print_json(file, data)
     else:
         _header(a, file)
-        from bearingkit.cli.operating_tables import operating_text
+        from bearingkit.cli.operating_tables import limits_text, operating_text
 
         for c in data["cases"]:
             console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
+            console.print(limits_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
@@ -169,11 +170,12 @@ def rating(
         _print_json(file, data)
     else:
         _header(a, file)
-        from bearingkit.cli.operating_tables import lubrication_table
+        from bearingkit.cli.operating_tables import limits_text, lubrication_table
 
         for c in data["cases"]:
             console.print(rating_table(c))
             console.print(lubrication_table(c))
+            console.print(limits_text(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
         if "duty_cycle" in data:

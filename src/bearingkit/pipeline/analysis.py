@@ -10,9 +10,11 @@ when asked for, and only once:
 - :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
   :data:`~bearingkit.pipeline.friction.FRICTION_MODELS`;
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
+- :attr:`Analysis.limits` — limiting and thermal reference speed, seal lip speed and minimum load of a
+  standard bearing (:mod:`bearingkit.pipeline.limits`);
 - :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
   pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
-  bearing …); every face shows them.
+  bearing, a speed or load limit exceeded …); every face shows them.
 
 >>> import bearingkit as bk
 >>> a = bk.analyze("examples/dgbb_6209.toml", load={"F_x": "5 kN"}, speed="3000 rpm")  # doctest: +SKIP
@@ -257,6 +259,15 @@ class Analysis(AnalysisOutput):
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
     @functools.cached_property
+    def limits(self):
+        """Speed and load limits per case (limiting and thermal reference speed, seal lip speed, minimum
+        load: :class:`~bearingkit.pipeline.limits.OperatingLimits`); None for a bearing no catalogue rule
+        covers (seed composites, slewing rings, models built in code)."""
+        from bearingkit.pipeline.limits import operating_limits
+
+        return self._in_file(operating_limits, self)
+
+    @functools.cached_property
     def load_diagram(self):
         """Static load diagram of a slewing ring (allowable axial force vs tilting moment,
         :class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`), None for other bearings."""
@@ -312,6 +323,8 @@ class Analysis(AnalysisOutput):
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
         out.extend(self.setup.notes)
+        if "limits" in self.__dict__ and self.limits is not None:
+            out.extend(f"limits: {n}" for n in self.limits.notes)
         from bearingkit.analysis.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
@@ -368,6 +381,8 @@ class Analysis(AnalysisOutput):
             from bearingkit.pipeline.operating_output import operating_warnings
 
             notes.extend(operating_warnings(self, c))
+            if self.limits is not None:
+                notes.extend(self.limits.warnings(c))
             out.append(list(dict.fromkeys(notes)))
         return out
 
