@@ -32,18 +32,11 @@ TEMPERATURE_TOL = 0.01
 
 
 def _width(analysis) -> float | None:
-    geometry = analysis.input.geometry.model_dump()
-    if geometry.get("width") is not None:
-        return float(geometry["width"])
-    designation = analysis.input.spec.bearing.designation
-    if designation is None:
-        return None
-    from bearingkit.catalogue import resolve
+    """B of the file's geometry, else of its catalogue row (its designation's, or the row with the same
+    d and D: :func:`bearingkit.pipeline.bearing_facts.bearing_facts`)."""
+    from bearingkit.pipeline.bearing_facts import bearing_facts
 
-    try:
-        return float(resolve(designation).estimate.entry.width)
-    except (InputError, AttributeError):
-        return None
+    return bearing_facts(analysis.input).width
 
 
 def reference_surface_of(analysis) -> float:
@@ -196,8 +189,12 @@ def heat_balance(analysis, model: str | None = None, dissipation=None, ambient=N
         )
     n = analysis.n_cases
 
+    used = {}
+
     def excess(temps):
-        p = _sibling(analysis, temperature=temps).friction_by(model).power_loss
+        outcome = _sibling(analysis, temperature=temps).friction_by(model)
+        used["model"] = outcome.model  # the default ("auto") resolves to the bearing's model
+        p = outcome.power_loss
         return p - dissipation * (temps - ambient), p
 
     lo = np.full(n, float(ambient) + TEMPERATURE_TOL)
@@ -220,4 +217,4 @@ def heat_balance(analysis, model: str | None = None, dissipation=None, ambient=N
             "power "
             "exceeds what the housing carries away (thermal runaway)"
         )
-    return HeatBalance(temps, power, float(dissipation), float(ambient), model, notes)
+    return HeatBalance(temps, power, float(dissipation), float(ambient), used.get("model", model), notes)

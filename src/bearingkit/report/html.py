@@ -79,6 +79,28 @@ def _row_table(data: dict) -> str:
     return _table(headers, rows, left=2, cls="rows")
 
 
+def _load_html(result, case: int) -> str:
+    """The applied load; at a fixed DOF (e.g. the tilt of a single bearing) the solve's load is the
+    reaction that holds the ring, listed apart: it is not a load the user applied."""
+    free = np.asarray(getattr(result, "free", np.ones(5, bool)), bool)
+    load = result.load[case]
+    applied = [
+        fmt(v, 5, k, FORCE_NOISE) if f else "held"
+        for v, f, (_, _, _, k) in zip(load, free, LOAD_DISPLAY, strict=True)
+    ]
+    out = _table([f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY], [applied], left=0)
+    if not free.all():
+        held = [i for i in range(5) if not free[i]]
+        out += "<p>Reaction at the fixed DOFs (what holds the inner ring there; not an applied load):</p>"
+        out += _table(
+            [f"{LOAD_DISPLAY[i][0]} [{LOAD_DISPLAY[i][2]}]" for i in held],
+            [[fmt(load[i], 5, LOAD_DISPLAY[i][3], FORCE_NOISE) for i in held]],
+            left=0,
+            cls="reactions",
+        )
+    return out
+
+
 def _friction_html(friction, case: int, n: int) -> str:
     total = float(friction.total[case])
     comp = [
@@ -200,18 +222,7 @@ def _case_html(
         f"{float(result.residual_norm[case]):.2e} (relative to the load scale){reason}</p>"
     )
     parts.append(f"<h4>{num}.1. Load and displacement of the inner ring</h4>")
-    parts.append(
-        _table(
-            [f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY],
-            [
-                [
-                    fmt(v, 5, k, FORCE_NOISE)
-                    for v, (_, _, _, k) in zip(result.load[case], LOAD_DISPLAY, strict=True)
-                ]
-            ],
-            left=0,
-        )
-    )
+    parts.append(_load_html(result, case))
     parts.append(
         _table(
             [f"{n} [{u}]" for n, u, _ in DISPLACEMENT_DISPLAY],
