@@ -80,6 +80,7 @@ def limits_lines(lim: dict | None) -> list[str]:
             f"; minimum load {lim['minimum_load_N']:.4g} N ({lim['minimum_load_rule']}), carried "
             f"{lim['load_compared_N']:.4g} N"
         )
+    line += "".join(f"; {n}" for n in lim["notes"] if n.startswith("minimum load"))
     return [line]
 
 

@@ -323,8 +323,6 @@ class Analysis(AnalysisOutput):
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
         out.extend(self.setup.notes)
-        if "limits" in self.__dict__ and self.limits is not None:
-            out.extend(f"limits: {n}" for n in self.limits.notes)
         from bearingkit.analysis.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
