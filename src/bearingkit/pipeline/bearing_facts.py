@@ -127,13 +127,13 @@ def _entry_by_dimensions(bearing_type: str, bore: float, outer: float, width: fl
     return found
 
 
-def _lubrication(bearing, seal) -> tuple[str, str, float | None, float | None]:
+def _lubrication(bearing, seal, lub) -> tuple[str, str, float | None, float | None]:
     from bearingkit.pipeline.conditions import _sections
 
     spec = _sections(bearing).lubrication
     level = None if spec is None else spec.oil_level
     vm = None if spec is None else spec.drag_loss_factor
-    lub = getattr(bearing, "lubricant", None)
+    lub = getattr(bearing, "lubricant", None) if lub is None else lub
     if spec is not None and spec.method is not None:
         method, why = spec.method, "[lubrication] method"
     elif lub is not None and lub.base == "grease":
@@ -150,8 +150,9 @@ def _lubrication(bearing, seal) -> tuple[str, str, float | None, float | None]:
     return method, why, level, vm
 
 
-def bearing_facts(bearing) -> BearingFacts:
-    """The :class:`BearingFacts` of a loaded input (a BearingInput; a ModelInput has none of them).
+def bearing_facts(bearing, lubricant=None) -> BearingFacts:
+    """The :class:`BearingFacts` of a loaded input (a BearingInput; a ModelInput has none of them);
+    ``lubricant``: the analysis's (the file's ``[lubricant]`` when None).
 
     Bad ``[bearing] series`` or ``seal`` raise :class:`~bearingkit.errors.InputError` (one line naming
     the valid ones).
@@ -216,7 +217,7 @@ def bearing_facts(bearing) -> BearingFacts:
         ds = float(bore) + SEAL_DIAMETER_SHARE * (float(outer) - float(bore))
         ds_source = f"estimated d + {SEAL_DIAMETER_SHARE:g} (D - d) = {ds * 1e3:.4g} mm"
     dm = 0.5 * (float(bore) + float(outer)) if bore is not None and outer is not None else dm_rows
-    method, why, level, vm = _lubrication(bearing, seal)
+    method, why, level, vm = _lubrication(bearing, seal, lubricant)
     c = c0 = None
     if entry is not None:
         c, c0 = entry.C, entry.C0

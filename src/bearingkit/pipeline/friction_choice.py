@@ -140,7 +140,7 @@ def skf_inputs(analysis) -> tuple[dict, list[str]]:
     from bearingkit.physics.friction import skf_terms
     from bearingkit.pipeline.bearing_facts import bearing_facts
 
-    facts = bearing_facts(analysis.input)
+    facts = bearing_facts(analysis.input, analysis.operating.lubricant)
     etype = facts.engineering_type
     if etype is None:
         return {}, []

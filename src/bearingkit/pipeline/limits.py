@@ -204,7 +204,7 @@ def operating_limits(analysis) -> OperatingLimits | None:
 
     if isinstance(analysis.input, ModelInput):
         return None
-    facts = bearing_facts(analysis.input)
+    facts = bearing_facts(analysis.input, analysis.operating.lubricant)
     etype = facts.engineering_type
     if etype not in physics.speed_limit_types():
         return None
