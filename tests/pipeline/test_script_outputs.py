@@ -89,4 +89,4 @@ def test_the_report_lists_the_reaction_of_a_fixed_tilt_apart_from_the_load(tmp_p
     html = a.report(tmp_path / "r.html").read_text(encoding="utf-8")
     load_table = html.split("Load and displacement of the inner ring</h4>")[1].split("</table>")[0]
     assert "held" in load_table
-    assert 'class="reactions"' in html and "Reaction at the fixed DOFs" in html
+    assert 'class="fixed-dof-reactions"' in html and "Reaction at the fixed DOFs" in html

@@ -435,7 +435,10 @@ def shaft(
     ),
     contamination: str = _CONTAMINATION_OPTION,
     model: str = typer.Option(
-        "components", "--friction-model", help="Friction model of every bearing: components | skf | palmgren."
+        "auto",
+        "--friction-model",
+        help="Friction model of every bearing: auto (the model of each bearing's kind) | components | skf | "
+        "palmgren.",
     ),
 ):
     """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and

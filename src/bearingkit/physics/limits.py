@@ -135,6 +135,13 @@ def minimum_load_row(bearing_type: str, series: str | None = None) -> dict:
     """The minimum-load rule of a type and series (``data/minimum_load.csv``): law, factor, tag.
 
     The row of the series if the table has one, else the type's ``*`` row.
+
+    Parameters
+    ----------
+    bearing_type : str
+        An engineering bearing type (``deep_groove_ball`` …).
+    series : str or None
+        Dimension series (``"62"``); None = the type's ``*`` row.
     """
     types = tables.text_column(_MIN_LOAD_FILE, "bearing_type")
     keys = tables.text_column(_MIN_LOAD_FILE, "series")

@@ -96,7 +96,7 @@ def _load_html(result, case: int) -> str:
             [f"{LOAD_DISPLAY[i][0]} [{LOAD_DISPLAY[i][2]}]" for i in held],
             [[fmt(load[i], 5, LOAD_DISPLAY[i][3], FORCE_NOISE) for i in held]],
             left=0,
-            cls="reactions",
+            cls="fixed-dof-reactions",
         )
     return out
 

@@ -1,5 +1,7 @@
 """The drag loss factor V_M of the SKF friction model, approximated where the user gives none.
 
+SI units at the boundary (oil level and d_m in m; V_M is dimensionless).
+
 SKF gives V_M (the first, churning term of the drag moment in an oil bath,
 :func:`bearingkit.physics.friction.skf_terms.drag_moment`) only as a diagram of V_M against the oil level
 H/d_m, one curve for ball and one for roller bearings (SKF Group 2018, Rolling bearings 17000 EN,
