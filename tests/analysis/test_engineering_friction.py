@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingkit.analysis import engineering_friction as fm
+from bearingkit.analysis.friction import engineering as fm
 from bearingkit.bearings.standard import (
     angular_contact_ball,
     cylindrical_roller,

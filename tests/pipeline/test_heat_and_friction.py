@@ -10,7 +10,7 @@ import pytest
 import bearingkit as bk
 from bearingkit.physics.friction import iso15312
 from bearingkit.physics.lubrication import ehl
-from bearingkit.pipeline import thermal
+from bearingkit.pipeline.thermal import reference as thermal
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

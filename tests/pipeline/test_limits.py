@@ -14,7 +14,7 @@ import bearingkit as bk
 from bearingkit.cli import app
 from bearingkit.lubricants import as_lubricant
 from bearingkit.physics import limits
-from bearingkit.studies import quantities
+from bearingkit.studies.generic import quantities
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 RPM = np.pi / 30.0
@@ -125,7 +125,7 @@ def test_seal_lip_speed_limits_contact_seals_only():
 
 
 def test_reference_speed_is_the_iso15312_one_and_computed_near_the_limit():
-    from bearingkit.pipeline import thermal
+    from bearingkit.pipeline.thermal import reference as thermal
 
     slow = bk.analyze("6208", load={"F_x": "2 kN"}, speed="1000 rpm")
     assert slow.limits.reference_speed is None and "below 30%" in slow.limits.reference_note

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 import bearingkit as bk
-from bearingkit.analysis import quasistatic
-from bearingkit.analysis.friction import OperatingPoint, friction_torque
-from bearingkit.analysis.rating import rate
+from bearingkit.analysis.solver import quasistatic
+from bearingkit.analysis.friction.components import OperatingPoint, friction_torque
+from bearingkit.analysis.rating.assembly import rate
 from bearingkit.errors import InputError
 from bearingkit.io.export import to_json
 from bearingkit.io.loader import load_file

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import solve
+from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.errors import InputError
 from bearingkit.systems.input import load_shaft_file, shaft_from_dict
 from bearingkit.systems.life import friction_system, rate_system

@@ -1,6 +1,6 @@
 """Engineering friction models (SKF four-component, Palmgren) behind one registry, and their use on a
 bearingkit bearing so that users can compare them with the physics torque of
-:mod:`bearingkit.analysis.friction`.
+:mod:`bearingkit.analysis.friction.components`.
 
 SI units at the boundary: m, N, rad/s, m²/s, °C (temperature, as the lubricant API); moments in N·m,
 with the unit in every result key (``total_Nm`` …). The models themselves live in
@@ -19,7 +19,7 @@ Registries
 
 From a bearing model
 --------------------
-:func:`engineering_friction_torque` reads a single-row :class:`~bearingkit.analysis.model.BearingModel`
+:func:`engineering_friction_torque` reads a single-row :class:`~bearingkit.analysis.solver.model.BearingModel`
 built by :mod:`bearingkit.bearings.standard` (duck-typed: ``rows[0].kind``, ``contact_angle``,
 ``orientation``, ``pitch_diameter``, ``element_diameter``, ``n_elements``) and infers the type. The
 catalogue models need the boundary dimensions d and D, which the builders do not store: pass them
@@ -264,7 +264,7 @@ def engineering_friction_torque(
     Returns
     -------
     EngineeringFrictionResult
-        Compare ``total`` with :func:`bearingkit.analysis.friction.friction_torque` ``.total``.
+        Compare ``total`` with :func:`bearingkit.analysis.friction.components.friction_torque` ``.total``.
     """
     checks.one_of("model", model, ENGINEERING_MODELS)
     lub = as_lubricant(lubricant)

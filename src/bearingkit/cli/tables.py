@@ -13,7 +13,7 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from bearingkit.analysis.rating_iso281 import caption as iso281_caption
+from bearingkit.analysis.rating.iso281 import caption as iso281_caption
 
 #: Displacements [m] and angles [rad] below this are the solver's round-off, shown as 0 (the solve
 #: converges to ~1e-10 of the load scale; 1e-12 m is a thousandth of a nanometre).

@@ -5,7 +5,7 @@ SI units: torques in N·m, speeds in rad/s, power in W, temperatures in °C. Eac
 ``friction_model`` of :func:`bearingkit.pipeline.analyze`):
 
 - ``"components"`` — the physical component model (hysteresis, differential sliding, viscous
-  rolling, ball spin, cage; Tian et al. 2025 §4, :mod:`bearingkit.analysis.friction`) from the solved
+  rolling, ball spin, cage; Tian et al. 2025 §4, :mod:`bearingkit.analysis.friction.components`) from the solved
   contact loads: per row and per element, for ball and cylindrical rows;
 - ``"skf"`` — the SKF four-component catalogue model from F_r, F_a (single standard bearings), with the
   seals, the drag and the series constants of the bearing
@@ -69,7 +69,7 @@ class FrictionOutcome:
 
 def _components(analysis) -> FrictionOutcome:
     """Physical component model, one friction evaluation per distinct temperature."""
-    from bearingkit.analysis.friction import FrictionResult, OperatingPoint, friction_torque
+    from bearingkit.analysis.friction.components import FrictionResult, OperatingPoint, friction_torque
     from bearingkit.io.export import friction_case_dict
 
     op_in, bearing, result = analysis.operating, analysis.input, analysis.statics
@@ -129,7 +129,7 @@ def _components(analysis) -> FrictionOutcome:
 
 def _engineering(model: str) -> Callable:
     def run(analysis) -> FrictionOutcome:
-        from bearingkit.analysis.engineering_friction import engineering_friction_torque
+        from bearingkit.analysis.friction.engineering import engineering_friction_torque
         from bearingkit.io.export import engineering_friction_case_dict
 
         bearing, op = analysis.input, analysis.operating

@@ -19,7 +19,7 @@ bearing it was chosen for (e.g. a thrust bearing under a radial load), the defau
 component model and says why.
 
 :func:`skf_inputs` turns :class:`~bearingkit.pipeline.bearing_facts.BearingFacts` into the keyword
-arguments of :func:`bearingkit.analysis.engineering_friction.engineering_friction_torque`: series key,
+arguments of :func:`bearingkit.analysis.friction.engineering.engineering_friction_torque`: series key,
 seal type and count, seal counterface diameter, lubrication method, oil level and V_M, width, the
 catalogue C0 and the tapered roller Y.
 """

@@ -5,7 +5,7 @@ models know (:mod:`bearingkit.pipeline.bearing_facts`), per case:
 
 - the **limiting speed** n_lim (kinematic: cage, elements; by type, lubrication method and cage,
   :func:`bearingkit.physics.limits.limiting_speed`) — above it, a warning;
-- the **thermal reference speed** n_θr of ISO 15312 by the SKF model (:mod:`bearingkit.pipeline.thermal`)
+- the **thermal reference speed** n_θr of ISO 15312 by the SKF model (:mod:`bearingkit.pipeline.thermal.reference`)
   — above it the bearing runs hotter than 70 °C in the reference housing unless cooled: a warning that
   points to the heat balance; computed only when a case runs above :data:`REFERENCE_CHECK_SHARE` of n_lim
   (below it no bearing of the tables reaches n_θr, and the bisection costs a few hundred friction calls);
@@ -152,7 +152,7 @@ class OperatingLimits:
 
 
 def _reference_speed(analysis, facts, n_lim: float) -> tuple[float | None, str | None]:
-    from bearingkit.pipeline import thermal
+    from bearingkit.pipeline.thermal import reference as thermal
     from bearingkit.pipeline.friction_choice import SKF_TYPES
 
     if float(np.max(analysis.operating.abs_speed)) <= REFERENCE_CHECK_SHARE * n_lim:

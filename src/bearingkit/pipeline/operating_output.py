@@ -64,7 +64,7 @@ def preload_state(analysis) -> dict | None:
     Solved for bearings whose rows face each other and that are preloaded: by ``[operating]
     preload_*``, by a negative clearance, or by a fit that takes the clearance away.
     """
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.solver.quasistatic import solve
     from bearingkit.pipeline.conditions import _opposed
 
     setup, model = analysis.setup, analysis.input.model

@@ -89,7 +89,7 @@ def _sibling(analysis, *, temperature=None, speed=None, load=None, lubricant=Non
 
 def _reference_case(analysis):
     """The ISO 15312 reference load: a radial load of 5 % of the bearing's ISO 76 C0."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.io.loader import LoadCase
 
     rating = analysis.rating

@@ -1,12 +1,12 @@
 """The generic evaluator: any bearing file or designation × factors that are paths into its input.
 
-SI units: factor columns hold SI values (:mod:`bearingkit.studies.paths`), output columns name their
-unit (:mod:`bearingkit.studies.quantities`).
+SI units: factor columns hold SI values (:mod:`bearingkit.studies.generic.paths`), output columns name their
+unit (:mod:`bearingkit.studies.generic.quantities`).
 
 A study that names a bearing (``bearing = "../dgbb_6209.toml"`` or ``bearing = "6205 C3"``) and no
 evaluator runs on this one (or ``evaluator = "generic"``). Its factors are the paths of that input
-(:func:`bearingkit.studies.paths.input_paths`), its outputs the named quantities of the pipeline's
-Analysis (:func:`bearingkit.studies.quantities.catalogue`). It runs on top of the pipeline only:
+(:func:`bearingkit.studies.generic.paths.input_paths`), its outputs the named quantities of the pipeline's
+Analysis (:func:`bearingkit.studies.generic.quantities.catalogue`). It runs on top of the pipeline only:
 input → :func:`bearingkit.io.loader.from_dict` → :class:`bearingkit.pipeline.Analysis`.
 
 One study case is the bearing with the study's values set, under ONE load case of the file (``study
@@ -31,8 +31,8 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.io import schema
-from bearingkit.studies import paths as pathmod
-from bearingkit.studies import quantities as qmod
+from bearingkit.studies.generic import paths as pathmod
+from bearingkit.studies.generic import quantities as qmod
 from bearingkit.studies.evaluators import Evaluator, Factor
 
 __all__ = ["GENERIC", "GenericModel", "is_designation", "load_bearing", "study_evaluator"]
@@ -82,7 +82,7 @@ class GenericModel:
     load_case : str
         The load case every study case analyses.
     outputs : tuple of str
-        The outputs to compute (names of :func:`bearingkit.studies.quantities.catalogue`).
+        The outputs to compute (names of :func:`bearingkit.studies.generic.quantities.catalogue`).
     """
 
     def __init__(self, source: str, data: dict, digest: str, load_case: str, outputs: tuple):
@@ -98,7 +98,7 @@ class GenericModel:
 
     def __repr__(self) -> str:
         return (
-            f"bearingkit.studies.generic:GenericModel({self.source!r}, sha256={self.digest[:16]}, "
+            f"bearingkit.studies.generic.evaluator:GenericModel({self.source!r}, sha256={self.digest[:16]}, "
             f"load_case={self.load_case!r}, outputs={list(self.outputs)})"
         )
 
@@ -298,7 +298,7 @@ def _missing(value) -> bool:
 
 def _cases(name: str, cols: dict, g: int, make) -> list:
     """G load cases from per-case field arrays (the loader's rule: M_y − e·F_z from an eccentricity)."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     zero = {k: np.nan_to_num(cols[k], nan=0.0) for k in ("F_x", "F_y", "F_z", "M_x", "M_y")}
     e = np.nan_to_num(cols["eccentricity"], nan=0.0)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import ModelInput, analyze
 from bearingkit.systems.life import combine_ratings
@@ -137,7 +137,7 @@ class SeatInput(ModelInput):
         """The statics at the imposed state: the row kernels evaluated at q (load = −f(q)); the
         convergence, iterations, residual and reason are the shaft solve's (including its beyond-the-
         speed-model flags)."""
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         model = self.model if self.solved_model is None else self.solved_model
         res = solve(model, self.load, free=self.free, displacement=self.displacement, options=self.options)
