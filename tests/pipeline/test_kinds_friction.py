@@ -96,8 +96,11 @@ def test_skf_near_the_catalogue_constant_friction_coefficient(path, mu, bore):
 
 
 def test_default_friction_on_a_new_kind_points_to_the_models_that_cover_it():
-    """The component model has no spherical roller rows: the one-line refusal names the catalogue models."""
+    """A spherical roller bearing gets the SKF model by default (issue 40); the component model has no
+    spherical roller rows: asked for, its one-line refusal names the catalogue models."""
     res = runner.invoke(app, ["friction", SRB])
+    assert res.exit_code == 0 and "friction model: skf (standard spherical roller bearing" in res.stdout
+    res = runner.invoke(app, ["friction", SRB, "--model", "components"])
     assert res.exit_code == 2 and res.stdout == ""
     line = res.stderr.strip()
     assert "\n" not in line and "spherical_roller" in line and "'skf'" in line and "--compare" in line
@@ -106,5 +109,7 @@ def test_default_friction_on_a_new_kind_points_to_the_models_that_cover_it():
 def test_text_output_states_each_note_once_and_keeps_the_case_line_whole():
     res = runner.invoke(app, ["friction", SRB, "--model", "skf"])
     assert res.exit_code == 0, res.stderr
-    assert res.stdout.count("SKF constants of series 222E used") == 1  # the run's notes, not per case
+    assert (
+        res.stdout.count("SKF constants of series 222E (catalogue row 22220") == 1
+    )  # run notes, not per case
     assert "case 'radial_60kN' (skf model): M = " in res.stdout  # not wrapped to the table's width

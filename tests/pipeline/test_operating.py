@@ -37,7 +37,9 @@ def test_acbb_at_20000_rpm_inner_and_outer_angles_part_and_are_equal_at_rest():
         assert min(row["centrifugal_force_N"]) > 0 and row["cage_speed_rad_s"] > 0
     for case in rest["cases"]:
         row = case["rows"][0]
-        assert "contact_angle_outer_rad" not in row  # at rest: one contact angle per ball (inner = outer)
+        # at rest: the same keys (issue 40), one contact angle per ball (inner = outer = the statics')
+        assert row["contact_angle_inner_rad"] == row["contact_angle_outer_rad"] == row["contact_angle_rad"]
+        assert row["cage_speed_rad_s"] is None and max(row["centrifugal_force_N"]) == 0.0
     # The same file solved at 0 rpm through the speed path gives the same angles to 1e-12.
     zero = analyze(ACBB, speed=0.0)
     plain = analyze(ACBB)

@@ -89,10 +89,11 @@ def flagship(tmp_path_factory):
 @pytest.fixture(scope="module")
 def dgbb():
     a = analyze(DGBB, lubricant="ISO_VG68", temperature=40.0, speed=100.0)
+    native = a.friction_by("components").native
     html = build_report(
-        a.input, a.statics, friction=a.friction.native, rating=a.rating, notes=a.notes, warnings=a.warnings
+        a.input, a.statics, friction=native, rating=a.rating, notes=a.notes, warnings=a.warnings
     )
-    return a.input, a.statics, a.friction.native, a.rating, html
+    return a.input, a.statics, native, a.rating, html
 
 
 # ------------------------------------------------------------------------------------------------
@@ -375,13 +376,21 @@ def test_flagship_fallback_uses_seed000_friction_data(flagship):
 
 @pytest.mark.parametrize(("name", "model"), [("srb_22220.toml", "skf"), ("needle_na4910.toml", "palmgren")])
 def test_kinds_without_a_component_model_show_a_catalogue_model(tmp_path, name, model):
-    """Spherical roller and needle rows have no component friction model: the report shows the first catalogue
-    model that applies (SKF, else Palmgren) for the whole bearing, says so, and its totals are the model's."""
-    a = analyze(EXAMPLES / name)
-    assert a.friction is None
+    """Spherical roller and needle rows have no component friction model: by default they get a catalogue
+    model (SKF, Palmgren for needles), the report names it with its reason and its torque and power; asked
+    for, the component model falls back in the report to the first catalogue model that applies."""
+    a = analyze(EXAMPLES / name, speed="1000 rpm")
+    assert a.friction.model == model and a.friction.why
     html = a.report(tmp_path / "r.html").read_text(encoding="utf-8")
-    assert f"the report shows the {model} catalogue model" in html
     assert "Not computed in this run: friction torque" not in html
+    assert f"Friction model: {model} — " in html
     for case in range(a.n_cases):
         total = fmt(float(a.friction_by(model).total[case]), 5)
-        assert f"Total M = <b>{total} N·m</b> ({model} catalogue model of the whole bearing" in html
+        power = fmt(float(a.friction_by(model).power_loss[case]), 4)
+        assert (
+            f"Total M = <b>{total} N·m</b>, power loss P = <b>{power} W</b> ({model} catalogue model" in html
+        )
+    b = analyze(EXAMPLES / name, speed="1000 rpm", friction_model="components")
+    assert b.friction is None
+    html = b.report(tmp_path / "c.html").read_text(encoding="utf-8")
+    assert "the report shows the skf catalogue model" in html or "the report shows the palmgren" in html

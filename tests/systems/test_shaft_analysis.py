@@ -64,7 +64,7 @@ def test_each_bearing_analysis_equals_the_shaft_solution(name, request):
         np.testing.assert_allclose(
             np.ma.getdata(a.rating.life), np.ma.getdata(direct.bearings[b].life), rtol=1e-12
         )
-        np.testing.assert_allclose(a.friction.total, torque[b], rtol=1e-12)
+        np.testing.assert_allclose(a.friction_by("components").total, torque[b], rtol=1e-12)
         for c in range(res.n_cases):
             summary = sa.bearing_summary(b, c)
             assert list(summary["reaction_on_shaft"].values()) == pytest.approx(res.reaction(b)[c], abs=0)

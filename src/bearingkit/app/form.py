@@ -49,8 +49,9 @@ MAX_TOML_BYTES = 256 * 1024
 MAX_DESIGNATION = 64
 #: Load-case fields the form edits (the rest of the chosen case, e.g. eccentricity, is kept).
 LOAD_FIELDS = ("F_x", "F_y", "F_z", "M_x", "M_y")
-#: Friction models the page offers (:data:`bearingkit.pipeline.FRICTION_MODELS`).
-FRICTION_CHOICES = ("components", "skf", "palmgren")
+#: Friction models the page offers (:data:`bearingkit.pipeline.FRICTION_MODELS`); "auto" (the first, the
+#: default) is the model of the bearing's kind, named with its reason in the result.
+FRICTION_CHOICES = ("auto", "components", "skf", "palmgren")
 #: Name of the one load case the page analyses when the file has none (a designation).
 PAGE_CASE = "page"
 
@@ -109,7 +110,7 @@ class AnalyzeRequest(StrictModel):
     heat: bool | None = Field(None, description="Heat balance on/off (None: as the file's [thermal]).")
     thermal: dict[ThermalField, FormText] = Field(default_factory=dict)
     contamination: FormText = ""
-    friction_model: Literal["components", "skf", "palmgren"] = "components"
+    friction_model: Literal["auto", "components", "skf", "palmgren"] = "auto"
 
 
 def _is_bearing_file(path: Path) -> bool:

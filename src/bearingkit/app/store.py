@@ -48,7 +48,7 @@ class Kept:
     document: dict
     source: str
     contamination: str = ""
-    friction_model: str = "components"
+    friction_model: str = "auto"
 
     @property
     def stem(self) -> str:
@@ -161,6 +161,6 @@ def toml_text(kept: Kept) -> str:
             f"# The page also used contamination e_C = {kept.contamination.strip()} (no file field; give "
             f"--contamination {kept.contamination.strip()} to bearingkit rating)."
         )
-    if kept.friction_model != "components":
+    if kept.friction_model != "auto":
         lines.append(f"# Friction model on the page: {kept.friction_model} (bearingkit friction --model).")
     return "\n".join(lines) + "\n\n" + tomli_w.dumps(kept.document)

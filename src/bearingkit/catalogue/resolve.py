@@ -89,7 +89,11 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5, 
     notes = list(est.notes)
     bearing_type = tables.FAMILIES[des.family][1]
     geometry = _geometry(est, des, notes, clearance_position)
-    acting = (des.arrangement, des.preload_code, des.tapered_bore)
+    acting = (des.arrangement, des.preload_code, des.tapered_bore, des.seal)
+    if des.seal is not None:
+        notes.append(
+            f"seal {des.seal}: in the friction (SKF seal term) and the seal speed limit, not the statics"
+        )
     plain = [s for s in des.suffixes if s not in acting]
     if plain:
         notes.append(f"suffixes {' '.join(plain)} noted (no effect on the mechanics)")

@@ -65,7 +65,7 @@ class Code:
 def _seals() -> dict[str, Code]:
     shields = ("Z", "Z1", "2Z", "ZZ", "2Z1")
     contact = ("RS", "RS1", "RSH", "RSR", "2RS", "2RS1", "2RSH", "2RSR", "LLU", "LU", "DDU", "DU", "2HRS")
-    low_friction = ("RZ", "2RZ", "RSL", "2RSL", "LLB", "LB", "LLH", "LH", "VV")
+    low_friction = ("RZ", "2RZ", "RSL", "2RSL", "LLB", "LB", "LLH", "LH", "VV", "DD")
     out = {}
     for code in shields:
         out[code] = Code("seal", "shield", "shield")

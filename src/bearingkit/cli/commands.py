@@ -112,11 +112,12 @@ def analyze(
         _print_json(file, data)
     else:
         _header(a, file)
-        from bearingkit.cli.operating_tables import operating_text
+        from bearingkit.cli.operating_tables import limits_text, operating_text
 
         for c in data["cases"]:
             console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
+            console.print(limits_text(c))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
@@ -192,7 +193,7 @@ def rating(
         _print_json(file, data)
     else:
         _header(a, file)
-        from bearingkit.cli.operating_tables import lubrication_table, thermal_text
+        from bearingkit.cli.operating_tables import limits_text, lubrication_table, thermal_text
 
         for c in data["cases"]:
             if "thermal" in c:
@@ -207,6 +208,7 @@ def rating(
                     markup=False,
                     highlight=False,
                 )
+            console.print(limits_text(c))
             console.print(warnings_text(c["warnings"]))
         console.print(warnings_text([], data["notes"]))
         if "duty_cycle" in data:
@@ -220,7 +222,7 @@ def rating(
 
 
 #: Friction models of ``friction --model`` (:data:`bearingkit.pipeline.FRICTION_MODELS`).
-FRICTION_MODELS = ("components", "skf", "palmgren")
+FRICTION_MODELS = ("auto", "components", "skf", "palmgren")
 
 
 @app.command()
@@ -237,10 +239,11 @@ def friction(
     lubricant: str = _LUBRICANT_OPTION,
     lubricant_file: Path = _LUBRICANT_FILE_OPTION,
     model: str = typer.Option(
-        "components",
+        "auto",
         "--model",
-        help="components (physics, per contact) | skf | palmgren (standard and self-aligning bearings) | trb "
-        "(tapered rows) | slewing (slewing rings).",
+        help="auto (default: skf for standard bearings, slewing for slewing rings, components for the seed "
+        "composites; the output says which and why) | components (physics, per contact) | skf | palmgren "
+        "(standard and self-aligning bearings) | trb (tapered rows) | slewing (slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
@@ -275,7 +278,9 @@ def friction(
             f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
             "[[load_cases]]"
         )
-    if model == "components":
+    from bearingkit.pipeline.friction.choice import AUTO, choose
+
+    if (choose(a)[0] if model == AUTO else model) == "components":
         _fail_unconverged(file, a)
     from bearingkit.cli.operating_tables import comparison_text, heat_text, thermal_text
 
@@ -298,6 +303,9 @@ def friction(
         _print_json(file, data)
     else:
         _header(a, file)
+        console.print(
+            f"friction model: {data['friction_model']} ({data['friction_model_why']})", markup=False
+        )
         for c in data["cases"]:
             if "thermal" in c:
                 console.print(thermal_text(c["thermal"]))
@@ -423,7 +431,10 @@ def shaft(
     ),
     contamination: str = _CONTAMINATION_OPTION,
     model: str = typer.Option(
-        "components", "--friction-model", help="Friction model of every bearing: components | skf | palmgren."
+        "auto",
+        "--friction-model",
+        help="Friction model of every bearing: auto (the model of each bearing's kind) | components | skf | "
+        "palmgren.",
     ),
 ):
     """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and

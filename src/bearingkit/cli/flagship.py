@@ -51,12 +51,21 @@ class FlagshipContext:
     case : str
     data : dict
         Title → JSON-ready dict of every section already run (filled by :func:`run_sections`).
+    shown : set of str
+        Warnings a section printed (:meth:`unseen`): the load distribution and the rating share them.
     """
 
     file: Path = FLAGSHIP_FILE
     case: str = FLAGSHIP_CASE
     _analysis: object = None
     data: dict = field(default_factory=dict)
+    shown: set = field(default_factory=set)
+
+    def unseen(self, warnings) -> list[str]:
+        """The ``warnings`` no earlier section printed; marks them printed."""
+        out = [w for w in dict.fromkeys(warnings) if w not in self.shown]
+        self.shown.update(out)
+        return out
 
     @property
     def analysis(self):
@@ -166,7 +175,7 @@ def _load_distribution_section(ctx: FlagshipContext):
     from bearingkit.cli.tables import case_table, warnings_text
 
     data = ctx.analysis.statics_dict()["cases"][0]
-    return Group(case_table(data), warnings_text(data["warnings"])), data
+    return Group(case_table(data), warnings_text(ctx.unseen(data["warnings"]))), data
 
 
 @flagship_section("Friction torque of the flagship case (seed-000 component model)")
@@ -187,7 +196,7 @@ def _rating_section(ctx: FlagshipContext):
     from bearingkit.cli.tables import rating_table
 
     data = ctx.analysis.rating_dict()["cases"][0]
-    notes = [Text(f"  warning: {w}", style="yellow") for w in data["warnings"]]
+    notes = [Text(f"  warning: {w}", style="yellow") for w in ctx.unseen(data["warnings"])]
     return Group(rating_table(data), *notes), data
 
 

@@ -26,7 +26,9 @@ def operating_text(c: dict) -> Group:
     """Lines under a case's load table: speed effects per row, clearance chain, preload per row."""
     lines = []
     for r in c["rows"]:
-        if "contact_angle_outer_rad" in r:
+        if not r.get("cage_speed_rad_s"):  # at rest (the speed keys hold the values at rest)
+            pass
+        elif "contact_angle_outer_rad" in r:
             lines.append(
                 f"  {r['name']} at speed: α_inner {_deg_range(r['contact_angle_inner_rad'])}°, α_outer "
                 f"{_deg_range(r['contact_angle_outer_rad'])}°, F_c {max(r['centrifugal_force_N']):.4g} N, "
@@ -55,6 +57,36 @@ def operating_text(c: dict) -> Group:
             f"(p = {chain['pressure_outer_Pa'] / 1e6:.3g} MPa)"
         )
     return Group(*(Text(line) for line in lines))
+
+
+def limits_lines(lim: dict | None) -> list[str]:
+    """The speed and load limits of one case (``limits`` of the case dicts) in one line."""
+    if not lim:
+        return []
+    ref = lim["thermal_reference_speed_rad_s"]
+    note = lim["thermal_reference_speed_note"]
+    shown_ref = f"{ref * RPM:.4g} r/min" if ref is not None else f"— ({note})"
+    method = lim["lubrication"].replace("_", " ")
+    line = (
+        f"n·d_m = {lim['n_dm_mm_rpm']:.3g} mm·r/min; limiting speed "
+        f"{lim['limiting_speed_rad_s'] * RPM:.4g} r/min ({method}; {lim['limiting_speed_source']}); "
+        f"thermal reference speed (ISO 15312, SKF model) {shown_ref}"
+    )
+    if lim["seal"] is not None:
+        lip, top = lim["seal_lip_speed_m_s"], lim["seal_lip_speed_limit_m_s"]
+        line += f"; seal {lim['seal']} lip {lip:.3g} m/s (≤ {top:g})"
+    if lim["minimum_load_N"] is not None:
+        line += (
+            f"; minimum load {lim['minimum_load_N']:.4g} N ({lim['minimum_load_rule']}), carried "
+            f"{lim['load_compared_N']:.4g} N"
+        )
+    line += "".join(f"; {n}" for n in lim["notes"] if n.startswith("minimum load"))
+    return [line]
+
+
+def limits_text(c: dict) -> Group:
+    """Rich text of :func:`limits_lines`."""
+    return Group(*(Text(f"  limits: {line}", style="dim") for line in limits_lines(c.get("limits"))))
 
 
 def _opt(x, scale=1.0, fmt=".3g") -> str:

@@ -202,12 +202,14 @@ def friction_table(c: dict):
     f = c["friction"]
     total = f["total_Nm"]
     if "speed_rad_s" in c:  # engineering model: relative speed only, no per-row breakdown
-        rpm, lube, model = c["speed_rad_s"] * 30 / math.pi, "", f" ({f['model']} model)"
+        rpm, lube = c["speed_rad_s"] * 30 / math.pi, ""
     else:
         rpm = (c["speed_inner_rad_s"] - c["speed_outer_rad_s"]) * 30 / math.pi
-        lube, model = f", {c['lubricant']}", ""
+        lube = f", {c['lubricant']}"
+    model = f" ({f.get('model', 'components')} model)"
+    power = f", P = {f['power_loss_W']:.4g} W" if f.get("power_loss_W") is not None else ""
     title = (
-        f"case {c['case']!r}{model}: M = {total:.4g} N·m at {rpm:.4g} r/min{lube} at "
+        f"case {c['case']!r}{model}: M = {total:.4g} N·m{power} at {rpm:.4g} r/min{lube} at "
         f"{c['temperature_C']:g} °C"
     )
     # the title as its own line: a table title wraps to the (narrow) table's width

@@ -84,6 +84,18 @@ class LubricationSpec(Strict):
     grease_limiting_speed: AngularVelocity | None = Field(
         None, description="Catalogue limiting speed with grease (grease life)."
     )
+    method: Literal["grease", "oil_bath", "oil_jet", "oil_air"] | None = Field(
+        None,
+        description="Lubrication method (SKF friction K_rs and drag, limiting speed); default grease for a "
+        "grease or a sealed bearing, else oil_bath.",
+    )
+    oil_level: NonNegativeLength | None = Field(
+        None,
+        description="Oil bath level H above the lowest point of the outer ring raceway (SKF drag losses).",
+    )
+    drag_loss_factor: Dimensionless | None = Field(
+        None, description="SKF drag loss factor V_M read from SKF's diagram; default approximated."
+    )
 
 
 class ThermalSpec(Strict):

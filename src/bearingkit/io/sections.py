@@ -21,6 +21,7 @@ from bearingkit.io.fields import (
     Moment,
     PositiveDensity,
     PositiveForce,
+    PositiveLength,
     PositivePressure,
     Strict,
     Temperature,
@@ -63,6 +64,21 @@ class BearingHeader(Strict):
     source: str = Field(
         "", description="Where the geometry comes from (paper, table, catalogue, assumption)."
     )
+    series: str | None = Field(
+        None,
+        description="Dimension series (e.g. '62'): selects the SKF friction constants and the minimum-load "
+        "factor; default from the designation or the catalogue row with the file's bore and outer diameter.",
+    )
+    seal: str | None = Field(
+        None,
+        description="Seals or shields: a designation suffix such as '2RS1', '2RSH', '2Z', 'LLU', or 'none'; "
+        "default the designation's suffix (docs/operating.md).",
+    )
+    seal_counterface_diameter: PositiveLength | None = Field(
+        None,
+        description="Diameter the seal lips run on (SKF d1 or d2 of the product tables); default "
+        "estimated as d + 0.25 (D - d).",
+    )
 
     @field_validator("type")
     @classmethod
@@ -72,6 +88,14 @@ class BearingHeader(Strict):
                 f"type ({quote(value)}) must be one of {', '.join(GEOMETRY_MODELS)}"
                 f"{did_you_mean(value, GEOMETRY_MODELS)}"
             )
+        return value
+
+    @field_validator("seal")
+    @classmethod
+    def _known_seal(cls, value):
+        from bearingkit.catalogue.seals import seal_of_suffix
+
+        seal_of_suffix(value)  # one line naming the valid suffixes
         return value
 
     @field_validator("clearance_position", mode="before")

@@ -10,9 +10,11 @@ when asked for, and only once:
 - :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
   :data:`~bearingkit.pipeline.friction.models.FRICTION_MODELS`;
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
+- :attr:`Analysis.limits` — limiting and thermal reference speed, seal lip speed and minimum load of a
+  standard bearing (:mod:`bearingkit.pipeline.limits`);
 - :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
   pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
-  bearing …); every face shows them.
+  bearing, a speed or load limit exceeded …); every face shows them.
 
 >>> import bearingkit as bk
 >>> a = bk.analyze("examples/dgbb_6209.toml", load={"F_x": "5 kN"}, speed="3000 rpm")  # doctest: +SKIP
@@ -64,7 +66,8 @@ class Analysis(AnalysisOutput):
     operating : Operating
         Per-case operating conditions.
     friction_model : str
-        Default model of :attr:`friction` (a key of :data:`FRICTION_MODELS`).
+        Default model of :attr:`friction` (a key of :data:`FRICTION_MODELS`); ``"auto"`` picks the model
+        of the bearing's kind (:func:`bearingkit.pipeline.friction.choice.choose`).
     load_ratings : dict, optional
         Row name → C [N] replacing ISO 281 ratings (catalogue values).
     friction_options : dict, optional
@@ -78,7 +81,7 @@ class Analysis(AnalysisOutput):
         bearing,
         operating: Operating,
         *,
-        friction_model: str = "components",
+        friction_model: str = "auto",
         load_ratings=None,
         friction_options=None,
     ):
@@ -273,6 +276,15 @@ class Analysis(AnalysisOutput):
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
     @functools.cached_property
+    def limits(self):
+        """Speed and load limits per case (limiting and thermal reference speed, seal lip speed, minimum
+        load: :class:`~bearingkit.pipeline.limits.OperatingLimits`); None for a bearing no catalogue rule
+        covers (seed composites, slewing rings, models built in code)."""
+        from bearingkit.pipeline.limits import operating_limits
+
+        return self._in_file(operating_limits, self)
+
+    @functools.cached_property
     def load_diagram(self):
         """Static load diagram of a slewing ring (allowable axial force vs tilting moment,
         :class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`), None for other bearings."""
@@ -346,11 +358,17 @@ class Analysis(AnalysisOutput):
         lub = self.lubrication
         if lub is not None:
             out.extend(f"lubrication: {n}" for n in lub.notes)
-        for model, why in self._friction_errors.items():
+        errors = self._friction_errors
+        for model, why in errors.items():
+            if model == "auto" and why in [w for m, w in errors.items() if m != "auto"]:
+                continue  # the default's error is the chosen model's, already listed
             out.append(f"friction ({model}) not computed: {why}")
+        auto = self._friction.get("auto")
+        if auto is not None:
+            out.append(f"friction: the {auto.model} model by default: {auto.why}")
         for outcome in self._friction.values():
             out.extend(f"friction ({outcome.model}): {n}" for n in outcome.notes)
-        return out
+        return list(dict.fromkeys(out))  # the default's outcome repeats the chosen model's notes
 
     def _free_tilt(self, case: int) -> str | None:
         res, free = self.statics, self.setup.free
@@ -392,6 +410,8 @@ class Analysis(AnalysisOutput):
 
             notes.extend(mounting_warnings(self, c))
             notes.extend(operating_warnings(self, c))
+            if self.limits is not None:
+                notes.extend(self.limits.warnings(c))
             out.append(list(dict.fromkeys(notes)))
         return out
 
@@ -442,7 +462,7 @@ def analyze(
     lubricant=None,
     contamination=None,
     reliability=0.9,
-    friction_model: str = "components",
+    friction_model: str = "auto",
     load_ratings=None,
     friction_options=None,
     thermal=None,
@@ -473,7 +493,9 @@ def analyze(
     reliability : float or str
         Reliability of L_nr, 0.9 … 0.9995.
     friction_model : str
-        ``"components"``, ``"skf"`` or ``"palmgren"`` (:data:`FRICTION_MODELS`).
+        ``"auto"`` (default: the model of the bearing's kind, see
+        :func:`bearingkit.pipeline.friction.choice.choose`), ``"components"``, ``"skf"``, ``"palmgren"``
+        … (:data:`FRICTION_MODELS`).
     load_ratings : dict, optional
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
@@ -513,6 +535,9 @@ def analyze(
         reliability=reliability,
     )
     _check_lubricant_range(bearing, operating)
+    from bearingkit.pipeline.friction.choice import check_inputs
+
+    check_inputs(bearing)
     out = Analysis(
         bearing,
         operating,

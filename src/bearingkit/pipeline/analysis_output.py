@@ -37,13 +37,14 @@ class AnalysisOutput:
 
         b, res = self.input, self.statics
         cases = []
-        from bearingkit.pipeline.operating_output import row_speed_dicts
+        from bearingkit.pipeline.operating_output import rest_speed_dicts, row_speed_dicts
 
         preload = self.preload
         for i in range(self.n_cases):
             d = case_dict(b, res, i)
             for row, state in zip(d["rows"], res.rows, strict=True):
                 row.update(row_speed_dicts(state, i))
+                row.update(rest_speed_dicts(row))  # the same keys at every speed
                 if preload is not None:
                     row["preload_N"] = preload[row["name"]]
             if self.clearance is not None:
@@ -53,6 +54,7 @@ class AnalysisOutput:
             if self.thermal is not None:
                 d["thermal"] = self.thermal.to_dict(i)
             d["warnings"] = self.warnings[i]
+            d["limits"] = None if self.limits is None else self.limits.to_dict(i)
             cases.append(d)
         # the DOFs the statics were solved with (the default fixed tilt of a single row included)
         free_used = self.setup.free
@@ -81,6 +83,7 @@ class AnalysisOutput:
                     }
             if self.lubrication is not None:
                 d["lubrication"] = self.lubrication.to_dict(i)
+            d["limits"] = None if self.limits is None else self.limits.to_dict(i)
             d["warnings"] = list(dict.fromkeys([*self.warnings[i], *d.get("warnings", [])]))
             cases.append(d)
         out = {**self._header(), "cases": cases, "notes": self.notes}
@@ -98,8 +101,15 @@ class AnalysisOutput:
             if self.thermal is not None:
                 d["thermal"] = self.thermal.to_dict(i)
             d["warnings"] = self.warnings[i]
+            d["limits"] = None if self.limits is None else self.limits.to_dict(i)
             cases.append(d)
-        return {**self._header(), "friction_model": outcome.model, "cases": cases, "notes": self.notes}
+        return {
+            **self._header(),
+            "friction_model": outcome.model,
+            "friction_model_why": outcome.why,
+            "cases": cases,
+            "notes": self.notes,
+        }
 
     def friction_comparison(self) -> dict:
         """Every friction model that applies, side by side, with when each applies
@@ -158,10 +168,20 @@ class AnalysisOutput:
         return out
 
     def to_pandas(self):
-        """One line per case: operating point, displacement, per-row max load and pressure, lives, torque."""
+        """One line per case with every headline quantity (SI, units in the column names).
+
+        Operating point, displacement, convergence; per row the largest element load, contact pressure,
+        loaded elements and operating clearance (the fits' chain where the file has fits, else the
+        model's); both lives — ISO 281 (``L10_iso281_rev``, ``L10h_iso281_h``, ``Lnm_iso281_rev``,
+        ``Lnm_iso281_h``, ``a_ISO_iso281``) and ISO/TS 16281 (``L10r_rev``, ``L10r_h``, ``Lnmr_rev``,
+        ``Lnmr_h``, ``a_ISO``) —, κ (the smallest over the rows), s0, p_max, the friction torque and power
+        with the model's name, the stiffness diagonal, the speed and load limits with their flags and the
+        number of warnings. A value a part cannot give (no speed, no lubricant, no rating) is NaN.
+        """
         import pandas as pd
 
-        res = self.statics
+        res, n = self.statics, self.n_cases
+        nan = np.full(n, np.nan)
         cols: dict[str, object] = {"case": self.case_names}
         cols["speed_rad_s"] = self.operating.speed
         cols["temperature_C"] = self.operating.temperature
@@ -169,15 +189,96 @@ class AnalysisOutput:
         for k, name in enumerate(("u_x_m", "u_y_m", "u_z_m", "theta_x_rad", "theta_y_rad")):
             cols[name] = res.displacement[:, k]
         cols["converged"] = np.asarray(res.converged, bool)
-        for row in res.rows:
+        clearance = self.clearance
+        for row, model_row in zip(res.rows, res.model.rows, strict=True):
             cols[f"{row.name}_max_load_N"] = row.max_load
             cols[f"{row.name}_max_pressure_Pa"] = row.max_pressure.max(axis=-1)
             cols[f"{row.name}_loaded_count"] = row.loaded_count
-        if self.rating is not None:
-            cols["L10r_rev"] = np.ma.filled(self.rating.life.astype(float), np.nan)
-            cols["static_safety"] = np.ma.filled(self.rating.static_safety.astype(float), np.nan)
-        if self.friction is not None:
-            cols["friction_torque_Nm"] = self.friction.total
-            cols["power_loss_W"] = self.friction.power_loss
+            if clearance is not None and row.name in clearance.operating:
+                cols[f"{row.name}_operating_clearance_m"] = np.broadcast_to(
+                    clearance.operating[row.name], (n,)
+                )
+            elif getattr(model_row, "clearance", None) is not None:
+                cols[f"{row.name}_operating_clearance_m"] = np.broadcast_to(np.max(model_row.clearance), (n,))
+        cols["p_max_Pa"] = np.max([r.max_pressure.max(axis=-1) for r in res.rows], axis=0)
+        cols.update(_life_columns(self, nan))
+        cols.update(_friction_columns(self, nan))
+        for k, name in enumerate(DIAGONAL_NAMES):
+            cols[name] = res.stiffness[:, k, k]
+        cols.update(_limit_columns(self, nan))
         cols["warnings"] = [len(w) for w in self.warnings]
         return pd.DataFrame(cols)
+
+
+#: Column names of the stiffness diagonal in :meth:`AnalysisOutput.to_pandas` (the studies' names).
+DIAGONAL_NAMES = (
+    "k_xx_N_per_m",
+    "k_yy_N_per_m",
+    "k_zz_N_per_m",
+    "k_thx_thx_Nm_per_rad",
+    "k_thy_thy_Nm_per_rad",
+)
+#: ``to_pandas`` column → key of the rating's ``system`` dict (lives of both methods).
+_SYSTEM_LIVES = {
+    "L10_iso281_rev": "L10_iso281_rev",
+    "L10h_iso281_h": "L10h_iso281_h",
+    "Lnm_iso281_rev": "Lnm_iso281_rev",
+    "Lnm_iso281_h": "Lnm_iso281_h",
+    "a_ISO_iso281": "a_ISO_iso281",
+    "L10r_rev": "L10r_rev",
+    "L10r_h": "L10h_h",
+    "Lnmr_rev": "Lnmr_rev",
+    "Lnmr_h": "Lnmr_h",
+    "static_safety": "static_safety",
+}
+
+
+def _number(value) -> float:
+    return np.nan if value is None else float(value)
+
+
+def _life_columns(a, nan) -> dict:
+    """Lives of both methods, a_ISO, κ and s0 per case (NaN where not rated)."""
+    out = {name: nan.copy() for name in _SYSTEM_LIVES}
+    out["a_ISO"], out["kappa"] = nan.copy(), nan.copy()
+    if a.rating is not None:
+        for i in range(a.n_cases):
+            d = a.rating.to_dict(i)
+            for name, key in _SYSTEM_LIVES.items():
+                out[name][i] = _number(d["system"].get(key))
+            a_iso = [r.get("a_ISO") for r in d["rows"] if r.get("a_ISO") is not None]
+            out["a_ISO"][i] = min(a_iso) if a_iso else np.nan
+    lub = a.lubrication
+    if lub is not None and lub.result.kappa:
+        out["kappa"] = np.min([np.asarray(v, float) for v in lub.result.kappa.values()], axis=0)
+    return out
+
+
+def _friction_columns(a, nan) -> dict:
+    f = a.friction
+    if f is None:  # not computed (the notes say why): the model it would be
+        from bearingkit.pipeline.friction.choice import AUTO, choose
+
+        model = choose(a)[0] if a.friction_model == AUTO else a.friction_model
+        return {"friction_model": [model] * a.n_cases, "friction_torque_Nm": nan, "power_loss_W": nan}
+    return {
+        "friction_model": [f.model] * a.n_cases,
+        "friction_torque_Nm": np.asarray(f.total, float),
+        "power_loss_W": np.asarray(f.power_loss, float),
+    }
+
+
+def _limit_columns(a, nan) -> dict:
+    lim = a.limits
+    names = ("above_limiting_speed", "above_reference_speed", "seal_lip_speed_exceeded", "below_minimum_load")
+    if lim is None:
+        out = {"limiting_speed_rad_s": nan, "minimum_load_N": nan}
+        out.update({k: [False] * a.n_cases for k in names})
+        return out
+    flags = [lim.flags(i) for i in range(a.n_cases)]
+    out = {
+        "limiting_speed_rad_s": np.full(a.n_cases, lim.limiting_speed),
+        "minimum_load_N": nan if lim.minimum_load is None else lim.minimum_load,
+    }
+    out.update({k: [f[k] for f in flags] for k in names})
+    return out

@@ -21,6 +21,7 @@ __all__ = [
     "operating_warnings",
     "preload_state",
     "resolve_contamination",
+    "rest_speed_dicts",
     "row_speed_dicts",
 ]
 
@@ -217,6 +218,49 @@ def lubrication(analysis):
     return LubricationOutcome(
         res, op.contamination, getattr(analysis, "contamination_level", None), grease, analysis.rating, notes
     )
+
+
+#: Keys of the speed results of a row, by row kind: every case dict has them, at any speed
+#: (:func:`rest_speed_dicts` gives their values where the statics were solved without element inertia).
+SPEED_KEYS = {
+    "ball": (
+        "contact_angle_inner_rad",
+        "contact_angle_outer_rad",
+        "loads_inner_N",
+        "loads_outer_N",
+        "centrifugal_force_N",
+        "gyroscopic_moment_Nm",
+        "spin_to_roll_inner",
+        "spin_to_roll_outer",
+        "attitude_angle_rad",
+        "cage_speed_rad_s",
+        "ball_spin_speed_rad_s",
+    ),
+    "cylindrical": ("loads_inner_N", "loads_outer_N", "centrifugal_force_N", "cage_speed_rad_s"),
+}
+
+
+def rest_speed_dicts(row: dict) -> dict:
+    """The speed keys of :data:`SPEED_KEYS` a row dict lacks (solved at rest, or without speed effects),
+    with the values of a solve without element inertia: contact angles and loads of the statics (inner =
+    outer), zero centrifugal force and gyroscopic moment, and None for what such a solve does not give
+    (spin-to-roll ratios, cage and ball spin speed)."""
+    keys = SPEED_KEYS.get(row.get("kind"), ())
+    zeros = [0.0] * len(row.get("loads_N", ()))
+    rest = {
+        "contact_angle_inner_rad": row.get("contact_angle_rad"),
+        "contact_angle_outer_rad": row.get("contact_angle_rad"),
+        "loads_inner_N": row.get("loads_N"),
+        "loads_outer_N": row.get("loads_N"),
+        "centrifugal_force_N": zeros,
+        "gyroscopic_moment_Nm": zeros,
+        "spin_to_roll_inner": None,
+        "spin_to_roll_outer": None,
+        "attitude_angle_rad": zeros,
+        "cage_speed_rad_s": None,
+        "ball_spin_speed_rad_s": None,
+    }
+    return {k: rest[k] for k in keys if k not in row}
 
 
 def row_speed_dicts(state, case: int) -> dict:

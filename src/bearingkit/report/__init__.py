@@ -70,48 +70,66 @@ _COMPONENT_KINDS = {"ball", "cylindrical", "tapered"}
 
 @dataclasses.dataclass(frozen=True)
 class WholeBearingFriction:
-    """A catalogue model's friction (SKF, Palmgren …) in the shape the report draws: one "row", the whole
-    bearing, and no split between the rings (torques in N·m, arrays (C,))."""
+    """The friction the report draws (torques in N·m, power in W, arrays (C,)): a catalogue model's is
+    one "row", the whole bearing, with no split between the rings; the component model's has its rows
+    and the torque on each ring."""
 
     total: np.ndarray
     components: dict
     by_row: dict
     references: tuple
     model: str = ""
-    torque_inner: None = None
-    torque_outer: None = None
+    torque_inner: np.ndarray | None = None
+    torque_outer: np.ndarray | None = None
+    power_loss: np.ndarray | None = None
+    why: str = ""
+
+
+def _shown(outcome) -> WholeBearingFriction:
+    native = outcome.native
+    if hasattr(native, "by_row"):
+        by_row, inner, outer = dict(native.by_row), native.torque_inner, native.torque_outer
+    else:
+        by_row, inner, outer = {"whole bearing": outcome.total}, None, None
+    return WholeBearingFriction(
+        outcome.total,
+        dict(outcome.components),
+        by_row,
+        tuple(outcome.references),
+        outcome.model,
+        inner,
+        outer,
+        outcome.power_loss,
+        outcome.why,
+    )
 
 
 def _report_friction(analysis):
-    """The friction the report shows, and a run note: the analysis's model; when that is the component
-    model and it does not cover the bearing (a spherical roller, self-aligning ball or needle row), the
-    first catalogue model that applies, for the whole bearing."""
+    """The friction the report shows, and a run note: the analysis's model (by default the model of the
+    bearing's kind, :func:`bearingkit.pipeline.friction.choice.choose`); when the component model was asked
+    for and does not cover the bearing (a spherical roller, self-aligning ball or needle row), the first
+    catalogue model that applies, for the whole bearing."""
     friction = analysis.friction
-    if friction is not None and hasattr(friction.native, "by_row"):
-        return friction.native, []
+    if friction is not None:
+        return _shown(friction), []
     kinds = {r.kind for r in analysis.input.model.rows}
-    if friction is None and (analysis.friction_model != "components" or kinds <= _COMPONENT_KINDS):
-        return None, []  # the component model covers the rows: its note says why it was not computed
+    if analysis.friction_model != "components" or kinds <= _COMPONENT_KINDS:
+        return None, []  # the model's note says why it was not computed
     from bearingkit.pipeline import FRICTION_MODELS
 
-    models = [friction.model] if friction is not None else ["skf", "palmgren"]
-    if friction is None and analysis.input.bearing_type.startswith("slewing_ring"):
+    models = ["skf", "palmgren"]
+    if analysis.input.bearing_type.startswith("slewing_ring"):
         models = ["slewing"]  # the makers' formula is meant for slewing rings only
     for model in (m for m in models if m in FRICTION_MODELS):
         try:
             out = analysis.friction_by(model)
         except InputError:
             continue
-        shown = WholeBearingFriction(
-            out.total, dict(out.components), {"whole bearing": out.total}, tuple(out.references), model
-        )
-        if friction is not None:
-            return shown, []
         note = (
             f"friction: the component model does not apply here (its note says why); the report shows the "
             f"{model} catalogue model of the whole bearing"
         )
-        return shown, [note]
+        return _shown(out), [note]
     return None, []
 
 

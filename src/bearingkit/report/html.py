@@ -80,6 +80,28 @@ def _row_table(data: dict) -> str:
     return _table(headers, rows, left=2, cls="rows")
 
 
+def _load_html(result, case: int) -> str:
+    """The applied load; at a fixed DOF (e.g. the tilt of a single bearing) the solve's load is the
+    reaction that holds the ring, listed apart: it is not a load the user applied."""
+    free = np.asarray(getattr(result, "free", np.ones(5, bool)), bool)
+    load = result.load[case]
+    applied = [
+        fmt(v, 5, k, FORCE_NOISE) if f else "held"
+        for v, f, (_, _, _, k) in zip(load, free, LOAD_DISPLAY, strict=True)
+    ]
+    out = _table([f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY], [applied], left=0)
+    if not free.all():
+        held = [i for i in range(5) if not free[i]]
+        out += "<p>Reaction at the fixed DOFs (what holds the inner ring there; not an applied load):</p>"
+        out += _table(
+            [f"{LOAD_DISPLAY[i][0]} [{LOAD_DISPLAY[i][2]}]" for i in held],
+            [[fmt(load[i], 5, LOAD_DISPLAY[i][3], FORCE_NOISE) for i in held]],
+            left=0,
+            cls="fixed-dof-reactions",
+        )
+    return out
+
+
 def _friction_html(friction, case: int, n: int) -> str:
     total = float(friction.total[case])
     comp = [
@@ -90,16 +112,21 @@ def _friction_html(friction, case: int, n: int) -> str:
         [_e(k), fmt(v[case], 5), fmt(v[case] / total * 100 if total else 0.0, 3)]
         for k, v in friction.by_row.items()
     ]
+    model = _e(getattr(friction, "model", "") or "components")
+    power = getattr(friction, "power_loss", None)
+    shown_power = "" if power is None else f", power loss P = <b>{fmt(float(power[case]), 4)} W</b>"
     if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
-        split = f" ({_e(friction.model)} catalogue model of the whole bearing; no split between the rings)."
+        split = f" ({model} catalogue model of the whole bearing; no split between the rings)."
     else:
         split = (
             f"; on the inner ring {fmt(friction.torque_inner[case], 5)} N·m, on the outer ring "
             f"{fmt(friction.torque_outer[case], 5)} N·m (about +z)."
         )
+    why = getattr(friction, "why", "")
+    chosen = f'<p class="sub">Friction model: {model} — {_e(why)}.</p>' if why else ""
     return (
-        f"<h4>{n}. Friction torque</h4>"
-        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{split}</p>"
+        f"<h4>{n}. Friction torque and power loss</h4>"
+        f"<p>Total M = <b>{fmt(total, 5)} N·m</b>{shown_power}{split}</p>{chosen}"
         + _table(["component", "M [N·m]", "share [%]"], comp)
         + _table(["row", "M [N·m]", "share [%]"], rows)
         + _figure_html(
@@ -202,18 +229,7 @@ def _case_html(
         f"{float(result.residual_norm[case]):.2e} (relative to the load scale){reason}</p>"
     )
     parts.append(f"<h4>{num}.1. Load and displacement of the inner ring</h4>")
-    parts.append(
-        _table(
-            [f"{n} [{d}]" for n, _, d, _ in LOAD_DISPLAY],
-            [
-                [
-                    fmt(v, 5, k, FORCE_NOISE)
-                    for v, (_, _, _, k) in zip(result.load[case], LOAD_DISPLAY, strict=True)
-                ]
-            ],
-            left=0,
-        )
-    )
+    parts.append(_load_html(result, case))
     parts.append(
         _table(
             [f"{n} [{u}]" for n, u, _ in DISPLACEMENT_DISPLAY],
@@ -291,6 +307,7 @@ def _summary_html(bearing, result, friction, rating, warnings) -> str:
         "max p_max [MPa]",
         "min s0 [-]",
         "friction [N·m]",
+        "power loss [W]",
         "system L10r [rev]",
         "warnings",
     ]
@@ -305,6 +322,9 @@ def _summary_html(bearing, result, friction, rating, warnings) -> str:
                 fmt(p_max, 5, 1e-6),
                 "—" if rating is None else fmt(rating.static_safety[c], 4),
                 "—" if friction is None else fmt(friction.total[c], 5),
+                "—"
+                if getattr(friction, "power_loss", None) is None
+                else fmt(float(friction.power_loss[c]), 4),
                 "—" if rating is None else fmt(rating.life[c], 4),
                 str(n_warn),
             ]

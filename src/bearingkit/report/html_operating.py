@@ -55,7 +55,7 @@ def operating_html(case: dict, lubrication: dict | None, number: str) -> str:
     parts = []
     if "thermal" in case:
         parts.append(thermal_html(case["thermal"]))
-    speed_rows = [r for r in case["rows"] if "centrifugal_force_N" in r]
+    speed_rows = [r for r in case["rows"] if r.get("cage_speed_rad_s")]  # turning (the keys exist at rest)
     if speed_rows:
         rows = [
             [
@@ -142,6 +142,51 @@ def operating_html(case: dict, lubrication: dict | None, number: str) -> str:
             f"e_C = {e_c}; modified life L_nm = {life}{hours}{grease}.</p>"
             + _table(["row", "ν1 [mm²/s]", "κ", "a_ISO", "min Λ"], rows, left=1, cls="lubrication")
         )
+    lim = case.get("limits")
+    if lim:
+        parts.append(_limits_html(lim))
     if not parts:
         return ""
     return f"<h4>{number}. Operating conditions</h4>" + "".join(parts)
+
+
+def _limits_html(lim: dict) -> str:
+    """Speed and load limits of one case (``limits`` of the case dict), each beside what it limits."""
+    ref = lim["thermal_reference_speed_rad_s"]
+    flags = lim["flags"]
+
+    def mark(key: str) -> str:
+        return " ⚠" if flags[key] else ""
+
+    rows = [
+        [
+            "limiting speed [r/min]",
+            fmt(lim["limiting_speed_rad_s"], 4, RPM) + mark("above_limiting_speed"),
+            _e(f"{lim['lubrication'].replace('_', ' ')}; {lim['limiting_speed_source']}"),
+        ],
+        [
+            "thermal reference speed [r/min]",
+            ("—" if ref is None else fmt(ref, 4, RPM)) + mark("above_reference_speed"),
+            _e(lim["thermal_reference_speed_note"] or "ISO 15312 reference conditions, SKF friction model"),
+        ],
+    ]
+    if lim["seal"] is not None:
+        rows.append(
+            [
+                f"seal {_e(lim['seal'])} lip speed [m/s]",
+                fmt(lim["seal_lip_speed_m_s"], 3) + mark("seal_lip_speed_exceeded"),
+                f"limit {lim['seal_lip_speed_limit_m_s']:g} m/s (rubbing NBR lip)",
+            ]
+        )
+    if lim["minimum_load_N"] is not None:
+        rows.append(
+            [
+                "minimum load [N]",
+                fmt(lim["minimum_load_N"], 4) + mark("below_minimum_load"),
+                _e(f"{lim['minimum_load_rule']}; carried {lim['load_compared_N']:.4g} N"),
+            ]
+        )
+    return (
+        f"<p>Speed and load limits (n·d_m = {lim['n_dm_mm_rpm']:.3g} mm·r/min; ⚠ = exceeded, see the "
+        "warnings):</p>" + _table(["limit", "value", "source"], rows, left=1, cls="limits")
+    )

@@ -168,7 +168,8 @@ class ShaftAnalysis:
     result : ShaftResult, optional
         Its solution (default: solved here).
     friction_model : str
-        A key of :data:`bearingkit.pipeline.FRICTION_MODELS` (default the component model).
+        A key of :data:`bearingkit.pipeline.FRICTION_MODELS` (default ``"auto"``: each bearing the model
+        of its kind, :func:`bearingkit.pipeline.friction.choice.choose`).
     contamination : float or str, optional
         ISO 281 e_C (or a level name) for every bearing, replacing the files' ``[lubrication]``.
     reliability : float
@@ -176,7 +177,7 @@ class ShaftAnalysis:
     """
 
     def __init__(
-        self, shaft_input, result=None, *, friction_model="components", contamination=None, reliability=0.9
+        self, shaft_input, result=None, *, friction_model="auto", contamination=None, reliability=0.9
     ):
         self.input = shaft_input
         self._result = result

@@ -139,9 +139,14 @@ def test_one_seal_is_half_of_two():
     assert one["seal_Nm"] == pytest.approx(0.5 * two["seal_Nm"]) and two["seal_Nm"] > 0
 
 
-def test_drag_needs_vm_and_vanishes_at_rest():
-    with pytest.raises(InputError, match="drag_loss_factor"):
-        _dgbb(lubrication="oil_bath", oil_level=0.02)
+def test_drag_without_vm_uses_the_approximation_and_vanishes_at_rest():
+    from bearingkit.physics.friction.skf_drag import drag_loss_factor
+
+    approx = _dgbb(lubrication="oil_bath", oil_level=0.02)
+    d_m = 0.5 * (0.040 + 0.080)  # the bearing of _dgbb
+    given = _dgbb(lubrication="oil_bath", oil_level=0.02, drag_loss_factor=drag_loss_factor(0.02, d_m, False))
+    assert np.all(approx["drag_Nm"] > 0)
+    np.testing.assert_allclose(approx["drag_Nm"], given["drag_Nm"], rtol=1e-12)
     r = _dgbb(lubrication="oil_bath", oil_level=0.02, drag_loss_factor=1e-4, speed=0.0)
     assert r["drag_Nm"] == 0.0
 

@@ -122,7 +122,7 @@ def _tag_notes(model: str, bearing_type: str, series: str | None) -> tuple[str, 
             notes.append(
                 f"SKF constants of series {c['series']} used (the first of {bearing_type}'s series "
                 f"{', '.join(skf_terms.series_keys(bearing_type))}; "
-                "engineering_friction_torque(..., series=…) selects another; a file cannot yet)"
+                "engineering_friction_torque(..., series=…) or a file's [bearing] series selects another)"
             )
         return tuple(notes)
     if bearing_type in ("spherical_roller", "needle_roller"):

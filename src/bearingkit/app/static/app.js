@@ -425,8 +425,10 @@ function renderFriction(c) {
   }
   const comp = Object.entries(f.components_Nm || {}).map(([k, v]) => [k, v * 1e3]);
   const rows = Object.entries(f.rows_Nm || {}).map(([k, v]) => [k, v * 1e3]);
+  const why = f.model_why ? ` — ${f.model_why}` : "";
   box.replaceChildren(
     el("p", {}, `M = ${fmt(f.total_Nm * 1e3, 5)} N·mm, power loss ${fmt(f.power_loss_W, 4)} W`),
+    el("p", { class: "muted" }, `model: ${f.model || "components"}${why}`),
     bars(comp, "N·mm", "by component"),
     rows.length ? bars(rows, "N·mm", "by row") : "",
   );

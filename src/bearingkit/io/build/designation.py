@@ -7,6 +7,8 @@ strings with units so that the schema validates it exactly as if it had been typ
 
 from __future__ import annotations
 
+import math
+
 from bearingkit.errors import InputError
 from bearingkit.io import schema
 
@@ -15,13 +17,22 @@ from bearingkit.io import schema
 _CATALOGUE_ANGLES = ("contact_angle", "contact_angle_outer", "contact_angle_inner", "roller_angle")
 
 
+#: Significant digits of an estimated value written back as text: far below any tolerance of the estimate
+#: (its rules are good to a few per cent), far above the float round-off that would otherwise show as
+#: ``0.015499999999999998 m`` in the inputs a user reads.
+SHOWN_DIGITS = 12
+
+
 def _catalogue_value(key: str, value):
-    """A catalogue geometry value (SI) written as the input format expects it (string with unit)."""
+    """A catalogue geometry value (SI) written as the input format expects it (string with unit), rounded
+    to :data:`SHOWN_DIGITS` significant digits; angles in degrees (``"40 deg"``, not ``0.6981… rad``)."""
     if isinstance(value, (dict, str, int, bool)):
         return value
     if key.startswith(("conformity", "osculation")):
-        return float(value)
-    return f"{float(value)!r} {'rad' if key in _CATALOGUE_ANGLES else 'm'}"
+        return float(f"{float(value):.{SHOWN_DIGITS}g}")
+    if key in _CATALOGUE_ANGLES:
+        return f"{float(value) * 180.0 / math.pi:.{SHOWN_DIGITS}g} deg"
+    return f"{float(value):.{SHOWN_DIGITS}g} m"
 
 
 def from_designation(source: str, spec: schema.BearingFile) -> schema.BearingFile:

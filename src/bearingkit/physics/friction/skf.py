@@ -25,10 +25,11 @@ constants per series are data (``data/skf_friction_constants.csv``, K_Z/K_L in `
 seal constants in ``skf_seal_constants.csv``), each row tagged with how far it was verified.
 
 Drag losses (oil bath). SKF gives the drag loss factor V_M **only as a diagram** (V_M versus H/d_m, one
-curve for ball and one for roller bearings). bearingkit does not digitise it: the first drag term
-needs ``drag_loss_factor`` (V_M read from the SKF diagram by the user); without it an oil level raises
-InputError. The second (viscous) term is fully analytical and always evaluated when an oil level is
-given. ``oil_level=None`` means a low-level bath, jet, oil–air or grease: no drag term.
+curve for ball and one for roller bearings). bearingkit does not digitise it: ``drag_loss_factor`` takes
+V_M read from the SKF diagram; without it, V_M is approximated from the immersion geometry
+(:func:`bearingkit.physics.friction.skf_drag.drag_loss_factor`, stated there with its sources). The
+second (viscous) term is fully analytical and always evaluated when an oil level is given.
+``oil_level=None`` means a low-level bath, jet, oil–air or grease: no drag term.
 
 Zero speed: M_rr = 0, M_drag = 0, φ_bl = 1 so M_sl = G_sl μ_bl (the load-dependent part), plus the
 speed-independent seal moment when seals are fitted (SKF's seal formula has no speed term).
@@ -40,6 +41,7 @@ import numpy as np
 
 from bearingkit import checks, references
 from bearingkit.errors import InputError
+from bearingkit.physics.friction import skf_drag
 from bearingkit.physics.friction.skf_terms import (
     _ROLLER_TYPES,
     _THRUST_TYPES,
@@ -144,7 +146,8 @@ def skf_friction_moment(
     oil_level : array_like or None
         Oil bath level H [m] (None = no drag term).
     drag_loss_factor : array_like or None
-        V_M [-] read from the SKF diagram (required when ``oil_level`` > 0).
+        V_M [-] read from the SKF diagram; None = approximated
+        (:func:`bearingkit.physics.friction.skf_drag.drag_loss_factor`).
     width : array_like or None
         Bearing width B [m] (roller drag).
     n_rows : int
@@ -216,6 +219,9 @@ def skf_friction_moment(
                 f"oil_level ({oil_level!r} m) applies to lubrication 'oil_bath', not {lubrication!r}"
             )
         roller = bearing_type in _ROLLER_TYPES
+        if drag_loss_factor is None:
+            d_m = 0.5 * (np.asarray(bore_diameter, float) + np.asarray(outside_diameter, float))
+            drag_loss_factor = skf_drag.drag_loss_factor(oil_level, d_m, roller)
         b_mm = (
             None if width is None else np.asarray(checks.positive("width", width, "m"), dtype=float) * M_TO_MM
         )

@@ -8,8 +8,13 @@ SI units: torques in N·m, speeds in rad/s, power in W, temperatures in °C. Eac
   rolling, ball spin, cage; Tian et al. 2025 §4, :mod:`bearingkit.analysis.friction.components`) from the
   solved
   contact loads: per row and per element, for ball and cylindrical rows;
-- ``"skf"`` — the SKF four-component catalogue model from F_r, F_a (single-row standard bearings);
-- ``"palmgren"`` — Palmgren's M0 + M1 (single-row standard bearings).
+- ``"skf"`` — the SKF four-component catalogue model from F_r, F_a (single standard bearings), with the
+  seals, the drag and the series constants of the bearing
+  (:func:`bearingkit.pipeline.friction.choice.skf_inputs`);
+- ``"palmgren"`` — Palmgren's M0 + M1 (single-row standard bearings);
+- ``"auto"`` — the default: the model :func:`bearingkit.pipeline.friction.choice.choose` picks for the
+  bearing (SKF for standard bearings, the makers' formula for slewing rings, the component model for the
+  seed composites and wherever SKF has no constants), with the reason in ``why``.
 
 New models (another row kind, a paper's model) are added with :func:`register_friction_model`.
 Power loss P = M |ω| [W].
@@ -48,6 +53,8 @@ class FrictionOutcome:
     notes : list of str
         Assumptions and limits, shown by every face.
     references : tuple of str
+    why : str
+        Why this model (the default's reason; ``"asked for"`` when named by the user).
     """
 
     model: str
@@ -58,6 +65,7 @@ class FrictionOutcome:
     native: object = None
     notes: list = field(default_factory=list)
     references: tuple = ()
+    why: str = "asked for"
 
 
 def _components(analysis) -> FrictionOutcome:
@@ -86,6 +94,7 @@ def _components(analysis) -> FrictionOutcome:
         parts.append((mask, fr))
         for i in np.flatnonzero(mask):
             dicts[i] = friction_case_dict(bearing.cases[i].name, op, fr, int(i))
+            dicts[i]["friction"] = {"model": "components", **dicts[i]["friction"]}
 
     first = parts[0][1]
 
@@ -131,9 +140,14 @@ def _engineering(model: str) -> Callable:
             )
         load = bearing.load_matrix()
         geometry = bearing.geometry.model_dump()
-        envelope = {}
+        envelope, used = {}, []
         if geometry.get("bore") is not None and geometry.get("outer_diameter") is not None:
             envelope = {"bore_diameter": geometry["bore"], "outside_diameter": geometry["outer_diameter"]}
+        if model == "skf":
+            from bearingkit.pipeline.friction.choice import skf_inputs
+
+            more, used = analysis._in_file(skf_inputs, analysis)
+            envelope.update(more)
         res = analysis._in_file(
             engineering_friction_torque,
             bearing.model,
@@ -153,11 +167,34 @@ def _engineering(model: str) -> Callable:
         comps = {
             k: np.broadcast_to(np.asarray(v, float), (op.n_cases,)).copy() for k, v in res.components.items()
         }
+        notes = list(dict.fromkeys([*used, *res.notes]))
+        for d in dicts:
+            d["friction"]["notes"] = notes
         return FrictionOutcome(
-            model, total, comps, total * op.abs_speed, dicts, res, list(res.notes), tuple(res.references)
+            model, total, comps, total * op.abs_speed, dicts, res, notes, tuple(res.references)
         )
 
     return run
+
+
+def _auto(analysis) -> FrictionOutcome:
+    """The default model of the bearing (:func:`bearingkit.pipeline.friction.choice.choose`); where the SKF
+    model was chosen and cannot run, the component model, with the reason."""
+    import dataclasses
+
+    from bearingkit.pipeline.friction.choice import choose
+
+    model, why = choose(analysis)
+    try:
+        out = analysis.friction_by(model)
+    except InputError as exc:
+        if model == "components":
+            raise
+        why = f"{why}; it does not apply here ({exc}), so the component model is used"
+        model = "components"
+        out = analysis.friction_by(model)
+    dicts = [{**d, "friction": {**d["friction"], "model_why": why}} for d in out.case_dicts]
+    return dataclasses.replace(out, case_dicts=dicts, why=why)
 
 
 #: Friction model name → ``run(analysis) -> FrictionOutcome`` (module docstring).
@@ -165,6 +202,7 @@ FRICTION_MODELS: dict[str, Callable] = {
     "components": _components,
     "skf": _engineering("skf"),
     "palmgren": _engineering("palmgren"),
+    "auto": _auto,
 }
 
 

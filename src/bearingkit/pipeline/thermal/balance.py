@@ -93,18 +93,11 @@ class ThermalSettings:
 
 
 def _width(analysis) -> float | None:
-    geometry = analysis.input.geometry.model_dump()
-    if geometry.get("width") is not None:
-        return float(geometry["width"])
-    designation = analysis.input.spec.bearing.designation
-    if designation is None:
-        return None
-    from bearingkit.catalogue import resolve
+    """B of the file's geometry, else of its catalogue row (its designation's, or the row with the same
+    d and D: :func:`bearingkit.pipeline.bearing_facts.bearing_facts`)."""
+    from bearingkit.pipeline.bearing_facts import bearing_facts
 
-    try:
-        return float(resolve(designation).estimate.entry.width)
-    except (InputError, AttributeError):
-        return None
+    return bearing_facts(analysis.input).width
 
 
 def reference_surface_of(analysis) -> float:
@@ -339,9 +332,11 @@ def with_thermal_equilibrium(analysis, given=None):
     def balance(temperature):
         sib = _at_temperature(analysis, temperature)
         try:
-            p = np.asarray(sib.friction_by(model).power_loss, dtype=float)
+            outcome = sib.friction_by(model)
         except InputError as exc:
             raise InputError(f"heat balance: friction ({model}) not computed: {exc}") from None
+        p = np.asarray(outcome.power_loss, dtype=float)
+        last["model"] = outcome.model  # "auto" resolves to the model of the bearing's kind
         out = dissipation.conducted_heat(settings.conductance, temperature, settings.ambient)
         oil = dissipation.oil_heat(
             settings.oil_flow, lube.density(temperature), lube.specific_heat, temperature, settings.oil_inlet
@@ -390,7 +385,7 @@ def with_thermal_equilibrium(analysis, given=None):
         oil=np.broadcast_to(np.asarray(last["oil"], float), (n,)).copy(),
         iterations=res.iterations,
         settings=settings,
-        model=model,
+        model=last["model"],
         notes=notes,
     )
     return final

@@ -184,7 +184,7 @@ class GenericModel:
             "rotating": settings.get("rotating", "inner"),
             "contamination": settings.get("contamination"),
             "reliability": settings.get("reliability", 0.9),
-            "friction_model": settings.get("friction_model", "components"),
+            "friction_model": settings.get("friction_model", "auto"),
         }
         step = max_cases(bearing.model)
         if duty:

@@ -22,7 +22,7 @@ A path names a field of the input file (docs/input-format.md):
 - ``operating.speed``, ``operating.temperature`` — the speed and temperature of the study's load case;
   ``operating.rotating`` (inner | outer), ``operating.reliability``, ``operating.contamination``
   (ISO 281 e_C, a number or a level name such as ``"normal_cleanliness"``),
-  ``operating.friction_model`` (components | skf | palmgren) — the analysis's settings;
+  ``operating.friction_model`` (auto | components | skf | palmgren) — the analysis's settings;
 - any field of the further sections a bearing file may have (their models in
   ``bearingkit.io.schema_operating.SECTION_MODELS`` when that module exists).
 
@@ -52,7 +52,7 @@ ANALYSIS_SETTINGS = {
     "rotating": ("text", ("inner", "outer"), "ring rotating relative to the load"),
     "reliability": ("dimensionless", (), "reliability of L_nr, 0.9 … 0.9995"),
     "contamination": ("dimensionless", (), "ISO 281 contamination factor e_C (gives a_ISO, L_nmr)"),
-    "friction_model": ("text", ("components", "skf", "palmgren"), "friction model of the analysis"),
+    "friction_model": ("text", ("auto", "components", "skf", "palmgren"), "friction model of the analysis"),
 }
 
 

@@ -567,6 +567,9 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
     items += _flags(bearing.model.rows)
     items += _warnings()
+    from bearingkit.studies.generic.limits import limit_quantities
+
+    items += limit_quantities(Quantity)  # speed and load limits (NaN where no catalogue rule covers it)
     items += _lubrication(rows) + _friction()  # NaN without a lubricant (a study may set lubricant.name)
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
