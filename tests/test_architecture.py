@@ -29,7 +29,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("analysis",),
     ("rows", "rings"),
     ("physics",),
-    ("materials", "lubricants"),
+    ("materials", "lubricants", "hardness"),
     ("units", "errors", "references", "checks", "data"),
 )
 

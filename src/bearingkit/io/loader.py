@@ -103,6 +103,8 @@ class BearingInput:
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
         The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
+    hardness : bearingkit.hardness.HardnessProfile
+        The raceways' hardness against depth (``[hardness]``, else the material's).
     tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
         The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     """
@@ -119,6 +121,7 @@ class BearingInput:
     sections: object = None
     duty_cycle: object = None
     tolerances: tuple = ()
+    hardness: object = None
 
     @property
     def bearing_type(self) -> str:
@@ -223,6 +226,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
     check_envelope(source, model, gdict)
     check_shoulders(source, model, gdict)
+    from bearingkit.io.schema_hardness import hardness_of
+
+    hardness = hardness_of(source, spec.hardness, material, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -254,6 +260,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         sections=sections,
         duty_cycle=duty,
         tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
+        hardness=hardness,
     )
 
 

@@ -246,3 +246,17 @@ def test_bad_input_one_line():
         sl.line_stresses(0.0, -0.1, 1.0, 1.0, NU)
     with pytest.raises(InputError, match="poisson_ratio"):
         ss.plane_stresses(0.0, 0.1, 1.0, 1.0, 1.0, 0.5)
+
+
+def test_frictionless_profiles_on_the_axis_hold_the_maxima_over_position():
+    """Line: the axis von Mises is the largest over x at every depth; point: off-axis values only near the
+    surface exceed the axis (≤ 0.035 p₀ for a circle), never the subsurface maximum."""
+    z = np.linspace(0.0, 4.0, 41)
+    vm_x, _ = sl.line_stresses_over_position(z, 1.0, 1.0, NU)
+    np.testing.assert_allclose(sl.line_depth_profile(z, 1.0, 1.0, NU).von_mises, vm_x, atol=1e-12)
+    axis = ss.depth_profile(z, 1.0, 1.0, 1.0, NU)
+    searched = ss.depth_profile(z, 1.0, 1.0, 1.0, NU, traction=1e-12)
+    assert np.max(searched.von_mises - axis.von_mises) < 0.036
+    assert searched.von_mises.max() == pytest.approx(axis.von_mises.max(), rel=1e-6)
+    deep = z >= 0.3
+    np.testing.assert_allclose(searched.von_mises[deep], axis.von_mises[deep], atol=1e-6)

@@ -354,7 +354,11 @@ def orthogonal_shear(y, depth, semi_major, semi_minor, max_pressure):
     )
     z = np.maximum(z, _Z_FLOOR * np.minimum(a, b))
     lam = _lambda_plane(y, z, b)
-    return -0.25 * a * b * p0 * z * _v_terms(y, z, a, b, lam)[4]
+    bl = b * b + lam
+    # V_yz = C g Q_y Q_z / Q_w (module docstring), without the R_D terms the other derivatives need
+    qw = (y / bl) ** 2 + (z / lam) ** 2
+    v_yz = 4.0 * y * z / (bl * lam * qw * np.sqrt((a * a + lam) * bl * lam))
+    return -0.25 * a * b * p0 * z * v_yz
 
 
 def orthogonal_shear_amplitude(depth, semi_major, semi_minor, max_pressure):
@@ -432,8 +436,10 @@ def tresca(sigma_x, sigma_y, sigma_z, tau_yz=0.0):
 def depth_profile(depth, semi_major, semi_minor, max_pressure, poisson_ratio, traction=0.0) -> DepthProfile:
     """Von Mises, Tresca and orthogonal-shear amplitude at each depth below an elliptical contact [Pa].
 
-    Without traction the von Mises and Tresca maxima over the rolling position lie on the axis
-    (:func:`axis_stresses`, closed form) and the orthogonal shear is :func:`orthogonal_shear_amplitude`.
+    Without traction the von Mises and Tresca stresses are those on the axis below the contact centre
+    (:func:`axis_stresses`, closed form), where their maxima over depth lie; closer to the surface than
+    ~0.3 b the contact's edge can exceed the axis value (by up to 0.035 p₀ for a circle, none for a long
+    ellipse), far below the subsurface maximum. The orthogonal shear is :func:`orthogonal_shear_amplitude`.
     With a traction μ ≠ 0 each depth is searched over y (:data:`TRACTION_SAMPLES` points of
     :func:`plane_stresses`, parabola-refined); the orthogonal shear is then half the range of τ_yz over y.
 

@@ -177,8 +177,10 @@ def line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction=0.
 def line_depth_profile(depth, half_width, max_pressure, poisson_ratio, traction=0.0) -> DepthProfile:
     """Von Mises, Tresca and orthogonal-shear amplitude at each depth below a line contact [Pa].
 
-    The maxima over the rolling position (:func:`line_stresses_over_position`) and half the range of τ_xz
-    (:func:`line_orthogonal_shear_amplitude`); the same fields as the point contact's
+    With traction the maxima over the rolling position (:func:`line_stresses_over_position`); without, the
+    axis values (the von Mises stress is largest there at every depth; the Tresca stress off the axis
+    exceeds it by at most 0.005 p₀ near the surface). The orthogonal shear is half the range of τ_xz
+    (:func:`line_orthogonal_shear_amplitude`). The same fields as the point contact's
     :func:`bearingkit.physics.contact.subsurface.depth_profile`.
 
     Parameters
@@ -190,5 +192,13 @@ def line_depth_profile(depth, half_width, max_pressure, poisson_ratio, traction=
     traction : array_like
         μ [-].
     """
+    ortho = line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction)
+    if np.all(np.asarray(traction) == 0.0):  # on the axis: the largest σ_vM over x at every depth (tests)
+        s = line_stresses(0.0, depth, half_width, max_pressure, poisson_ratio)
+        return DepthProfile(
+            von_mises(s.sigma_x, s.sigma_y, s.sigma_z, tau_xz=s.tau_xz),
+            tresca(s.sigma_y, s.sigma_x, s.sigma_z, s.tau_xz),
+            ortho,
+        )
     vm, tr = line_stresses_over_position(depth, half_width, max_pressure, poisson_ratio, traction)
-    return DepthProfile(vm, tr, line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction))
+    return DepthProfile(vm, tr, ortho)
