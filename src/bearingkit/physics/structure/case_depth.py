@@ -125,21 +125,22 @@ def required_case_depth(depth, von_mises, profile, target: float = 1.0):
     -------
     numpy.ndarray (...)
         d_c* [m]; 0 where the core alone reaches the target; +inf where even a case whose transition
-        starts below ``depth[..., -1]`` does not (the surface hardness is too low); NaN for a
-        through-hardened profile.
+        starts at ``depth[..., -1]`` does not (the surface hardness is too low for the stress there); NaN
+        for a through-hardened profile.
     """
     checks.positive("target", target)
     z, vm = np.broadcast_arrays(np.asarray(depth, float), np.asarray(von_mises, float))
     shape = z.shape[:-1]
     if profile.through_hardened:
         return np.full(shape, np.nan)
-    # d_c at which the transition starts at the deepest depth: the whole grid lies in the plateau
     frac = (
         profile.transition_width
         * (profile.surface_hardness - profile.limit)
         / (profile.surface_hardness - profile.core_hardness)
     )
-    hi = np.full(shape, z[..., -1].max() / (1.0 - frac) * 1.000001)
+    # d_c whose transition starts at the deepest depth: only that depth is checked (at the surface
+    # hardness); if it fails there, no case depth the grid can judge reaches the target
+    hi = np.broadcast_to(z[..., -1] * (1.0 - 1e-9) / (1.0 - frac), shape).copy()
     lo = np.full(shape, 1.0e-9)
     ok_hi = _case_min(z, vm, profile, hi)[1] >= target
     ok_lo = _case_min(z, vm, profile, lo)[1] >= target
