@@ -410,6 +410,13 @@ def principal_stresses(sigma_x, sigma_y, sigma_z, tau_yz=0.0):
     """Principal stresses σ₁ ≥ σ₂ ≥ σ₃ [Pa] (on a new last axis) of a state whose only shear is τ_yz.
 
     σ_x is principal; the (y, z) block has σ = (σ_y+σ_z)/2 ± √(((σ_y−σ_z)/2)² + τ_yz²).
+
+    Parameters
+    ----------
+    sigma_x, sigma_y, sigma_z : array_like
+        Normal stresses [Pa] (σ_x principal).
+    tau_yz : array_like
+        The only shear stress [Pa].
     """
     sx, sy, sz, t = np.broadcast_arrays(*(np.asarray(v, float) for v in (sigma_x, sigma_y, sigma_z, tau_yz)))
     mid, rad = 0.5 * (sy + sz), np.sqrt((0.5 * (sy - sz)) ** 2 + t * t)
@@ -421,6 +428,13 @@ def von_mises(sigma_x, sigma_y, sigma_z, tau_yz=0.0, tau_xz=0.0, tau_xy=0.0):
 
     .. math:: \\sigma_{vM} = \\sqrt{\\tfrac12[(\\sigma_x-\\sigma_y)^2 + (\\sigma_y-\\sigma_z)^2
               + (\\sigma_z-\\sigma_x)^2] + 3(\\tau_{yz}^2 + \\tau_{xz}^2 + \\tau_{xy}^2)}
+
+    Parameters
+    ----------
+    sigma_x, sigma_y, sigma_z : array_like
+        Normal stresses [Pa].
+    tau_yz, tau_xz, tau_xy : array_like
+        Shear stresses [Pa].
     """
     sx, sy, sz = (np.asarray(v, float) for v in (sigma_x, sigma_y, sigma_z))
     shear = np.asarray(tau_yz, float) ** 2 + np.asarray(tau_xz, float) ** 2 + np.asarray(tau_xy, float) ** 2
@@ -428,7 +442,15 @@ def von_mises(sigma_x, sigma_y, sigma_z, tau_yz=0.0, tau_xz=0.0, tau_xy=0.0):
 
 
 def tresca(sigma_x, sigma_y, sigma_z, tau_yz=0.0):
-    """Maximum shear stress (σ₁ − σ₃)/2 [Pa] (Tresca) of a state whose only shear is τ_yz."""
+    """Maximum shear stress (σ₁ − σ₃)/2 [Pa] (Tresca) of a state whose only shear is τ_yz.
+
+    Parameters
+    ----------
+    sigma_x, sigma_y, sigma_z : array_like
+        Normal stresses [Pa] (σ_x principal).
+    tau_yz : array_like
+        The only shear stress [Pa].
+    """
     p = principal_stresses(sigma_x, sigma_y, sigma_z, tau_yz)
     return 0.5 * (p[..., 0] - p[..., 2])
 

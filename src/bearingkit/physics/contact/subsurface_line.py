@@ -146,6 +146,13 @@ def line_stresses_over_position(depth, half_width, max_pressure, poisson_ratio, 
     Without traction both lie on the axis x = 0; with traction they move ahead and towards the surface, so
     every depth is searched over x (:data:`POSITION_SAMPLES` points, refined by a parabola).
 
+    Parameters
+    ----------
+    depth : array_like (..., N)
+        z ≥ 0 [m].
+    half_width, max_pressure, poisson_ratio, traction : array_like
+        b [m], p₀ [Pa], ν [-], μ [-] (as in :func:`line_stresses`), broadcasting with ``depth``.
+
     Returns
     -------
     (numpy.ndarray, numpy.ndarray)
@@ -166,6 +173,13 @@ def line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction=0.
     """Half the range of the orthogonal shear τ_xz over the rolling position at each depth [Pa].
 
     (max_x τ_xz − min_x τ_xz)/2: without traction max_x |τ_xz| (0.25 p₀ at z = 0.5 b, x = ±0.866 b).
+
+    Parameters
+    ----------
+    depth : array_like (..., N)
+        z ≥ 0 [m].
+    half_width, max_pressure, traction : array_like
+        b [m], p₀ [Pa], μ [-], broadcasting with ``depth``.
     """
     xs, z, b = _positions(depth, half_width)
     p0 = np.asarray(max_pressure, float)[..., None] if np.ndim(max_pressure) else max_pressure

@@ -192,7 +192,15 @@ def remaining_fraction(contact_angle, semi_major, groove_radius, edge_angle):
 
 
 def load_fraction(tau):
-    """F(τ) = (2 + 3τ − τ³)/4: the load of a semi-ellipsoidal pressure on the side x/a ≤ τ of a cut [-]."""
+    """F(τ) = (2 + 3τ − τ³)/4: the load of a semi-ellipsoidal pressure on the side x/a ≤ τ of a cut [-].
+
+    (∫ over the chord at x of √(1 − x² − y²) is π(1 − x²)/2; integrated from −1 to τ and divided by 2π/3.)
+
+    Parameters
+    ----------
+    tau : array_like
+        Position of the cut along the semi-major axis, x/a [-] (clipped to [−1, 1]).
+    """
     t = np.clip(np.asarray(tau, float), -1.0, 1.0)
     return (2.0 + 3.0 * t - t**3) / 4.0
 

@@ -16,6 +16,10 @@ core-strength checks of MESYS and NREL DG03 compare a shear stress with the core
 - **required case depth** d_c* for a target S_case: the profile is scaled in depth (its shape, hardness
   values and limit hardness kept) and d_c found by bisection (S_case grows with d_c: deeper cases hold a
   higher hardness at every depth).
+
+Sources: the strength from hardness of :mod:`bearingkit.hardness` (Pavlina & Van Tyne 2008); the
+alternative core checks of Harris, Rumbarger & Butterfield (2009, NREL DG03) are discussed in
+docs/subsurface.md.
 """
 
 from __future__ import annotations
