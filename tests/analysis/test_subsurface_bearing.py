@@ -224,3 +224,20 @@ def test_study_outputs():
     np.testing.assert_allclose(got["max_von_mises_Pa"], r.max_von_mises[0])
     np.testing.assert_allclose(got["case_safety"], r.case.case_safety)
     np.testing.assert_allclose(got["truncation_safety"], a.truncation.row("balls").safety)
+
+
+def test_roller_edge_peak_is_the_picked_slice(tmp_path):
+    """A straight roller (no crowning) tilted 1 mrad: the end slice carries the peak; the check takes it and
+    says so (an untilted straight roller's equal slices are no peak)."""
+    text = (EXAMPLES / "crb_nu209.toml").read_text().replace('profile = "iso16281"\n', "")
+    straight = tmp_path / "straight.toml"
+    straight.write_text(text)
+    tilted = tmp_path / "tilted.toml"
+    tilted.write_text(text + '\n[operating]\ntilt_y = "1 mrad"\n')
+    a = analyze(str(tilted), load={"F_x": "20 kN"})
+    r = a.subsurface.rows[0]
+    n_s = a.statics.model.rows[0].n_slices
+    assert bool(r.edge_slice[0]) and int(r.slice_index[0]) in (0, n_s - 1)
+    assert any("end slice (edge peak)" in n for n in a.notes)
+    flat = analyze(str(straight), load={"F_x": "20 kN"}).subsurface.rows[0]
+    assert not flat.edge_slice[0]

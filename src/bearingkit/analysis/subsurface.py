@@ -44,6 +44,12 @@ OUTPUT_STRIDE = 5
 DEPTH_SPAN = 6.0
 #: With a hardened layer the profile reaches CORE_MARGIN × the end of the transition zone into the core [-].
 CORE_MARGIN = 1.25
+#: Contacts whose profiles are computed at once (the orthogonal-shear and traction searches hold
+#: (contacts, depths, samples) arrays: 16 × 401 × 401 doubles ≈ 20 MB).
+CHUNK = 16
+#: An end slice is the roller's edge peak when its pressure exceeds its neighbour's by this factor [-]
+#: (equal pressures along a straight roller are no peak).
+EDGE_PEAK = 1.0001
 #: Raceway labels of the four contacts of a four-point ball (rows.four_point.CONTACTS order).
 _FOUR_POINT_SIDES = ("outer", "outer", "inner", "inner")
 
@@ -277,9 +283,17 @@ def _line_candidates(row, state):
         elems.append(np.repeat(np.arange(z), n_s))
         slices.append(np.tile(np.arange(n_s), z))
     n_s = state.extras[f"slice_pressure_{sides[0]}"].shape[-1]
-    sl = np.concatenate(slices)
-    edge = (sl == 0) | (sl == n_s - 1) if n_s > 1 else np.zeros(sl.shape, bool)
-    return np.concatenate(ps, 1), np.concatenate(bs, 1), np.array(sides), np.concatenate(elems), sl, edge
+    p = np.concatenate(ps, 1)
+    if n_s > 1:  # an end slice above its neighbour: the roller's edge peak
+        per = p.reshape(p.shape[0], -1, n_s)
+        first = per[..., 0] > EDGE_PEAK * per[..., 1]
+        last = per[..., -1] > EDGE_PEAK * per[..., -2]
+        edge = np.zeros(per.shape, bool)
+        edge[..., 0], edge[..., -1] = first, last
+        edge = edge.reshape(p.shape)
+    else:
+        edge = np.zeros(p.shape, bool)
+    return p, np.concatenate(bs, 1), np.array(sides), np.concatenate(elems), np.concatenate(slices), edge
 
 
 def _depths(b, profile):
@@ -291,17 +305,27 @@ def _depths(b, profile):
 
 
 def _profiles(contact, p, a, b, nu, traction, depth):
-    """DepthProfile (…, N) of the contacts (p, a, b broadcast (…, 1))."""
-    if contact == "point":
-        return point.depth_profile(depth, a[..., None], b[..., None], p[..., None], nu, traction)
-    return line.line_depth_profile(depth, b[..., None], p[..., None], nu, traction)
+    """DepthProfile (…, N) of the contacts (p, a, b (…)), :data:`CHUNK` contacts at a time."""
+    shape = depth.shape
+    flat = [np.broadcast_to(v, shape[:-1]).reshape(-1) for v in (p, a, b)]
+    z = depth.reshape(-1, shape[-1])
+    parts = []
+    for k in range(0, z.shape[0], CHUNK):
+        pk, ak, bk = (v[k : k + CHUNK, None] for v in flat)
+        if contact == "point":
+            parts.append(point.depth_profile(z[k : k + CHUNK], ak, bk, pk, nu, traction))
+        else:
+            parts.append(line.line_depth_profile(z[k : k + CHUNK], bk, pk, nu, traction))
+    return point.DepthProfile(
+        *(np.concatenate([getattr(q, f) for q in parts]).reshape(shape) for f in parts[0]._fields)
+    )
 
 
 def _row(row, state, profile, nu, traction, target, converged, every_contact):
     kind = "line" if any(k.startswith("slice_pressure_") for k in state.extras) else "point"
     if kind == "point":
         p, a, b, sides, elems = _point_candidates(state)
-        slices, edge = np.full(sides.shape, -1), np.zeros(sides.shape, bool)
+        slices, edge = np.full(sides.shape, -1), np.zeros(p.shape, bool)
     else:
         p, b, sides, elems, slices, edge = _line_candidates(row, state)
         a = np.full(p.shape, np.nan)
@@ -328,7 +352,7 @@ def _row(row, state, profile, nu, traction, target, converged, every_contact):
         raceway=[str(sides[t]) if ok else "" for t, ok in zip(top, loaded, strict=True)],
         element=elems[top],
         slice_index=slices[top],
-        edge_slice=edge[top] & loaded,
+        edge_slice=np.take_along_axis(edge, top[:, None], 1)[:, 0] & loaded,
         max_pressure=p0,
         semi_minor=np.where(loaded, b0, np.nan),
         semi_major=np.where(loaded, a0, np.nan),

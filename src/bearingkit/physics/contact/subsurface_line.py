@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 
 from bearingkit import checks, references
-from bearingkit.physics.contact.subsurface import DepthProfile, _parabola_max, tresca, von_mises
+from bearingkit.physics.contact.subsurface import DepthProfile, _golden_max, _parabola_max, tresca, von_mises
 
 __all__ = [
     "REFERENCE_KEYS",
@@ -172,7 +172,9 @@ def line_stresses_over_position(depth, half_width, max_pressure, poisson_ratio, 
 def line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction=0.0):
     """Half the range of the orthogonal shear τ_xz over the rolling position at each depth [Pa].
 
-    (max_x τ_xz − min_x τ_xz)/2: without traction max_x |τ_xz| (0.25 p₀ at z = 0.5 b, x = ±0.866 b).
+    (max_x τ_xz − min_x τ_xz)/2: without traction max_x |τ_xz| (0.25 p₀ at z = 0.5 b, x = ±0.866 b), found by
+    a golden-section search over x ∈ [0, 2b + 2z] (|τ_xz| has one peak there); with traction by
+    :data:`POSITION_SAMPLES` samples over ±(2b + 2z).
 
     Parameters
     ----------
@@ -181,6 +183,11 @@ def line_orthogonal_shear_amplitude(depth, half_width, max_pressure, traction=0.
     half_width, max_pressure, traction : array_like
         b [m], p₀ [Pa], μ [-], broadcasting with ``depth``.
     """
+    if np.all(np.asarray(traction) == 0.0):
+        z, b, p = np.broadcast_arrays(*(np.asarray(v, float) for v in (depth, half_width, max_pressure)))
+        return _golden_max(
+            lambda x: np.abs(line_stresses(x, z, b, p, 0.3).tau_xz), np.zeros(z.shape), 2.0 * b + 2.0 * z
+        )
     xs, z, b = _positions(depth, half_width)
     p0 = np.asarray(max_pressure, float)[..., None] if np.ndim(max_pressure) else max_pressure
     mu = np.asarray(traction, float)[..., None] if np.ndim(traction) else traction
