@@ -215,7 +215,7 @@ def test_traction_needs_subsurface():
 
 
 def test_study_outputs():
-    from bearingkit.studies import quantities
+    from bearingkit.studies.generic import quantities
 
     a = analyze(str(SLEWING))
     cat = quantities.catalogue(a.input)

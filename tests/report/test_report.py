@@ -14,8 +14,8 @@ import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
-from bearingkit.analysis.quasistatic import SolverOptions
-from bearingkit.analysis.rating import rate
+from bearingkit.analysis.solver.quasistatic import SolverOptions
+from bearingkit.analysis.rating.assembly import rate
 from bearingkit.cli.flagship import FlagshipContext
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file, loads

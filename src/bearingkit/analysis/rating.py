@@ -4,10 +4,10 @@ SI units throughout: loads in N, pressures in Pa, lengths in m, speeds in rad/s,
 (``*_rev``) or hours (``*_h`` in the JSON output only), temperatures in °C (``temperature_C``, as in
 :mod:`bearingkit.lubricants`).
 
-:func:`rate` takes a :class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` and, for every row,
+:func:`rate` takes a :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` and, for every row,
 
 - rates the row as a single-row bearing of its own geometry: ISO 76 C0 and ISO 281 C (the row raters
-  live in :mod:`bearingkit.analysis.rating_rows` and are re-exported here; :data:`ROW_RATERS` maps
+  live in :mod:`bearingkit.analysis.rating.rows` and are re-exported here; :data:`ROW_RATERS` maps
   ``row.kind`` to a rater — ball, cylindrical, tapered, threaded — and new row kinds register themselves
   with :func:`register_row_rater`);
 - computes the ISO/TS 16281 basic reference rating life L10r from the solved element loads (balls) or
@@ -33,14 +33,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.rating_iso281 import Iso281Life, bearing_life
-from bearingkit.analysis.rating_options import (
+from bearingkit.analysis.rating.iso281 import Iso281Life, bearing_life
+from bearingkit.analysis.rating.options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
     EDGE_STRESS_MODES,
     RatingOptions,
 )
-from bearingkit.analysis.rating_rows import (
+from bearingkit.analysis.rating.rows import (
     _REFERENCES,
     ISO281_CONFORMITY_LIMITS,
     WEIBULL_SLOPES,
@@ -51,7 +51,7 @@ from bearingkit.analysis.rating_rows import (
     rate_cylindrical_row,
     rate_tapered_row,
 )
-from bearingkit.analysis.rating_threaded import rate_threaded_row
+from bearingkit.analysis.rating.threaded import rate_threaded_row
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso281
 
@@ -193,7 +193,7 @@ class RatingResult:
     references : tuple of str
         Keys of :mod:`bearingkit.references`.
     iso281 : Iso281Life or None
-        ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating_iso281`).
+        ISO 281 P, C, L10 and L_nm of the whole bearing (:mod:`bearingkit.analysis.rating.iso281`).
     """
 
     bearing: str
@@ -384,7 +384,7 @@ def rate(
     shoulder_height : None, float or Mapping[str, float or (float, float)]
         Groove shoulder height over ball diameter [-] for the truncation check: one value, or per row
         name a value or an (inner, outer) pair; None = the kind's default
-        (:data:`~bearingkit.analysis.rating_options.DEFAULT_SHOULDER_HEIGHTS`).
+        (:data:`~bearingkit.analysis.rating.options.DEFAULT_SHOULDER_HEIGHTS`).
     edge_pressure_ratio : float
         End-slice pressure over the row's maximum slice pressure that flags edge loading [-].
     edge_stress_factor : {"auto", "always", "never"}

@@ -2,8 +2,8 @@
 ball and needle rows (ISO 76 C0, ISO 281 C, ISO/TS 16281 life from the solved distribution, s0).
 
 SI units: loads in N, pressures in Pa, lives in revolutions. Each rater follows
-:mod:`bearingkit.analysis.rating_rows` (``rater(row, state, ctx) -> RowRating``) and registers itself with
-:func:`bearingkit.analysis.rating.register_row_rater` when this module is imported (the package
+:mod:`bearingkit.analysis.rating.rows` (``rater(row, state, ctx) -> RowRating``) and registers itself with
+:func:`bearingkit.analysis.rating.assembly.register_row_rater` when this module is imported (the package
 ``bearingkit.analysis`` imports it).
 
 - **four-point** (``four_point``): rated per diagonal as a single-row angular contact ball bearing
@@ -31,9 +31,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.analysis.rating import register_row_rater
-from bearingkit.analysis.rating_options import shoulder_heights
-from bearingkit.analysis.rating_rows import (
+from bearingkit.analysis.rating.assembly import register_row_rater
+from bearingkit.analysis.rating.options import shoulder_heights
+from bearingkit.analysis.rating.rows import (
     RowContext,
     RowRating,
     _assemble,
@@ -94,7 +94,7 @@ def raceway_life(loads, ratings, means, exponent, life_exponent):
 
 # --- four-point contact ball ------------------------------------------------------------------------
 def rate_four_point_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.four_point.FourPointRow` (module docstring)."""
+    """Rate a :class:`~bearingkit.rows.ball.four_point.FourPointRow` (module docstring)."""
     notes: list[str] = []
     d, dm, z = row.element_diameter, row.pitch_diameter, row.n_elements
     alpha = float(np.max(row.contact_angle))
@@ -160,7 +160,7 @@ def _four_point_truncation(row, state, ctx: RowContext) -> dict:
 
 # --- crossed rollers -------------------------------------------------------------------------------
 def rate_crossed_roller_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.crossed.CrossedRollerRow` (module docstring)."""
+    """Rate a :class:`~bearingkit.rows.cylindrical.crossed.CrossedRollerRow` (module docstring)."""
     notes: list[str] = []
     d, length, dm, z, n_s = (
         row.element_diameter,
@@ -328,7 +328,7 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
 
 
 def rate_needle_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.needle.NeedleRow`: cylindrical rater, needle b_m, shaft warning."""
+    """Rate a :class:`~bearingkit.rows.cylindrical.needle.NeedleRow`: cylindrical rater, needle b_m, shaft warning."""
     rating = _rate_roller_row(row, state, ctx, alpha=0.0, thrust=False, bearing_type=row.bearing_type)
     if not row.inner_ring:
         note = (

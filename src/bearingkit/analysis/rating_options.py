@@ -1,8 +1,8 @@
-"""Settings of a bearing rating (:func:`bearingkit.analysis.rating.rate`), validated on construction.
+"""Settings of a bearing rating (:func:`bearingkit.analysis.rating.assembly.rate`), validated on construction.
 
 SI units throughout: speeds in rad/s, loads in N; temperatures in °C (``temperature_C``, as in
 :mod:`bearingkit.lubricants`). Shared by the rating assembly and the per-row raters
-(:mod:`bearingkit.analysis.rating_rows`). ISO 281:2007 (reliability, e_C), ISO/TS 16281:2008 (edge-stress
+(:mod:`bearingkit.analysis.rating.rows`). ISO 281:2007 (reliability, e_C), ISO/TS 16281:2008 (edge-stress
 factor).
 """
 

@@ -3,11 +3,11 @@
 SI units throughout: loads in N, pressures in Pa, lengths in m, lives in revolutions.
 
 A rater ``rater(row, state, ctx) -> RowRating`` rates one row of a
-:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult` as a single-row bearing of its own geometry:
+:class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` as a single-row bearing of its own geometry:
 ISO 76 C0, ISO 281 C, the ISO/TS 16281 basic reference rating life from the solved element or slice loads,
 the static safety from the largest contact pressure and the row's warnings.
-:data:`bearingkit.analysis.rating.ROW_RATERS` maps ``row.kind`` to its rater (threaded rows:
-:mod:`bearingkit.analysis.rating_threaded`); :func:`bearingkit.analysis.rating.rate` combines the rows.
+:data:`bearingkit.analysis.rating.assembly.ROW_RATERS` maps ``row.kind`` to its rater (threaded rows:
+:mod:`bearingkit.analysis.rating.threaded`); :func:`bearingkit.analysis.rating.assembly.rate` combines the rows.
 Values that cannot be computed are masked (``numpy.ma``), never NaN.
 
 References: ISO 76:2006, ISO 281:2007, ISO/TS 16281:2008, ISO/TR 1281-1; Lundberg & Palmgren (1947, 1952);
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import references
-from bearingkit.analysis.rating_options import RatingOptions, shoulder_heights
+from bearingkit.analysis.rating.options import RatingOptions, shoulder_heights
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso76, iso281, iso281_life, iso16281
 
@@ -363,7 +363,7 @@ def _one_class(name, values):
 
 
 def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.ball.BallRow`.
+    """Rate a :class:`~bearingkit.rows.ball.row.BallRow`.
 
     Mapping by the free contact angle |α₀|: 0 → ``deep_groove_ball``; (0, 45°] → ``angular_contact_ball``
     (ISO 281 Table 2 / ISO 76 Table 1 with γ = D_w cos α/D_pw); (45°, 90°] → ``thrust_ball`` (Tables 4 and 3;
@@ -377,7 +377,7 @@ def rate_ball_row(row, state, ctx: RowContext) -> RowRating:
     ellipse of semi-major axis a spans θ_a = arcsin(a/r) about the contact point, so it is truncated when
     |α − α_bottom| + θ_a > θ_s. Inner and outer shoulders may differ (``shoulder_height`` pairs); the
     defaults depend on the kind (deep groove / angular contact high shoulder / thrust,
-    :data:`~bearingkit.analysis.rating_options.DEFAULT_SHOULDER_HEIGHTS`).
+    :data:`~bearingkit.analysis.rating.options.DEFAULT_SHOULDER_HEIGHTS`).
     """
     notes: list[str] = []
     alpha0 = np.asarray(row.contact_angle, float)
@@ -456,7 +456,7 @@ def _edge_checks(row, state, ctx: RowContext, notes: list):
 
 
 def rate_cylindrical_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.cylindrical.CylindricalRow`.
+    """Rate a :class:`~bearingkit.rows.cylindrical.row.CylindricalRow`.
 
     Radial rows → ``cylindrical_roller`` (α = 0; ISO 281 f_c from the ISO/TR 1281-1 closed form, ISO 76
     eq. (3)); thrust rows → ``thrust_cylindrical_roller`` (α = 90°; ISO 76 eq. (8); ISO 281 f_c from the
@@ -532,7 +532,7 @@ def _rate_roller_row(row, state, ctx: RowContext, *, alpha, thrust, bearing_type
 
 
 def rate_tapered_row(row, state, ctx: RowContext) -> RowRating:
-    """Rate a :class:`~bearingkit.rows.tapered.TaperedRow`.
+    """Rate a :class:`~bearingkit.rows.tapered.row.TaperedRow`.
 
     ISO nominal contact angle α = the cup angle α_e (ISO 281 / ISO 76: half the outer-raceway cone angle),
     D_we = mean roller diameter, L_we = ``effective_length``, D_pw = ``pitch_diameter``. α_e <= 45° →

@@ -1,7 +1,7 @@
 """Stresses below the contacts of a solved bearing and the check of the raceways' hardened layer.
 
 SI units (m, Pa). For every row and load case of a
-:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult`, the most heavily loaded contact (the largest
+:class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult`, the most heavily loaded contact (the largest
 Hertz pressure over the elements, both raceways and, for rollers, every slice) — or on demand every
 loaded contact — gets the stress profiles against depth below its centre
 (:mod:`bearingkit.physics.contact.subsurface` for ball contacts, :mod:`~.subsurface_line` for roller

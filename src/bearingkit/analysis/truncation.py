@@ -11,9 +11,9 @@ four-point — shoulder and arch seam —, self-aligning ball inner grooves), ev
 
 Per row and case the results are the largest p_tr and the smallest safety over the contacts.
 :func:`truncated_result` gives a copy of the solution whose truncated contacts carry Q′ and p_tr, so that
-the unchanged rating (:func:`bearingkit.analysis.rating.rate`) returns s0 and L10r *with* truncation
+the unchanged rating (:func:`bearingkit.analysis.rating.assembly.rate`) returns s0 and L10r *with* truncation
 (the pipeline does that beside the plain rating). The shoulder geometry and its defaults are the rating's
-(:func:`bearingkit.analysis.rating_options.shoulder_heights`), so the numbers and the warning agree.
+(:func:`bearingkit.analysis.rating.options.shoulder_heights`), so the numbers and the warning agree.
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearingkit.analysis.rating_options import RatingOptions, shoulder_heights
+from bearingkit.analysis.rating.options import RatingOptions, shoulder_heights
 from bearingkit.physics.contact import truncation as tr
 from bearingkit.physics.life.iso281 import RADIAL_MAX_ANGLE
 from bearingkit.rows.base import RowState

@@ -1,9 +1,9 @@
 """Load a bearing input file (TOML with units) into a :class:`BearingInput` (model, load cases, settings).
 
 SI inside: the schema (:mod:`bearingkit.io.schema`) turns every ``"6 mm"`` into metres; this
-module validates the file, resolves a designation (:mod:`bearingkit.io.designation`), maps
-``bearing.type`` to a builder of :data:`~bearingkit.io.builders.BUILDERS`, checks that the rows fit
-the envelope (:mod:`bearingkit.io.envelope`), forms the load cases (:mod:`bearingkit.io.load_cases`)
+module validates the file, resolves a designation (:mod:`bearingkit.io.build.designation`), maps
+``bearing.type`` to a builder of :data:`~bearingkit.io.build.builders.BUILDERS`, checks that the rows fit
+the envelope (:mod:`bearingkit.io.build.envelope`), forms the load cases (:mod:`bearingkit.io.load_cases`)
 and bounds their number (the caps below). Every malformed input raises
 :class:`bearingkit.errors.InputError` with one line: ``FILE: field (value) what was expected``.
 
@@ -24,12 +24,12 @@ from dataclasses import dataclass
 import numpy as np
 from pydantic import BaseModel, ValidationError
 
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError, did_you_mean, quote
 from bearingkit.io import schema, schema_cycle
-from bearingkit.io.builders import BUILDERS, register_bearing_type
-from bearingkit.io.designation import from_designation
-from bearingkit.io.envelope import check_envelope, check_shoulders
+from bearingkit.io.build.builders import BUILDERS, register_bearing_type
+from bearingkit.io.build.designation import from_designation
+from bearingkit.io.build.envelope import check_envelope, check_shoulders
 from bearingkit.io.load_cases import (
     DOF_NAMES,
     LOAD_ALIASES,
@@ -98,7 +98,7 @@ class BearingInput:
     lubricant : bearingkit.lubricants.Lubricant or None
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
-    options : bearingkit.analysis.quasistatic.SolverOptions
+    options : bearingkit.analysis.solver.quasistatic.SolverOptions
     sections : bearingkit.io.schema_operating.OperatingSections
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
@@ -165,7 +165,7 @@ class BearingInput:
 
     def solve(self):
         """Solve every load case in one batch; returns a QuasiStaticResult (``converged`` per case)."""
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         try:
             return solve(self.model, self.load_matrix(), free=self.free, options=self.options)
@@ -194,7 +194,7 @@ def loads(text: str, source: str = "<string>") -> BearingInput:
 
 def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     """Validate an already-parsed file (a dict as ``tomllib`` returns it)."""
-    from bearingkit.analysis.quasistatic import SolverOptions
+    from bearingkit.analysis.solver.quasistatic import SolverOptions
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")
@@ -266,7 +266,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
 
 def max_cases(model) -> int:
     """Most load cases one run of ``model`` may take under the caps above (a study of more cases
-    solves them in runs of at most this many: :mod:`bearingkit.studies.generic`)."""
+    solves them in runs of at most this many: :mod:`bearingkit.studies.generic.evaluator`)."""
     flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
     points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
     most = MAX_FLEXIBLE_LOAD_CASES if flexible else schema.MAX_LOAD_CASES

@@ -103,7 +103,7 @@ class HardnessSpec(Strict):
 
 def _ring_wall(model, gdict: dict):
     """Thinnest ring wall below a raceway [m] from bore / outer_diameter and the rows, or None."""
-    from bearingkit.io.envelope import _radial_extent
+    from bearingkit.io.build.envelope import _radial_extent
 
     env = model.metadata.get("geometry", {})
     env = dataclasses.asdict(env) if dataclasses.is_dataclass(env) else dict(env)

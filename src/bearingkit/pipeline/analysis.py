@@ -8,7 +8,7 @@ when asked for, and only once:
 - :attr:`Analysis.statics` — the batched quasi-static solve of every load case (rigid rings);
 - :attr:`Analysis.flexible` — the coupled flexible-ring solve, where the input configures one;
 - :meth:`Analysis.friction_by` / :attr:`Analysis.friction` — friction by a model of
-  :data:`~bearingkit.pipeline.friction.FRICTION_MODELS`;
+  :data:`~bearingkit.pipeline.friction.models.FRICTION_MODELS`;
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety (the ISO 76
   limit pressures scaled by the raceways' hardness, :attr:`Analysis.hardness`);
 - :attr:`Analysis.subsurface` / :meth:`Analysis.subsurface_by` — stresses below the most loaded contacts and
@@ -32,7 +32,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.pipeline.analysis_output import AnalysisOutput
-from bearingkit.pipeline.friction import FRICTION_MODELS, FrictionOutcome
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome
 from bearingkit.pipeline.inputs import ModelInput, load_input
 from bearingkit.pipeline.operating import Operating
 
@@ -72,7 +72,7 @@ class Analysis(AnalysisOutput):
     load_ratings : dict, optional
         Row name → C [N] replacing ISO 281 ratings (catalogue values).
     friction_options : dict, optional
-        Further fields of :class:`bearingkit.analysis.friction.OperatingPoint` for the component model
+        Further fields of :class:`bearingkit.analysis.friction.components.OperatingPoint` for the component model
         (``viscosity_factor``, ``cage_mass``, roughness, traction …).
     """
 
@@ -127,7 +127,7 @@ class Analysis(AnalysisOutput):
         )
         if setup.plain and same:
             return self.input.solve()
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         b = self.input
         return self._in_file(
@@ -208,7 +208,7 @@ class Analysis(AnalysisOutput):
 
     def _rate(self, statics):
         """The rating of ``statics`` with this analysis's operating point, shoulders and raceway hardness."""
-        from bearingkit.analysis.rating import rate
+        from bearingkit.analysis.rating.assembly import rate
 
         op = self.operating
         speed = op.abs_speed if np.all(op.abs_speed > 0) else None
@@ -295,7 +295,7 @@ class Analysis(AnalysisOutput):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""
         if isinstance(self.input, ModelInput):
             return None
-        from bearingkit.io.shoulders import shoulder_fractions
+        from bearingkit.io.build.shoulders import shoulder_fractions
 
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
@@ -357,7 +357,7 @@ class Analysis(AnalysisOutput):
         elif op.lubricant is None:
             out.append("ratings: no lubricant given, so no κ, a_ISO or L_nm")
         out.extend(self.setup.notes)
-        from bearingkit.analysis.speed import speed_notes
+        from bearingkit.analysis.solver.speed import speed_notes
 
         out.extend(speed_notes(self.statics.model))
         lub = self.lubrication
@@ -517,7 +517,7 @@ def analyze(
     load_ratings : dict, optional
         Row name → C [N] replacing the ISO 281 rating.
     friction_options : dict, optional
-        Further :class:`~bearingkit.analysis.friction.OperatingPoint` fields of the component model.
+        Further :class:`~bearingkit.analysis.friction.components.OperatingPoint` fields of the component model.
 
     Returns
     -------

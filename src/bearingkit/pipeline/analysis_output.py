@@ -119,15 +119,15 @@ class AnalysisOutput:
 
     def friction_comparison(self) -> dict:
         """Every friction model that applies, side by side, with when each applies
-        (:func:`bearingkit.pipeline.friction_extra.compare`)."""
-        from bearingkit.pipeline.friction_extra import compare
+        (:func:`bearingkit.pipeline.friction.extra.compare`)."""
+        from bearingkit.pipeline.friction.extra import compare
 
         return {**self._header(), **compare(self), "notes_run": self.notes}
 
     def heat_dict(self, model: str | None = None) -> dict:
         """Heat balance (operating temperature) and the model's thermal reference speed (ISO 15312
-        method), JSON-ready (:mod:`bearingkit.pipeline.thermal`)."""
-        from bearingkit.pipeline import thermal
+        method), JSON-ready (:mod:`bearingkit.pipeline.thermal.reference`)."""
+        from bearingkit.pipeline.thermal import reference as thermal
 
         model = model or self.friction_model
         balance = self._in_file(thermal.heat_balance, self, model)

@@ -147,7 +147,7 @@ class ModelInput:
     hardness: object = None
 
     def __post_init__(self):
-        from bearingkit.analysis.quasistatic import SolverOptions
+        from bearingkit.analysis.solver.quasistatic import SolverOptions
         from bearingkit.lubricants import as_lubricant
 
         load = np.atleast_2d(np.asarray(self.load, dtype=float))
@@ -194,6 +194,6 @@ class ModelInput:
 
     def solve(self):
         """All cases in one batched solve (QuasiStaticResult)."""
-        from bearingkit.analysis.quasistatic import solve
+        from bearingkit.analysis.solver.quasistatic import solve
 
         return solve(self.model, self.load, free=self.free, options=self.options)

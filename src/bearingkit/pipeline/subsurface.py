@@ -88,7 +88,7 @@ def _val(a, case):
 
 def truncation_of(analysis) -> TruncationOutcome:
     """Truncation numbers with the rating's shoulder heights, and the rating with truncation."""
-    from bearingkit.analysis.rating_options import RatingOptions
+    from bearingkit.analysis.rating.options import RatingOptions
     from bearingkit.analysis.truncation import truncated_result, truncation
 
     options = RatingOptions(shoulder_height=analysis._shoulder_heights())

@@ -3,8 +3,8 @@
 SI inside: the result objects hold SI values (m, N, Pa, rad, N·m, rad/s); this module converts only for
 display (mm, µm, kN, MPa, degrees, N·mm, r/min) and names the unit in every column header. Faces never
 recompute physics: the page reads :class:`~bearingkit.io.loader.BearingInput`,
-:class:`~bearingkit.analysis.quasistatic.QuasiStaticResult`,
-:class:`~bearingkit.analysis.friction.FrictionResult` and :class:`~bearingkit.analysis.rating.RatingResult`.
+:class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult`,
+:class:`~bearingkit.analysis.friction.components.FrictionResult` and :class:`~bearingkit.analysis.rating.assembly.RatingResult`.
 
 The file needs no network: figures are inline PNG data URIs (:mod:`bearingkit.report.plots`), the style
 sheet is inline, and there is no script. The only web addresses a report may hold are inside the
@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from bearingkit.analysis.rating_iso281 import caption as iso281_caption
+from bearingkit.analysis.rating.iso281 import caption as iso281_caption
 from bearingkit.errors import InputError
 from bearingkit.report import plots
 from bearingkit.report.html_duty import duty_cycle_html
