@@ -29,7 +29,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("analysis",),
     ("rows", "rings"),
     ("physics",),
-    ("materials", "lubricants"),
+    ("materials", "lubricants", "hardness"),
     ("units", "errors", "references", "checks", "data", "lazy"),
 )
 
@@ -170,8 +170,9 @@ def test_generic_machinery_holds_no_paper_module(folder):
 #: ``__main__`` are the package's faces and may import any part.
 SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     "analysis": (
+        ("truncation",),
         ("rating", "friction"),
-        ("flexible", "slewing", "scatter", "clearance", "lubrication"),
+        ("flexible", "slewing", "scatter", "clearance", "lubrication", "subsurface"),
         ("solver",),
     ),
     "analysis.solver": (
@@ -201,7 +202,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
         ("messages",),
         ("schema",),
         ("sections",),
-        ("geometries",),
+        ("geometries", "schema_hardness"),
         ("fields", "reading"),
     ),
 }

@@ -18,7 +18,14 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 BLOCK = re.compile(r"```python\n(.*?)```", re.S)
 #: (page, number of its leading python blocks that run without optional extras)
-PAGES = [("catalogue.md", 1), ("engine.md", 1), ("ratings.md", 1), ("systems.md", 2), ("lubricants.md", 1)]
+PAGES = [
+    ("catalogue.md", 1),
+    ("engine.md", 1),
+    ("ratings.md", 1),
+    ("subsurface.md", 1),
+    ("systems.md", 2),
+    ("lubricants.md", 1),
+]
 
 
 def _run(page: str, n_blocks: int) -> str:
@@ -42,6 +49,7 @@ PRINTS = {
     "catalogue.md": "6308 2RS1 contact_seal C3",
     "engine.md": "",
     "ratings.md": "'L10r_rev'",
+    "subsurface.md": "[",
     "systems.md": "[",
     "lubricants.md": "VG68 ester: VI 140",
 }

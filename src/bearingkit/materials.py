@@ -28,6 +28,14 @@ Presets (:data:`MATERIALS`, looked up with :func:`get_material`)
 ``seed002_steel``
     Li et al. (2025) give no E or ν (only "E represents the elastic modulus of the bearing material");
     this alias of ``GCr15`` documents that choice.
+``42CrMo4``, ``50CrMo4``
+    Quenched-and-tempered slewing-ring steels with induction-hardened raceways: E = 210 GPa, ν = 0.3,
+    ρ = 7850 kg/m³ (structural steel handbook values [from memory]) and the hardness profiles
+    ``42CrMo4_induction`` / ``50CrMo4_induction`` of :mod:`bearingkit.hardness`.
+
+Every material may carry a :class:`~bearingkit.hardness.HardnessProfile` (``hardness_profile``): the
+raceways' hardness against depth, used by the subsurface check (docs/subsurface.md). Without one a ring is
+through-hardened at ``hardness_hv`` (700 HV when that is not given either).
 """
 
 from __future__ import annotations
@@ -36,6 +44,7 @@ from dataclasses import dataclass
 
 from bearingkit import checks
 from bearingkit.errors import InputError
+from bearingkit.hardness import HARDNESS_PRESETS, HardnessProfile
 
 # ---------------------------------------------------------------------------------------------
 # Unit conversions used to turn published imperial / engineering values into SI (exact factors).
@@ -72,6 +81,8 @@ class Material:
     thermal_expansion : float or None
         Linear thermal expansion coefficient α [1/K], ≥ 0, optional (fits and temperatures: operating
         clearance, :mod:`bearingkit.physics.structure.fits`).
+    hardness_profile : HardnessProfile, dict of its fields, or None
+        The raceways' hardness against depth (case-hardened rings); None: through-hardened.
     source : str
         Where the values come from (citation text or a reference key).
     """
@@ -84,6 +95,7 @@ class Material:
     hardness_hv: float | None = None
     source: str = ""
     thermal_expansion: float | None = None
+    hardness_profile: HardnessProfile | None = None
 
     def __post_init__(self):
         if not isinstance(self.name, str) or not self.name:
@@ -99,6 +111,21 @@ class Material:
             checks.positive("hardness_hv", self.hardness_hv, "HV")
         if self.thermal_expansion is not None:
             checks.non_negative("thermal_expansion", self.thermal_expansion, "1/K")
+        if isinstance(self.hardness_profile, dict):  # dataclasses.asdict of a Material nests it as a dict
+            object.__setattr__(self, "hardness_profile", HardnessProfile(**self.hardness_profile))
+        if self.hardness_profile is not None and not isinstance(self.hardness_profile, HardnessProfile):
+            raise InputError(f"hardness_profile ({self.hardness_profile!r}) must be a HardnessProfile")
+
+    @property
+    def raceway_hardness(self) -> HardnessProfile:
+        """The raceways' hardness profile: ``hardness_profile``, else through-hardened at ``hardness_hv``."""
+        if self.hardness_profile is not None:
+            return self.hardness_profile
+        base = HARDNESS_PRESETS["through_hardened"]
+        if self.hardness_hv is None:
+            return base
+        name = f"{self.name} (through-hardened)"
+        return HardnessProfile(surface_hardness=float(self.hardness_hv), name=name, source=self.source)
 
     @property
     def plane_strain_compliance(self) -> float:
@@ -187,6 +214,8 @@ ALUMINIUM_E, ALUMINIUM_POISSON = 70.0e9, 0.33  # [Pa], [-] wrought/cast Al alloy
 ALUMINIUM_DENSITY, ALUMINIUM_ALPHA = 2700.0, 23.0e-6  # [kg/m³], [1/K]
 STRUCTURAL_STEEL_E, STRUCTURAL_STEEL_POISSON = 210.0e9, 0.3  # [Pa], [-]
 STRUCTURAL_STEEL_DENSITY, STRUCTURAL_STEEL_ALPHA = 7850.0, 12.0e-6  # [kg/m³], [1/K]
+# Quenched-and-tempered slewing-ring steels (42CrMo4, 50CrMo4): handbook elastic constants [from memory].
+QT_STEEL_E, QT_STEEL_POISSON, QT_STEEL_DENSITY = 210.0e9, 0.3, 7850.0  # [Pa], [-], [kg/m³]
 # Seed papers.
 SEED001_E_N_MM2 = 2.1e5  # [N/mm²] Liu et al. (2022) Lubricants 10:154, Table 1
 SEED001_POISSON = 0.278  # [-] same table
@@ -248,6 +277,26 @@ MATERIALS: dict[str, Material] = {
         density=STRUCTURAL_STEEL_DENSITY,
         source="unalloyed structural / shaft steel, typical handbook values [from memory]",
         thermal_expansion=STRUCTURAL_STEEL_ALPHA,
+    ),
+    "42CrMo4": Material(
+        name="42CrMo4",
+        youngs_modulus=QT_STEEL_E,
+        poisson_ratio=QT_STEEL_POISSON,
+        density=QT_STEEL_DENSITY,
+        hardness_hv=HARDNESS_PRESETS["42CrMo4_induction"].surface_hardness,
+        source="42CrMo4+QT slewing-ring steel, handbook E/nu/rho [from memory]; induction-hardened raceways",
+        thermal_expansion=STRUCTURAL_STEEL_ALPHA,
+        hardness_profile=HARDNESS_PRESETS["42CrMo4_induction"],
+    ),
+    "50CrMo4": Material(
+        name="50CrMo4",
+        youngs_modulus=QT_STEEL_E,
+        poisson_ratio=QT_STEEL_POISSON,
+        density=QT_STEEL_DENSITY,
+        hardness_hv=HARDNESS_PRESETS["50CrMo4_induction"].surface_hardness,
+        source="50CrMo4+QT slewing-ring steel, handbook E/nu/rho [from memory]; induction-hardened raceways",
+        thermal_expansion=STRUCTURAL_STEEL_ALPHA,
+        hardness_profile=HARDNESS_PRESETS["50CrMo4_induction"],
     ),
     "seed001_steel": Material(
         name="seed001_steel",

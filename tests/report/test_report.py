@@ -103,7 +103,8 @@ def test_flagship_has_every_section_and_row(flagship):
     ctx, _, html = flagship
     page = Page(html)
     ids = [s.get("id") for s in page.sections]
-    assert ids == ["inputs", "case-0", "warnings", "references"]
+    # "subsurface": the stresses below the contacts against the raceways' strength (issue 36)
+    assert ids == ["inputs", "case-0", "subsurface", "warnings", "references"]
     rows = [t for t in page.tables if t["cls"] == "rows"]
     assert len(rows) == 1
     names = [r[0] for r in rows[0]["rows"][1:]]
@@ -146,8 +147,8 @@ def test_geometry_table_lists_every_given_field_with_units(flagship):
 def test_images_decode_and_are_not_blank(flagship):
     _, _, html = flagship
     page = Page(html)
-    # polar, slice pressure map (roller rows), friction, rating
-    assert len(page.images) == 4
+    # polar, slice pressure map (roller rows), friction, rating, stress against depth (subsurface)
+    assert len(page.images) == 5
     for img in page.images:
         pix = decode(img["src"])
         assert pix.ndim == 3 and pix.shape[0] > 100 and pix.shape[1] > 500
@@ -211,7 +212,7 @@ def test_friction_skipped_without_lubricant_is_explained(tmp_path):
     html = a.report(tmp_path / "r.html").read_text(encoding="utf-8")
     assert "friction (components) not computed" in html
     assert "Not computed in this run: friction torque" in html
-    assert len(Page(html).images) == 2  # the polar plot and the ratings
+    assert len(Page(html).images) == 3  # the polar plot, the ratings, the stress against depth
 
 
 # ------------------------------------------------------------------------------------------------

@@ -81,7 +81,7 @@ def test_dom_holds_the_inline_images(report):
     assert "<h1>" in dom, f"empty DOM (exit {proc.returncode}): {proc.stderr[-2000:]}"
     srcs = re.findall(r'<img[^>]*\ssrc="([^"]*)"', dom)
     html = path.read_text(encoding="utf-8")
-    assert len(srcs) == html.count("<img ") == 4
+    assert len(srcs) == html.count("<img ") == 5  # polar, slice map, friction, rating, stress against depth
     assert all(s.startswith("data:image/png;base64,") and len(s) > 10_000 for s in srcs)
     for section in ('id="inputs"', 'id="case-0"', 'id="warnings"', 'id="references"'):
         assert section in dom

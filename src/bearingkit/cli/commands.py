@@ -104,10 +104,22 @@ def analyze(
     hold: list[str] = _HOLD_OPTION,
     free: list[str] = _FREE_OPTION,
     as_json: bool = _JSON_OPTION,
+    subsurface: bool = typer.Option(
+        False,
+        "--subsurface",
+        help="Stresses below the most loaded contact of every row (von Mises, Tresca, orthogonal shear vs "
+        "depth) and the check of the raceways' hardened layer (docs/subsurface.md).",
+    ),
+    traction: float = typer.Option(
+        0.0, "--traction", help="Surface traction coefficient q/p for --subsurface (default 0: frictionless)."
+    ),
 ):
     """Quasi-static load distribution of every load case with its warnings; exit 1 if one diverges."""
     a = _analysis(file, load, case, hold, free, preload=preload, speed=speed)
-    data = a.statics_dict()
+    if traction != 0.0 and not subsurface:
+        raise InputError(f"--traction ({traction:g}) applies to --subsurface; add --subsurface")
+    sub = a.subsurface_by(traction=traction) if subsurface else None
+    data = a.statics_dict(subsurface=sub)
     if as_json:
         _print_json(file, data)
     else:
@@ -118,6 +130,10 @@ def analyze(
             console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
             console.print(limits_text(c))
+            if sub is not None:
+                from bearingkit.cli.subsurface_tables import subsurface_table
+
+                console.print(subsurface_table(c, data["subsurface"]))
             if "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")

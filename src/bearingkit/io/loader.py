@@ -105,6 +105,8 @@ class BearingInput:
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
         The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
+    hardness : bearingkit.hardness.HardnessProfile
+        The raceways' hardness against depth (``[hardness]``, else the material's).
     tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
         The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     file_free : ndarray (5,) of bool or None
@@ -131,6 +133,7 @@ class BearingInput:
     file_free: np.ndarray | None = None
     dof_overrides: tuple = ()
     free_notes: tuple = ()
+    hardness: object = None
 
     @property
     def bearing_type(self) -> str:
@@ -264,6 +267,9 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         raise InputError(f"{source}: {prefix_field(str(exc), 'geometry', gdict)}") from None
     check_envelope(source, model, gdict)
     check_shoulders(source, model, gdict)
+    from bearingkit.io.build.hardness import hardness_of
+
+    hardness = hardness_of(source, spec.hardness, material, model, gdict)
     free = np.ones(5, bool)
     if spec.solver.free is not None:
         free = np.array([d in spec.solver.free for d in DOF_NAMES])
@@ -298,6 +304,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         tolerances=schema_cycle.tolerances_of(source, cycle.get("tolerances")),
         file_free=file_free,
         free_notes=free_notes,
+        hardness=hardness,
     )
 
 

@@ -22,6 +22,7 @@ def section_models(geometry_model: type[BaseModel] | None) -> dict[str, type[Bas
         "": schema.BearingFile,
         "bearing": schema.BearingHeader,
         "material": schema.MaterialSpec,
+        "hardness": schema.HardnessSpec,
         "lubricant": schema.LubricantSpec,
         "load_cases": schema.LoadCaseSpec,
         "solver": schema.SolverSpec,

@@ -1,5 +1,6 @@
 """The sections every input file shares: ``[bearing]``, ``[material]``, ``[lubricant]``,
-``[[load_cases]]``, ``[solver]``, and the whole file (:class:`BearingFile`).
+``[[load_cases]]``, ``[solver]``, and the whole file (:class:`BearingFile`); ``[hardness]`` is
+:mod:`bearingkit.io.schema_hardness`'s.
 
 SI after validation (values arrive as strings with units, see :mod:`bearingkit.io.fields`). The
 geometry table depends on ``bearing.type`` and is validated by :mod:`bearingkit.io.geometries`.
@@ -28,6 +29,7 @@ from bearingkit.io.fields import (
     quantity,
 )
 from bearingkit.io.geometries import GEOMETRY_MODELS
+from bearingkit.io.schema_hardness import HardnessSpec
 
 #: Most load cases one file may hold. Measured on the 2-core reference machine: 1,000 cases of a
 #: deep groove ball bearing take 6 s through analyze, rating or friction; more belongs in a study.
@@ -265,6 +267,9 @@ class BearingFile(Strict):
         description="Keyword arguments of the builder (see GEOMETRY_MODELS); optional with designation.",
     )
     material: MaterialSpec | None = Field(None, description="Default: GCr15 (the builders' default).")
+    hardness: HardnessSpec | None = Field(
+        None, description="Raceway hardness against depth (default: the material's, through-hardened)."
+    )
     lubricant: LubricantSpec | None = None
     load_cases: list[LoadCaseSpec] = Field(
         default_factory=list, description=f"At most {MAX_LOAD_CASES} load cases."

@@ -12,6 +12,11 @@ when asked for, and only once:
 - :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety;
 - :attr:`Analysis.limits` — limiting and thermal reference speed, seal lip speed and minimum load of a
   standard bearing (:mod:`bearingkit.pipeline.limits`);
+- :attr:`Analysis.rating` — ISO 76 / ISO 281 / ISO/TS 16281 ratings, lives and static safety (the ISO 76
+  limit pressures scaled by the raceways' hardness, :attr:`Analysis.hardness`);
+- :attr:`Analysis.subsurface` / :meth:`Analysis.subsurface_by` — stresses below the most loaded contacts
+  and the hardened-layer check (:mod:`bearingkit.pipeline.rating.subsurface`); :attr:`Analysis.truncation`
+  — truncated contact ellipses as pressures and safeties, with s0 and L10r rated with them;
 - :attr:`Analysis.warnings` — per case, everything doubtful any computed part found (non-convergence,
   pressure above the static limit, s0 < 1, truncated ellipse, edge loading, free tilt of a single-row
   bearing, a speed or load limit exceeded …); every face shows them.
@@ -96,6 +101,7 @@ class Analysis(AnalysisOutput):
         self.friction_options = dict(friction_options or {})
         self._friction: dict[str, FrictionOutcome] = {}
         self._friction_errors: dict[str, str] = {}
+        self._subsurface: dict[tuple, object] = {}
         #: ISO 281 level name the contamination factor came from (None: a number or not given).
         self.contamination_level: str | None = None
         #: The heat balance that found the operating temperature (None: the temperature was an input),
@@ -208,8 +214,8 @@ class Analysis(AnalysisOutput):
         except InputError:
             return None
 
-    @functools.cached_property
-    def _rating(self):
+    def _rate(self, statics):
+        """The rating of ``statics`` with this analysis's operating point, shoulders and raceway hardness."""
         from bearingkit.analysis.rating.assembly import rate
 
         op = self.operating
@@ -221,25 +227,64 @@ class Analysis(AnalysisOutput):
                 "temperature_C": op.temperature,
                 "contamination_factor": op.contamination,
             }
-        from bearingkit.pipeline.rating_statics import ts_statics
+        return rate(
+            statics,
+            speed=speed,
+            rotating=op.rotating,
+            reliability=op.reliability,
+            load_ratings=self.load_ratings,
+            shoulder_height=self._shoulder_heights(),
+            catalogue_rating=self._catalogue_rating(),
+            static_limit_factor=self.hardness.limit_factor(),
+            **life,
+        )
+
+    @functools.cached_property
+    def _rating(self):
+        from bearingkit.pipeline.rating.statics import ts_statics
 
         try:
-            statics, arm_note = ts_statics(self)
-            rated = rate(
-                statics,
-                speed=speed,
-                rotating=op.rotating,
-                reliability=op.reliability,
-                load_ratings=self.load_ratings,
-                shoulder_height=self._shoulder_heights(),
-                catalogue_rating=self._catalogue_rating(),
-                **life,
-            )
+            statics, arm_note = ts_statics(self)  # the TS's pitch-radius arm where a ring tilts
+            rated = self._rate(statics)
             if arm_note:
                 rated.notes.append(arm_note)
             return rated, None
         except InputError as exc:
             return None, f"ratings not computed: {exc}"
+
+    @property
+    def hardness(self):
+        """The raceways' HardnessProfile (the file's ``[hardness]``, else the material's)."""
+        from bearingkit.pipeline.rating.subsurface import raceway_profile
+
+        return raceway_profile(self)
+
+    def subsurface_by(
+        self, *, traction: float = 0.0, target_safety: float = 1.0, every_contact: bool = False
+    ):
+        """SubsurfaceResult (:mod:`bearingkit.analysis.subsurface`) with these settings, once each."""
+        from bearingkit.pipeline.rating.subsurface import subsurface_of
+
+        key = (float(traction), float(target_safety), bool(every_contact))
+        if key not in self._subsurface:
+            self._subsurface[key] = subsurface_of(
+                self, traction=traction, target_safety=target_safety, every_contact=every_contact
+            )
+        return self._subsurface[key]
+
+    @property
+    def subsurface(self):
+        """Stresses below the most loaded contact of every row and case and the hardened-layer check
+        (frictionless, target case safety 1; :meth:`subsurface_by` for other settings)."""
+        return self.subsurface_by()
+
+    @functools.cached_property
+    def truncation(self):
+        """TruncationOutcome: truncated ball contacts as pressures and safeties, and the rating with them
+        (:mod:`bearingkit.pipeline.rating.subsurface`)."""
+        from bearingkit.pipeline.rating.subsurface import truncation_of
+
+        return truncation_of(self)
 
     def _catalogue_rating(self):
         """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C),
@@ -288,13 +333,15 @@ class Analysis(AnalysisOutput):
     def load_diagram(self):
         """Static load diagram of a slewing ring (allowable axial force vs tilting moment,
         :class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`), None for other bearings."""
-        from bearingkit.analysis.slewing import static_load_diagram
+        from bearingkit.analysis.slewing import LIMIT_STRESS, closed_form_capacities, static_load_diagram
         from bearingkit.bearings.slewing import SLEWING_KEY
 
         model = self.input.model
         if not getattr(model, "metadata", {}).get(SLEWING_KEY):
             return None
-        return static_load_diagram(model)
+        factor = self.hardness.limit_factor()  # the raceways' static limit (ISO 76 × hardness)
+        p_limit = None if factor == 1.0 else LIMIT_STRESS[closed_form_capacities(model)[2]] * factor
+        return static_load_diagram(model, p_limit=p_limit)
 
     @property
     def rating(self):
@@ -349,7 +396,7 @@ class Analysis(AnalysisOutput):
         if self.rating is not None:
             out.extend(f"ratings: {n}" for n in self.rating.notes)
         out.extend(self.setup.notes)
-        from bearingkit.pipeline.mounting import mounting_notes
+        from bearingkit.pipeline.rating.mounting import mounting_notes
 
         out.extend(mounting_notes(self))
         from bearingkit.analysis.solver.speed import speed_notes
@@ -368,6 +415,14 @@ class Analysis(AnalysisOutput):
             out.append(f"friction: the {auto.model} model by default: {auto.why}")
         for outcome in self._friction.values():
             out.extend(f"friction ({outcome.model}): {n}" for n in outcome.notes)
+        for sub in self._subsurface.values():
+            out.extend(n for n in sub.notes if n not in out)
+        factor = self.hardness.limit_factor()
+        if factor != 1.0 and self.rating is not None:
+            out.append(
+                f"static limit: ISO 76's limit pressures × {factor:.3g} for the raceways' hardness "
+                f"({self.hardness.describe()}; docs/subsurface.md)"
+            )
         return list(dict.fromkeys(out))  # the default's outcome repeats the chosen model's notes
 
     def _free_tilt(self, case: int) -> str | None:
@@ -405,14 +460,29 @@ class Analysis(AnalysisOutput):
                 notes.append("the flexible-ring coupling did not converge")
             if rating is not None:
                 notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
-            from bearingkit.pipeline.mounting import mounting_warnings
             from bearingkit.pipeline.operating_output import operating_warnings
+            from bearingkit.pipeline.rating.mounting import mounting_warnings
 
             notes.extend(mounting_warnings(self, c))
             notes.extend(operating_warnings(self, c))
             if self.limits is not None:
                 notes.extend(self.limits.warnings(c))
+            notes.extend(self._subsurface_warnings(c))
             out.append(list(dict.fromkeys(notes)))
+        return out
+
+    def _subsurface_warnings(self, case: int) -> list[str]:
+        """Truncated contacts as numbers (ball rows, when rated) and an overloaded case or core (a
+        case-hardened raceway: the check runs for every face)."""
+        if not self.statics.converged[case]:
+            return []
+        out = []
+        if self.rating is not None:
+            from bearingkit.pipeline.rating.subsurface import truncation_warnings
+
+            out.extend(truncation_warnings(self, case))
+        if not self.hardness.through_hardened:
+            out.extend(self.subsurface.warnings[case])
         return out
 
     @property
@@ -423,6 +493,11 @@ class Analysis(AnalysisOutput):
             keys += list(self.rating.references)
         for outcome in self._friction.values():
             keys += list(outcome.references)
+        if self._subsurface:
+            from bearingkit import hardness
+            from bearingkit.physics.contact import subsurface, subsurface_line
+
+            keys += [*subsurface.REFERENCE_KEYS, *subsurface_line.REFERENCE_KEYS, *hardness.REFERENCE_KEYS]
         return list(dict.fromkeys(keys))
 
     # ------------------------------------------------------------------------------- output

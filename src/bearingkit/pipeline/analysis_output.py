@@ -31,8 +31,13 @@ class AnalysisOutput:
             "source": b.spec.bearing.source,
         }
 
-    def statics_dict(self) -> dict:
-        """The load distribution of every case (``bearingkit analyze --json``), with its warnings."""
+    def statics_dict(self, subsurface=None) -> dict:
+        """The load distribution of every case (``bearingkit analyze --json``), with its warnings.
+
+        ``subsurface`` (a :class:`~bearingkit.analysis.subsurface.SubsurfaceResult`, ``analyze
+        --subsurface``) adds ``rows[].subsurface`` (profiles against depth, maxima, the case check) and, for
+        ball rows, ``rows[].truncation``, and the settings as ``subsurface``.
+        """
         from bearingkit.io.export import case_dict
 
         b, res = self.input, self.statics
@@ -47,6 +52,8 @@ class AnalysisOutput:
                 row.update(rest_speed_dicts(row))  # the same keys at every speed
                 if preload is not None:
                     row["preload_N"] = preload[row["name"]]
+                if subsurface is not None:
+                    self._add_subsurface(row, subsurface, i)
             if self.clearance is not None:
                 d["clearance"] = self.clearance.to_dict(i)
             if self.flexible is not None:
@@ -59,7 +66,21 @@ class AnalysisOutput:
         # the DOFs the statics were solved with (the default fixed tilt of a single row included)
         free_used = self.setup.free
         free = [n for n, f in zip(("u_x", "u_y", "u_z", "theta_x", "theta_y"), free_used, strict=True) if f]
-        return {**self._header(), "free_dofs": free, "cases": cases, "notes": self.notes}
+        out = {**self._header(), "free_dofs": free, "cases": cases, "notes": self.notes}
+        if subsurface is not None:
+            out["subsurface"] = subsurface.settings_dict()
+        return out
+
+    def _add_subsurface(self, row: dict, subsurface, case: int) -> None:
+        """``row['subsurface']`` (and ``row['truncation']`` of a ball row) for one case."""
+        try:
+            row["subsurface"] = subsurface.row(row["name"]).to_dict(case)
+        except KeyError:  # a row the check does not cover (threaded)
+            row["subsurface"] = None
+        if self.rating is not None:
+            t = self.truncation.row_dict(row["name"], case)
+            if t is not None:
+                row["truncation"] = t
 
     def rating_dict(self) -> dict:
         """Ratings and lives of every case (``bearingkit rating --json``) and of the duty cycle, when the
@@ -81,6 +102,7 @@ class AnalysisOutput:
                         "torque_Nm": float(friction.total[i]),
                         "power_loss_W": float(friction.power_loss[i]),
                     }
+            self._add_truncation(d, i)
             if self.lubrication is not None:
                 d["lubrication"] = self.lubrication.to_dict(i)
             d["limits"] = None if self.limits is None else self.limits.to_dict(i)
@@ -90,6 +112,13 @@ class AnalysisOutput:
         if self.duty_cycle is not None:
             out["duty_cycle"] = self.duty_cycle.to_dict()
         return out
+
+    def _add_truncation(self, rating_case: dict, case: int) -> None:
+        """``rows[].truncation`` of the rating rows truncated in this case (numbers beside the warning)."""
+        for row in rating_case["rows"]:
+            t = self.truncation.row_dict(row["name"], case)
+            if t is not None and t["truncated"]:
+                row["truncation"] = t
 
     def friction_dict(self, model: str | None = None) -> dict:
         """Friction of every case by ``model`` (``bearingkit friction --json``)."""
@@ -151,6 +180,7 @@ class AnalysisOutput:
             d["operating"]["temperature_found"] = self.thermal is not None
             if self.rating is not None:
                 d["rating"] = self.rating.to_dict(i)
+                self._add_truncation(d["rating"], i)
             if self.lubrication is not None:
                 d["lubrication"] = self.lubrication.to_dict(i)
             friction = self.friction

@@ -157,6 +157,8 @@ class ModelInput:
     options : SolverOptions, optional
     material : Material, optional
         Element material (densities for speed effects); default GCr15 bearing steel.
+    hardness : HardnessProfile, optional
+        The raceways' hardness against depth (subsurface check); default the material's.
     """
 
     model: object
@@ -166,6 +168,7 @@ class ModelInput:
     source: str = "<model>"
     options: object = None
     material: object = None
+    hardness: object = None
 
     def __post_init__(self):
         from bearingkit.analysis.solver.quasistatic import SolverOptions

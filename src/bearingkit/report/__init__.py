@@ -163,8 +163,10 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     if op.lubricant is not None:  # the lubricant analysed (a --lubricant replaces the file's)
         shown = dataclasses.replace(shown, lubricant=op.lubricant)
     from bearingkit.report.html_operating import operating_html
+    from bearingkit.report.subsurface import subsurface_section_html
 
-    statics = analysis.statics_dict()["cases"]
+    sub = analysis.statics_dict(subsurface=analysis.subsurface)
+    statics = sub["cases"]
     lub = analysis.lubrication
     extras = [
         (lambda number, c=c, i=i: operating_html(c, None if lub is None else lub.to_dict(i), number))
@@ -181,6 +183,13 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
         load_diagram=analysis.load_diagram,
         case_extras=extras,
         duty_cycle=None if analysis.duty_cycle is None else analysis.duty_cycle.to_dict(),
+        after_cases=[
+            (
+                "Below the surface",
+                "subsurface",
+                lambda number: subsurface_section_html(statics, sub["subsurface"], number),
+            )
+        ],
     )
     return write_report(path, html)
 

@@ -356,6 +356,7 @@ def build_report(
     case_extras=None,
     load_diagram=None,
     duty_cycle=None,
+    after_cases=(),
 ) -> str:
     """The self-contained HTML report (text) of a solved input file.
 
@@ -383,6 +384,9 @@ def build_report(
     duty_cycle : dict, optional
         The duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): a section with
         every bin's life and the combined life, after the load cases.
+    after_cases : sequence of (title, callable)
+        Further sections after the load cases (and the duty cycle): ``f(section_number) -> html``, listed
+        in the contents as ``title`` (the subsurface section).
 
     Returns
     -------
@@ -405,6 +409,7 @@ def build_report(
             for c, lc in enumerate(bearing_input.cases)
         ]
         + (['<li><a href="#duty-cycle">Duty cycle</a></li>'] if duty_cycle is not None else [])
+        + [f'<li><a href="#{_e(anchor)}">{_e(heading)}</a></li>' for heading, anchor, _ in after_cases]
         + ['<li><a href="#warnings">Warnings</a></li>', '<li><a href="#references">References</a></li>']
     )
     missing = []
@@ -433,10 +438,13 @@ def build_report(
     if duty_cycle is not None:
         body.append(duty_cycle_html(duty_cycle, k))
         k += 1
+    for _, _, section in after_cases:
+        body.append(section(k))
+        k += 1
     body.append(f'<section id="warnings" data-section="warnings"><h2>{k}. Warnings</h2>')
     body.append(
-        "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit and non-convergence, "
-        "per load case.</p>"
+        "<p>Edge loading, truncated contact ellipses, stress above the ISO 76 limit, an overloaded hardened "
+        "layer and non-convergence, per load case.</p>"
     )
     body.append(_warning_list([f"[{case}] {w}" for case, w in all_warnings]) + "</section>")
     refs = used_references(result, friction, rating)

@@ -93,8 +93,8 @@ def test_flag_fires_exactly_at_the_closed_form_edge():
 
 def test_file_heights_reach_the_rating_as_lengths_or_fractions():
     # the rating reads the cases solved with the TS's pitch-radius tilt arm (the pair tilts under its
-    # moment; pipeline.rating_statics): the edge heights by hand from that solve
-    from bearingkit.pipeline.rating_statics import ts_statics
+    # moment; pipeline.rating.statics): the edge heights by hand from that solve
+    from bearingkit.pipeline.rating.statics import ts_statics
 
     st = ts_statics(bk.analyze(_pair()))[0].row("balls_A")
     h_i = _edge_height(st, DW, FI, "inner")

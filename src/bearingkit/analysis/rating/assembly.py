@@ -366,6 +366,7 @@ def rate(
     edge_stress_factor: str = "auto",
     load_ratings: Mapping | None = None,
     catalogue_rating=None,
+    static_limit_factor: float = 1.0,
 ) -> RatingResult:
     """Rate every row of a solved bearing and combine the rows into the system life.
 
@@ -379,7 +380,8 @@ def rate(
         L_{10r} = \\Bigl[\\sum_k \\Bigl(\\frac{q_{kei}}{q_{ci}}\\Bigr)^{9/2}
                   + \\Bigl(\\frac{q_{kee}}{q_{ce}}\\Bigr)^{9/2}\\Bigr]^{-8/9}\\ \\text{(rollers)};
 
-    static safety s0 = (p_limit/p_max)^n (4200 MPa, n = 3 ball; 4000 MPa, n = 2 roller; ISO 76:2006 4);
+    static safety s0 = (f p_limit/p_max)^n (4200 MPa, n = 3 ball; 4000 MPa, n = 2 roller; ISO 76:2006 4;
+    f = ``static_limit_factor``, the raceway material's share, 1 for rings of at least 58 HRC);
     a_ISO (ISO 281:2007 9.3.2) at the reference load P_ref = C (L10r/10⁶)^(−1/p) when lubrication inputs
     are given. System: :func:`system_life`; L_nr = a1 L, L10h = L / (3600 ω/2π).
 
@@ -411,6 +413,9 @@ def rate(
         basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry) and,
         divided over the rows as ISO 281 combines them, the C the rows' ISO/TS 16281 raceway ratings start
         from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so).
+        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry).
+    static_limit_factor : float
+        Multiplies ISO 76's limit pressures in s0 [-] (the raceway material's; 1 for rings of ≥ 58 HRC).
 
     Returns
     -------
@@ -433,6 +438,7 @@ def rate(
         edge_pressure_ratio=edge_pressure_ratio,
         edge_stress_factor=edge_stress_factor,
         load_ratings=dict(load_ratings or {}),
+        static_limit_factor=static_limit_factor,
     )
     unknown = set(opts.load_ratings) - {r.name for r in result.model.rows}
     if unknown:

@@ -320,7 +320,9 @@ def rate_self_aligning_ball_row(row, state, ctx: RowContext) -> RowRating:
     # ISO 76 sets the self-aligning limit at 4600 MPa (not 4200): s0 = (4600/p_max)^3.
     p = rating.max_pressure
     loaded = ~np.ma.getmaskarray(rating.static_safety)
-    s0 = iso76.static_safety_from_pressure(np.where(loaded, np.maximum(p, 1.0), 1.0), "self_aligning_ball")
+    s0 = iso76.static_safety_from_pressure(
+        np.where(loaded, np.maximum(p, 1.0), 1.0), "self_aligning_ball", ctx.options.static_limit_factor
+    )
     rating.static_safety = np.ma.masked_array(np.where(loaded, s0, 0.0), ~loaded)
     return rating
 

@@ -94,6 +94,9 @@ class RatingOptions:
         C [N] per row derived from the catalogue C of the bearing (set by :func:`rate` for a designation,
         :func:`bearingkit.analysis.rating.iso281.catalogue_row_ratings`); used like ``load_ratings`` but
         not reported as the user's.
+    static_limit_factor : float
+        Multiplies ISO 76's limit pressures in s0 [-], (0, 1.5]: the raceway material's share (1 for rings
+        of at least 58 HRC; :meth:`bearingkit.hardness.HardnessProfile.limit_factor`).
     """
 
     rotating: str = "inner"
@@ -107,6 +110,7 @@ class RatingOptions:
     edge_stress_factor: str = "auto"
     load_ratings: Mapping = field(default_factory=dict)
     catalogue_ratings: Mapping = field(default_factory=dict)
+    static_limit_factor: float = 1.0
 
     def __post_init__(self):
         checks.one_of("rotating", self.rotating, ("inner", "outer"))
@@ -122,6 +126,8 @@ class RatingOptions:
         checks.in_range("edge_pressure_ratio", self.edge_pressure_ratio, 0.0, 1.0)
         checks.positive("edge_pressure_ratio", self.edge_pressure_ratio)
         checks.one_of("edge_stress_factor", self.edge_stress_factor, EDGE_STRESS_MODES)
+        checks.in_range("static_limit_factor", self.static_limit_factor, 0.0, 1.5)
+        checks.positive("static_limit_factor", self.static_limit_factor)
         for name, c in self.load_ratings.items():
             checks.positive(f"load_ratings[{name!r}]", c, "N")
         lube = (self.lubricant, self.temperature_C, self.contamination_factor)

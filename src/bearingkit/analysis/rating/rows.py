@@ -179,7 +179,7 @@ def _assemble(
     c0_arr = None if c0 is None else np.broadcast_to(np.asarray(c0, float), (n,))
     p_max = state.max_pressure.max(axis=-1)
     limit_kind = "ball" if element == "ball" else "roller"
-    s0 = iso76.static_safety_from_pressure(np.where(loaded, p_max, 1.0), limit_kind)
+    s0 = iso76.static_safety_from_pressure(np.where(loaded, p_max, 1.0), limit_kind, opts.static_limit_factor)
     s0 = _masked(np.where(loaded, s0, 0.0), ~loaded)
     overload = loaded & (np.ma.getdata(s0) < 1.0)
 
@@ -218,10 +218,11 @@ def _assemble(
         if valid[k] and not loaded[k]:
             w.append("no loaded element: no fatigue life or static safety; excluded from the system life")
         if overload[k]:
-            p_lim = iso76.CONTACT_LIMITS[limit_kind][0]
+            p_lim = iso76.CONTACT_LIMITS[limit_kind][0] * opts.static_limit_factor
+            which = "ISO 76" if opts.static_limit_factor == 1.0 else "raceway material's (ISO 76 × hardness)"
             w.append(
                 f"static safety s0 = {float(s0[k]):.3g} < 1: max contact pressure {p_max[k] / 1e6:.0f} MPa "
-                f"exceeds the ISO 76 limit {p_lim / 1e6:.0f} MPa"
+                f"exceeds the {which} limit {p_lim / 1e6:.0f} MPa"
             )
         if flags.get("truncated_ellipse", np.zeros(n, bool))[k]:
             if callable(truncation_text):  # per case: names the height the ellipses need

@@ -373,7 +373,7 @@ def static_safety(static_rating, equivalent_static_load_):
     return np.asarray(static_rating, float) / np.asarray(equivalent_static_load_, float)
 
 
-def static_safety_from_pressure(max_pressure, kind):
+def static_safety_from_pressure(max_pressure, kind, limit_factor=1.0):
     """Static safety from the largest computed contact pressure [-].
 
     C0 is the load producing the limit pressure of ISO 76:2006 clause 4 (4200 MPa ball, 4600 MPa
@@ -381,7 +381,10 @@ def static_safety_from_pressure(max_pressure, kind):
     the contact load grows as p³ in point contact (Q ∝ a b p, a, b ∝ Q^(1/3)) and as p² in line contact
     (q ∝ b p, b ∝ q^(1/2)), so the load ratio equivalent to a pressure ratio is
 
-    .. math:: s_0 = (p_\\mathrm{limit} / p_\\max)^n,\\quad n = 3\\ (\\text{point}),\\ 2\\ (\\text{line})
+    .. math:: s_0 = (f\\, p_\\mathrm{limit} / p_\\max)^n,\\quad n = 3\\ (\\text{point}),\\ 2\\ (\\text{line})
+
+    with f = ``limit_factor`` the raceway material's share of the ISO 76 limit (1 for rings of at least
+    58 HRC; :meth:`bearingkit.hardness.HardnessProfile.limit_factor`).
 
     Parameters
     ----------
@@ -389,13 +392,16 @@ def static_safety_from_pressure(max_pressure, kind):
         Largest maximum Hertz pressure in the bearing p_max [Pa], > 0.
     kind : str
         One of :data:`CONTACT_LIMITS` (``"ball"``, ``"self_aligning_ball"``, ``"roller"``).
+    limit_factor : float
+        f > 0 [-], multiplies the ISO 76 limit pressure (material dependent; default 1).
 
     Returns
     -------
     numpy.ndarray
-        s0 [-]; 1 at the ISO 76 limit pressure.
+        s0 [-]; 1 at the (material's) limit pressure.
     """
     checks.one_of("kind", kind, CONTACT_LIMITS)
     checks.positive("max_pressure", max_pressure, "Pa")
+    checks.positive("limit_factor", limit_factor)
     p_limit, exponent = CONTACT_LIMITS[kind]
-    return (p_limit / np.asarray(max_pressure, dtype=float)) ** exponent
+    return (limit_factor * p_limit / np.asarray(max_pressure, dtype=float)) ** exponent

@@ -24,7 +24,7 @@ DOFS = ("x", "y", "z", "thx", "thy")
 _DOF_LONG = ("u_x", "u_y", "u_z", "theta_x", "theta_y")
 
 #: The parts of an Analysis, in the order they are computed (a later part may need an earlier one).
-PARTS = ("statics", "rows", "rating", "lubrication", "friction", "duty")
+PARTS = ("statics", "rows", "rating", "lubrication", "friction", "duty", "subsurface")
 
 
 @dataclass(frozen=True)
@@ -552,6 +552,63 @@ def _warnings() -> list[Quantity]:
     ]
 
 
+def _below(c: _Context, rows, get, combine) -> np.ndarray:
+    """``combine`` over rows of ``get(row result)[:n]`` of the analysis's subsurface check; NaN if none."""
+    sub = c.analysis.subsurface
+    values = [np.asarray(get(r), float)[: c.n] for r in sub.rows if r.name in rows]
+    return combine(values, axis=0) if values else np.full(c.n, np.nan)
+
+
+def _truncation_safety(c: _Context, rows) -> np.ndarray:
+    values = [t.safety[: c.n] for t in c.analysis.truncation.rows if t is not None and t.name in rows]
+    if not values:
+        return np.full(c.n, np.nan)
+    low = np.min(values, axis=0)
+    return np.where(np.isfinite(low), low, np.nan)
+
+
+def _subsurface(model_rows) -> list[Quantity]:
+    """Subsurface maxima and the hardened-layer check (docs/subsurface.md), of the bearing and per row."""
+    names = tuple(r.name for r in model_rows if r.kind != "threaded")
+    balls = tuple(r.name for r in model_rows if r.kind in ("ball", "four_point", "self_aligning_ball"))
+
+    def quantities(suffix: str, rows: tuple, who: str) -> list[Quantity]:
+        out = [
+            Quantity(
+                f"{suffix}max_von_mises_Pa",
+                "Pa",
+                f"largest von Mises stress below the contacts of {who} (subsurface, frictionless)",
+                "subsurface",
+                lambda c, r=rows: _below(c, r, lambda s: s.max_von_mises[0], np.max),
+            ),
+            Quantity(
+                f"{suffix}case_safety",
+                "-",
+                f"case safety of {who}: yield strength from hardness over von Mises stress below the "
+                "hardened surface (NaN through-hardened)",
+                "subsurface",
+                lambda c, r=rows: _below(c, r, lambda s: s.case.case_safety, np.fmin.reduce),
+            ),
+        ]
+        if set(rows) & set(balls):
+            out.append(
+                Quantity(
+                    f"{suffix}truncation_safety",
+                    "-",
+                    f"track-truncation safety of {who}: shoulder height over the height the ellipses need",
+                    "subsurface",
+                    lambda c, r=rows: _truncation_safety(c, r),
+                )
+            )
+        return out
+
+    out = quantities("", names, "the bearing")
+    if len(names) > 1:
+        for name in names:
+            out += quantities(f"{name}_", (name,), f"row {name!r}")
+    return out
+
+
 def catalogue(bearing) -> dict[str, Quantity]:
     """Every output the generic evaluator offers for ``bearing`` (a BearingInput), by name.
 
@@ -566,6 +623,7 @@ def catalogue(bearing) -> dict[str, Quantity]:
     ]
     items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
     items += _flags(bearing.model.rows)
+    items += _subsurface(bearing.model.rows)
     items += _warnings()
     from bearingkit.studies.generic.limits import limit_quantities
 
