@@ -179,9 +179,10 @@ class DrivetrainAnalysis:
             return out
         for c in range(self.n_cases):
             sysd = a.rating.to_dict(c)["system"]
+            unloaded = all(np.asarray(r.loaded_count)[c] == 0 for r in a.rating.rows)
             for key, src in (("L10h_h", "L10h_h"), ("L10h_iso281_h", "L10h_iso281_h")):
                 v = sysd.get(src)
-                out[key][c] = np.nan if v is None else float(v)
+                out[key][c] = np.inf if unloaded else (np.nan if v is None else float(v))
         return out
 
     @functools.cached_property
@@ -310,11 +311,3 @@ class DrivetrainAnalysis:
         if "html" not in DRIVETRAIN_RENDERERS:
             importlib.import_module(_RENDERER_MODULES["html"])
         return DRIVETRAIN_RENDERERS["html"](self, path, **options)
-
-
-def bearing_speed_hours(life_rev: np.ndarray, speed: np.ndarray) -> np.ndarray:
-    """A life in revolutions as hours at speed [rad/s] (nan at standstill)."""
-    speed = np.abs(np.asarray(speed, float))
-    return np.where(
-        speed > 0, np.asarray(life_rev, float) * 2 * np.pi / np.maximum(speed, 1e-300) / HOUR, np.nan
-    )
