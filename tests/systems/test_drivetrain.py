@@ -14,7 +14,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearingkit.analysis.rating import system_life
 from bearingkit.io.reading import load_toml
 from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
 from bearingkit.systems.drivetrain_input import drivetrain_from_dict, load_drivetrain_file
@@ -253,7 +252,7 @@ def test_bad_input_is_one_line_naming_the_part(edit, needle):
     edit(data)
     with pytest.raises(InputError) as err:
         inp = drivetrain_from_dict(data, "gearbox.toml", base=EXAMPLES)
-        DrivetrainAnalysis(inp).result
+        _ = DrivetrainAnalysis(inp).result
     text = str(err.value)
     assert "\n" not in text and needle in text and text.startswith("gearbox.toml: ")
 
