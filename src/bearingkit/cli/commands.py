@@ -38,6 +38,7 @@ from bearingkit.cli.common import (
     one_line_errors,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
+from bearingkit.cli.system import register as _register_system
 from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError, one_line
 
@@ -480,6 +481,10 @@ def serve(
     from bearingkit.app import serve as run_server
 
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
+
+
+# ``bearingkit system``: drivetrains (its own module, docs/drivetrains.md)
+_register_system(app)
 
 
 def main() -> None:
