@@ -18,7 +18,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 BLOCK = re.compile(r"```python\n(.*?)```", re.S)
 #: (page, number of its leading python blocks that run without optional extras)
-PAGES = [("engine.md", 1), ("ratings.md", 1), ("systems.md", 2)]
+PAGES = [("engine.md", 1), ("ratings.md", 1), ("systems.md", 2), ("drivetrains.md", 1)]
 
 
 def _run(page: str, n_blocks: int) -> str:
@@ -38,7 +38,7 @@ def _run(page: str, n_blocks: int) -> str:
 
 
 #: What each page's examples print (a piece of it): the run reached its last line.
-PRINTS = {"engine.md": "", "ratings.md": "'L10r_rev'", "systems.md": "["}
+PRINTS = {"engine.md": "", "ratings.md": "'L10r_rev'", "systems.md": "[", "drivetrains.md": "0.98"}
 
 
 @pytest.mark.parametrize("page, n_blocks", PAGES, ids=[p for p, _ in PAGES])

@@ -96,7 +96,8 @@ def case_tables(c: dict) -> list:
         out.append(f"  speeds [rpm]: {speeds}")
         meshes_loss = sum(m["loss_W"] for m in p["mesh"].values())
         out.append(
-            f"  power: in {p['input_W']:.1f} W, out {p['output_W']:.1f} W, losses {_num(p['loss_W'], 1.0, '.4g')} W "
+            f"  power: in {p['input_W']:.1f} W, out {p['output_W']:.1f} W, "
+            f"losses {_num(p['loss_W'], 1.0, '.4g')} W "
             f"(bearings {_num((p['loss_W'] or 0) - meshes_loss, 1.0, '.4g')}, meshes {meshes_loss:.4g}), "
             f"efficiency {_num(p['efficiency'], 100.0, '.3f')} %"
         )
@@ -119,6 +120,9 @@ def register(app: typer.Typer) -> None:
         rexs: Path = typer.Option(
             None, "--rexs", help="Write the bearing results into a REXS JSON model here."
         ),
+        stiffness: Path = typer.Option(
+            None, "--stiffness", help="Write every bearing's 5x5 stiffness per case (.csv or .json) here."
+        ),
         contamination: str = _CONTAMINATION_OPTION,
         model: str = typer.Option("components", "--friction-model", help="components | skf | palmgren."),
     ):
@@ -133,6 +137,11 @@ def register(app: typer.Typer) -> None:
         written = []
         if report is not None:
             written.append(analysis.report(report))
+        if stiffness is not None:
+            from bearingkit.systems.drivetrain_output import stiffness_tables
+            from bearingkit.systems.stiffness import write_tables
+
+            written.append(write_tables(stiffness_tables(analysis), stiffness))
         if rexs is not None:
             from bearingkit.io.rexs_export import write_rexs_results
 
@@ -149,7 +158,8 @@ def register(app: typer.Typer) -> None:
             duty = data["duty_cycle"]
             if duty is not None:
                 console.print(
-                    f"duty cycle (Palmgren–Miner): system L10h {_num(duty['system']['L10h_h'], 1.0, '.4g')} h "
+                    "duty cycle (Palmgren–Miner): system L10h "
+                    f"{_num(duty['system']['L10h_h'], 1.0, '.4g')} h "
                     f"(ISO/TS 16281), {_num(duty['system']['L10h_iso281_h'], 1.0, '.4g')} h (ISO 281)",
                     markup=False,
                     highlight=False,

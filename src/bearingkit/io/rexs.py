@@ -198,7 +198,8 @@ def read_rexs(path) -> dict:
     src = str(path)
     if m.get("version") and m["version"] not in SUPPORTED_VERSIONS:
         raise InputError(
-            f"{src}: REXS version {m['version']!r} is not read; bearingkit reads {', '.join(SUPPORTED_VERSIONS)}"
+            f"{src}: REXS version {m['version']!r} is not read; bearingkit reads "
+            f"{', '.join(SUPPORTED_VERSIONS)}"
         )
     comps = m["components"]
     for cid, c in comps.items():

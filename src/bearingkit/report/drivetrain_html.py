@@ -168,7 +168,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
     ]
     body = [
         f"<h1>{_e(title)}</h1>",
-        f'<p class="sub">{len(da.drivetrain.shafts)} shafts · {len(names)} bearings · {len(da.drivetrain.meshes)} '
+        f'<p class="sub">{len(da.drivetrain.shafts)} shafts · {len(names)} bearings · '
+        f"{len(da.drivetrain.meshes)} "
         f"meshes · {da.n_cases} load case(s) · bearingkit {_e(__version__)}</p>",
         _table(
             [
@@ -188,7 +189,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
     if duty is not None:
         body.append(
             f"<p>Duty cycle (Palmgren–Miner over the time fractions): system L10h "
-            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281), {fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281).</p>"
+            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281), "
+            f"{fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281).</p>"
         )
     body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(x)}</li>" for x in data["notes"]) + "</ul>")
     body.append('<section id="layout" data-section="layout"><h2>1. Layout</h2>')
@@ -200,7 +202,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
     k += len(names)
     everything = [f"[{c['case']}] {w}" for c in data["cases"] for w in c["warnings"]]
     body.append(
-        f'<section id="warnings" data-section="warnings"><h2>{k}. Warnings</h2>{_warning_list(everything)}</section>'
+        f'<section id="warnings" data-section="warnings"><h2>{k}. Warnings</h2>'
+        f"{_warning_list(everything)}</section>"
     )
     keys = ["iso281", "iso16281"]
     for a in da.bearings.values():

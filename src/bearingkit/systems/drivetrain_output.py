@@ -198,3 +198,29 @@ def analysis_dict(da) -> dict:
         "notes": da.notes,
         "cases": cases,
     }
+
+
+def stiffness_tables(da) -> list:
+    """Every bearing's tangent stiffness per load case (gearbox axes, ``frame = "shaft"``) as
+    :class:`~bearingkit.systems.stiffness.StiffnessTable` s: CSV/JSON (``write_tables``) and ROSS
+    bearing elements (:func:`bearingkit.systems.ross.ross_bearing`) per shaft. Speeds: the relative
+    speed of the bearing's rings (0 without speeds)."""
+    from bearingkit.systems.stiffness import StiffnessTable
+
+    res = da.result
+    out = []
+    for b in da.drivetrain.bearings:
+        speeds = da.ring_speeds(b.name)
+        rel = np.zeros(da.n_cases) if speeds is None else np.abs(speeds[0] - speeds[1])
+        out.append(
+            StiffnessTable(
+                bearing=b.name,
+                frame="shaft",
+                loads=res.bearing_load(b.name),
+                speeds=np.asarray(rel, float),
+                stiffness=res.stiffness(b.name),
+                converged=np.asarray(res.converged, bool),
+                labels=tuple(da.case_names),
+            )
+        )
+    return out
