@@ -146,8 +146,18 @@ def assemble(dt: Drivetrain, loads: dict, flank=None) -> DrivetrainAssembly:
             body, mesh, kept, seat_dofs, interior, factor, coupling, k_c, nodal, col, None
         )
         col += len(seat_dofs)
+    # A rotation θ_z for the bodies whose rotation something resists or loads: gears in mesh, carriers
+    # (pins on arms) and shafts with an input torque; another shaft's θ_z would be a free mode.
+    turning = {ref[0] for m in dt.meshes for ref in (m.a, m.b)}
+    turning |= {b.inner.body for b in dt.bearings if b.inner.arm[0] or b.inner.arm[1]}
+    for name in loads["torques"]:
+        if name not in turning:
+            raise InputError(
+                f"load_cases.torques.{name}: shaft {name!r} has no gear in mesh: nothing carries its torque; "
+                "give the torque on a geared shaft"
+            )
     for body in dt.shafts:
-        if body.name != dt.held:
+        if body.name != dt.held and body.name in turning:
             blocks[body.name].theta_z = col
             col += 1
     n_struct = col
