@@ -109,3 +109,60 @@ def test_unsupported_parts_are_one_line_refusals(tmp_path, edit, needle):
     with pytest.raises(InputError) as err:
         read_rexs(path)
     assert needle in str(err.value) and "\n" not in str(err.value)
+
+
+def test_the_json_syntax_reads_as_the_xml(tmp_path):
+    """The same model in REXS JSON (1.5 syntax: typed attribute values) builds the same drivetrain."""
+    from bearingkit.io.rexs import parse
+    from bearingkit.systems.drivetrain_input import drivetrain_from_dict
+
+    m = parse(EXAMPLES / "gearbox_two_stage.rexs")
+
+    def attrs(a):
+        out = []
+        for key, (value, unit) in a.items():
+            if isinstance(value, bool):
+                out.append({"id": key, "boolean": value})
+            elif isinstance(value, list):
+                out.append({"id": key, "unit": unit, "floating_point_array": value})
+            elif key == "catalogue_designation" or not value.replace(".", "").replace("-", "").isdigit():
+                out.append({"id": key, "unit": unit, "string": value})
+            else:
+                out.append({"id": key, "unit": unit, "floating_point": float(value)})
+        return out
+
+    model = {
+        "version": m["version"],
+        "applicationId": "test",
+        "applicationVersion": "1",
+        "date": "2026-11-27T21:00:00+00:00",
+        "relations": [
+            {"id": k, "type": r["type"], "refs": [{"id": i, "role": role} for i, role in r["refs"]]}
+            for k, r in enumerate(m["relations"])
+        ],
+        "components": [
+            {"id": i, "name": c["name"], "type": c["type"], "attributes": attrs(c["attrs"])}
+            for i, c in m["components"].items()
+        ],
+        "load_spectrum": {
+            "id": 1,
+            "load_cases": [
+                {
+                    "id": lc["id"],
+                    "components": [{"id": i, "attributes": attrs(a)} for i, a in lc["components"].items()],
+                }
+                for lc in m["load_cases"]
+            ],
+        },
+    }
+    path = tmp_path / "gearbox.rexsj"
+    path.write_text(json.dumps({"model": model}), encoding="utf-8")
+    a = drivetrain_from_dict(read_rexs(path), "json", base=EXAMPLES).drivetrain
+    b = drivetrain_from_dict(read_rexs(EXAMPLES / "gearbox_two_stage.rexs"), "xml", base=EXAMPLES).drivetrain
+    assert [s.centre for s in a.shafts] == [s.centre for s in b.shafts]
+    assert [(x.name, x.inner.position, x.seat.bearing.name) for x in a.bearings] == [
+        (x.name, x.inner.position, x.seat.bearing.name) for x in b.bearings
+    ]
+    assert [(m.name, m.pair.a.teeth, m.pair.b.teeth, m.pair.a.helix_angle) for m in a.meshes] == [
+        (m.name, m.pair.a.teeth, m.pair.b.teeth, m.pair.a.helix_angle) for m in b.meshes
+    ]
