@@ -36,17 +36,17 @@ def test_rexs_model_solves_to_the_toml_result(both):
     np.testing.assert_allclose(rexs.input.loads["time_fraction"], [0.6, 0.1, 0.3], rtol=1e-12)
     for b in toml.drivetrain.bearings:
         ref = toml.result.reaction(b.name)
-        np.testing.assert_allclose(rexs.result.reaction(b.name), ref, rtol=0, atol=1e-6 * np.abs(ref).max())
+        np.testing.assert_allclose(rexs.result.reaction(b.name), ref, rtol=0, atol=1e-9 * np.abs(ref).max())
         for key in ("L10h_h", "L10h_iso281_h"):
             np.testing.assert_allclose(
-                rexs.bearing_lives(b.name)[key], toml.bearing_lives(b.name)[key], rtol=1e-6
+                rexs.bearing_lives(b.name)[key], toml.bearing_lives(b.name)[key], rtol=1e-9
             )
     for m in toml.drivetrain.meshes:
-        np.testing.assert_allclose(rexs.result.mesh_force(m.name), toml.result.mesh_force(m.name), rtol=1e-6)
-    np.testing.assert_allclose(rexs.system_lives["L10h_h"], toml.system_lives["L10h_h"], rtol=1e-6)
+        np.testing.assert_allclose(rexs.result.mesh_force(m.name), toml.result.mesh_force(m.name), rtol=1e-9)
+    np.testing.assert_allclose(rexs.system_lives["L10h_h"], toml.system_lives["L10h_h"], rtol=1e-9)
     # REXS has no mesh friction: the REXS model's losses are the bearings' (the same as the TOML's)
     bearing_loss = sum(toml.power["bearing_loss_W"].values())
-    np.testing.assert_allclose(rexs.power["loss_W"], bearing_loss, rtol=1e-6)
+    np.testing.assert_allclose(rexs.power["loss_W"], bearing_loss, rtol=1e-9)
 
 
 def test_results_go_back_into_a_rexs_json_model(both, tmp_path):
