@@ -25,6 +25,8 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
 - ``external_load`` on a shaft: ``u_coordinate_on_shaft``; ``defines_torque`` true: its
   ``torque_around_u_axis`` is the input torque; ``transmits_torque`` true and ``defines_torque``
   false: its shaft is the held output; ``force_u/v/w_direction``, ``torque_around_v/w_axis``.
+- the bearings' ``contamination_factor_according_to_iso_281_2007`` when they share one value (the
+  ISO 281 e_C of every bearing: a_ISO and L_nm).
 - ``lubricant``: ``viscosity_at_40_degree_celsius`` within ±10 % of an ISO VG grade (ISO 3448) gives
   bearingkit's preset of that grade.
 - load cases: ``rotational_speed`` of the shaft that ``defines_speed``, the casing's
@@ -442,6 +444,13 @@ def read_rexs(path) -> dict:
             grade = min((32, 46, 68, 100, 150, 220), key=lambda g: abs(g - nu40))
             if abs(grade - nu40) <= 0.1 * grade:  # ISO 3448: a grade spans ±10 % of its mid-point
                 out["lubricant"] = {"name": f"ISO_VG{grade}"}
+    e_c = {
+        float(c["attrs"]["contamination_factor_according_to_iso_281_2007"][0])
+        for c in comps.values()
+        if "contamination_factor_according_to_iso_281_2007" in c["attrs"]
+    }
+    if len(e_c) == 1:  # one ISO 281 e_C for every bearing: the file's [lubrication] contamination
+        out["lubrication"] = {"contamination": e_c.pop()}
     if held is None:
         raise InputError(
             f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
