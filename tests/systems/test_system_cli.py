@@ -46,3 +46,12 @@ def test_bad_input_is_one_line_exit_2(tmp_path):
     assert out.exit_code == 2
     lines = [x for x in out.output.splitlines() if x.strip()]
     assert len(lines) == 1 and "meshes.stage_1" in lines[0] and "a_w" in lines[0]
+
+
+def test_the_report_command_takes_a_drivetrain_file(tmp_path):
+    out_file = tmp_path / "p.html"
+    out = CliRunner().invoke(app, ["report", str(EXAMPLES / "planetary_stage.toml"), "-o", str(out_file)])
+    assert out.exit_code == 0, out.output
+    assert 'data-section="layout"' in out_file.read_text(encoding="utf-8")
+    out = CliRunner().invoke(app, ["report", str(EXAMPLES / "planetary_stage.toml"), "--speed", "5rpm"])
+    assert out.exit_code == 2 and "apply to a bearing file" in out.output

@@ -325,7 +325,8 @@ def report(
 ):
     """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings.
 
-    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``)."""
+    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``), a
+    drivetrain file or REXS model (docs/drivetrains.md) the drivetrain report."""
     from bearingkit.cli.shaft_tables import is_shaft_file
 
     if is_shaft_file(file):
@@ -341,6 +342,10 @@ def report(
 
         path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
         console.print(f"wrote {path}")
+        return
+    from bearingkit.cli.system import report_drivetrain
+
+    if report_drivetrain(file, output, contamination, load or case or speed or temperature or lubricant):
         return
     a = _analysis(
         file,

@@ -106,6 +106,28 @@ def case_tables(c: dict) -> list:
     return out
 
 
+def report_drivetrain(file: Path, output: Path, contamination, bearing_options) -> bool:
+    """``bearingkit report FILE`` for a drivetrain file or REXS model: write its report, True; False
+    for any other file (the bearing report's)."""
+    from bearingkit.errors import InputError
+    from bearingkit.systems.drivetrain_input import is_drivetrain_file
+
+    rexs = str(file).lower().endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml"))
+    if not rexs and not (Path(file).suffix.lower() == ".toml" and is_drivetrain_file(file)):
+        return False
+    if bearing_options:
+        raise InputError(
+            f"{file}: --load, --case, --speed, --temperature and --lubricant apply to a bearing file; a "
+            "drivetrain file's [[load_cases]] and [lubricant] give them"
+        )
+    from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
+    from bearingkit.systems.drivetrain_input import load_drivetrain_file
+
+    path = DrivetrainAnalysis(load_drivetrain_file(file), contamination=contamination).report(output)
+    console.print(f"wrote {path}", markup=False, highlight=False)
+    return True
+
+
 def register(app: typer.Typer) -> None:
     """Add the ``system`` command to the CLI app."""
 
