@@ -264,3 +264,24 @@ def test_load_case_budget_is_one_line():
     data["load_cases"] = [dict(data["load_cases"][0], name=f"c{i}", time_fraction=1 / 60) for i in range(60)]
     with pytest.raises(InputError, match=r"raise it with \[budget\] max_load_cases = 60"):
         drivetrain_from_dict(data, "gearbox.toml", base=EXAMPLES)
+
+
+def test_a_reversed_torque_loads_the_other_flanks():
+    """Driving backwards: every tangential and axial tooth force changes sign, the radial ones do not
+    (the other flanks carry); the rigid-bearing reactions still equal the hand balance."""
+    data = _rigid(load_toml(GEARBOX))
+    data["load_cases"] = [
+        {"name": "forward", "torques": {"input": "120 N*m"}},
+        {"name": "reverse", "torques": {"input": "-120 N*m"}},
+    ]
+    res = DrivetrainAnalysis(drivetrain_from_dict(data, "rigid", base=EXAMPLES)).result
+    assert res.converged.all() and np.all([res.mesh_force(m) > 0 for m in ("stage_1", "stage_2")])
+    for m in ("stage_1", "stage_2"):
+        c = res.mesh_components(m, "a")
+        assert c["tangential_N"][1] == pytest.approx(-c["tangential_N"][0], rel=1e-12)
+        assert c["axial_N"][1] == pytest.approx(-c["axial_N"][0], rel=1e-12)
+        assert c["radial_N"][1] == pytest.approx(c["radial_N"][0], rel=1e-12)
+    f1, p1 = _mesh_force_on_pinion(19, 3.0, 15.0, -120.0, (0.0, 0.0), (0.100, 0.0737148))
+    ra, rb = _two_bearing_reactions([(f1, (p1[0], p1[1], 0.050))], 0.010, 0.150)
+    np.testing.assert_allclose(res.reaction("input_A")[1, :3], ra, rtol=0, atol=1e-9 * np.abs(f1).max())
+    np.testing.assert_allclose(res.reaction("input_B")[1, :2], rb, rtol=0, atol=1e-9 * np.abs(f1).max())
