@@ -15,7 +15,7 @@ relative speed of its rings with the ring that turns relative to the load as ``r
 
 System lives. Bearings of a drivetrain turn at different speeds, so the lives are combined in hours:
 L_sys = (Σ_i L_i^(−e))^(−1/e) over the rows of every bearing (ISO 281:2007 slopes e = 10/9 balls,
-9/8 rollers; the mixed case solves Σ (L_sys/L_i)^e_i = 1, :func:`bearingkit.analysis.rating.system_life`),
+9/8 rollers; the mixed case solves Σ (L_sys/L_i)^e_i = 1, :func:`bearingkit.analysis.rating.assembly.system_life`),
 once from the ISO/TS 16281 lives of the rows and once from the ISO 281 basic lives of the bearings. A
 duty cycle (``time_fraction`` per load case) combines the cases by Palmgren–Miner,
 L = 1 / Σ_c (f_c / L_c), for every bearing and for the system.
@@ -28,8 +28,8 @@ import importlib
 
 import numpy as np
 
-from bearingkit.analysis.model import BearingModel
-from bearingkit.analysis.rating import HOUR, system_life
+from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.analysis.rating.assembly import HOUR, system_life
 from bearingkit.errors import InputError
 from bearingkit.pipeline import analyze
 from bearingkit.systems import power_flow

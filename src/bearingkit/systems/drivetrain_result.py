@@ -17,7 +17,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
 from bearingkit.systems.beam import NODE_DOF
@@ -108,7 +108,7 @@ class DrivetrainResult:
 
     def bearing_result(self, name: str):
         """The bearing's QuasiStaticResult at its state (as :meth:`ShaftResult.bearing_result`)."""
-        from bearingkit.analysis.quasistatic import QuasiStaticResult
+        from bearingkit.analysis.solver.quasistatic import QuasiStaticResult
 
         i = self._index(name)
         b = self.drivetrain.bearings[i]

@@ -14,7 +14,7 @@ Equilibrium is the stationary point of the convex potential
 
     Π(x) = ½ xᵀ K x + Σ_m ½ k_m (g_m·x)² − F·x + Σ_b U_b(P_b x + c_b),
 
-so the damped Newton of the single bearing (:func:`bearingkit.analysis.quasistatic._newton`) solves
+so the damped Newton of the single bearing (:func:`bearingkit.analysis.solver.quasistatic._newton`) solves
 all load cases in one batch, as for one shaft. The loaded flank of each mesh is found first from the
 same system with every bearing linearised as a stiff spring (the torque flow fixes the sign of every
 mesh force); a mesh that would pull (δ < 0) after the solve is reported (tooth contact lost).
@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import cho_factor, cho_solve
 
-from bearingkit.analysis.quasistatic import _merge, _newton
+from bearingkit.analysis.solver.quasistatic import _merge, _newton
 from bearingkit.errors import InputError
 from bearingkit.rows.base import N_DOF
 from bearingkit.systems.beam import NODE_DOF
@@ -266,7 +266,7 @@ def mesh_stiffness_matrix(asm: DrivetrainAssembly) -> np.ndarray:
 
 
 class _Problem:
-    """The scaled drivetrain for :func:`bearingkit.analysis.quasistatic._newton` (K per case)."""
+    """The scaled drivetrain for :func:`bearingkit.analysis.solver.quasistatic._newton` (K per case)."""
 
     def __init__(self, laws, projections, offsets, stiffness, scale, options, limit, max_step):
         self.laws, self.P, self.c = laws, projections, offsets
@@ -440,8 +440,8 @@ def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None
 
 def law_for(bearing, inner_speed, outer_speed) -> BearingLaw:
     """The bearing's law with its rows at the ring speeds (C,) [rad/s] in its load frame, bearing axis."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.analysis.speed import OperatingSpeed, model_at_speed
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.analysis.solver.speed import OperatingSpeed, model_at_speed
 
     seat = bearing.seat
     if not isinstance(seat.bearing, BearingModel) or (inner_speed is None and outer_speed is None):
