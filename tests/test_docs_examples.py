@@ -25,6 +25,7 @@ PAGES = [
     ("subsurface.md", 1),
     ("systems.md", 2),
     ("lubricants.md", 1),
+    ("drivetrains.md", 1),
 ]
 
 
@@ -52,6 +53,7 @@ PRINTS = {
     "subsurface.md": "[",
     "systems.md": "[",
     "lubricants.md": "VG68 ester: VI 140",
+    "drivetrains.md": "0.98",
 }
 
 

@@ -15,8 +15,13 @@ from bearingkit.io import export
 from bearingkit.io.loader import BUILDERS, load_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-# Shaft files (examples/shaft_*.toml) are systems of several bearings: tests/systems runs them.
-FILES = sorted(p for p in EXAMPLES.glob("*.toml") if not p.name.startswith("shaft_"))
+# Shaft files (examples/shaft_*.toml) and drivetrain files (a [[shafts]] array: gearbox_two_stage,
+# planetary_stage) are systems of several bearings: tests/systems runs them.
+FILES = sorted(
+    p
+    for p in EXAMPLES.glob("*.toml")
+    if not p.name.startswith("shaft_") and "shafts" not in tomllib.loads(p.read_text(encoding="utf-8"))
+)
 
 
 def _data(path: Path) -> dict:

@@ -3,6 +3,7 @@ key, strict number types, short quotes of long values, nothing over MAX_MESSAGE_
 
 from __future__ import annotations
 
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -132,6 +133,8 @@ def test_unknown_case_among_many_is_short():
 def test_examples_still_load():
     """The strict types refuse nothing the examples write (shaft files: tests/systems)."""
     for path in sorted(p for p in EXAMPLES.glob("*.toml") if not p.name.startswith("shaft_")):
+        if "shafts" in tomllib.loads(path.read_text(encoding="utf-8")):  # a drivetrain file: tests/systems
+            continue
         assert load_file(path).cases, path.name
 
 

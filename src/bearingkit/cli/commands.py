@@ -43,6 +43,7 @@ from bearingkit.cli.common import (
     one_line_errors,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
+from bearingkit.cli.system import register as _register_system
 from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError, one_line
 
@@ -400,7 +401,8 @@ def report(
 ):
     """Write a self-contained HTML report: inputs, load distributions, friction, ratings, warnings.
 
-    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``)."""
+    A shaft file (docs/systems.md) gets the shaft report (as ``bearingkit shaft FILE --report``), a
+    drivetrain file or REXS model (docs/drivetrains.md) the drivetrain report."""
     from bearingkit.cli.shaft_tables import is_shaft_file
 
     if is_shaft_file(file):
@@ -417,6 +419,10 @@ def report(
 
         path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
         console.print(f"wrote {path}")
+        return
+    from bearingkit.cli.system import report_drivetrain
+
+    if report_drivetrain(file, output, contamination, load or case or speed or temperature or lubricant):
         return
     a = _analysis(
         file,
@@ -503,6 +509,10 @@ def serve(
     from bearingkit.app import serve as run_server
 
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
+
+
+# ``bearingkit system``: drivetrains (its own module, docs/drivetrains.md)
+_register_system(app)
 
 
 def main() -> None:

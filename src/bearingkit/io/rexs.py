@@ -1,0 +1,464 @@
+"""REXS import: a gearbox model in the FVA's open exchange format as a drivetrain dictionary.
+
+REXS (Reusable Engineering EXchange Standard, rexs.info) version followed: 1.4 (XML; the JSON syntax of
+1.5, which 1.4 files may use too). The model has ``components`` (each with an id, a type, a name and
+attributes with units) and ``relations`` between them, and a ``load_spectrum`` of load cases that give
+attributes per component. This reader turns one into the dictionary of a drivetrain TOML file
+(docs/drivetrains.md), values with their units as text, so the same validation builds the model.
+
+What is read (everything else is ignored; a part that cannot be modelled is refused with one line):
+
+- ``shaft``: ``u_axis_vector`` (all shafts parallel), ``support_vector`` (where its u = 0 sits),
+  ``defines_speed``; its ``shaft_section`` parts (assembly relation): ``u_coordinate_on_shaft``,
+  ``length``, ``outer_diameter_begin/end``, ``inner_diameter_begin/end`` (cylindrical only); its
+  ``material`` (reference relation): ``elastic_modulus``, ``poisson_ratio``, ``density``.
+- bearings (``side`` relation: ``inner_part`` a shaft, ``outer_part`` a shaft or the ``gear_casing``):
+  ``rolling_bearing_with_catalog_geometry`` (``catalogue_designation``: bearingkit's catalogue
+  estimate, docs/catalogue.md) and ``concept_bearing`` (``radial_stiffness``, ``axial_stiffness``,
+  ``bending_stiffness``: a linear bearing); ``u_coordinate_on_shaft_inner_side``/``_outer_side``;
+  ``axial_force_absorption`` (``no_direction``: floating, else locating).
+- ``cylindrical_gear`` on a shaft: ``u_coordinate_on_shaft``, ``number_of_teeth`` (negative: internal),
+  ``normal_module``, ``helix_angle_reference_diameter`` (signed: positive right hand [from memory]),
+  ``face_width``; its flank (``flank`` relation, the left one): ``normal_pressure_angle``,
+  ``addendum_modification_coefficient``; ``cylindrical_stage`` (``stage`` relation ``gear_1``,
+  ``gear_2``) makes a mesh.
+- ``external_load`` on a shaft: ``u_coordinate_on_shaft``; ``defines_torque`` true: its
+  ``torque_around_u_axis`` is the input torque; ``transmits_torque`` true and ``defines_torque``
+  false: its shaft is the held output; ``force_u/v/w_direction``, ``torque_around_v/w_axis``.
+- the bearings' ``contamination_factor_according_to_iso_281_2007`` when they share one value (the
+  ISO 281 e_C of every bearing: a_ISO and L_nm).
+- ``lubricant``: ``viscosity_at_40_degree_celsius`` within ±10 % of an ISO VG grade (ISO 3448) gives
+  bearingkit's preset of that grade.
+- load cases: ``rotational_speed`` of the shaft that ``defines_speed``, the casing's
+  ``temperature_lubricant``, the gear unit's ``load_duration_fraction`` (or its ``custom_`` form).
+
+Axes: u (the shafts' axis) is bearingkit's z; v = w × u and w of the gear unit are x and y.
+Refused: non-parallel shafts, conical sections, bearings with detailed geometry, planetary and other
+gear types (bevel, worm), more than one input speed.
+"""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+
+from bearingkit.errors import InputError
+from bearingkit.io.reading import read_text
+
+#: REXS unit names → the unit text bearingkit parses.
+UNITS = {
+    "mm": "mm",
+    "m": "m",
+    "mum": "um",
+    "deg": "deg",
+    "rad": "rad",
+    "N": "N",
+    "kN": "kN",
+    "N m": "N*m",
+    "N mm": "N*mm",
+    "1 / min": "rpm",
+    "C": "degC",
+    "N / mm^2": "N/mm^2",
+    "kg / dm^3": "kg/dm^3",
+    "kg / m^3": "kg/m^3",
+    "N / m": "N/m",
+    "N / mm": "N/mm",
+    "N / mum": "N/um",
+    "N mm / rad": "N*mm/rad",
+    "N m / rad": "N*m/rad",
+    "%": "%",
+    "": "",
+    "none": "",
+    "mm^2 / s": "mm^2/s",
+}
+SUPPORTED_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6")
+_REFUSED_TYPES = {
+    "rolling_bearing_with_detailed_geometry": "a bearing with detailed geometry (give its designation, or "
+    "write a bearing file and a drivetrain TOML)",
+    "planetary_stage": "a planetary stage (write it as a [[planetary]] table of a drivetrain TOML)",
+    "bevel_gear": "a bevel gear (only cylindrical gears are modelled)",
+    "worm_gear": "a worm gear (only cylindrical gears are modelled)",
+    "worm_wheel": "a worm wheel (only cylindrical gears are modelled)",
+}
+
+
+def _value_xml(el):
+    arr = el.find("array")
+    if arr is not None:
+        return [float(c.text) for c in arr.findall("c")]
+    text = (el.text or "").strip()
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
+    return text  # numbers stay text until read (a designation like "6208" is a string)
+
+
+def _attrs_xml(comp) -> dict:
+    return {a.get("id"): (_value_xml(a), a.get("unit") or "") for a in comp.findall("attribute")}
+
+
+def _attrs_json(comp) -> dict:
+    out = {}
+    for a in comp.get("attributes", []):
+        value = None
+        for key, v in a.items():
+            if key not in ("id", "unit"):
+                value = v
+        out[a["id"]] = (value, a.get("unit", "") or "")
+    return out
+
+
+def parse(path) -> dict:
+    """A REXS file as {version, components: {id: {type, name, attrs}}, relations: [{type, refs}],
+    load_cases: [{id, components: {id: attrs}}]} (XML or JSON)."""
+    path = Path(path)
+    text = read_text(path).lstrip("\ufeff")
+    model = {"components": {}, "relations": [], "load_cases": []}
+    if text.lstrip().startswith("{"):
+        try:
+            root = json.loads(text)["model"]
+        except (ValueError, KeyError, TypeError):
+            raise InputError(f'{path}: not a REXS JSON model (expected {{"model": {{...}}}})') from None
+        model["version"] = str(root.get("version", ""))
+        for c in root.get("components", []):
+            model["components"][int(c["id"])] = {
+                "type": c.get("type"),
+                "name": c.get("name", ""),
+                "attrs": _attrs_json(c),
+            }
+        for r in root.get("relations", []):
+            model["relations"].append(
+                {"type": r.get("type"), "refs": [(int(x["id"]), x.get("role")) for x in r.get("refs", [])]}
+            )
+        for lc in (root.get("load_spectrum") or {}).get("load_cases", []):
+            model["load_cases"].append(
+                {
+                    "id": lc.get("id"),
+                    "components": {int(c["id"]): _attrs_json(c) for c in lc.get("components", [])},
+                }
+            )
+        return model
+    try:
+        root = ET.fromstring(text)
+    except ET.ParseError as exc:
+        raise InputError(f"{path}: not a REXS XML model ({exc})") from None
+    if root.tag != "model":
+        raise InputError(f"{path}: not a REXS model (root element {root.tag!r}, expected 'model')")
+    model["version"] = root.get("version", "")
+    components = root.find("components")
+    for c in [] if components is None else components.findall("component"):
+        model["components"][int(c.get("id"))] = {
+            "type": c.get("type"),
+            "name": c.get("name", ""),
+            "attrs": _attrs_xml(c),
+        }
+    for r in root.iter("relation"):
+        model["relations"].append(
+            {"type": r.get("type"), "refs": [(int(x.get("id")), x.get("role")) for x in r.findall("ref")]}
+        )
+    spectrum = root.find("load_spectrum")
+    if spectrum is not None:
+        for lc in spectrum.findall("load_case"):
+            model["load_cases"].append(
+                {
+                    "id": lc.get("id"),
+                    "components": {int(c.get("id")): _attrs_xml(c) for c in lc.findall("component")},
+                }
+            )
+    return model
+
+
+def _q(attrs: dict, key: str, where: str, required: bool = True):
+    if key not in attrs:
+        if required:
+            raise InputError(f"{where}: attribute {key!r} missing")
+        return None
+    value, unit = attrs[key]
+    if unit not in UNITS:
+        raise InputError(
+            f"{where}.{key}: unit {unit!r} is not one bearingkit reads ({', '.join(k for k in UNITS if k)})"
+        )
+    if isinstance(value, list):
+        return value
+    if unit == "%":
+        return float(value) / 100.0
+    return f"{value} {UNITS[unit]}".strip() if UNITS[unit] else value
+
+
+def _si(attrs, key, factor_to_mm=1.0):
+    value, unit = attrs[key]
+    scale = {"mm": 1.0, "m": 1e3, "mum": 1e-3}.get(unit, 1.0)
+    return np.asarray(value, float) * scale * factor_to_mm
+
+
+def read_rexs(path) -> dict:
+    """The drivetrain dictionary of a REXS model (module docstring); one InputError line if refused."""
+    path = Path(path)
+    m = parse(path)
+    src = str(path)
+    if m.get("version") and m["version"] not in SUPPORTED_VERSIONS:
+        raise InputError(
+            f"{src}: REXS version {m['version']!r} is not read; bearingkit reads "
+            f"{', '.join(SUPPORTED_VERSIONS)}"
+        )
+    comps = m["components"]
+    for cid, c in comps.items():
+        if c["type"] in _REFUSED_TYPES:
+            raise InputError(
+                f"{src}: component {cid} ({c['name']}): {_REFUSED_TYPES[c['type']]} is not supported"
+            )
+    parts = {}
+    for r in m["relations"]:
+        if r["type"] == "assembly":
+            roles = dict((role, i) for i, role in r["refs"])
+            parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
+    shafts = [i for i, c in comps.items() if c["type"] == "shaft"]
+    if not shafts:
+        raise InputError(f"{src}: no shaft component")
+    unit = next((c for c in comps.values() if c["type"] == "gear_unit"), None)
+    u = np.asarray(comps[shafts[0]]["attrs"].get("u_axis_vector", ([1.0, 0.0, 0.0], ""))[0], float)
+    u /= np.linalg.norm(u)
+    w_ref = np.asarray((unit or {"attrs": {}})["attrs"].get("w_axis_vector", ([0.0, 0.0, 1.0], ""))[0], float)
+    w = w_ref - (w_ref @ u) * u
+    if np.linalg.norm(w) < 1e-9:
+        w = np.array([0.0, 1.0, 0.0]) - u[1] * u
+    w /= np.linalg.norm(w)
+    v = np.cross(w, u)
+    materials = {}
+    for r in m["relations"]:
+        if r["type"] == "reference":
+            roles = dict((role, i) for i, role in r["refs"])
+            materials[roles.get("origin")] = roles.get("referenced")
+    names = {i: comps[i]["name"] or f"shaft {i}" for i in shafts}
+    out_shafts, gear_names, gear_shaft = [], {}, {}
+    for i in shafts:
+        c = comps[i]
+        where = f"{src}: shaft {i} ({c['name']})"
+        ax = np.asarray(c["attrs"].get("u_axis_vector", (u.tolist(), ""))[0], float)
+        if abs(abs(ax @ u) / np.linalg.norm(ax) - 1.0) > 1e-9:
+            raise InputError(
+                f"{where}: its axis {ax.tolist()} is not parallel to the others' {u.tolist()}: "
+                "non-parallel shafts (bevel, worm stages) are not supported"
+            )
+        support = _si(c["attrs"], "support_vector") if "support_vector" in c["attrs"] else np.zeros(3)
+        sections = []
+        for p in sorted(
+            parts.get(i, []), key=lambda p: float(comps[p]["attrs"].get("u_coordinate_on_shaft", (0, ""))[0])
+        ):
+            s = comps[p]
+            if s["type"] != "shaft_section":
+                continue
+            a = s["attrs"]
+            sw = f"{where}: section {p}"
+            for key in ("outer_diameter", "inner_diameter"):
+                if key + "_begin" in a and a[key + "_begin"][0] != a.get(key + "_end", a[key + "_begin"])[0]:
+                    raise InputError(
+                        f"{sw}: a conical section ({key} changes) is not supported; split it into steps"
+                    )
+            sections.append(
+                {
+                    "start": _q(a, "u_coordinate_on_shaft", sw),
+                    "length": _q(a, "length", sw),
+                    "outer_diameter": _q(a, "outer_diameter_begin", sw),
+                    "inner_diameter": _q(a, "inner_diameter_begin", sw, False) or "0 mm",
+                }
+            )
+        if not sections:
+            raise InputError(f"{where}: no shaft_section parts")
+        shaft = {
+            "name": names[i],
+            "centre": [f"{support @ v} mm", f"{support @ w} mm"],
+            "axial_offset": f"{support @ u} mm",
+            "sections": sections,
+            "bearings": [],
+            "gears": [],
+        }
+        mat = materials.get(i)
+        if mat is not None and comps[mat]["type"] == "material":
+            a = comps[mat]["attrs"]
+            mw = f"{where}: material {mat}"
+            shaft["material"] = {
+                "youngs_modulus": _q(a, "elastic_modulus", mw),
+                "poisson_ratio": float(a["poisson_ratio"][0]),
+                "density": _q(a, "density", mw),
+            }
+        for p in parts.get(i, []):
+            if comps[p]["type"] == "cylindrical_gear":
+                gear_names[p] = comps[p]["name"] or f"gear {p}"
+                gear_shaft[p] = i
+        out_shafts.append(shaft)
+    by_id = dict(zip(shafts, out_shafts, strict=True))
+    flank = {}
+    for r in m["relations"]:
+        if r["type"] == "flank":
+            roles = {role: i for i, role in r["refs"]}
+            flank[roles.get("gear")] = roles.get("left") or roles.get("right")
+    for gid, sid in gear_shaft.items():
+        a = comps[gid]["attrs"]
+        gw = f"{src}: cylindrical_gear {gid} ({gear_names[gid]})"
+        teeth = int(float(a["number_of_teeth"][0])) if "number_of_teeth" in a else None
+        if teeth is None:
+            raise InputError(f"{gw}: attribute 'number_of_teeth' missing")
+        beta = float(a.get("helix_angle_reference_diameter", (0.0, "deg"))[0])  # noqa: RUF100
+        fa = comps[flank[gid]]["attrs"] if gid in flank else {}
+        gear = {
+            "name": gear_names[gid],
+            "position": _q(a, "u_coordinate_on_shaft", gw),
+            "teeth": abs(teeth),
+            "normal_module": _q(a, "normal_module", gw),
+            "helix_angle": f"{abs(beta)} deg",
+            "hand": "right" if beta >= 0 else "left",
+            "face_width": _q(a, "face_width", gw),
+            "internal": teeth < 0,
+        }
+        if "normal_pressure_angle" in fa:
+            gear["pressure_angle"] = _q(fa, "normal_pressure_angle", gw)
+        if "addendum_modification_coefficient" in fa:
+            gear["profile_shift"] = float(fa["addendum_modification_coefficient"][0])
+        by_id[sid]["gears"].append(gear)
+    meshes = []
+    for r in m["relations"]:
+        if r["type"] == "stage":
+            roles = {role: i for i, role in r["refs"]}
+            g1, g2 = roles.get("gear_1"), roles.get("gear_2")
+            if g1 not in gear_names or g2 not in gear_names:
+                raise InputError(
+                    f"{src}: stage {roles.get('stage')}: gears {g1}, {g2} are not cylindrical gears on shafts"
+                )
+            meshes.append(
+                {
+                    "name": comps[roles["stage"]]["name"] or f"stage {roles['stage']}",
+                    "gears": [gear_names[g1], gear_names[g2]],
+                }
+            )
+    for r in m["relations"]:
+        if r["type"] != "side":
+            continue
+        roles = {role: i for i, role in r["refs"]}
+        bid, inner, outer = roles.get("assembly"), roles.get("inner_part"), roles.get("outer_part")
+        c = comps[bid]
+        a = c["attrs"]
+        bw = f"{src}: bearing {bid} ({c['name']})"
+        if inner not in by_id:
+            raise InputError(f"{bw}: its inner part {inner} is not a shaft")
+        bearing = {
+            "name": c["name"] or f"bearing {bid}",
+            "position": _q(a, "u_coordinate_on_shaft_inner_side", bw),
+        }
+        absorption = a.get("axial_force_absorption", ("both_directions", ""))[0]
+        bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
+        if c["type"] == "rolling_bearing_with_catalog_geometry":
+            bearing["designation"] = str(_q(a, "catalogue_designation", bw))
+        elif c["type"] == "concept_bearing":
+            k_r = _q(a, "radial_stiffness", bw, False) or "1e12 N/m"
+            k_a = _q(a, "axial_stiffness", bw, False) or (
+                "0 N/m" if absorption == "no_direction" else "1e12 N/m"
+            )
+            k_t = _q(a, "bending_stiffness", bw, False) or "0 N*m/rad"
+            bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
+        else:
+            raise InputError(f"{bw}: bearing type {c['type']!r} is not supported")
+        if outer in by_id:
+            bearing["outer"] = by_id[outer]["name"]
+            bearing["outer_position"] = _q(a, "u_coordinate_on_shaft_outer_side", bw)
+        by_id[inner]["bearings"].append(bearing)
+    held, inputs, loads_at = None, {}, {}
+    for sid in shafts:
+        for p in parts.get(sid, []):
+            if comps[p]["type"] != "external_load":
+                continue
+            a = comps[p]["attrs"]
+            loads_at[p] = (sid, _q(a, "u_coordinate_on_shaft", f"{src}: external_load {p}", False) or "0 mm")
+            if a.get("defines_torque", (False, ""))[0] is True:
+                inputs[p] = sid
+            elif a.get("transmits_torque", (False, ""))[0] is True:
+                held = by_id[sid]["name"]
+    speed_shaft = [sid for sid in shafts if comps[sid]["attrs"].get("defines_speed", (False, ""))[0] is True]
+    if len(speed_shaft) > 1:
+        raise InputError(f"{src}: more than one shaft defines the speed; bearingkit takes one input speed")
+    casing = [i for i, c in comps.items() if c["type"] == "gear_casing"]
+    unit_id = next((i for i, c in comps.items() if c["type"] == "gear_unit"), None)
+    cases = []
+    for k, lc in enumerate(m["load_cases"]):
+        case = {
+            "name": f"load case {lc['id'] if lc['id'] is not None else k + 1}",
+            "torques": {},
+            "forces": [],
+        }
+        cw = f"{src}: load case {lc['id']}"
+        for p, sid in inputs.items():
+            if p in lc["components"] and "torque_around_u_axis" in lc["components"][p]:
+                case["torques"][by_id[sid]["name"]] = _q(lc["components"][p], "torque_around_u_axis", cw)
+        for p, (sid, pos) in loads_at.items():
+            a = lc["components"].get(p, {})
+            vals = {
+                key: a[key]
+                for key in (
+                    "force_u_direction",
+                    "force_v_direction",
+                    "force_w_direction",
+                    "torque_around_v_axis",
+                    "torque_around_w_axis",
+                )
+                if key in a
+            }
+            if any(float(x[0]) != 0.0 for x in vals.values()):
+                f = {"shaft": by_id[sid]["name"], "name": comps[p]["name"] or f"load {p}", "position": pos}
+                for key, field in (
+                    ("force_v_direction", "F_x"),
+                    ("force_w_direction", "F_y"),
+                    ("force_u_direction", "F_z"),
+                    ("torque_around_v_axis", "M_x"),
+                    ("torque_around_w_axis", "M_y"),
+                ):
+                    if key in vals:
+                        f[field] = _q(vals, key, cw)
+                case["forces"].append(f)
+        if speed_shaft and "rotational_speed" in lc["components"].get(speed_shaft[0], {}):
+            case["speed"] = {
+                by_id[speed_shaft[0]]["name"]: _q(lc["components"][speed_shaft[0]], "rotational_speed", cw)
+            }
+        for cid in casing:
+            if "temperature_lubricant" in lc["components"].get(cid, {}):
+                case["temperature"] = _q(lc["components"][cid], "temperature_lubricant", cw)
+        ua = lc["components"].get(unit_id, {})
+        for key in ("load_duration_fraction", "custom_load_duration_fraction"):
+            if key in ua:
+                case["time_fraction"] = _q(ua, key, cw)
+        cases.append(case)
+    if not cases:
+        raise InputError(f"{src}: no load cases (load_spectrum) in the model")
+    fractions = [c.get("time_fraction") for c in cases]
+    if all(f is not None for f in fractions) and sum(fractions) > 0:
+        for c in cases:
+            c["time_fraction"] = c["time_fraction"] / sum(fractions)
+    else:
+        for c in cases:
+            c.pop("time_fraction", None)
+    out = {}
+    for c in comps.values():  # an ISO VG oil: bearingkit's preset of that grade (friction, κ, L_nm)
+        if c["type"] == "lubricant" and "viscosity_at_40_degree_celsius" in c["attrs"]:
+            nu40 = float(c["attrs"]["viscosity_at_40_degree_celsius"][0])
+            grade = min((32, 46, 68, 100, 150, 220), key=lambda g: abs(g - nu40))
+            if abs(grade - nu40) <= 0.1 * grade:  # ISO 3448: a grade spans ±10 % of its mid-point
+                out["lubricant"] = {"name": f"ISO_VG{grade}"}
+    e_c = {
+        float(c["attrs"]["contamination_factor_according_to_iso_281_2007"][0])
+        for c in comps.values()
+        if "contamination_factor_according_to_iso_281_2007" in c["attrs"]
+    }
+    if len(e_c) == 1:  # one ISO 281 e_C for every bearing: the file's [lubrication] contamination
+        out["lubrication"] = {"contamination": e_c.pop()}
+    if held is None:
+        raise InputError(
+            f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
+        )
+    return {
+        "drivetrain": {"name": (unit or {}).get("name") or path.stem, "held": held},
+        "shafts": out_shafts,
+        "meshes": meshes,
+        "load_cases": cases,
+        **out,
+    }

@@ -1,0 +1,112 @@
+"""REXS export: the bearing results of a drivetrain written into a REXS JSON model (version 1.4 content,
+the JSON syntax of REXS 1.5).
+
+Where the model came from a REXS file, its components and relations are kept (same ids) and the
+results are added to its load spectrum; otherwise a model of one component per bearing is written.
+Per load case and bearing: the relative displacement of the inner ring against the outer ring in the
+standard attributes ``axial_deflection`` [µm] and ``angular_deflection_in_v`` / ``_in_w`` [rad]
+(REXS 1.0–1.4 attribute database), and, where REXS has no attribute for a bearingkit result, the
+extension attributes the specification allows (``custom_`` prefix): ``custom_bearingkit_radial_force``
+and ``custom_bearingkit_axial_force`` [N], ``custom_bearingkit_l10h_iso_ts_16281`` and
+``custom_bearingkit_l10h_iso_281`` [h], ``custom_bearingkit_power_loss`` [W],
+``custom_bearingkit_static_safety`` [-], ``custom_bearingkit_max_contact_pressure`` [N/mm²].
+Input is the JSON dictionary of :meth:`bearingkit.systems.drivetrain_analysis.DrivetrainAnalysis.to_dict`.
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+from pathlib import Path
+
+from bearingkit.io.export import to_json
+
+#: REXS version whose attribute names the export uses.
+REXS_VERSION = "1.4"
+
+
+def _attr(i, unit, value):
+    return {"id": i, "unit": unit, "floating_point": value}
+
+
+def _source_components(source) -> tuple[list, list, dict]:
+    """(components, relations, bearing name → id) of a source REXS model, as JSON."""
+    from bearingkit.io.rexs import parse
+
+    m = parse(source)
+    comps, ids = [], {}
+    for cid, c in m["components"].items():
+        attrs = []
+        for key, (value, unit) in c["attrs"].items():
+            kind = (
+                "boolean"
+                if isinstance(value, bool)
+                else "floating_point_array"
+                if isinstance(value, list)
+                else "string"
+            )
+            attrs.append({"id": key, "unit": unit, kind: value})
+        comps.append({"id": cid, "name": c["name"], "type": c["type"], "attributes": attrs})
+        if "bearing" in (c["type"] or ""):
+            ids[c["name"]] = cid
+    rels = [
+        {"id": k + 1, "type": r["type"], "refs": [{"id": i, "role": role} for i, role in r["refs"]]}
+        for k, r in enumerate(m["relations"])
+    ]
+    return comps, rels, ids
+
+
+def write_rexs_results(data: dict, path, source=None) -> Path:
+    """Write the results of ``data`` (a DrivetrainAnalysis dict) as a REXS JSON model to ``path``."""
+    path = Path(path)
+    src = source if source is not None else data.get("file")
+    comps, rels, ids = [], [], {}
+    if src is not None and str(src).lower().endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml")):
+        comps, rels, ids = _source_components(src)
+    next_id = max([c["id"] for c in comps], default=0) + 1
+    for b in data["inputs"]["bearings"]:
+        if b["name"] not in ids:
+            ids[b["name"]] = next_id
+            comps.append({"id": next_id, "name": b["name"], "type": "concept_bearing", "attributes": []})
+            next_id += 1
+    cases = []
+    for k, c in enumerate(data["cases"]):
+        entries = []
+        for b in c["bearings"]:
+            s, q = b["summary"], b["relative_displacement"]
+            attrs = [
+                _attr("axial_deflection", "mum", q["u_z_m"] * 1e6),
+                _attr("angular_deflection_in_v", "rad", q["theta_x_rad"]),
+                _attr("angular_deflection_in_w", "rad", q["theta_y_rad"]),
+                _attr("custom_bearingkit_radial_force", "N", s["radial_load_N"]),
+                _attr("custom_bearingkit_axial_force", "N", s["axial_load_N"]),
+            ]
+            for key, rid, unit, scale in (
+                ("L10h_h", "custom_bearingkit_l10h_iso_ts_16281", "h", 1.0),
+                ("L10h_iso281_h", "custom_bearingkit_l10h_iso_281", "h", 1.0),
+                ("power_loss_W", "custom_bearingkit_power_loss", "W", 1.0),
+                ("static_safety", "custom_bearingkit_static_safety", "none", 1.0),
+                ("max_pressure_Pa", "custom_bearingkit_max_contact_pressure", "N / mm^2", 1e-6),
+            ):
+                if s.get(key) is not None:
+                    attrs.append(_attr(rid, unit, s[key] * scale))
+            entries.append({"id": ids[b["name"]], "attributes": attrs})
+        cases.append({"id": k + 1, "components": entries})
+    model = {
+        "model": {
+            "version": REXS_VERSION,
+            "applicationId": "bearingkit",
+            "applicationVersion": "0.1",
+            "date": datetime.datetime.now(datetime.UTC).replace(microsecond=0).isoformat(),
+            "applicationLanguage": "en",
+            "relations": rels,
+            "components": comps,
+            "load_spectrum": {"id": 1, "load_cases": cases},
+        }
+    }
+    text = to_json(model)
+    json.loads(text)  # strict JSON (no NaN)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text("\ufeff" + text + "\n", encoding="utf-8")
+    tmp.replace(path)
+    return path

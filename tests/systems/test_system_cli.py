@@ -1,0 +1,57 @@
+"""``bearingkit system``: the tables, the JSON, the report, the REXS export, and bad input as one line."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from bearingkit.cli.commands import app
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def test_system_json_tables_report_and_rexs(tmp_path):
+    runner = CliRunner()
+    out = runner.invoke(app, ["system", str(EXAMPLES / "planetary_stage.toml"), "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.output)
+    case = data["cases"][0]
+    forces = [m["normal_force_N"] for m in case["meshes"]]
+    assert max(forces) - min(forces) < 1e-6 * max(forces)
+    assert case["power"]["output_W"] < case["power"]["input_W"]
+    report, rexs = tmp_path / "r.html", tmp_path / "r.rexsj"
+    out = runner.invoke(
+        app, ["system", str(EXAMPLES / "planetary_stage.toml"), "--report", str(report), "--rexs", str(rexs)]
+    )
+    assert out.exit_code == 0, out.output
+    assert "stage.sun-planet1" in out.output and "efficiency" in out.output
+    html = report.read_text(encoding="utf-8")
+    assert 'data-section="layout"' in html and html.count('data-section="bearing"') == 10
+    # the report shows the JSON's efficiency (display rounding)
+    eff = case["power"]["efficiency"] * 100
+    assert f"{eff:.5g}"[:5] in html
+    model = json.loads(rexs.read_text(encoding="utf-8-sig"))["model"]
+    assert len(model["load_spectrum"]["load_cases"]) == 2
+
+
+def test_bad_input_is_one_line_exit_2(tmp_path):
+    text = (
+        (EXAMPLES / "gearbox_two_stage.toml").read_text(encoding="utf-8").replace("teeth = 61", "teeth = 62")
+    )
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text, encoding="utf-8")
+    out = CliRunner().invoke(app, ["system", str(bad)])
+    assert out.exit_code == 2
+    lines = [x for x in out.output.splitlines() if x.strip()]
+    assert len(lines) == 1 and "meshes.stage_1" in lines[0] and "a_w" in lines[0]
+
+
+def test_the_report_command_takes_a_drivetrain_file(tmp_path):
+    out_file = tmp_path / "p.html"
+    out = CliRunner().invoke(app, ["report", str(EXAMPLES / "planetary_stage.toml"), "-o", str(out_file)])
+    assert out.exit_code == 0, out.output
+    assert 'data-section="layout"' in out_file.read_text(encoding="utf-8")
+    out = CliRunner().invoke(app, ["report", str(EXAMPLES / "planetary_stage.toml"), "--speed", "5rpm"])
+    assert out.exit_code == 2 and "apply to a bearing file" in out.output
