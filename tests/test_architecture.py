@@ -196,7 +196,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
         ("designs", "results"),
     ),
     "io": (
-        ("loader",),
+        ("loader", "rexs"),
         ("build", "load_cases", "export"),
         ("schema_cycle", "schema_operating"),
         ("messages",),

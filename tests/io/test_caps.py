@@ -90,7 +90,7 @@ def test_report_refuses_many_cases_before_writing(tmp_path):
 
 def test_shaft_file_cases():
     """The shaft solver takes ~0.1-0.2 s per case: at most MAX_SHAFT_CASES per file, counted first."""
-    from bearingkit.systems.input import MAX_SHAFT_CASES, shaft_from_dict
+    from bearingkit.systems.shaft.input import MAX_SHAFT_CASES, shaft_from_dict
 
     data = tomllib.loads((EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8"))
     data["load_cases"] = [{**data["load_cases"][0], "name": f"c{i}"} for i in range(MAX_SHAFT_CASES + 1)]

@@ -5,7 +5,7 @@ Closed forms used (prismatic beam, E, G = E/2(1+ν), I, A, κ):
   (bending plus the shear angle P/(κGA) along the length; the section rotation has no shear part);
 - simply supported, uniform load w: mid-span deflection 5 w L⁴/(384 EI) + w L²/(8 κ G A).
 The element is exact for end loads and, with its consistent loads, for uniform loads (module
-docstring of bearingkit.systems.beam), so the tolerance is round-off (1e-9 relative).
+docstring of bearingkit.systems.shaft.beam), so the tolerance is round-off (1e-9 relative).
 """
 
 from __future__ import annotations
@@ -13,9 +13,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from bearingkit.systems import beam
-from bearingkit.systems.shaft import Section, Shaft
-from bearingkit.systems.solver import rigid_modes
+from bearingkit.systems.shaft import beam
+from bearingkit.systems.shaft.shaft import Section, Shaft
+from bearingkit.systems.shaft.solver import rigid_modes
 
 E, NU = 210e9, 0.3
 G = E / (2 * (1 + NU))

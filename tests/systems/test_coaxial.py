@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-from bearingkit.systems.drivetrain_input import drivetrain_from_dict
+from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+from bearingkit.systems.drivetrain.input import drivetrain_from_dict
 
 RIGID = {"radial": "1e12 N/m", "axial": "1e12 N/m", "tilt": "0 N*m/rad"}
 FREE_AXIAL = {"radial": "1e12 N/m", "axial": "0 N/m", "tilt": "0 N*m/rad"}

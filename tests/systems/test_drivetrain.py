@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from bearingkit.io.reading import load_toml
-from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-from bearingkit.systems.drivetrain_input import drivetrain_from_dict, load_drivetrain_file
-from bearingkit.systems.gearing import GearGeometry, GearPair
+from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+from bearingkit.systems.drivetrain.gearing import GearGeometry, GearPair
+from bearingkit.systems.drivetrain.input import drivetrain_from_dict, load_drivetrain_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 GEARBOX = EXAMPLES / "gearbox_two_stage.toml"

@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from bearingkit.studies.drivetrain import DRIVETRAIN
+from bearingkit.studies.generic.drivetrain import DRIVETRAIN
 
 GEARBOX = Path(__file__).resolve().parents[2] / "examples" / "gearbox_two_stage.toml"
 
@@ -35,7 +35,7 @@ def test_torque_scale_and_bearing_choice_move_the_lives_the_right_way():
 def test_a_ratio_change_keeps_the_centre_distance_and_refuses_an_unknown_gear():
     from bearingkit.errors import InputError
     from bearingkit.io.reading import load_toml
-    from bearingkit.studies.drivetrain import _edit
+    from bearingkit.studies.generic.drivetrain import _edit
 
     row = {
         "torque_scale": 1.0,

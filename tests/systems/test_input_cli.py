@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.systems.input import load_shaft_file, shaft_dict, shaft_from_dict
-from bearingkit.systems.loads import Gear
+from bearingkit.systems.shaft.input import load_shaft_file, shaft_dict, shaft_from_dict
+from bearingkit.systems.shaft.loads import Gear
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SHAFT_FILES = sorted(EXAMPLES.glob("shaft_*.toml"))
@@ -162,7 +162,7 @@ def test_cli_shaft_bad_file_is_one_line(tmp_path):
 
 
 def test_plot_draws_the_lines():
-    from bearingkit.report.shaft_plots import shaft_figure
+    from bearingkit.report.systems.shaft_plots import shaft_figure
 
     res = load_shaft_file(COUNTERSHAFT).solve()
     fig = shaft_figure(res, 0)

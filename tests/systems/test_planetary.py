@@ -24,8 +24,8 @@ import numpy as np
 import pytest
 
 from bearingkit.io.reading import load_toml
-from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-from bearingkit.systems.drivetrain_input import drivetrain_from_dict, load_drivetrain_file
+from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+from bearingkit.systems.drivetrain.input import drivetrain_from_dict, load_drivetrain_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 PLANETARY = EXAMPLES / "planetary_stage.toml"

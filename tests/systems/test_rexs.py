@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.io.rexs import read_rexs
-from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-from bearingkit.systems.drivetrain_input import load_drivetrain_file
+from bearingkit.io.rexs.reader import read_rexs
+from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -50,7 +50,7 @@ def test_rexs_model_solves_to_the_toml_result(both):
 
 
 def test_results_go_back_into_a_rexs_json_model(both, tmp_path):
-    from bearingkit.io.rexs_export import write_rexs_results
+    from bearingkit.io.rexs.export import write_rexs_results
 
     _, rexs = both
     path = write_rexs_results(
@@ -113,8 +113,8 @@ def test_unsupported_parts_are_one_line_refusals(tmp_path, edit, needle):
 
 def test_the_json_syntax_reads_as_the_xml(tmp_path):
     """The same model in REXS JSON (1.5 syntax: typed attribute values) builds the same drivetrain."""
-    from bearingkit.io.rexs import parse
-    from bearingkit.systems.drivetrain_input import drivetrain_from_dict
+    from bearingkit.io.rexs.reader import parse
+    from bearingkit.systems.drivetrain.input import drivetrain_from_dict
 
     m = parse(EXAMPLES / "gearbox_two_stage.rexs")
 

@@ -17,9 +17,9 @@ import pandas as pd
 import pytest
 
 from bearingkit.errors import InputError
-from bearingkit.systems.input import load_shaft_file
-from bearingkit.systems.solver import solve
-from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
+from bearingkit.systems.shaft.input import load_shaft_file
+from bearingkit.systems.shaft.solver import solve
+from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
 pytestmark = [pytest.mark.slow, pytest.mark.ross]

@@ -1,7 +1,7 @@
 """Every bearing of a shaft as a pipeline Analysis: same numbers as the shaft solver, in every face.
 
 The per-bearing Analysis must reproduce what the shaft solution already holds (its reactions, and the
-ratings and friction of the direct functions of :mod:`bearingkit.systems.life`), the system lives
+ratings and friction of the direct functions of :mod:`bearingkit.systems.shaft.life`), the system lives
 must solve the Weibull system equation, and a bearing's warning must reach the CLI, the JSON and the
 HTML report.
 """
@@ -20,9 +20,9 @@ import pytest
 
 from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.errors import InputError
-from bearingkit.systems.input import load_shaft_file, shaft_from_dict
-from bearingkit.systems.life import friction_system, rate_system
-from bearingkit.systems.shaft_analysis import ShaftAnalysis
+from bearingkit.systems.shaft.input import load_shaft_file, shaft_from_dict
+from bearingkit.systems.shaft.life import friction_system, rate_system
+from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 COUNTERSHAFT = EXAMPLES / "shaft_countershaft.toml"
@@ -165,7 +165,7 @@ def _shown(cell: str, value, factor: float = 1.0):
 
 
 def test_report_shows_the_numbers_of_the_json(tmp_path):
-    from bearingkit.report.shaft_html import REACTION_COLUMNS, RESULT_COLUMNS, SEAT_COLUMNS
+    from bearingkit.report.systems.shaft_html import REACTION_COLUMNS, RESULT_COLUMNS, SEAT_COLUMNS
 
     raw = tomllib.loads(COUNTERSHAFT.read_text())
     raw["load_cases"] = raw["load_cases"][2:]  # the case with a coupling force: every reaction non-zero

@@ -18,11 +18,11 @@ from bearingkit.analysis.solver.quasistatic import solve as solve_bearing
 from bearingkit.analysis.solver.speed import ModelAtSpeed
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
-from bearingkit.systems.loads import PointLoad, ShaftLoads
-from bearingkit.systems.shaft import Section, Shaft
-from bearingkit.systems.solver import ShaftSystem, solve
-from bearingkit.systems.stiffness import shaft_stiffness_table
-from bearingkit.systems.supports import BearingSeat, LinearBearing
+from bearingkit.systems.shaft.loads import PointLoad, ShaftLoads
+from bearingkit.systems.shaft.shaft import Section, Shaft
+from bearingkit.systems.shaft.solver import ShaftSystem, solve
+from bearingkit.systems.shaft.stiffness import shaft_stiffness_table
+from bearingkit.systems.shaft.supports import BearingSeat, LinearBearing
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 RPM = np.pi / 30.0

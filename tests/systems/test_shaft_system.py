@@ -20,11 +20,11 @@ import numpy as np
 import pytest
 
 from bearingkit.io.loader import load_file
-from bearingkit.systems import beam
-from bearingkit.systems.loads import Gear, PointLoad, ShaftLoads
-from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
-from bearingkit.systems.solver import ShaftSystem, solve
-from bearingkit.systems.supports import BearingSeat, LinearBearing
+from bearingkit.systems.shaft import beam
+from bearingkit.systems.shaft.loads import Gear, PointLoad, ShaftLoads
+from bearingkit.systems.shaft.shaft import SHAFT_STEEL, Section, Shaft
+from bearingkit.systems.shaft.solver import ShaftSystem, solve
+from bearingkit.systems.shaft.supports import BearingSeat, LinearBearing
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 E = SHAFT_STEEL.youngs_modulus
@@ -270,7 +270,7 @@ def test_batch_equals_single_cases():
 
 def test_exported_stiffness_is_the_tangent_of_the_seat_force():
     """K of a seat predicts the change of the bearing force for a small change of its displacement."""
-    from bearingkit.systems.stiffness import shaft_stiffness_table
+    from bearingkit.systems.shaft.stiffness import shaft_stiffness_table
 
     dgbb = load_file(EXAMPLES / "dgbb_6209.toml").model
     system = ShaftSystem(

@@ -12,7 +12,7 @@ import pytest
 from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
-from bearingkit.systems.stiffness import bearing_stiffness_table, stiffness_column
+from bearingkit.systems.shaft.stiffness import bearing_stiffness_table, stiffness_column
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 RADIAL = np.array([[1e3, 0, 0, 0, 0], [2e3, 1e3, 0, 0, 0], [4e3, 0, 0, 0, 0]])

@@ -1,6 +1,6 @@
 """Console output of ``bearingkit shaft``: per load case the bearings' reactions, seat state and results.
 
-SI values come in (:meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`); shown in mm, µm,
+SI values come in (:meth:`bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis.to_dict`); shown in mm, µm,
 mrad, N, MPa, h, W. Faces only: nothing is computed here.
 """
 

@@ -1,7 +1,7 @@
 """``bearingkit system FILE``: a drivetrain (docs/drivetrains.md) — meshes, bearings, lives, power flow.
 
 The file is a drivetrain TOML file or a REXS model (.rexs, .rexsj, .rexs.json, .rexs.xml). Faces only:
-SI values come from :meth:`bearingkit.systems.drivetrain_analysis.DrivetrainAnalysis.to_dict` and are
+SI values come from :meth:`bearingkit.systems.drivetrain.analysis.DrivetrainAnalysis.to_dict` and are
 shown in N, MPa, h, W, rpm.
 """
 
@@ -110,7 +110,7 @@ def report_drivetrain(file: Path, output: Path, contamination, bearing_options) 
     """``bearingkit report FILE`` for a drivetrain file or REXS model: write its report, True; False
     for any other file (the bearing report's)."""
     from bearingkit.errors import InputError
-    from bearingkit.systems.drivetrain_input import is_drivetrain_file
+    from bearingkit.systems.drivetrain.input import is_drivetrain_file
 
     rexs = str(file).lower().endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml"))
     if not rexs and not (Path(file).suffix.lower() == ".toml" and is_drivetrain_file(file)):
@@ -120,8 +120,8 @@ def report_drivetrain(file: Path, output: Path, contamination, bearing_options) 
             f"{file}: --load, --case, --speed, --temperature and --lubricant apply to a bearing file; a "
             "drivetrain file's [[load_cases]] and [lubricant] give them"
         )
-    from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-    from bearingkit.systems.drivetrain_input import load_drivetrain_file
+    from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+    from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
     path = DrivetrainAnalysis(load_drivetrain_file(file), contamination=contamination).report(output)
     console.print(f"wrote {path}", markup=False, highlight=False)
@@ -150,8 +150,8 @@ def register(app: typer.Typer) -> None:
     ):
         """A drivetrain: shafts joined by gear meshes and planetary stages, every bearing's lives and
         friction, the system life, the power flow; exit 1 if a case fails."""
-        from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-        from bearingkit.systems.drivetrain_input import load_drivetrain_file
+        from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+        from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
         inp = load_drivetrain_file(file)
         analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
@@ -160,12 +160,12 @@ def register(app: typer.Typer) -> None:
         if report is not None:
             written.append(analysis.report(report))
         if stiffness is not None:
-            from bearingkit.systems.drivetrain_output import stiffness_tables
-            from bearingkit.systems.stiffness import write_tables
+            from bearingkit.systems.drivetrain.output import stiffness_tables
+            from bearingkit.systems.shaft.stiffness import write_tables
 
             written.append(write_tables(stiffness_tables(analysis), stiffness))
         if rexs is not None:
-            from bearingkit.io.rexs_export import write_rexs_results
+            from bearingkit.io.rexs.export import write_rexs_results
 
             written.append(write_rexs_results(data, rexs))
         if as_json:

@@ -5,7 +5,7 @@ SI units (ROSS takes SI floats). Optional dependency: ``pip install 'bearingkit[
 A ROSS ``BearingElement`` takes kxx, kxy, kyx, kyy (and kzz) as constants or as arrays over
 ``frequency`` [rad/s], which ROSS interpolates (a spline over ≥ 4 speeds, linear/quadratic over 2–3)
 when it evaluates the bearing at a rotor speed. :func:`ross_bearing` passes a
-:class:`~bearingkit.systems.stiffness.StiffnessTable`'s radial block and axial term that way: one
+:class:`~bearingkit.systems.shaft.stiffness.StiffnessTable`'s radial block and axial term that way: one
 point → constants, several points at distinct speeds → a speed-indexed element. The element has no
 tilt stiffness and no force–tilt coupling (ROSS's bearing element acts on x, y, z only): those terms
 stay in the JSON/CSV table. Damping is not computed by bearingkit: the element gets ``damping``
@@ -30,7 +30,7 @@ import warnings
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.systems.stiffness import StiffnessTable, shaft_stiffness_table
+from bearingkit.systems.shaft.stiffness import StiffnessTable, shaft_stiffness_table
 
 #: What to install when ROSS is missing.
 INSTALL_HINT = "pip install 'bearingkit[ross]'"

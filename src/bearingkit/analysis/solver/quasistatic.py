@@ -538,12 +538,12 @@ def _record_inner(kernels, inner: np.ndarray) -> None:
 
 def _newton(problem, q, load, active, iterations):
     """The Newton attempt with its four outputs of before the solver split (for
-    :mod:`bearingkit.systems.solver`, which drives it on its own condensed problem)."""
+    :mod:`bearingkit.systems.shaft.solver`, which drives it on its own condensed problem)."""
     q, converged, st, diverged, _ = newton(problem, q, load, active, iterations)
     return q, converged, st, diverged
 
 
-#: Per-case merge of two solver states (for :mod:`bearingkit.systems.solver`).
+#: Per-case merge of two solver states (for :mod:`bearingkit.systems.shaft.solver`).
 _merge = merge
 
 

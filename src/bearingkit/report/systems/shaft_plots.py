@@ -1,7 +1,7 @@
 """Figures of a shaft on its bearings: outline, deflection line and bending-moment line.
 
 SI inside (m, N·m); only the axis labels convert (mm, µm, N·m). :func:`shaft_figure` reads a
-:class:`~bearingkit.systems.result.ShaftResult` and never recomputes mechanics.
+:class:`~bearingkit.systems.shaft.result.ShaftResult` and never recomputes mechanics.
 
 - top: the shaft's half outline (sections), bearings (triangles, filled when locating) and gears;
 - middle: radial deflection u_x, u_y and |u| along the shaft [µm];

@@ -10,7 +10,7 @@ extension attributes the specification allows (``custom_`` prefix): ``custom_bea
 and ``custom_bearingkit_axial_force`` [N], ``custom_bearingkit_l10h_iso_ts_16281`` and
 ``custom_bearingkit_l10h_iso_281`` [h], ``custom_bearingkit_power_loss`` [W],
 ``custom_bearingkit_static_safety`` [-], ``custom_bearingkit_max_contact_pressure`` [N/mm²].
-Input is the JSON dictionary of :meth:`bearingkit.systems.drivetrain_analysis.DrivetrainAnalysis.to_dict`.
+Input is the JSON dictionary of :meth:`bearingkit.systems.drivetrain.analysis.DrivetrainAnalysis.to_dict`.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def _attr(i, unit, value):
 
 def _source_components(source) -> tuple[list, list, dict]:
     """(components, relations, bearing name → id) of a source REXS model, as JSON."""
-    from bearingkit.io.rexs import parse
+    from bearingkit.io.rexs.reader import parse
 
     m = parse(source)
     comps, ids = [], {}

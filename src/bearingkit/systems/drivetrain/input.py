@@ -18,7 +18,7 @@ Units at the edge (``"45 mm"``, ``"200 N*m"``, ``"1500 rpm"``), SI after validat
                           time_fraction, forces = [{shaft, position, F_x …}], line_loads = [...]
     [lubricant] [lubrication] [solver] [budget]
 
-The REXS reader (:mod:`bearingkit.io.rexs`) writes the same dictionary, so both paths build one model.
+The REXS reader (:mod:`bearingkit.io.rexs.reader`) writes the same dictionary, so both paths build one model.
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
 """
 
@@ -36,8 +36,9 @@ from bearingkit.io import schema
 from bearingkit.io.messages import one_line
 from bearingkit.io.reading import load_toml
 from bearingkit.io.schema_operating import LubricationSpec
-from bearingkit.systems import drivetrain as dtm
-from bearingkit.systems.drivetrain import (
+from bearingkit.systems.drivetrain import model as dtm
+from bearingkit.systems.drivetrain.gearing import GearGeometry, GearPair
+from bearingkit.systems.drivetrain.model import (
     HOUSING,
     Attachment,
     DriveBearing,
@@ -46,8 +47,7 @@ from bearingkit.systems.drivetrain import (
     Drivetrain,
     Mesh,
 )
-from bearingkit.systems.gearing import GearGeometry, GearPair
-from bearingkit.systems.input import (
+from bearingkit.systems.shaft.input import (
     BearingSpec,
     ForceSpec,
     LineLoadSpec,
@@ -59,9 +59,16 @@ from bearingkit.systems.input import (
     _seat,
     _sections,
 )
-from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, LineLoad, PointLoad, PointMass, ShaftLoads
-from bearingkit.systems.shaft import Shaft
-from bearingkit.systems.solver import SystemOptions
+from bearingkit.systems.shaft.loads import (
+    AXES,
+    STANDARD_GRAVITY,
+    LineLoad,
+    PointLoad,
+    PointMass,
+    ShaftLoads,
+)
+from bearingkit.systems.shaft.shaft import Shaft
+from bearingkit.systems.shaft.solver import SystemOptions
 
 Stiffness = schema.quantity("stiffness", "positive")
 
@@ -145,7 +152,7 @@ class DrivetrainSpec(schema.Strict):
 
 
 class BudgetSpec(schema.Strict):
-    """``[budget]``: raise the work budget (module :mod:`bearingkit.systems.drivetrain`)."""
+    """``[budget]``: raise the work budget (module :mod:`bearingkit.systems.drivetrain.model`)."""
 
     max_shafts: int | None = Field(None, ge=1, le=1000)
     max_bearings: int | None = Field(None, ge=1, le=5000)
@@ -217,7 +224,7 @@ def load_drivetrain_file(path) -> DrivetrainInput:
     path = Path(path)
     name = path.name.lower()
     if name.endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml")):
-        from bearingkit.io.rexs import read_rexs
+        from bearingkit.io.rexs.reader import read_rexs
 
         data = read_rexs(path)
     else:
@@ -409,7 +416,7 @@ def _loads(spec: DrivetrainFile, shafts: list[DriveShaft]) -> dict:
 
 
 def _build(spec: DrivetrainFile, source: str, base: Path, data: dict) -> DrivetrainInput:
-    from bearingkit.systems.planetary import expand_stages
+    from bearingkit.systems.drivetrain.planetary import expand_stages
 
     shafts = [_shaft(i, s) for i, s in enumerate(spec.shafts)]
     names = {s.name: s for s in shafts}

@@ -89,15 +89,15 @@ def _lives(da):
 def evaluate(cases: pd.DataFrame) -> pd.DataFrame:
     """One drivetrain solve per study case (module docstring)."""
     from bearingkit.io.reading import load_toml
-    from bearingkit.systems.drivetrain_analysis import DrivetrainAnalysis
-    from bearingkit.systems.drivetrain_input import drivetrain_from_dict
+    from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+    from bearingkit.systems.drivetrain.input import drivetrain_from_dict
 
     rows, loaded = [], {}
     for _, row in cases.iterrows():  # each case is a whole drivetrain solve (its own batch of load cases)
         path = Path(str(row["file"]))
         if path not in loaded:
             if path.suffix.lower() in (".rexs", ".rexsj", ".json", ".xml"):
-                from bearingkit.io.rexs import read_rexs
+                from bearingkit.io.rexs.reader import read_rexs
 
                 loaded[path] = read_rexs(path)
             else:

@@ -1,6 +1,6 @@
 """A shaft on several bearings: the system, its checks, and one global Newton over all bearings.
 
-SI units (m, N, N·m, rad). The shaft is linear (Timoshenko elements, :mod:`bearingkit.systems.shaft`)
+SI units (m, N, N·m, rad). The shaft is linear (Timoshenko elements, :mod:`bearingkit.systems.shaft.shaft`)
 and the bearings are not (their rows' contact laws). Static condensation removes every shaft DOF that
 no bearing touches, exactly (the shaft is linear): with seat DOFs s and interior DOFs i,
 
@@ -9,7 +9,7 @@ no bearing touches, exactly (the shaft is linear): with seat DOFs s and interior
 K_ii is positive definite because fixing one seat node's five DOFs fixes the shaft (torsion is not
 modelled). The unknowns are then x = (x_s, x_o): the seat DOFs and the outer-ring DOFs that a housing
 spring (or nothing, for a floating bearing's axial DOF) holds. Each bearing b sees q_b = P_b x + c_b
-in its own frame (:mod:`bearingkit.systems.supports`) and returns its contact force f_b(q_b), the
+in its own frame (:mod:`bearingkit.systems.shaft.supports`) and returns its contact force f_b(q_b), the
 analytic Jacobian J_b and energy U_b. Equilibrium
 
     R(x) = F − K x + Σ_b P_bᵀ f_b(P_b x + c_b) = 0
@@ -24,7 +24,7 @@ pitch radius L so the residual is one relative number: max |R| (moments / L) ≤
 (the largest external or bearing force).
 
 Speed: each bearing's law has its rows at the load case's shaft speed
-(:meth:`~bearingkit.systems.supports.BearingSeat.law_at`, per case), and a case where a bearing at
+(:meth:`~bearingkit.systems.shaft.supports.BearingSeat.law_at`, per case), and a case where a bearing at
 speed is beyond what the speed model holds is marked not converged with the reason, as a
 single-bearing solve at speed (:func:`bearingkit.analysis.solver.speed.flag_beyond_model`).
 """
@@ -41,10 +41,10 @@ from bearingkit import checks
 from bearingkit.analysis.solver.quasistatic import _merge, _newton
 from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.rows.base import LOAD_NAMES, N_DOF
-from bearingkit.systems.beam import NODE_DOF
-from bearingkit.systems.loads import ShaftLoads
-from bearingkit.systems.shaft import Shaft, nodal_loads
-from bearingkit.systems.supports import BearingSeat
+from bearingkit.systems.shaft.beam import NODE_DOF
+from bearingkit.systems.shaft.loads import ShaftLoads
+from bearingkit.systems.shaft.shaft import Shaft, nodal_loads
+from bearingkit.systems.shaft.supports import BearingSeat
 
 #: Names of the shaft's rigid-body modes, in the order of :func:`rigid_modes`.
 MODE_NAMES = (
@@ -96,7 +96,7 @@ def rigid_modes(z: float, length: float = 1.0) -> np.ndarray:
     """Rigid-body modes (5, 5) of the shaft evaluated at axial position z [m] (rows: :data:`MODE_NAMES`).
 
     A tilt about x by θ moves the axis point at z by u_y = −θ z and rotates it by θ_x = θ; a tilt
-    about y by u_x = θ z, θ_y = θ (module docstring of :mod:`bearingkit.systems.beam`). The tilt rows
+    about y by u_x = θ z, θ_y = θ (module docstring of :mod:`bearingkit.systems.shaft.beam`). The tilt rows
     are per unit of θ·``length`` so every row is a displacement of the same size.
     """
     m = np.eye(N_DOF)
@@ -401,9 +401,9 @@ def solve(
 
     Returns
     -------
-    bearingkit.systems.result.ShaftResult
+    bearingkit.systems.shaft.result.ShaftResult
     """
-    from bearingkit.systems.result import ShaftResult
+    from bearingkit.systems.shaft.result import ShaftResult
 
     options = options or SystemOptions()
     asm = assemble(system, loads)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.systems.drivetrain import HOUSING
+from bearingkit.systems.drivetrain.model import HOUSING
 
 
 def _f(v):
@@ -202,10 +202,10 @@ def analysis_dict(da) -> dict:
 
 def stiffness_tables(da) -> list:
     """Every bearing's tangent stiffness per load case (gearbox axes, ``frame = "shaft"``) as
-    :class:`~bearingkit.systems.stiffness.StiffnessTable` s: CSV/JSON (``write_tables``) and ROSS
+    :class:`~bearingkit.systems.shaft.stiffness.StiffnessTable` s: CSV/JSON (``write_tables``) and ROSS
     bearing elements (:func:`bearingkit.systems.ross.ross_bearing`) per shaft. Speeds: the relative
     speed of the bearing's rings (0 without speeds)."""
-    from bearingkit.systems.stiffness import StiffnessTable
+    from bearingkit.systems.shaft.stiffness import StiffnessTable
 
     res = da.result
     out = []

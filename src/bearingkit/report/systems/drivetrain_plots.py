@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from bearingkit.systems.drivetrain import HOUSING
+from bearingkit.systems.drivetrain.model import HOUSING
 
 
 def layout_figure(drivetrain) -> Figure:

@@ -12,7 +12,7 @@ computed by :func:`bearingkit.analysis.rating.assembly.system_life` over the row
 rows of one slope per bearing is exactly this formula over the bearings and solves the Weibull
 equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed. :func:`combine_ratings` does
 the combination for bearings already rated (the shaft's pipeline analyses,
-:mod:`bearingkit.systems.shaft_analysis`), also for the modified lives L_nm (at 90 % reliability, then
+:mod:`bearingkit.systems.shaft.shaft_analysis`), also for the modified lives L_nm (at 90 % reliability, then
 times a1: the practice of system calculations, an assumption, as ISO 281 defines L_nm per bearing).
 """
 
@@ -85,7 +85,7 @@ class SystemRating:
 
 
 def rate_system(result, **options) -> SystemRating:
-    """Rate every bearing of a :class:`~bearingkit.systems.result.ShaftResult` and combine them.
+    """Rate every bearing of a :class:`~bearingkit.systems.shaft.result.ShaftResult` and combine them.
 
     Parameters
     ----------

@@ -8,7 +8,7 @@ displacement q its rows see (its misalignment is the relative tilt |(θ_x, θ_y)
 stiffness, and its full :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult` (element loads,
 contact angles, pressures) from which ratings and friction follow through their usual API.
 
-Shaft lines. Nodal displacements (C, N, 5) are exact (:mod:`bearingkit.systems.beam`). Internal
+Shaft lines. Nodal displacements (C, N, 5) are exact (:mod:`bearingkit.systems.shaft.beam`). Internal
 forces come from each element's end forces f_e = K_e u_e − f_e,eq (f_e,eq the consistent loads of its
 line load): at an element's left end the internal moment (of the part z' > z on the part z' < z) is
 −f_e(θ₁), at its right end +f_e(θ₂); so M_y = E I dθ_y/dz and M_x = E I dθ_x/dz, and a shaft resting
@@ -26,9 +26,9 @@ from scipy.linalg import cho_solve
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
-from bearingkit.systems import beam
-from bearingkit.systems.beam import NODE_DOF
-from bearingkit.systems.shaft import element_line_loads
+from bearingkit.systems.shaft import beam
+from bearingkit.systems.shaft.beam import NODE_DOF
+from bearingkit.systems.shaft.shaft import element_line_loads
 
 _LOAD_UNITS = ("N", "N", "N", "Nm", "Nm")
 _DOF_UNITS = ("m", "m", "m", "rad", "rad")
@@ -123,7 +123,7 @@ class ShaftResult:
         return names.index(name)
 
     def law(self, name: str):
-        """The :class:`~bearingkit.systems.supports.BearingLaw` the bearing was solved with (its rows at
+        """The :class:`~bearingkit.systems.shaft.supports.BearingLaw` the bearing was solved with (its rows at
         the cases' shaft speed)."""
         i = self._index(name)
         return self.system.bearings[i].law if self.laws is None else self.laws[i]
@@ -190,7 +190,7 @@ class ShaftResult:
 
         Load = what the bearing carries (bearing frame), displacement = q; convergence and residual are
         the system's; its model has the rows at the cases' shaft speed (:meth:`model`). Not available
-        for a :class:`~bearingkit.systems.supports.LinearBearing`.
+        for a :class:`~bearingkit.systems.shaft.supports.LinearBearing`.
         """
         from bearingkit.analysis.solver.quasistatic import QuasiStaticResult
 
@@ -239,9 +239,9 @@ class ShaftResult:
 
         ``options`` go to :func:`~bearingkit.analysis.rating.assembly.rate` (``reliability``, ``lubricant``,
         ``temperature_C``, ``contamination_factor`` …); the speed is the load cases' shaft speed and
-        the inner rings rotate. Returns a :class:`bearingkit.systems.life.SystemRating`.
+        the inner rings rotate. Returns a :class:`bearingkit.systems.shaft.life.SystemRating`.
         """
-        from bearingkit.systems.life import rate_system
+        from bearingkit.systems.shaft.life import rate_system
 
         return rate_system(self, **options)
 

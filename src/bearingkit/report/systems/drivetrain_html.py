@@ -7,10 +7,10 @@ from pathlib import Path
 
 from bearingkit.errors import InputError
 from bearingkit.report import write_report
-from bearingkit.report.drivetrain_plots import layout_figure, shaft_lines_figure
 from bearingkit.report.html import _CSS, _case_html, _references_html
 from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _warning_list, fmt
-from bearingkit.systems.drivetrain_analysis import DRIVETRAIN_RENDERERS
+from bearingkit.report.systems.drivetrain_plots import layout_figure, shaft_lines_figure
+from bearingkit.systems.drivetrain.analysis import DRIVETRAIN_RENDERERS
 
 RPM = 30.0 / 3.141592653589793
 #: Most load cases a drivetrain report draws (figures and bearing sections grow with them).

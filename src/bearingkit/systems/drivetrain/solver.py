@@ -1,7 +1,7 @@
 """One global Newton over a drivetrain: every shaft condensed, every bearing's law, every gear mesh.
 
 SI units (m, N, N·m, rad). Each shaft is condensed exactly onto its kept nodes (bearing seats, gears,
-carrier plates) as in :mod:`bearingkit.systems.solver` (K_c = K_ss − K_si K_ii⁻¹ K_is); the unknowns x
+carrier plates) as in :mod:`bearingkit.systems.shaft.solver` (K_c = K_ss − K_si K_ii⁻¹ K_is); the unknowns x
 are the kept nodes' five DOFs of every shaft, one rotation θ_z per shaft (none for the held shaft),
 and the outer-ring DOFs held by a finite housing spring or free (a floating bearing's axial DOF).
 
@@ -30,11 +30,11 @@ from scipy.linalg import cho_factor, cho_solve
 from bearingkit.analysis.solver.quasistatic import _merge, _newton
 from bearingkit.errors import InputError
 from bearingkit.rows.base import N_DOF
-from bearingkit.systems.beam import NODE_DOF
-from bearingkit.systems.drivetrain import HOUSING, Drivetrain
-from bearingkit.systems.shaft import nodal_loads
-from bearingkit.systems.solver import SystemOptions
-from bearingkit.systems.supports import BearingLaw
+from bearingkit.systems.drivetrain.model import HOUSING, Drivetrain
+from bearingkit.systems.shaft.beam import NODE_DOF
+from bearingkit.systems.shaft.shaft import nodal_loads
+from bearingkit.systems.shaft.solver import SystemOptions
+from bearingkit.systems.shaft.supports import BearingLaw
 
 #: Stiffness of the bearings in the flank pre-pass, relative to the stiffest mesh [-] (only the sign
 #: of the mesh forces is used: they follow the torque flow).
@@ -119,7 +119,7 @@ def _kept_positions(dt: Drivetrain, body) -> list[float]:
 def assemble(dt: Drivetrain, loads: dict, flank=None) -> DrivetrainAssembly:
     """Mesh and condense every shaft, place the unknowns, the bearings' maps and the meshes' rows.
 
-    ``loads``: per shaft a :class:`~bearingkit.systems.loads.ShaftLoads` (point and line loads, gravity)
+    ``loads``: per shaft a :class:`~bearingkit.systems.shaft.loads.ShaftLoads` (point and line loads, gravity)
     and ``"torques"`` {shaft: (C,) [N·m]} about +z. ``flank``: per mesh (C,) ±1 (None: +1).
     """
     blocks, col = {}, 0
@@ -351,7 +351,8 @@ def loaded_flanks(dt: Drivetrain, asm: DrivetrainAssembly) -> list[np.ndarray]:
 
 
 def _start(problem: _Problem, load: np.ndarray) -> np.ndarray:
-    """Linearised start with every contact closed (as :func:`bearingkit.systems.solver._starting_point`)."""
+    """Linearised start with every contact closed (as
+    :func:`bearingkit.systems.shaft.solver._starting_point`)."""
     n_cases, n = load.shape
     delta = [np.full(n_cases, 1e-4 * law.deflection_scale) for law in problem.laws]
     x = np.zeros_like(load)
@@ -379,9 +380,9 @@ def _start(problem: _Problem, load: np.ndarray) -> np.ndarray:
 def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None = None):
     """Solve the drivetrain for a batch of load cases (one Newton); returns a DrivetrainResult.
 
-    ``laws``: per bearing the :class:`~bearingkit.systems.supports.BearingLaw` at the cases' speeds.
+    ``laws``: per bearing the :class:`~bearingkit.systems.shaft.supports.BearingLaw` at the cases' speeds.
     """
-    from bearingkit.systems.drivetrain_result import DrivetrainResult
+    from bearingkit.systems.drivetrain.result import DrivetrainResult
 
     options = options or SystemOptions()
     asm0 = assemble(dt, loads)

@@ -211,7 +211,7 @@ def shaft_stiffness_table(result, name: str, frame: str = "shaft") -> StiffnessT
     """Stiffness of bearing ``name`` of a solved shaft: one point per load case (its speed, 0 if none).
 
     K is the tangent of the bearing's law as the shaft solved it, with its rows at the case's shaft
-    speed (:meth:`~bearingkit.systems.supports.BearingSeat.law_at`).
+    speed (:meth:`~bearingkit.systems.shaft.supports.BearingSeat.law_at`).
     """
     speeds = result.loads.speed if result.loads.speed is not None else np.zeros(result.n_cases)
     return StiffnessTable(

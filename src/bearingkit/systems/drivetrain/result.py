@@ -1,11 +1,11 @@
 """Results of a drivetrain: every bearing's state, every mesh's force, every shaft's lines.
 
-SI units, gearbox axes. Per bearing (as :class:`~bearingkit.systems.result.ShaftResult` gives them for
+SI units, gearbox axes. Per bearing (as :class:`~bearingkit.systems.shaft.result.ShaftResult` gives them for
 one shaft): the relative displacement q of its rings and the load it carries in its own frame, the
 force and moment it puts on the body of its inner ring, its tangent stiffness and its full
 QuasiStaticResult. Per mesh: the force F = k δ along the line of action n (positive: the teeth push),
 its tangential, radial and axial parts on each gear and the torque it puts on each body. Per shaft: a
-:class:`~bearingkit.systems.result.ShaftResult` view for the deflection, shear and bending-moment lines
+:class:`~bearingkit.systems.shaft.result.ShaftResult` view for the deflection, shear and bending-moment lines
 (exact nodal values, as for one shaft).
 """
 
@@ -20,9 +20,9 @@ import numpy as np
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
-from bearingkit.systems.beam import NODE_DOF
-from bearingkit.systems.drivetrain import HOUSING
-from bearingkit.systems.result import ShaftResult
+from bearingkit.systems.drivetrain.model import HOUSING
+from bearingkit.systems.shaft.beam import NODE_DOF
+from bearingkit.systems.shaft.result import ShaftResult
 
 _LOAD_UNITS = ("N", "N", "N", "Nm", "Nm")
 _DOF_UNITS = ("m", "m", "m", "rad", "rad")

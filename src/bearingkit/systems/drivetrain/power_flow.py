@@ -13,7 +13,8 @@ Power flow. The power each input torque delivers is P_in = Σ T_i ω_i. The stat
 so the torque that holds the output shaft returns P_in exactly (T_held ω_held = −P_in: a check of the
 ratios against the statics). The losses are the bearings' friction power (each bearing's pipeline
 Analysis, at its ring speeds) and, where a mesh gives a mean coefficient of friction μ_mz, the mesh
-loss P = μ_mz H_V P_mesh (:mod:`bearingkit.systems.gearing`) with P_mesh = F_t r_w |ω_a − ω_frame| the
+loss P = μ_mz H_V P_mesh (:mod:`bearingkit.systems.drivetrain.gearing`) with P_mesh = F_t r_w |ω_a −
+ω_frame| the
 power the mesh transmits relative to its frame (the carrier for a planetary mesh). The output power
 is P_out = P_in − Σ losses (the losses are taken from the output; their effect on the load
 distribution is neglected: a few per cent of the mesh forces) and the efficiency η = P_out / P_in.
@@ -24,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.systems.drivetrain import HOUSING
+from bearingkit.systems.drivetrain.model import HOUSING
 
 #: Relative residual of the kinematic equations above which the given speeds contradict the gear
 #: ratios [-].

@@ -1,13 +1,15 @@
 """A solved drivetrain: every bearing a pipeline Analysis, the system lives, the power flow.
 
-SI units (m, N, rad/s, W, h). The drivetrain solve (:mod:`bearingkit.systems.drivetrain_solver`) gives
+SI units (m, N, rad/s, W, h). The drivetrain solve (:mod:`bearingkit.systems.drivetrain.solver`) gives
 each bearing the displacement q of its inner ring against its outer ring; as for one shaft
-(:mod:`bearingkit.systems.shaft_analysis`), a :class:`~bearingkit.systems.shaft_analysis.SeatInput`
+(:mod:`bearingkit.systems.shaft.shaft_analysis`), a
+:class:`~bearingkit.systems.shaft.shaft_analysis.SeatInput`
 hands that state to the one orchestration (``bearingkit.pipeline.analyze``): element loads, pressures,
 friction and power loss, lubrication, ISO 76 / ISO 281 / ISO/TS 16281 ratings and lives, warnings.
 
 Ring speeds. Every shaft's speed follows from the given ones through the gear ratios
-(:func:`bearingkit.systems.power_flow.speeds`). A bearing's rings turn with their bodies; the speeds are
+(:func:`bearingkit.systems.drivetrain.power_flow.speeds`). A bearing's rings turn with their bodies; the
+speeds are
 taken relative to its frame: the housing, or a planet bearing's carrier (its load turns with the
 carrier: the outer ring, in the planet, is the one that rotates relative to the load; the carrier's
 centrifugal field on the planet bearings is not modelled). The pipeline rates each bearing at the
@@ -33,14 +35,14 @@ from bearingkit.analysis.rating.assembly import HOUR, system_life
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import analyze
-from bearingkit.systems import power_flow
-from bearingkit.systems.drivetrain import HOUSING
-from bearingkit.systems.drivetrain_solver import law_for, solve
-from bearingkit.systems.shaft_analysis import SeatInput
+from bearingkit.systems.drivetrain import power_flow
+from bearingkit.systems.drivetrain.model import HOUSING
+from bearingkit.systems.drivetrain.solver import law_for, solve
+from bearingkit.systems.shaft.shaft_analysis import SeatInput
 
 #: Renderers of a DrivetrainAnalysis by format, registered by the report layer on import.
 DRIVETRAIN_RENDERERS: dict = {}
-_RENDERER_MODULES = {"html": "bearingkit.report.drivetrain_html"}
+_RENDERER_MODULES = {"html": "bearingkit.report.systems.drivetrain_html"}
 
 
 def _miner(lives: np.ndarray, fractions: np.ndarray) -> float | None:
@@ -59,7 +61,7 @@ class DrivetrainAnalysis:
     ----------
     drivetrain_input : DrivetrainInput
     friction_model, contamination, reliability
-        As :class:`~bearingkit.systems.shaft_analysis.ShaftAnalysis`.
+        As :class:`~bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis`.
     """
 
     def __init__(self, drivetrain_input, *, friction_model="components", contamination=None, reliability=0.9):
@@ -119,7 +121,7 @@ class DrivetrainAnalysis:
 
     @functools.cached_property
     def result(self):
-        """The :class:`~bearingkit.systems.drivetrain_result.DrivetrainResult` (one batched Newton)."""
+        """The :class:`~bearingkit.systems.drivetrain.result.DrivetrainResult` (one batched Newton)."""
         return solve(self.drivetrain, self.input.loads, self.laws, self.input.options)
 
     def _seat_input(self, b) -> SeatInput:
@@ -303,7 +305,7 @@ class DrivetrainAnalysis:
 
     def to_dict(self) -> dict:
         """Everything a face shows, JSON-ready (SI, units in keys)."""
-        from bearingkit.systems.drivetrain_output import analysis_dict
+        from bearingkit.systems.drivetrain.output import analysis_dict
 
         return analysis_dict(self)
 

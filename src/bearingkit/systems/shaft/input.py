@@ -35,10 +35,18 @@ from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
 from bearingkit.io.reading import load_toml
 from bearingkit.io.schema_operating import LubricationSpec
-from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
-from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
-from bearingkit.systems.solver import ShaftSystem, SystemOptions
-from bearingkit.systems.supports import BearingSeat, LinearBearing
+from bearingkit.systems.shaft.loads import (
+    AXES,
+    STANDARD_GRAVITY,
+    Gear,
+    LineLoad,
+    PointLoad,
+    PointMass,
+    ShaftLoads,
+)
+from bearingkit.systems.shaft.shaft import SHAFT_STEEL, Section, Shaft
+from bearingkit.systems.shaft.solver import ShaftSystem, SystemOptions
+from bearingkit.systems.shaft.supports import BearingSeat, LinearBearing
 
 Stiffness = schema.quantity("stiffness", "non_negative")
 RotationalStiffness = schema.quantity("rotational_stiffness", "non_negative")
@@ -230,8 +238,8 @@ class ShaftInput:
     lubrication: LubricationSpec | None = None
 
     def solve(self):
-        """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
-        from bearingkit.systems.solver import solve
+        """Solve every load case in one batch (a :class:`~bearingkit.systems.shaft.result.ShaftResult`)."""
+        from bearingkit.systems.shaft.solver import solve
 
         return solve(self.system, self.loads, self.options)
 
@@ -438,11 +446,11 @@ def _check_contamination(lubrication) -> None:
 def shaft_dict(inp: ShaftInput, result=None, **options) -> dict:
     """Everything a face shows about a solved shaft file, JSON-ready (SI, units in keys).
 
-    :meth:`bearingkit.systems.shaft_analysis.ShaftAnalysis.to_dict`: the inputs; per case the shaft
+    :meth:`bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis.to_dict`: the inputs; per case the shaft
     lines, every bearing's reactions, seat state, summary and full pipeline Analysis (pressures, lives,
     friction), the system life and every warning; the notes. ``options`` go to the ShaftAnalysis
     (``friction_model``, ``contamination``, ``reliability``).
     """
-    from bearingkit.systems.shaft_analysis import ShaftAnalysis
+    from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
 
     return ShaftAnalysis(inp, result, **options).to_dict()

@@ -11,7 +11,7 @@ for a single bearing. Nothing is orchestrated twice.
 
 Speed effects are those of the shaft solve: the statics evaluate the bearing model the shaft was
 solved with (its rows at the cases' shaft speed, :meth:`ShaftResult.model
-<bearingkit.systems.result.ShaftResult.model>`), not the pipeline's own speed setup, so the loads
+<bearingkit.systems.shaft.result.ShaftResult.model>`), not the pipeline's own speed setup, so the loads
 equal the shaft solver's reactions. What the shaft solver does not model is not added: no fits and no
 preload of the bearing file's ``[operating]`` section (the shaft's ``axial_offset`` is the adjustment).
 
@@ -33,14 +33,14 @@ import numpy as np
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import ModelInput, analyze
-from bearingkit.systems.life import combine_ratings
+from bearingkit.systems.shaft.life import combine_ratings
 
 __all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis", "inputs_dict"]
 
 #: Renderers of a ShaftAnalysis by format, registered by the report layer on import
-#: (:mod:`bearingkit.report.shaft_html`); :meth:`ShaftAnalysis.report` loads it by name.
+#: (:mod:`bearingkit.report.systems.shaft_html`); :meth:`ShaftAnalysis.report` loads it by name.
 SHAFT_RENDERERS: dict = {}
-_RENDERER_MODULES = {"html": "bearingkit.report.shaft_html"}
+_RENDERER_MODULES = {"html": "bearingkit.report.systems.shaft_html"}
 
 
 @dataclass(frozen=True)
@@ -164,7 +164,7 @@ class ShaftAnalysis:
     Parameters
     ----------
     shaft_input : ShaftInput
-        The loaded shaft file (:func:`bearingkit.systems.input.load_shaft_file`).
+        The loaded shaft file (:func:`bearingkit.systems.shaft.input.load_shaft_file`).
     result : ShaftResult, optional
         Its solution (default: solved here).
     friction_model : str
@@ -187,7 +187,7 @@ class ShaftAnalysis:
 
     @functools.cached_property
     def result(self):
-        """The :class:`~bearingkit.systems.result.ShaftResult` (one batched solve of every case)."""
+        """The :class:`~bearingkit.systems.shaft.result.ShaftResult` (one batched solve of every case)."""
         return self._result if self._result is not None else self.input.solve()
 
     @property
@@ -248,7 +248,8 @@ class ShaftAnalysis:
 
     @functools.cached_property
     def rating(self):
-        """The :class:`~bearingkit.systems.life.SystemRating`: each bearing's Analysis rating combined."""
+        """The :class:`~bearingkit.systems.shaft.life.SystemRating`: each bearing's Analysis rating
+        combined."""
         ratings = {n: a.rating for n, a in self.bearings.items() if a.rating is not None}
         speed = self.input.loads.speed
         if speed is not None and not np.all(np.asarray(speed) != 0):

@@ -3,7 +3,7 @@
 SI units (m, N, Pa, kg). The shaft runs along z from its first section's ``start`` to its last
 section's ``end``; sections are contiguous (no gap, no overlap). :meth:`Shaft.mesh` places a node at
 every section step, bearing seat and load position and subdivides the spans to a largest element
-length; the elements are the Timoshenko elements of :mod:`bearingkit.systems.beam`. Nodal loads
+length; the elements are the Timoshenko elements of :mod:`bearingkit.systems.shaft.beam`. Nodal loads
 (point loads, gear meshes, line loads by their consistent nodal values, weight) are assembled by
 :func:`nodal_loads` over the batch of load cases.
 """
@@ -19,9 +19,9 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.errors import InputError
 from bearingkit.materials import Material
-from bearingkit.systems import beam
-from bearingkit.systems.beam import NODE_DOF
-from bearingkit.systems.loads import ShaftLoads
+from bearingkit.systems.shaft import beam
+from bearingkit.systems.shaft.beam import NODE_DOF
+from bearingkit.systems.shaft.loads import ShaftLoads
 
 #: Default shaft material: structural / heat-treatable steel, E = 210 000 N/mm² and ν = 0.3
 #: (EN 1993-1-1:2005 §3.2.6 design values for steel), ρ = 7850 kg/m³ (EN 1991-1-1:2002 Table A.4,
@@ -290,7 +290,7 @@ def nodal_loads(mesh: Mesh, loads: ShaftLoads, gears=(), masses=()) -> np.ndarra
     """Nodal load vector (C, 5N) [N, N·m] of every load case.
 
     Point loads and gear meshes at their nodes, line loads (and the shaft's weight) by their
-    consistent nodal loads (:func:`bearingkit.systems.beam.uniform_load_vector`), the weight of the
+    consistent nodal loads (:func:`bearingkit.systems.shaft.beam.uniform_load_vector`), the weight of the
     gears and point masses at their nodes.
     """
     n_cases = loads.n_cases

@@ -1,6 +1,6 @@
 """A drivetrain: several shafts joined by gear meshes and coaxial bearings, held by a housing.
 
-SI units (m, N, N·m, rad). Every shaft is a Timoshenko beam (:mod:`bearingkit.systems.shaft`) whose
+SI units (m, N, N·m, rad). Every shaft is a Timoshenko beam (:mod:`bearingkit.systems.shaft.shaft`) whose
 axis is parallel to the gearbox's z axis, at ``centre`` (x, y), with its local z = 0 at the gearbox's
 ``axial_offset``. Displacements of every shaft are in the gearbox axes; each shaft adds one rotation
 about its axis θ_z (the shaft is rigid in torsion: torsion is not modelled, the rotation carries the
@@ -10,15 +10,16 @@ planetary stages and the housing (ground).
 Each bearing (:class:`DriveBearing`) connects its inner ring to a point of one body and its outer ring
 to a point of another body or the housing; a point sits on the body's axis at a node, or off the axis
 on a rigid arm (the pins of a planet carrier). The bearing sees q = T (x_inner − x_outer) in its own
-frame (:mod:`bearingkit.systems.supports`, orientation T). A gear mesh (:class:`Mesh`) is a linear
+frame (:mod:`bearingkit.systems.shaft.supports`, orientation T). A gear mesh (:class:`Mesh`) is a linear
 spring k along the line of action n between the two gears' material points at the pitch point:
-δ = n·(v_a − v_b), energy ½ k δ² (:mod:`bearingkit.systems.gearing`); with the shafts' rotations among
+δ = n·(v_a − v_b), energy ½ k δ² (:mod:`bearingkit.systems.drivetrain.gearing`); with the shafts' rotations
+among
 the unknowns, the mesh carries the transmitted torque by its own deflection, so the whole drivetrain is
-one potential and one Newton (:mod:`bearingkit.systems.drivetrain_solver`).
+one potential and one Newton (:mod:`bearingkit.systems.drivetrain.solver`).
 
 The ``held`` shaft's rotation is held (the output: it takes the reaction torque); the load cases apply
 torques to other shafts (the inputs). Speeds follow from the gear ratios
-(:mod:`bearingkit.systems.power_flow`).
+(:mod:`bearingkit.systems.drivetrain.power_flow`).
 """
 
 from __future__ import annotations
@@ -29,9 +30,9 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
-from bearingkit.systems.gearing import CENTRE_DISTANCE_RTOL, GearGeometry, GearPair
-from bearingkit.systems.shaft import POSITION_TOL, Shaft
-from bearingkit.systems.supports import BearingSeat
+from bearingkit.systems.drivetrain.gearing import CENTRE_DISTANCE_RTOL, GearGeometry, GearPair
+from bearingkit.systems.shaft.shaft import POSITION_TOL, Shaft
+from bearingkit.systems.shaft.supports import BearingSeat
 
 #: Name of the ground body (the gearbox housing).
 HOUSING = "housing"

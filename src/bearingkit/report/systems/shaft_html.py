@@ -1,7 +1,7 @@
 """The HTML report of a shaft on several bearings: inputs, shaft lines, every bearing, system life.
 
 SI inside; this module converts only for display (mm, µm, mrad, kN, MPa, r/min, h) and names the unit
-in every header. It reads one :class:`~bearingkit.systems.shaft_analysis.ShaftAnalysis` (its
+in every header. It reads one :class:`~bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis` (its
 ``to_dict`` for the numbers, the shaft result for the figure, each bearing's pipeline ``Analysis`` for
 the bearing subsections, drawn by the single-bearing renderers of :mod:`bearingkit.report.html`) and
 never recomputes mechanics. Self-contained like the bearing report: inline figures and style, no
@@ -22,8 +22,8 @@ from bearingkit.report.html import _CSS, _case_html, _references_html
 from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _warning_list, fmt
 from bearingkit.report.html_inputs import geometry_rows, rows_table
 from bearingkit.report.html_operating import operating_html
-from bearingkit.report.shaft_plots import shaft_figure
-from bearingkit.systems.shaft_analysis import SHAFT_RENDERERS
+from bearingkit.report.systems.shaft_plots import shaft_figure
+from bearingkit.systems.shaft.shaft_analysis import SHAFT_RENDERERS
 
 __all__ = ["build_shaft_report", "render_shaft"]
 
@@ -373,7 +373,7 @@ def build_shaft_report(analysis, *, title=None, notes=()) -> str:
 
     Parameters
     ----------
-    analysis : bearingkit.systems.shaft_analysis.ShaftAnalysis
+    analysis : bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis
     title : str, optional
     notes : sequence of str
         Extra run notes shown before the analysis's own.

@@ -30,10 +30,17 @@ from pydantic import Field, ValidationError
 
 from bearingkit.errors import InputError
 from bearingkit.io import schema
-from bearingkit.systems.drivetrain import HOUSING, Attachment, DriveBearing, DriveGear, DriveShaft, Mesh
-from bearingkit.systems.gearing import CENTRE_DISTANCE_RTOL, GearGeometry, GearPair
-from bearingkit.systems.input import BearingSpec, SectionSpec, _material, _seat, _sections
-from bearingkit.systems.shaft import Shaft
+from bearingkit.systems.drivetrain.gearing import CENTRE_DISTANCE_RTOL, GearGeometry, GearPair
+from bearingkit.systems.drivetrain.model import (
+    HOUSING,
+    Attachment,
+    DriveBearing,
+    DriveGear,
+    DriveShaft,
+    Mesh,
+)
+from bearingkit.systems.shaft.input import BearingSpec, SectionSpec, _material, _seat, _sections
+from bearingkit.systems.shaft.shaft import Shaft
 
 #: Most planets of one stage (equal spacing; more do not fit around a sun of useful size).
 MAX_PLANETS = 12

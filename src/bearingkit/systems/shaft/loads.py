@@ -3,7 +3,7 @@
 SI units (m, N, N·m, N/m, kg, m/s², rad, rad/s). Every load value carries a leading case axis
 (C, or 1 when shared by every case), so one :class:`ShaftLoads` describes a batch of load cases.
 Generalised loads on the shaft are (F_x, F_y, F_z, M_x, M_y) at a position z on the shaft axis, the
-order of the node DOFs (:mod:`bearingkit.systems.beam`).
+order of the node DOFs (:mod:`bearingkit.systems.shaft.beam`).
 
 Gear mesh (spur or helical, parallel axes; Shigley's Mechanical Engineering Design ch. 13, "force
 analysis — helical gearing"): with the torque T the mesh applies to the shaft about +z and the
