@@ -96,10 +96,15 @@ def test_seed000_validation_cases():
     cases = all_cases(["seed000/table3/", "seed000/conclusion/"])
     assert len([c for c in cases if c.id.startswith("seed000/table3/")]) == 9
     results = {r.case.id: r for r in run_cases(cases)}
-    # Calibration point is met (the factor was solved once against run 1).
+    # Calibration point is met (μ_rs was identified once on run 1) and is marked as a calibration.
     assert abs(results["seed000/table3/run1/friction-torque"].rel_error) < 2e-3
+    assert results["seed000/table3/run1/friction-torque"].case.role == "calibration"
+    assert {r.case.role for k, r in results.items() if k != "seed000/table3/run1/friction-torque"} == {
+        "prediction"
+    }
     for r in results.values():
         assert r.error is None, r.error
         if r.case.known_deviation is None:
             assert r.passed, (r.case.id, r.computed, r.case.published)
-    assert s.VISCOSITY_FACTOR == pytest.approx(s.calibrate_viscosity_factor(), rel=2e-3)
+    assert s.ROLLER_SLIDING == pytest.approx(s.calibrate_roller_sliding(), rel=2e-3)
+    assert s.VISCOSITY_FACTOR == 1.0  # base oil: no longer calibrated
