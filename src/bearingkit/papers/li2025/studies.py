@@ -53,8 +53,8 @@ def paper_geometry(**changes) -> BallColumnGeometry:
 #: None = the default housing, 0 = free ring). The beam is always on.
 RING_MODELS = {
     "beam": (False, None),
-    "beam+ovalisation (20 mm steel housing)": (True, None),
-    "beam+ovalisation (free ring: the paper's)": (True, 0.0),
+    "beam+ovalisation (housed)": (True, None),  # 20 mm steel housing wall
+    "beam+ovalisation (free ring)": (True, 0.0),  # the paper's
 }
 #: Housing walls of :func:`housing_study` [m] (steel): 10-40 mm brackets the walls of housings of
 #: bearings of this size.
@@ -113,7 +113,7 @@ def solve_case(
     return flex.result, flex
 
 
-def deflection_study(scales=(0.0, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0), condition: int = 1, models=None):
+def deflection_study(scales=(0.0, 0.1, 0.3, 0.5, 0.7, 1.0, 1.2, 1.5), condition: int = 1, models=None):
     """§3.2: outer-ring deflection, rigid → flexible (compliance scale of the ring), per ring model.
 
     ``models`` (default :data:`RING_MODELS`): label → (thin-ring bending, housing k_h); one line per

@@ -120,6 +120,21 @@ def increment_ratio(cage_slip: float, sliding_model=None) -> float:
     return float(s[1] / s[0] - 1.0)
 
 
+def light_load_increment_ratio(load: float = 2000.0, cage_slip: float = 5e-4) -> float:
+    """Increment ratio of the max cone sliding force of series 1 at ``load`` [N] (Fig. 7c: 2 kN, 0.05 %)."""
+    from bearingkit.analysis.trb_friction import SEED001_SPEED, TRBOperatingPoint, solve_rollers
+    from bearingkit.papers.liu2022.calibration import seed001_row_identified
+    from bearingkit.physics.deviations import seed001_series
+
+    key = ("light", load, cage_slip)
+    if key not in _CACHE:
+        dev = np.stack([np.zeros(23), seed001_series(1)])
+        solved = solve_rollers(seed001_row_identified(), load, dev, speed=SEED001_SPEED)
+        s = solved.friction(TRBOperatingPoint(cage_slip=cage_slip)).max_sliding_inner
+        _CACHE[key] = float(s[1] / s[0] - 1.0)
+    return _CACHE[key]
+
+
 def change_order(ring: str) -> float:
     """floor(log10(100 max_k |ΔM/M|)) of ``ring`` over Table 2 series 1–6 [1] (−2: a 10⁻² % order)."""
     return float(np.floor(np.log10(100.0 * np.abs(torque_changes(ring)).max())))
@@ -193,5 +208,17 @@ register(
         role="diagnostic",
         note="an alternative reading (eq. 8 without the limiting shear stress, F_rs/Q above boundary "
         "friction); the counted case is seed001/finding/sliding-increment-ratio-slip-invariance",
+    )
+)
+register(
+    Case(
+        id="seed001/figure7c/light-load-larger-increment",
+        source=f"{SOURCE}, §3.2 / Fig. 7b,c and §4 ('more pronounced under light axial external load')",
+        quantity="indicator: the increment ratio of the max cone sliding friction of series 1 at F_a = 2 kN "
+        "exceeds that at 10 kN (S_c = 0.05 %)",
+        unit="1",
+        published=1.0,
+        compute=lambda: float(light_load_increment_ratio(2000.0) > increment_ratio(5e-4)),
+        tolerance=0.0,
     )
 )
