@@ -82,9 +82,10 @@ def test_identified_raceway_stiffness():
     what the identification returns, and raceway_stiffness = the Kunert value reproduces the default row."""
     from bearingkit.bearings.tapered import SEED001_GEOMETRY, seed001_e_reduced
     from bearingkit.papers.liu2022 import calibration
+    from bearingkit.papers.liu2022.validation import identify_raceway_stiffness
     from bearingkit.physics.contact import line
 
-    assert calibration.RACEWAY_STIFFNESS == pytest.approx(calibration.identify_raceway_stiffness(), rel=1e-3)
+    assert calibration.RACEWAY_STIFFNESS == pytest.approx(identify_raceway_stiffness(), rel=1e-3)
     k0 = float(line.line_stiffness(SEED001_GEOMETRY["effective_length"], seed001_e_reduced()))
     dev = seed001_series(3)
     a = contact_forces(seed001_row(), 10e3, dev).max_contact_force

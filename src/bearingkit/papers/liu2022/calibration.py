@@ -23,7 +23,8 @@ from __future__ import annotations
 #: Table 3 series the constant is identified on (1-based).
 CALIBRATION_SERIES = 1
 #: K_a of one roller–raceway line contact [N/m^(10/9)], identified on Table 3 series 1 by
-#: :func:`identify_raceway_stiffness` (regenerate it there when the model changes).
+#: :func:`bearingkit.papers.liu2022.validation.identify_raceway_stiffness` (regenerate it there when the model
+#: changes; a test checks that the two agree).
 RACEWAY_STIFFNESS = 3.0723e9
 
 
@@ -33,25 +34,3 @@ def seed001_row_identified(**kwargs):
 
     kwargs.setdefault("raceway_stiffness", RACEWAY_STIFFNESS)
     return seed001_row(**kwargs)
-
-
-def identify_raceway_stiffness() -> float:
-    """K_a [N/m^(10/9)] that meets Table 3 series 1's maximum contact force (2.026 kN) — recomputed."""
-    import numpy as np
-    from scipy.optimize import brentq
-
-    from bearingkit.analysis.trb import contact_forces
-    from bearingkit.bearings.tapered import SEED001_GEOMETRY, seed001_e_reduced
-    from bearingkit.papers.liu2022.validation import AXIAL_LOAD, TABLE3_MAX_KN
-    from bearingkit.physics.contact import line
-    from bearingkit.physics.deviations import seed001_series
-
-    k0 = float(line.line_stiffness(SEED001_GEOMETRY["effective_length"], seed001_e_reduced()))
-    dev = np.atleast_2d(seed001_series(CALIBRATION_SERIES))
-    target = TABLE3_MAX_KN[CALIBRATION_SERIES - 1] * 1e3
-
-    def err(scale):
-        row = seed001_row_identified(raceway_stiffness=k0 * scale)
-        return float(contact_forces(row, AXIAL_LOAD, dev).max_contact_force[0]) - target
-
-    return k0 * float(brentq(err, 1.0, 4.0, xtol=1e-7))

@@ -31,6 +31,29 @@ TABLE3_VARIANCE_KN2 = (0.0162, 0.0096, 0.0645, 0.0383, 0.1441, 0.0856)
 #: Tolerances [1] (issue 32: values within 10 % unless the paper states its accuracy; it does not).
 TOL_MAX, TOL_VARIANCE, TOL_CALIBRATION = 0.05, 0.10, 1e-4
 
+
+def identify_raceway_stiffness() -> float:
+    """K_a [N/m^(10/9)] that meets Table 3 series 1's maximum contact force (2.026 kN) — recomputed."""
+    import numpy as np
+    from scipy.optimize import brentq
+
+    from bearingkit.analysis.trb import contact_forces
+    from bearingkit.bearings.tapered import SEED001_GEOMETRY, seed001_e_reduced
+    from bearingkit.papers.liu2022.calibration import CALIBRATION_SERIES, seed001_row_identified
+    from bearingkit.physics.contact import line
+    from bearingkit.physics.deviations import seed001_series
+
+    k0 = float(line.line_stiffness(SEED001_GEOMETRY["effective_length"], seed001_e_reduced()))
+    dev = np.atleast_2d(seed001_series(CALIBRATION_SERIES))
+    target = TABLE3_MAX_KN[CALIBRATION_SERIES - 1] * 1e3
+
+    def err(scale):
+        row = seed001_row_identified(raceway_stiffness=k0 * scale)
+        return float(contact_forces(row, AXIAL_LOAD, dev).max_contact_force[0]) - target
+
+    return k0 * float(brentq(err, 1.0, 4.0, xtol=1e-7))
+
+
 _CACHE: dict = {}
 
 

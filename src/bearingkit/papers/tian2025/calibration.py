@@ -8,9 +8,11 @@ published number of the paper is then a prediction:
 
 * :data:`ROLLER_SLIDING` — μ_rs of the load-proportional sliding of the two axial roller rows at their
   pitch radius (:func:`bearingkit.physics.friction.components.roller_sliding_torque`), identified on
-  Table 3 run 1 (2871.7 N·mm) by :func:`identify_roller_sliding` = 0.00269. For comparison, SKF puts
-  the constant friction coefficient of cylindrical roller thrust bearings at 0.005 (M = 0.5 μ P d with
-  the bore d; thrust ball bearings 0.0013): the identified term is that order. It is what the paper's
+  Table 3 run 1 (2871.7 N·mm) = 0.00269 (recomputed by
+  :func:`bearingkit.papers.tian2025.friction.calibrated_sliding` of the ``"seed000"`` reading).
+  For comparison, SKF puts the constant friction coefficient of cylindrical roller thrust bearings
+  at 0.005 (M = 0.5 μ P d with the bore d; thrust ball bearings 0.0013): the identified term is that
+  order. It is what the paper's
   torques show and the component model lacked — the published Table 3 torques grow with the axial
   roller load by 0.33 N·m per kN (a coefficient ≈ 0.004 at the 83.5 mm pitch radius), three times
   what hysteresis and the pitch-line differential sliding E2 (μ from the film parameter) give.
@@ -32,20 +34,7 @@ CALIBRATION_RUNS = (1,)
 CAGE_MASS = 2 * 0.158
 #: η_eff/η_base of the grease [1]: 1 = base oil (not calibrated since issue 32).
 VISCOSITY_FACTOR = 1.0
-#: μ_rs of the axial roller rows at their pitch radius [1], identified on Table 3 run 1 by
-#: :func:`identify_roller_sliding` (regenerate it there when the model changes).
+#: μ_rs of the axial roller rows at their pitch radius [1], identified on Table 3 run 1 (regenerate it with
+#: ``friction.calibrated_sliding(dataclasses.replace(friction.VARIANTS["seed000"], roller_sliding=None))``
+#: when the model changes; a test checks that the two agree).
 ROLLER_SLIDING = 0.002687
-
-
-def identify_roller_sliding(variant=None) -> float:
-    """μ_rs [1] that meets Table 3 run 1 (2.8717 N·m) — the calibration, recomputed.
-
-    Parameters
-    ----------
-    variant : FrictionVariant or None
-        A reading of :mod:`bearingkit.papers.tian2025.friction` (None: the validated ``"seed000"``).
-    """
-    from bearingkit.papers.tian2025 import friction
-
-    v = friction.VARIANTS["seed000"] if variant is None else variant
-    return friction.calibrated_sliding(v)

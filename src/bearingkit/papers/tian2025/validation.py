@@ -80,13 +80,6 @@ def table3_torque(k: int, viscosity_factor=None) -> float:
     return float(t[0])
 
 
-def calibrate_roller_sliding() -> float:
-    """Solve table3_torque(1) = 2.8717 N·m for μ_rs (regenerates calibration.ROLLER_SLIDING)."""
-    from bearingkit.papers.tian2025.calibration import identify_roller_sliding
-
-    return identify_roller_sliding()
-
-
 def _rising(values) -> float:
     return float(np.all(np.diff(np.asarray(values)) > 0))
 

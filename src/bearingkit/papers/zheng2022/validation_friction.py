@@ -13,9 +13,8 @@ Tolerance 0.10 (issue 32: values within 10 % where the paper states no accuracy 
 
 Roles (issue 32): ``seed004/table7/axial/20kN`` is the calibration point; Table 7's 5 kN simulation
 values are diagnostics (Table 8 prints the same state, 5 kN / 600 rpm, with the same numbers); the
-Table 5 arrows are diagnostics (derived from the two printed values of each row); the Table 7 deviation
-row (``seed004/table7/deviation/<case>/<load>kN``) is a diagnostic (test − simulation: both are counted
-on their own; computed here as the printed test value minus bearingkit's simulation).
+Table 5 arrows are diagnostics (derived from the two printed values of each row). The Table 7 deviation
+row is registered beside the test values (:mod:`bearingkit.papers.zheng2022.validation_tests`).
 
 New predictions (issue 32): ``seed004/section4/life/<40|100>pct`` (§4: a constant load of 40–100 % of
 the dynamic rating gives 15.6 to 1.0 million revolutions: L10 = (C/P)³, ISO 281 for ball bearings, as
@@ -288,25 +287,6 @@ for _case, (_mu_lo, _mu_hi) in MU_RANGE.items():
         unit="1",
         tolerance=0.0,
     )
-
-
-def _deviation(case, load_kn):
-    from bearingkit.papers.zheng2022.validation_tests import TABLE7_TEST
-
-    return lambda: TABLE7_TEST[case][load_kn] - _friction(case, load_kn, 600.0)()
-
-
-for _case, _rows in TABLE7_DEVIATION.items():
-    for _load, _d in _rows.items():
-        _register(
-            f"seed004/table7/deviation/{_case}/{_load}kN",
-            f"{SOURCE}, Table 7 (deviation row)",
-            f"printed test value minus bearingkit's simulated friction torque, {_case} {_load} kN, 600 rpm",
-            _d,
-            _deviation(_case, _load),
-            note="derived: the row is test - simulation of the same column (0.058 - 0.028 = 0.030 ...); the "
-            "test (seed004/table7-test/*) and simulation (seed004/table7/*) values are counted on their own",
-        )
 
 
 def _life(load_ratio: float) -> float:

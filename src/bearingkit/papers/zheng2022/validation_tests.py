@@ -331,6 +331,30 @@ def _register() -> None:
         )
 
 
+def _register_deviation_row() -> None:
+    """Table 7's deviation row: printed test minus bearingkit's simulation (diagnostics: derived)."""
+    from bearingkit.papers.zheng2022.validation_friction import TABLE7_DEVIATION
+
+    for case, rows in TABLE7_DEVIATION.items():
+        for load, d in rows.items():
+            register(
+                Case(
+                    f"seed004/table7/deviation/{case}/{load}kN",
+                    f"{SOURCE}, Table 7 (deviation row)",
+                    f"printed test value minus bearingkit's simulated friction torque, {case} {load} kN, "
+                    "600 rpm",
+                    "N*m",
+                    d,
+                    lambda c=case, f=load: TABLE7_TEST[c][f] - simulated_torque(c, f, 600.0),
+                    0.10,
+                    role="diagnostic",
+                    note="derived: the row is test - simulation of the same column (0.058 - 0.028 = 0.030 "
+                    "...); the test (seed004/table7-test/*) and simulation (seed004/table7/*) values are "
+                    "counted on their own",
+                )
+            )
+
+
 def _inside_range(case: str, mu: float) -> float:
     from bearingkit.papers.zheng2022.validation_friction import mu_range
 
@@ -339,3 +363,4 @@ def _inside_range(case: str, mu: float) -> float:
 
 
 _register()
+_register_deviation_row()
