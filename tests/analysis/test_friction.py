@@ -5,8 +5,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from bearingkit.analysis.friction import COMPONENT_NAMES, OperatingPoint, friction_torque
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.friction.components import COMPONENT_NAMES, OperatingPoint, friction_torque
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
 from bearingkit.errors import InputError

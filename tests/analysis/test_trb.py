@@ -5,7 +5,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from bearingkit.analysis.trb import SEED001_FREE, contact_forces, monte_carlo
+from bearingkit.analysis.scatter import SEED001_FREE, contact_forces, monte_carlo
 from bearingkit.bearings.tapered import seed001_row
 from bearingkit.errors import InputError
 from bearingkit.physics.deviations import seed001_series
@@ -52,10 +52,10 @@ def test_validation_cases_registered_and_ideal_passes():
 def test_roller_loads_from_the_solve_start_equal_the_reference():
     """The per-roller loads started from the rollers' positions the compiled solve left agree with
     the cold start and with the numpy reference's roller_state to the sub-problem's tolerance."""
-    from bearingkit.analysis.model import BearingModel
-    from bearingkit.analysis.quasistatic import SolverOptions, load_vector, solve
+    from bearingkit.analysis.solver.model import BearingModel
+    from bearingkit.analysis.solver.quasistatic import SolverOptions, load_vector, solve
     from bearingkit.physics.deviations import gaussian_deviations
-    from bearingkit.rows.compiled_tapered import roller_loads
+    from bearingkit.rows.tapered.compiled import roller_loads
 
     row = seed001_row()
     dev = gaussian_deviations(row.n_elements, 1e-6, 32, seed=11)

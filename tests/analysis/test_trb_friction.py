@@ -5,7 +5,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from bearingkit.analysis.trb_friction import (
+from bearingkit.analysis.friction.tapered import (
     SEED001_SPEED,
     TRBOperatingPoint,
     friction_monte_carlo,

@@ -16,7 +16,7 @@ from bearingkit.papers.tian2025.validation import TABLE3
 from bearingkit.papers.zheng2022 import study_runs as s004
 from bearingkit.papers.zheng2022.studies import TABLE6_OBJECTIVES
 from bearingkit.studies import evaluators
-from bearingkit.studies.definition import evaluator_of, load_study
+from bearingkit.studies.definition.load import evaluator_of, load_study
 from bearingkit.validation.registry import all_cases, failures, run_cases
 
 EXAMPLES = ("seed000_l9", "seed001_monte_carlo", "seed002_clearance_map")
@@ -181,7 +181,7 @@ def test_seed001_evaluator_reproduces_table2_series1_and_the_ideal_bearing():
 
 def test_seed001_study_agrees_with_friction_monte_carlo_in_distribution(mc):
     """Independent samplers (study LHS vs friction_monte_carlo's PCG64): means within 4 standard errors."""
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint, friction_monte_carlo
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint, friction_monte_carlo
     from bearingkit.papers.liu2022.calibration import seed001_row_identified
 
     ref = friction_monte_carlo(

@@ -23,7 +23,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.kinematics import RACEWAY_CONTROLS, element_kinematics, thrust_roller_kinematics
+from bearingkit.analysis.friction.kinematics import (
+    RACEWAY_CONTROLS,
+    element_kinematics,
+    thrust_roller_kinematics,
+)
 from bearingkit.lubricants import Lubricant, as_lubricant
 from bearingkit.physics.contact import hertz, line
 from bearingkit.physics.friction import components as fc
@@ -84,7 +88,7 @@ class OperatingPoint:
         Keys of :data:`~bearingkit.physics.friction.components.VISCOUS_LINE_MODELS` /
         :data:`~bearingkit.physics.friction.components.VISCOUS_POINT_MODELS`.
     raceway_control : str
-        Spin-axis hypothesis of the balls (:data:`~bearingkit.analysis.kinematics.RACEWAY_CONTROLS`).
+        Spin-axis hypothesis of the balls (:data:`~bearingkit.analysis.friction.kinematics.RACEWAY_CONTROLS`).
     roller_sliding : float [-]
         Coefficient μ_rs of the load-proportional sliding of thrust roller rows at their pitch radius
         (:func:`~bearingkit.physics.friction.components.roller_sliding_torque`); 0 = off (default:

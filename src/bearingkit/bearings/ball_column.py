@@ -36,13 +36,13 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
 from bearingkit.physics.structure import thin_ring
 from bearingkit.rings.flexible import BEAM_MODES, FlexibleOuterRing
 from bearingkit.rings.section import RingSection
-from bearingkit.rows.ball import BallRow
-from bearingkit.rows.cylindrical import CylindricalRow
+from bearingkit.rows.ball.row import BallRow
+from bearingkit.rows.cylindrical.row import CylindricalRow
 
 ROWS = ("ball_1", "roller_2", "ball_3")
 #: How ``n_balls`` counts the balls (issue 32): ``"per_row"`` — every ball row has n_balls; ``"total"`` —

@@ -14,13 +14,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from bearingkit.analysis.model import BearingModel
+from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.physics.life import ptrb_rating as pr
 from bearingkit.physics.structure import ptrb_strength as ps
-from bearingkit.rows.threaded import ThreadedRow
-from bearingkit.rows.threaded_distribution import axial_tooth_distribution
-from bearingkit.rows.threaded_geometry import PTRBGeometry, contact_pairs
+from bearingkit.rows.threaded.row import ThreadedRow
+from bearingkit.rows.threaded.distribution import axial_tooth_distribution
+from bearingkit.rows.threaded.geometry import PTRBGeometry, contact_pairs
 
 __all__ = [
     "DISTRIBUTION_SOURCES",
@@ -194,7 +194,7 @@ def ptrb_ratings(
         identified core compliance at 20 kN), f_rmax calibrated; ``"calibrated"``: both from
         :func:`bearingkit.physics.life.ptrb_rating.calibrated_distribution_coefficients` (the prototype's);
         ``"model"``: the physical models with nothing identified (axial:
-        :func:`~bearingkit.rows.threaded_distribution.axial_tooth_distribution` evaluated
+        :func:`~bearingkit.rows.threaded.distribution.axial_tooth_distribution` evaluated
         self-consistently at C0a; radial: Stribeck sum with roller 0 under the load, or at
         ``azimuth_phase``).
     tooth_model : str
@@ -202,7 +202,7 @@ def ptrb_ratings(
     azimuth_phase : float or None
         Roller phase for the radial model [rad] (None: 0, the worst case).
     """
-    from bearingkit.rows.threaded_distribution import radial_roller_distribution
+    from bearingkit.rows.threaded.distribution import radial_roller_distribution
 
     if distribution not in DISTRIBUTION_SOURCES:
         raise InputError(f"distribution ({distribution!r}) must be one of {', '.join(DISTRIBUTION_SOURCES)}")

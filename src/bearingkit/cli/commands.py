@@ -109,7 +109,7 @@ def analyze(
 @app.command()
 def schema():
     """Print the JSON Schema of the input file."""
-    from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.kinds)
+    from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.build.kinds)
     from bearingkit.io.schema_cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
@@ -323,8 +323,8 @@ def report(
                 f"{file}: {', '.join(given)} apply to a bearing file; a shaft file's [[load_cases]] and "
                 "[lubricant] give them"
             )
-        from bearingkit.systems.input import load_shaft_file
-        from bearingkit.systems.shaft_analysis import ShaftAnalysis
+        from bearingkit.systems.shaft.input import load_shaft_file
+        from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
 
         path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
         console.print(f"wrote {path}")
@@ -421,9 +421,9 @@ def shaft(
     """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and
     friction, system life; exit 1 if a case fails."""
     from bearingkit.cli.shaft_tables import shaft_case_tables
-    from bearingkit.systems.input import load_shaft_file
-    from bearingkit.systems.shaft_analysis import ShaftAnalysis
-    from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
+    from bearingkit.systems.shaft.input import load_shaft_file
+    from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
+    from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
     inp = load_shaft_file(file)
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
@@ -432,7 +432,7 @@ def shaft(
     if stiffness is not None:
         write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
     if plot is not None:
-        from bearingkit.report.shaft_plots import write_shaft_figure
+        from bearingkit.report.systems.shaft_plots import write_shaft_figure
 
         for c, name in enumerate(result.loads.names):
             write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)

@@ -408,8 +408,8 @@ GEOMETRY_MODELS: dict[str, type[BaseModel]] = {
 def _describe_defaults() -> None:
     """Put each builder default (SI) into the description of the matching optional field."""
     from bearingkit.bearings import standard, turntable
-    from bearingkit.rows.tapered import TaperedRow
-    from bearingkit.rows.threaded_geometry import PTRBGeometry
+    from bearingkit.rows.tapered.row import TaperedRow
+    from bearingkit.rows.threaded.geometry import PTRBGeometry
 
     def defaults(cls):
         return {f.name: f.default for f in dataclasses.fields(cls) if f.default is not dataclasses.MISSING}

@@ -66,7 +66,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
-from bearingkit.rows.tapered_geometry import (
+from bearingkit.rows.tapered.geometry import (
     ANGLE_CONSISTENCY_RTOL,
     DEFAULT_END_RADIUS_RATIO,
     DEFAULT_FLANGE_HEIGHT_RATIO,
@@ -78,7 +78,7 @@ from bearingkit.rows.tapered_geometry import (
     TapGeometry,
     _cross2,
 )
-from bearingkit.rows.tapered_kernel import TaperedKernel
+from bearingkit.rows.tapered.kernel import TaperedKernel
 
 
 @dataclass(frozen=True)

@@ -1,8 +1,8 @@
 """Solver kernel of a tapered roller row: the roller sub-problem, condensed into the engine.
 
 The model (per-roller 2-DOF equilibrium under cone, cup and rib contacts, condensation by the
-implicit-function theorem) is described in :mod:`bearingkit.rows.tapered`, which also holds the row's
-data (:class:`~bearingkit.rows.tapered.TaperedRow`) and meridian geometry. This module holds what
+implicit-function theorem) is described in :mod:`bearingkit.rows.tapered.row`, which also holds the row's
+data (:class:`~bearingkit.rows.tapered.row.TaperedRow`) and meridian geometry. This module holds what
 the solver calls: the batched, bounded roller Newton iteration and the condensed force, stiffness
 and energy.
 """
@@ -23,8 +23,8 @@ from bearingkit.rows.base import (
     radial_row,
     relative_displacement,
 )
-from bearingkit.rows.tapered_geometry import DEFAULT_END_RADIUS_RATIO, LINE_EXPONENT, TapGeometry
-from bearingkit.rows.tapered_laws import kunert_law, rib_law, taylor_law
+from bearingkit.rows.tapered.geometry import DEFAULT_END_RADIUS_RATIO, LINE_EXPONENT, TapGeometry
+from bearingkit.rows.tapered.laws import kunert_law, rib_law, taylor_law
 
 #: Inner Newton iteration of the roller equilibrium: iteration cap, relative tolerance on each roller's
 #: force balance (of its summed contact loads), step halvings per line search, the largest step as a
@@ -88,7 +88,7 @@ class TaperedKernel(KernelBase):
 
     def __init__(self, row):
         from bearingkit.physics.contact import hertz, line
-        from bearingkit.rows.ball import _steel_e_reduced
+        from bearingkit.rows.ball.row import _steel_e_reduced
 
         self.row = row
         geo = TapGeometry(row)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from bearingkit.analysis.friction import COMPONENT_NAMES
+from bearingkit.analysis.friction.components import COMPONENT_NAMES
 from bearingkit.errors import InputError
 from bearingkit.papers.tian2025 import friction as sf
 from bearingkit.papers.tian2025 import validation as v000
@@ -171,8 +171,8 @@ def test_sliding_reading_replaces_only_the_differential_sliding():
     μ_bl = 0.12 (E2 = 0.12 × its value at μ = 1); the row breakdown still adds up."""
     import dataclasses
 
-    from bearingkit.analysis.friction import friction_torque
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.friction.components import friction_torque
+    from bearingkit.analysis.solver.quasistatic import solve
 
     v = sf.FrictionVariant("t", sliding="boundary", roller_sliding=v000.ROLLER_SLIDING)
     model, load = sf._combined_case(v)

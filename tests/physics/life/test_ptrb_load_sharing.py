@@ -12,7 +12,7 @@ from bearingkit.bearings.ptrb import (
 from bearingkit.errors import InputError
 from bearingkit.physics.life import ptrb_load_sharing as pls
 from bearingkit.physics.life import ptrb_rating as pr
-from bearingkit.rows.threaded_distribution import axial_tooth_distribution
+from bearingkit.rows.threaded.distribution import axial_tooth_distribution
 
 #: Table 4 of Zheng et al. (2022): C0a and Ca [kN] at the sweep endpoints → the f_amax they imply with
 #: eq. (2) and eq. (11) (C0a, Ca ∝ 1/f_amax, everything else fixed): implied = f_ref · C_ref / C_pub.

@@ -42,12 +42,12 @@ def seed002_clearance(cases):
     ``clearance_ball`` / ``clearance_roller`` [m] are the radial (diametral) clearances of the ball rows
     and of the roller row (batched along the case axis with the loads), ``radial_load`` [N] acts along
     +x and ``axial_load`` [N] along +z. ``compliance_scale`` 0 solves with rigid rings
-    (:func:`bearingkit.analysis.quasistatic.solve`); > 0 couples the flexible outer ring of
+    (:func:`bearingkit.analysis.solver.quasistatic.solve`); > 0 couples the flexible outer ring of
     :func:`bearingkit.bearings.ball_column.outer_ring` (:func:`bearingkit.analysis.flexible.solve_flexible`,
     via :func:`bearingkit.papers.li2025.studies.solve_case`: beam + ovalisation, the paper's free ring). The
     share of row r is |F_r,radial| / Σ_rows.
     """
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.papers.li2025.studies import paper_geometry, solve_case
 
     parts = []

@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.analysis.flexible import solve_flexible
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.ball_column import (
     ROWS,
     BallColumnGeometry,

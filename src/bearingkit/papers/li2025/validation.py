@@ -38,7 +38,7 @@ _HEAVY_FLEX = (
 
 
 def _count(row: str, scale: float | None, housing_stiffness=0.0) -> float:
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.papers.li2025.studies import CONDITIONS, paper_geometry, solve_case
 
     fr, fa = CONDITIONS[1]

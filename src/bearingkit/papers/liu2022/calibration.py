@@ -15,7 +15,7 @@ series' excess of the maximum over the ideal 1776 N and every standard deviation
 published by one common factor 0.615–0.622, while the ordering and the variance ratios were right. The
 contact-force deviation caused by a roller's ΔD is ∂Q/∂δ · ΔD cos ε/2 ∝ K_a^0.9 (eq. 4) at a fixed load:
 one stiffness constant scales all of them. The rib constant K_f (also not given) stays the Hertz
-sphere-on-plane estimate of :mod:`bearingkit.rows.tapered`.
+sphere-on-plane estimate of :mod:`bearingkit.rows.tapered.row`.
 """
 
 from __future__ import annotations

@@ -24,7 +24,7 @@ from bearingkit.studies.evaluators import (
 # for ball-row / roller-row radial clearances and loads (rigid, or flexible outer ring).
 # ``seed004_ptrb``: seed-004 PTRB §6 objectives (Zheng et al. 2022) C0, C, M of a design population.
 def _seed001_factors() -> dict[str, Factor]:
-    from bearingkit.analysis.trb_friction import (
+    from bearingkit.analysis.friction.tapered import (
         DEFAULT_LUBRICANT,
         DEFAULT_TEMPERATURE_C,
         SEED001_SPEED,
@@ -62,17 +62,17 @@ def seed001_scatter(cases):
     Roller j of a case gets ΔD_j = S_d z_j (Liu et al. 2022, eq. 14: ΔD ~ N(0, S_d²)) with ``magnitude``
     S_d [m] and the unit draws ``z1…zZ`` [1] (sampled by the study), arranged by ``arrangement``
     (:data:`bearingkit.physics.deviations.ARRANGEMENTS`). Each group of cases is one batched solve
-    (:func:`bearingkit.analysis.trb_friction.tapered_friction`) with the ideal bearing as an extra case,
+    (:func:`bearingkit.analysis.friction.tapered.tapered_friction`) with the ideal bearing as an extra case,
     at ``axial_load`` [N], ``speed`` [rad/s], ``cage_slip`` [1], ``lubricant`` at ``temperature`` [°C],
     with eq. (8) read as ``sliding_model`` (default: the capped ``"limiting_shear"``).
 
     Outputs: ``max_contact_force_N`` (max_j Q_e,j), its ``contact_force_increment_ratio`` over the ideal
     bearing's, ``contact_force_variance_N2``, ``max_sliding_inner_N`` (max_j F_rs,i), the
     ``sliding_increment_N`` = max_j F_rs,i − F_rs,i(ideal) and its ratio, the ring torques [N·m] and their
-    change ratios ΔM/M_ideal (as :func:`~bearingkit.analysis.trb_friction.friction_monte_carlo`).
+    change ratios ΔM/M_ideal (as :func:`~bearingkit.analysis.friction.tapered.friction_monte_carlo`).
     """
     from bearingkit import checks
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint, tapered_friction
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint, tapered_friction
     from bearingkit.papers.liu2022.calibration import seed001_row_identified as seed001_row
     from bearingkit.physics.deviations import arrange
 

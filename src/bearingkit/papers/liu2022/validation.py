@@ -37,7 +37,7 @@ def identify_raceway_stiffness() -> float:
     import numpy as np
     from scipy.optimize import brentq
 
-    from bearingkit.analysis.trb import contact_forces
+    from bearingkit.analysis.scatter import contact_forces
     from bearingkit.bearings.tapered import SEED001_GEOMETRY, seed001_e_reduced
     from bearingkit.papers.liu2022.calibration import CALIBRATION_SERIES, seed001_row_identified
     from bearingkit.physics.contact import line
@@ -59,7 +59,7 @@ _CACHE: dict = {}
 
 def _table3():
     if "stats" not in _CACHE:
-        from bearingkit.analysis.trb import contact_forces
+        from bearingkit.analysis.scatter import contact_forces
         from bearingkit.papers.liu2022.calibration import seed001_row_identified
         from bearingkit.physics.deviations import seed001_series
 
@@ -69,7 +69,7 @@ def _table3():
 
 
 def _ideal_max():
-    from bearingkit.analysis.trb import contact_forces
+    from bearingkit.analysis.scatter import contact_forces
     from bearingkit.papers.liu2022.calibration import seed001_row_identified
 
     return float(contact_forces(seed001_row_identified(), AXIAL_LOAD).max_contact_force[0])

@@ -62,7 +62,7 @@ CHANGE_DEVIATION = (
 @functools.cache
 def _speed_sweep(sliding_model: str):
     """(M_ir ideal, ΔM_ir/M_ir series 1) over :data:`SPEEDS_RPM` (each speed solved at its own speed)."""
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint, solve_rollers
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint, solve_rollers
     from bearingkit.papers.liu2022.calibration import seed001_row_identified as seed001_row
     from bearingkit.physics.deviations import seed001_series
 

@@ -83,7 +83,7 @@ _CACHE: dict = {}
 
 def _solved():
     if "solved" not in _CACHE:
-        from bearingkit.analysis.trb_friction import SEED001_SPEED, solve_rollers
+        from bearingkit.analysis.friction.tapered import SEED001_SPEED, solve_rollers
         from bearingkit.papers.liu2022.calibration import seed001_row_identified as seed001_row
         from bearingkit.physics.deviations import seed001_series
 
@@ -93,7 +93,7 @@ def _solved():
 
 
 def _friction(cage_slip, sliding_model=None):
-    from bearingkit.analysis.trb_friction import TRBOperatingPoint
+    from bearingkit.analysis.friction.tapered import TRBOperatingPoint
 
     key = ("friction", cage_slip, sliding_model)
     if key not in _CACHE:
@@ -122,7 +122,7 @@ def increment_ratio(cage_slip: float, sliding_model=None) -> float:
 
 def light_load_increment_ratio(load: float = 2000.0, cage_slip: float = 5e-4) -> float:
     """Increment ratio of the max cone sliding force of series 1 at ``load`` [N] (Fig. 7c: 2 kN, 0.05 %)."""
-    from bearingkit.analysis.trb_friction import SEED001_SPEED, TRBOperatingPoint, solve_rollers
+    from bearingkit.analysis.friction.tapered import SEED001_SPEED, TRBOperatingPoint, solve_rollers
     from bearingkit.papers.liu2022.calibration import seed001_row_identified
     from bearingkit.physics.deviations import seed001_series
 

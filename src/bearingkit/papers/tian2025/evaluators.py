@@ -123,7 +123,7 @@ STATICS = register(
 
 # ------------------------------------------------------------------------------ seed 000 friction
 def _friction_factors() -> dict[str, Factor]:
-    from bearingkit.analysis.friction import OperatingPoint
+    from bearingkit.analysis.friction.components import OperatingPoint
 
     defaults = {f.name: f.default for f in dataclasses.fields(OperatingPoint)}
     out = dict(SEED000_FACTORS)
@@ -143,7 +143,7 @@ def seed000_friction(cases):
 
     Operating point: inner ring at ``speed`` [rad/s], outer ring fixed, ``lubricant`` at ``temperature``
     [°C], ``viscosity_factor``, ``cage_mass`` [kg] and ``roller_sliding`` [1] as
-    :class:`bearingkit.analysis.friction.OperatingPoint`.
+    :class:`bearingkit.analysis.friction.components.OperatingPoint`.
     """
 
     def conditions(sub, key) -> dict:

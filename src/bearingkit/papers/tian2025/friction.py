@@ -1,7 +1,7 @@
 """Seed-000 friction studies: the single-factor sweeps of Tian et al. (2025) §5.3 and §6.1, with breakdowns.
 
 SI units inside (N, m, Pa, rad/s, N·m); speeds are given in r/min only at the edge (``rpm``
-arguments) and converted by :meth:`~bearingkit.analysis.friction.OperatingPoint.from_rpm`.
+arguments) and converted by :meth:`~bearingkit.analysis.friction.components.OperatingPoint.from_rpm`.
 Every study returns a :class:`pandas.DataFrame` with one line per case and units in the column
 names: ``total_Nm``, one ``<component>_Nm`` column per friction component (they add up to the
 total), one ``row_<row>_Nm`` column per row plus ``row_cage_Nm`` (they add up to the total too),
@@ -44,9 +44,9 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit import checks, references
-from bearingkit.analysis.friction import COMPONENT_NAMES, OperatingPoint, friction_torque
-from bearingkit.analysis.kinematics import RACEWAY_CONTROLS
-from bearingkit.analysis.quasistatic import load_vector, solve
+from bearingkit.analysis.friction.components import COMPONENT_NAMES, OperatingPoint, friction_torque
+from bearingkit.analysis.friction.kinematics import RACEWAY_CONTROLS
+from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
 from bearingkit.papers.tian2025 import calibration as cal
@@ -116,7 +116,7 @@ class FrictionVariant:
     sliding : str
         μ_ij of E2, a key of :data:`SLIDING_READINGS` (``"mixed"``: the operating point's).
     viscous_line_model, viscous_point_model, raceway_control : str
-        Registry keys of :mod:`bearingkit.analysis.friction`.
+        Registry keys of :mod:`bearingkit.analysis.friction.components`.
     yrt_clearance : float [m]
         Axial roller clearance of the YRT comparator (0 = as the validation case; < 0 preloaded).
     viscosity_factor : float or None [-]

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.analysis.friction import COMPONENT_NAMES
+from bearingkit.analysis.friction.components import COMPONENT_NAMES
 
 # --- plots -------------------------------------------------------------------------------------------------
 _LABELS = {

@@ -20,8 +20,8 @@ import dataclasses
 
 import numpy as np
 
-from bearingkit.analysis.friction import friction_torque
-from bearingkit.analysis.quasistatic import solve
+from bearingkit.analysis.friction.components import friction_torque
+from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.papers.tian2025 import friction as f
 from bearingkit.papers.tian2025 import validation as v000

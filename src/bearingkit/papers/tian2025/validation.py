@@ -47,7 +47,7 @@ TABLE3 = (
 
 def operating_point(rpm=RPM, viscosity_factor=None, **kw):
     """The seed-000 operating point at ``rpm`` [r/min] with the constants of :mod:`.calibration`."""
-    from bearingkit.analysis.friction import OperatingPoint
+    from bearingkit.analysis.friction.components import OperatingPoint
 
     vf = VISCOSITY_FACTOR if viscosity_factor is None else viscosity_factor
     kw.setdefault("roller_sliding", ROLLER_SLIDING)
@@ -56,8 +56,8 @@ def operating_point(rpm=RPM, viscosity_factor=None, **kw):
 
 def torque(load, rpm=RPM, viscosity_factor=None, builder=None, **geometry):
     """Friction torque [N·m] (C,) of the composite bearing (or ``builder``) under ``load`` (C, 5)."""
-    from bearingkit.analysis.friction import friction_torque
-    from bearingkit.analysis.quasistatic import solve
+    from bearingkit.analysis.friction.components import friction_torque
+    from bearingkit.analysis.solver.quasistatic import solve
     from bearingkit.bearings.turntable import composite_turntable
 
     model = (builder or composite_turntable)(**geometry)
@@ -87,8 +87,8 @@ def _rising(values) -> float:
 # --- the single-factor conclusions (indicator 1.0 = the paper's statement holds) -------------------
 def speed_rises() -> float:
     """§5.3.2(1): torque rises with speed 5–90 r/min (F_a = 2 kN, clearances 0/−2 µm)."""
-    from bearingkit.analysis.friction import friction_torque
-    from bearingkit.analysis.quasistatic import load_vector, solve
+    from bearingkit.analysis.friction.components import friction_torque
+    from bearingkit.analysis.solver.quasistatic import load_vector, solve
     from bearingkit.bearings.turntable import composite_turntable
 
     res = solve(
@@ -100,7 +100,7 @@ def speed_rises() -> float:
 
 def axial_load_rises() -> float:
     """§5.3.2(2): torque rises with axial load 0–8 kN at 5 r/min."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     t, _ = torque(
         load_vector(F_z=np.linspace(0, 8000, 9)), clearance_axial_roller=0.0, clearance_axial_ball=-2e-6
@@ -110,7 +110,7 @@ def axial_load_rises() -> float:
 
 def moment_rises() -> float:
     """§5.3.2(3): torque rises with overturning moment 0–400 N·m."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     t, _ = torque(
         load_vector(M_y=-np.linspace(0, 400, 9)), clearance_axial_roller=0.0, clearance_axial_ball=-2e-6
@@ -120,7 +120,7 @@ def moment_rises() -> float:
 
 def composite_below_yrt() -> float:
     """§5.3.1: the composite bearing's torque is below the YRT bearing's at every axial load 0–6 kN."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.bearings.turntable import yrt_turntable
 
     load = load_vector(F_z=np.linspace(0, 6000, 7))
@@ -135,7 +135,7 @@ def composite_below_yrt() -> float:
 
 def clearance_minimum() -> float:
     """§6.1.1: at roller clearance 0 and F_a = 5 kN the torque is lowest near ball clearance −5 µm [m]."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     grid = -np.arange(0, 7) * 1e-6
     vals = [
@@ -147,7 +147,7 @@ def clearance_minimum() -> float:
 
 def groove_steep_rise() -> float:
     """§6.1.2: torque rises with f = 0.505–0.54, steeply up to 0.51 (slope there > mean slope after)."""
-    from bearingkit.analysis.quasistatic import load_vector
+    from bearingkit.analysis.solver.quasistatic import load_vector
 
     f = np.array([0.505, 0.51, 0.52, 0.53, 0.54])
     t = np.array(

@@ -1,7 +1,7 @@
 """Validation cases of Tian et al. (2025) computed through the study machinery: Table 3 and its ranges.
 
 SI values (N·m). The group runs ONE study (``examples/studies/seed000_l9.toml`` through
-:func:`bearingkit.studies.runner.run_study`, in process, memory store), cached per process:
+:func:`bearingkit.studies.run.runner.run_study`, in process, memory store), cached per process:
 
 * ``seed000/study/table3/range-ranking`` — prediction, indicator: 1 if the study's range ranking equals
   the published D > A > C > B (§6.2 text and Fig. 20), else 0;

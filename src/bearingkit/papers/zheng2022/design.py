@@ -3,7 +3,7 @@
 SI units: N, m, rad, rad/s, N·m. :func:`design_geometry` changes the §5/§6 design variables under the
 paper's rules (D_pw and n·P held); :func:`calibrate_contact_traction` recomputes the one calibrated
 friction constant from :data:`CALIBRATION_POINT`; :func:`ptrb_objectives` is the friction model of
-:mod:`bearingkit.analysis.ptrb_friction` with the ratings of :mod:`bearingkit.physics.life.ptrb_rating`
+:mod:`bearingkit.analysis.friction.threaded` with the ratings of :mod:`bearingkit.physics.life.ptrb_rating`
 as a pure function of design-variable arrays (the population axis of an optimiser).
 
 Reference: Zheng et al. (2022) Machines 10:1051, doi:10.3390/machines10111051.
@@ -17,7 +17,7 @@ from functools import cache
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.ptrb_friction import (
+from bearingkit.analysis.friction.threaded import (
     CASES,
     RPM,
     TEST_TEMPERATURE_C,
@@ -30,8 +30,8 @@ from bearingkit.bearings.ptrb import ptrb_prototype
 from bearingkit.physics.friction import ptrb as pf
 from bearingkit.physics.life import ptrb_load_sharing as pls
 from bearingkit.physics.life import ptrb_rating as pr
-from bearingkit.rows.threaded_distribution import radial_roller_distribution
-from bearingkit.rows.threaded_geometry import PTRBGeometry
+from bearingkit.rows.threaded.distribution import radial_roller_distribution
+from bearingkit.rows.threaded.geometry import PTRBGeometry
 
 __all__ = [
     "CALIBRATION_POINT",

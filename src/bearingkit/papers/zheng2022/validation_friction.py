@@ -1,6 +1,6 @@
 """Seed 004 (Zheng et al. 2022, PTRB) friction validation cases: Tables 5, 7, 8 and §4 (simulation data).
 
-SI values (N·m, 1). Model: :func:`bearingkit.analysis.ptrb_friction.ptrb_friction` with its defaults
+SI values (N·m, 1). Model: :func:`bearingkit.analysis.friction.threaded.ptrb_friction` with its defaults
 (prototype of Table 1, flat ring flanks, L-AN oil η₀ = 0.04 Pa·s, α = 2.46e-8 1/Pa, eq. (13)–(15)
 summed as printed with M_v = F_v d_X/2, Harris's EHL rolling resistance with the equivalent ball's
 R_y = D_w/2, uniform tooth shares, roller 0 under the radial load).
@@ -43,7 +43,7 @@ Known deviations (stated per case) are all in the contact-angle row of Table 5 (
 the row is inconsistent with the paper's own load exponent under the printed load relations, so no
 per-contact model with the torque ∝ (contact load)^p, p ≈ 1, can follow both of its columns.
 
-The previous default (power balance, :meth:`~bearingkit.analysis.ptrb_friction.PTRBFrictionParameters.
+The previous default (power balance, :meth:`~bearingkit.analysis.friction.threaded.PTRBFrictionParameters.
 power_balance`) reversed the d_R trends (both loads) as well; see ``docs/ptrb_friction.md``.
 """
 
@@ -51,7 +51,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
+from bearingkit.analysis.friction.threaded import RPM, ptrb_friction
 from bearingkit.bearings.ptrb import ptrb_prototype
 from bearingkit.papers.zheng2022.design import design_geometry
 from bearingkit.validation.registry import Case, register

@@ -1,7 +1,7 @@
 """Seed 004 (Zheng et al. 2022, PTRB) §7 rig results as validation cases: Tables 7/8 TEST rows, §7.2.
 
 SI values (N·m, N, 1). The test rows are compared with bearingkit's SIMULATION of the prototype
-(:func:`bearingkit.analysis.ptrb_friction.ptrb_friction`, defaults: the model validated against the
+(:func:`bearingkit.analysis.friction.threaded.ptrb_friction`, defaults: the model validated against the
 simulation rows in :mod:`bearingkit.papers.zheng2022.validation_friction`). The paper's own accuracy
 claim is absolute: "the test data were slightly greater than the simulation data, with a deviation of
 no more than 0.1 Nm" (Table 7, §7.2.2 and §8) and "no more than 0.05 Nm" (Table 8). A test row's case
@@ -95,7 +95,7 @@ def _prototype():
 
 def simulated_torque(case: str, load_kn: float, speed_rpm: float) -> float:
     """bearingkit's friction torque of the prototype [N·m] (``case`` "axial"/"radial", F [kN], n [rpm])."""
-    from bearingkit.analysis.ptrb_friction import RPM, ptrb_friction
+    from bearingkit.analysis.friction.threaded import RPM, ptrb_friction
 
     return float(ptrb_friction(_prototype(), load_kn * KN, speed_rpm * RPM, case).torque)
 

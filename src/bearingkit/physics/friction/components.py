@@ -2,7 +2,7 @@
 
 SI units: N, m, Pa, Pa·s, 1/Pa, m/s, rad/s, W, N·m. Pure numpy functions broadcasting over their
 arguments (leading case axis first). Each returns a per-contact force [N] or moment [N·m]; the
-assembly (:mod:`bearingkit.analysis.friction`) multiplies by the contact's speed to get a power
+assembly (:mod:`bearingkit.analysis.friction.components`) multiplies by the contact's speed to get a power
 and divides the bearing's total power by the relative ring speed, as Tian et al. (2025, §4) do.
 
 Registries

@@ -8,7 +8,7 @@ from a thread-connection model — Hertz approach and tooth bending of every ITP
 compression of roller and ring cores between the teeth — for a whole population of designs at once
 (the design optimisation evaluates thousands), grouped by the tooth count n.
 
-The per-geometry model of the same equations, :func:`bearingkit.rows.threaded_distribution.
+The per-geometry model of the same equations, :func:`bearingkit.rows.threaded.distribution.
 axial_tooth_distribution`, is this function's test oracle.
 
 References: ``zheng2022`` (doi:10.3390/machines10111051), ``zheng2020`` (doi:10.1155/2020/9593051).
@@ -86,7 +86,7 @@ def tooth_load_shares(
     g(F) = a_H F^{2/3} + c F; u_I,i = U − λ_I Σ_j min(i, j) F_I,j; u_O,i = λ_O Σ_j min(e_i, e_j) F_O,j
     (e_i pitches from the outer-ring support); w_i = w_0 − λ_R Σ_j max(i − j, 0)(F_I,j − F_O,j). Newton in
     y = F^(1/3). A thread-connection model after Zheng et al. (2020) (bolt–nut analogue); the same
-    equations as :func:`bearingkit.rows.threaded_distribution.axial_tooth_distribution`.
+    equations as :func:`bearingkit.rows.threaded.distribution.axial_tooth_distribution`.
     """
     checks.one_of("support", support, SUPPORTS)
     n = checks.integer("n_teeth", n_teeth, low=1)
@@ -257,7 +257,7 @@ def design_f_amax(
     (K sin α)^(−2/3)/sin α; tooth compliance 4h³/(E w B³) + h/(κ G w B) with w = π d_R/2 (roller tooth:
     one ITP and one OTP contact) and π d_X/Z (ring tooth shared by Z rollers); core compliances
     P/(E A) with A_R = π(d_R − 2h)²/4, A_I = π((d_I − 2h)² − d_0²)/4, A_O = π(D_0² − (d_O + 2h)²)/4, the
-    ring cores per roller ×Z. Identical to :func:`bearingkit.rows.threaded_distribution.
+    ring cores per roller ×Z. Identical to :func:`bearingkit.rows.threaded.distribution.
     axial_tooth_distribution` (tested) with the body compliances multiplied by the factor.
     """
     from bearingkit.physics.contact import hertz

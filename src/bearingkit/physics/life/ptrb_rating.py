@@ -452,8 +452,8 @@ def calibrated_distribution_coefficients(n_elements):
 
     C_a and C_r are not touched by the calibration (C_r does not contain f_rmax; C_a uses f_amax from
     C_0a). The physical distribution model
-    (:func:`bearingkit.rows.threaded_distribution.axial_tooth_distribution`,
-    :func:`bearingkit.rows.threaded_distribution.radial_roller_distribution`) gives f_amax ≈ 1.0 … 1.1 and
+    (:func:`bearingkit.rows.threaded.distribution.axial_tooth_distribution`,
+    :func:`bearingkit.rows.threaded.distribution.radial_roller_distribution`) gives f_amax ≈ 1.0 … 1.1 and
     f_rmax = 4.37/Z … 3.95/Z, the same order.
 
     Parameters
