@@ -141,3 +141,16 @@ def test_housing_options_from_the_input_format():
         from_dict(_file(ring={"housing_stiffness": "1e9 N/m^2", "housing_wall_thickness": "20 mm"}))
     with pytest.raises(InputError, match=r"housing_stiffness \(-1 N/m²\)"):
         RingOptions(housing_stiffness=-1.0)
+
+
+def test_ball_count_total_splits_and_staggers_the_rows():
+    """ball_count = "total" (issue 32, seed 002's Table 1): n_balls is both rows together, row 1 half a pitch
+    off row 3; an odd total is refused in one line."""
+    m = ball_column(BallColumnGeometry(ball_count="total"))
+    b1, _, b3 = m.rows
+    assert b1.n_elements == b3.n_elements == 37
+    assert b1.azimuth_phase == pytest.approx(np.pi / 37) and b3.azimuth_phase == 0.0
+    with pytest.raises(InputError, match="n_balls"):
+        BallColumnGeometry(n_balls=75, ball_count="total")
+    with pytest.raises(InputError, match="ball_count"):
+        BallColumnGeometry(ball_count="both")

@@ -182,10 +182,10 @@ def test_seed001_evaluator_reproduces_table2_series1_and_the_ideal_bearing():
 def test_seed001_study_agrees_with_friction_monte_carlo_in_distribution(mc):
     """Independent samplers (study LHS vs friction_monte_carlo's PCG64): means within 4 standard errors."""
     from bearingkit.analysis.friction.tapered import TRBOperatingPoint, friction_monte_carlo
-    from bearingkit.bearings.tapered import seed001_row
+    from bearingkit.papers.liu2022.calibration import seed001_row_identified
 
     ref = friction_monte_carlo(
-        seed001_row(), 10_000.0, TRBOperatingPoint(), [1e-6], 200, seed=7, per_realisation=True
+        seed001_row_identified(), 10_000.0, TRBOperatingPoint(), [1e-6], 200, seed=7, per_realisation=True
     )
     ours = mc[np.isclose(mc["magnitude_m"], 1e-6)]
     for col in ("max_contact_force_N", "sliding_increment_N"):

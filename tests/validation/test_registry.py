@@ -11,6 +11,11 @@ from bearingkit.validation.registry import Case, failures, relative_error, run_c
 
 KEYS = {
     "id",
+    "group",
+    "role",
+    "note",
+    "tolerance_reason",
+    "error",
     "source",
     "quantity",
     "unit",

@@ -45,6 +45,12 @@ from bearingkit.rows.ball.row import BallRow
 from bearingkit.rows.cylindrical.row import CylindricalRow
 
 ROWS = ("ball_1", "roller_2", "ball_3")
+#: How ``n_balls`` counts the balls (issue 32): ``"per_row"`` — every ball row has n_balls; ``"total"`` —
+#: n_balls is the total of the two ball rows (n_balls/2 each), and ball row 1 is staggered half a pitch
+#: against ball row 3 (one ball of row 3 under the radial load). Seed 002's counts follow ``"total"``:
+#: Table 1's 74 balls are 37 per row, §3.2's row-3 count 19 = the loaded half of 37, §3.3.1's 35 → 39
+#: counts both rows for 70 → 78 balls (17 + 18, 19 + 20); docs/seed002.md.
+BALL_COUNTS = ("per_row", "total")
 #: Default slices per roller (the paper does not state its slice count).
 DEFAULT_SLICES = 20
 #: Young's modulus of the GCr15 outer ring [Pa] (bearing steel, 208 GPa).
@@ -78,6 +84,7 @@ class BallColumnGeometry:
     clearance_roller: float = 0.0  # radial (diametral) clearance of the roller row [m]
     n_slices: int = DEFAULT_SLICES
     support_positions: tuple | None = None  # housing supports (z_A, z_B) [m]; default the ball rows
+    ball_count: str = "per_row"  # how n_balls counts (BALL_COUNTS)
     beam_width: float | None = None  # circumferential width of the beam strip [m]
 
     def __post_init__(self):
@@ -93,6 +100,11 @@ class BallColumnGeometry:
                 f"width ({self.width:.6g} m)"
             )
         checks.in_range("contact_angle", self.contact_angle, 0.0, np.pi / 2, "rad", closed=False)
+        checks.one_of("ball_count", self.ball_count, BALL_COUNTS)
+        if self.ball_count == "total" and (self.n_balls % 2 or self.n_balls < 6):
+            raise checks.InputError(
+                f"n_balls ({self.n_balls}) with ball_count 'total' must be an even number >= 6 (two rows)"
+            )
         checks.non_negative("clearance_ball", self.clearance_ball, "m")
         checks.non_negative("clearance_roller", self.clearance_roller, "m")
         if self.support_positions is not None:
@@ -109,6 +121,11 @@ class BallColumnGeometry:
                     f"support_positions ({za:.6g}, {zb:.6g} m): every row must lie between the housing "
                     f"supports (rows at −{a:.6g}, 0, {a:.6g} m)"
                 )
+
+    @property
+    def balls_per_row(self) -> int:
+        """Balls in each ball row (see :data:`BALL_COUNTS`)."""
+        return self.n_balls // 2 if self.ball_count == "total" else self.n_balls
 
     @property
     def row_spacing(self) -> float:
@@ -216,10 +233,12 @@ def ball_column(
     e_red = e_reduced_of(material)
     a = g.row_spacing
     rows = []
-    for name, z, sign in (("ball_1", -a, -1.0), ("ball_3", a, 1.0)):
+    z_row = g.balls_per_row
+    stagger = np.pi / z_row if g.ball_count == "total" else 0.0  # row 1 half a pitch off row 3
+    for name, z, sign, phase in (("ball_1", -a, -1.0, stagger), ("ball_3", a, 1.0, 0.0)):
         rows.append(
             BallRow(
-                n_elements=g.n_balls,
+                n_elements=z_row,
                 element_diameter=g.ball_diameter,
                 pitch_diameter=g.pitch_diameter,
                 contact_angle=sign * g.contact_angle,
@@ -227,6 +246,7 @@ def ball_column(
                 conformity_outer=g.conformity_outer,
                 clearance=g.clearance_ball * np.cos(g.contact_angle),
                 axial_position=z,
+                azimuth_phase=phase,
                 e_reduced=e_red,
                 name=name,
             )

@@ -25,7 +25,9 @@ from bearingkit.rows.threaded.row import ThreadedRow
 __all__ = [
     "DISTRIBUTION_SOURCES",
     "PTRBRatings",
+    "design_f_amax",
     "evaluate_ptrb",
+    "identify_body_compliance_factor",
     "ptrb_model",
     "ptrb_prototype",
     "ptrb_ratings",
@@ -33,8 +35,10 @@ __all__ = [
 
 REFERENCE_KEYS = ("zheng2022", "zheng2021", "zheng2020", "iso76", "iso281")
 MM = 1.0e-3
-#: Where f_amax and f_rmax come from: the calibration (default) or the physical distribution models.
-DISTRIBUTION_SOURCES = ("calibrated", "model")
+#: Where f_amax and f_rmax come from: ``"design"`` (default: f_amax of the design from the tooth
+#: load-sharing model with the identified core compliance, f_rmax calibrated), ``"calibrated"`` (both
+#: the prototype's constants) or ``"model"`` (the bare physical models, nothing identified).
+DISTRIBUTION_SOURCES = ("design", "calibrated", "model")
 
 
 def ptrb_prototype(**changes) -> PTRBGeometry:
@@ -123,17 +127,73 @@ class PTRBRatings:
         return out
 
 
+def design_f_amax(geometry: PTRBGeometry, load=None, body_compliance_factor=None) -> float:
+    """f_amax [1] of ``geometry``: the tooth load-sharing model of ``physics.life.ptrb_load_sharing``.
+
+    Parameters
+    ----------
+    geometry : PTRBGeometry
+    load : float or None [N]
+        Bearing axial load; None = :data:`~bearingkit.physics.life.ptrb_rating.F_AMAX_REFERENCE_LOAD`.
+    body_compliance_factor : float or None [1]
+        None = the identified :data:`~bearingkit.physics.life.ptrb_rating.BODY_COMPLIANCE_FACTOR`.
+    """
+    from bearingkit.physics.life import ptrb_load_sharing as pls
+
+    g = geometry
+    return float(
+        pls.design_f_amax(
+            pr.F_AMAX_REFERENCE_LOAD if load is None else load,
+            n_elements=g.n_elements,
+            n_teeth=g.n_teeth,
+            contact_angle=g.contact_angle,
+            roller_pitch_diameter=g.roller_pitch_diameter,
+            inner_pitch_diameter=g.d_inner,
+            outer_pitch_diameter=g.d_outer,
+            roller_contact_radius=g.roller_contact_radius,
+            contact_radius_inner=g.contact_radius_inner,
+            contact_radius_outer=g.contact_radius_outer,
+            thread_pitch=g.thread_pitch,
+            dedendum=g.dedendum,
+            bottom_thickness_roller=g.bottom_thickness_roller,
+            bottom_thickness_inner=g.bottom_thickness_inner,
+            bottom_thickness_outer=g.bottom_thickness_outer,
+            bore_diameter=g.bore_diameter,
+            outside_diameter=g.outside_diameter,
+            youngs_modulus=g.youngs_modulus,
+            poisson_ratio=g.poisson_ratio,
+            body_compliance_factor=(
+                pr.BODY_COMPLIANCE_FACTOR if body_compliance_factor is None else body_compliance_factor
+            ),
+        )[0]
+    )
+
+
+def identify_body_compliance_factor() -> float:
+    """The core-compliance factor [1] whose f_amax meets the prototype's C0a = 38.36 kN — the calibration."""
+    from scipy.optimize import brentq
+
+    g = ptrb_prototype()
+    return float(
+        brentq(
+            lambda k: design_f_amax(g, body_compliance_factor=k) - pr.F_AMAX_CALIBRATED, 0.05, 2.0, xtol=1e-9
+        )
+    )
+
+
 def ptrb_ratings(
-    geometry: PTRBGeometry, distribution: str = "calibrated", tooth_model: str = "paper", azimuth_phase=None
+    geometry: PTRBGeometry, distribution: str = "design", tooth_model: str = "paper", azimuth_phase=None
 ) -> PTRBRatings:
     """C0a, C0r, Ca, Cr and the tooth-root checks of a PTRB.
 
     Parameters
     ----------
     geometry : PTRBGeometry
-    distribution : {"calibrated", "model"}
-        f_amax, f_rmax from :func:`bearingkit.physics.life.ptrb_rating.calibrated_distribution_coefficients`
-        or from the physical models (axial:
+    distribution : {"design", "calibrated", "model"}
+        ``"design"``: f_amax of this design (:func:`design_f_amax`, the load-sharing model with the
+        identified core compliance at 20 kN), f_rmax calibrated; ``"calibrated"``: both from
+        :func:`bearingkit.physics.life.ptrb_rating.calibrated_distribution_coefficients` (the prototype's);
+        ``"model"``: the physical models with nothing identified (axial:
         :func:`~bearingkit.rows.threaded.distribution.axial_tooth_distribution` evaluated
         self-consistently at C0a; radial: Stribeck sum with roller 0 under the load, or at
         ``azimuth_phase``).
@@ -154,8 +214,10 @@ def ptrb_ratings(
             for p in pairs.values()
         )
     )
-    if distribution == "calibrated":
+    if distribution in ("calibrated", "design"):
         f_amax, f_rmax = (float(v) for v in pr.calibrated_distribution_coefficients(g.n_elements))
+        if distribution == "design":
+            f_amax = design_f_amax(g)
     else:
         f_amax = 1.0
         for _ in range(20):  # fixed point: f_amax evaluated at the load C0a it implies

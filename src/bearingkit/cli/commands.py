@@ -15,7 +15,6 @@ import sys
 from pathlib import Path
 
 import typer
-from rich.table import Table
 
 from bearingkit.cli.common import (
     _CASE_OPTION,
@@ -53,12 +52,18 @@ app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bear
 @app.command()
 def validate(
     prefixes: list[str] = typer.Argument(None, help="Only cases whose id starts with one of these."),
-    as_json: bool = typer.Option(False, "--json", help="Print a JSON list instead of a table."),
+    as_json: bool = typer.Option(False, "--json", help="Print a JSON list of the cases (with their role)."),
+    table: bool = typer.Option(False, "--table", help="Print the row table of the cases, then the summary."),
+    everything: bool = typer.Option(
+        False, "--all", help="Include the diagnostic cases (derived values, duplicates, alternative models)."
+    ),
 ):
-    """Recompute every published number bearingkit reproduces; exit 1 on an unexplained failure."""
-    from bearingkit.validation.registry import all_cases, failures, run_cases
+    """Recompute the published numbers bearingkit reproduces; print per paper predictions passing / total,
+    calibrations and deviations; exit 1 on an unexplained failure."""
+    from bearingkit.cli.validate_tables import case_table, not_computable_table, summary_table
+    from bearingkit.validation.registry import all_cases, failures, not_computable, run_cases, summarize
 
-    cases = all_cases(prefixes or ())
+    cases = all_cases(prefixes or (), diagnostics=everything)
     if not cases:
         err_console.print(f"error: no validation case matches {prefixes}")
         raise typer.Exit(2)
@@ -66,30 +71,12 @@ def validate(
     if as_json:
         sys.stdout.write(json.dumps([r.to_dict() for r in results], indent=1) + "\n")
     else:
-        table = Table(title=f"bearingkit validate: {len(results)} cases")
-        for col in ("id", "unit", "published", "computed", "rel. error", "tol.", "status"):
-            table.add_column(col, justify="left" if col == "id" else "right")
-        for r in results:
-            status = (
-                "[green]pass[/]"
-                if r.passed
-                else ("[yellow]known[/]" if r.case.known_deviation else f"[red]FAIL[/] {r.error or ''}")
-            )
-            table.add_row(
-                r.case.id,
-                r.case.unit,
-                f"{r.case.published:.6g}",
-                f"{r.computed:.6g}",
-                f"{r.rel_error:+.3%}",
-                f"{r.case.tolerance:.1%}",
-                status,
-            )
-        console.print(table)
-        n_known = sum(1 for r in results if not r.passed and r.case.known_deviation)
-        console.print(
-            f"{sum(r.passed for r in results)} passed, {len(failures(results))} failed, "
-            f"{n_known} known deviations"
-        )
+        if table:
+            console.print(case_table(results))
+            missing = not_computable(prefixes or ())
+            if everything and missing:
+                console.print(not_computable_table(missing))
+        console.print(summary_table(summarize(results, prefixes or ()), everything))
     if failures(results):
         raise typer.Exit(1)
 

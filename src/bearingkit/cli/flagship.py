@@ -71,12 +71,13 @@ class FlagshipContext:
     def analysis(self):
         """The flagship Analysis: the seed-000 friction data of the validation (Table 3 calibration).
 
-        :mod:`bearingkit.papers.tian2025.validation` supplies the cage mass and the viscosity factor
-        solved once on Table 3 run 1; lubricant :data:`FLAGSHIP_LUBRICANT` at
-        :data:`FLAGSHIP_TEMPERATURE`, the temperature of that calibration; L10 (reliability 0.9).
+        :mod:`bearingkit.papers.tian2025.calibration` supplies the cage mass, the viscosity factor (1,
+        base oil) and the roller sliding coefficient identified once on Table 3 run 1; lubricant
+        :data:`FLAGSHIP_LUBRICANT` at :data:`FLAGSHIP_TEMPERATURE`, the temperature of that calibration;
+        L10 (reliability 0.9).
         """
         if self._analysis is None:
-            from bearingkit.papers.tian2025 import validation as seed000
+            from bearingkit.papers.tian2025 import calibration as seed000
             from bearingkit.pipeline import analyze
 
             self._analysis = analyze(
@@ -88,6 +89,7 @@ class FlagshipContext:
                 friction_options={
                     "cage_mass": seed000.CAGE_MASS,
                     "viscosity_factor": seed000.VISCOSITY_FACTOR,
+                    "roller_sliding": seed000.ROLLER_SLIDING,
                 },
             )
         return self._analysis
@@ -181,12 +183,13 @@ def _load_distribution_section(ctx: FlagshipContext):
 @flagship_section("Friction torque of the flagship case (seed-000 component model)")
 def _friction_section(ctx: FlagshipContext):
     from bearingkit.cli.tables import friction_table
-    from bearingkit.papers.tian2025 import validation as seed000
+    from bearingkit.papers.tian2025 import calibration as seed000
 
     data = ctx.analysis.friction_dict("components")["cases"][0]
     data["calibration"] = (
-        f"viscosity_factor = {seed000.VISCOSITY_FACTOR} solved once on Tian et al. (2025) Table 3 "
-        "run 1 (bearingkit.papers.tian2025.validation); cage mass and lubricant assumed there"
+        f"roller_sliding = {seed000.ROLLER_SLIDING} identified once on Tian et al. (2025) Table 3 run 1 "
+        f"(bearingkit.papers.tian2025.calibration); viscosity_factor = {seed000.VISCOSITY_FACTOR:g} "
+        "(base oil), cage mass and lubricant assumed there"
     )
     return Group(friction_table(data), Text(data["calibration"], style="dim")), data
 

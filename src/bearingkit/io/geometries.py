@@ -356,6 +356,11 @@ class BallColumnGeometrySpec(Strict):
     """Seed-002 ball–column composite bearing (bearings.ball_column.BallColumnGeometry fields)."""
 
     n_balls: Count | None = None
+    ball_count: Literal["per_row", "total"] | None = Field(
+        None,
+        description="How n_balls counts: per ball row (default) or the total of both rows (row 1 "
+        "staggered half a pitch; seed 002's reading of its Table 1).",
+    )
     ball_diameter: PositiveLength | None = None
     n_rollers: Count | None = None
     roller_diameter: PositiveLength | None = None

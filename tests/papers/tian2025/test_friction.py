@@ -96,7 +96,7 @@ def test_preloaded_yrt_reading_puts_the_composite_below_at_every_load():
 def test_spin_readings_order_and_leave_the_rest_unchanged():
     """μ_EHL ≤ μ_mixed ≤ μ_bl, and only the spin term of the ball rows changes."""
     tabs = {
-        s: sf.groove_sweep(grooves=(0.51, 0.53), variant=sf.FrictionVariant(s, spin=s, viscosity_factor=3.0))
+        s: sf.groove_sweep(grooves=(0.51, 0.53), variant=sf.FrictionVariant(s, spin=s, roller_sliding=0.0027))
         for s in sf.SPIN_READINGS
     }
     ehl, mixed, bl = (tabs[s]["spin_ball_Nm"].to_numpy() for s in ("ehl", "mixed", "boundary"))
@@ -109,10 +109,25 @@ def test_spin_readings_order_and_leave_the_rest_unchanged():
 
 
 def test_recalibrated_variant_meets_table3_run1():
-    """The one calibration (η_eff/η_base on Table 3 run 1, 2871.7 N·mm) holds for a recalibrated reading."""
-    t = sf.table3("spin_ehl")
-    assert t["total_Nm"].iloc[0] == pytest.approx(2.8717, rel=2e-3)
-    assert np.isfinite(t["rel_error"]).all()
+    """The one calibration (μ_rs on Table 3 run 1, 2871.7 N·mm) holds for a re-identified reading, and the
+    pre-issue-32 reading (viscosity factor identified instead) meets it too."""
+    for name in ("spin_ehl", "viscous_only"):
+        t = sf.table3(name)
+        assert t["total_Nm"].iloc[0] == pytest.approx(2.8717, rel=2e-3), name
+        assert np.isfinite(t["rel_error"]).all()
+    assert sf.calibrated_factor(sf.VARIANTS["viscous_only"]) == pytest.approx(3.60, rel=2e-3)
+
+
+def test_calibration_constant_is_the_identified_one():
+    """calibration.ROLLER_SLIDING is what the identification on Table 3 run 1 returns (regenerate it)."""
+    import dataclasses
+
+    from bearingkit.papers.tian2025 import calibration
+
+    identified = sf.calibrated_sliding(dataclasses.replace(sf.VARIANTS["seed000"], roller_sliding=None))
+    assert calibration.ROLLER_SLIDING == pytest.approx(identified, rel=1e-3)
+    with pytest.raises(InputError, match="both None"):
+        sf.FrictionVariant("x", viscosity_factor=None, roller_sliding=None)
 
 
 def test_seed000_variant_is_the_validated_reading():
@@ -159,7 +174,7 @@ def test_sliding_reading_replaces_only_the_differential_sliding():
     from bearingkit.analysis.friction.components import friction_torque
     from bearingkit.analysis.solver.quasistatic import solve
 
-    v = sf.FrictionVariant("t", sliding="boundary", viscosity_factor=v000.VISCOSITY_FACTOR)
+    v = sf.FrictionVariant("t", sliding="boundary", roller_sliding=v000.ROLLER_SLIDING)
     model, load = sf._combined_case(v)
     alt = sf.evaluate(model, load, v)
     base = sf.evaluate(model, load, dataclasses.replace(v, sliding="mixed"))

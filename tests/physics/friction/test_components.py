@@ -17,6 +17,7 @@ def test_registry_names():
         "viscous_ball",
         "spin_ball",
         "cage",
+        "roller_sliding",
     }
     assert set(fc.VISCOUS_LINE_MODELS) == {"matsuyama", "aihara"}
     assert set(fc.VISCOUS_POINT_MODELS) == {"fujiwara", "houpert"}

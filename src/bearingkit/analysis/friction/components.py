@@ -50,6 +50,7 @@ COMPONENT_NAMES = (
     "viscous_ball",
     "spin_ball",
     "cage",
+    "roller_sliding",
 )
 FILM_LINE_MODEL = "pan_hamrock"
 
@@ -88,6 +89,10 @@ class OperatingPoint:
         :data:`~bearingkit.physics.friction.components.VISCOUS_POINT_MODELS`.
     raceway_control : str
         Spin-axis hypothesis of the balls (:data:`~bearingkit.analysis.friction.kinematics.RACEWAY_CONTROLS`).
+    roller_sliding : float [-]
+        Coefficient μ_rs of the load-proportional sliding of thrust roller rows at their pitch radius
+        (:func:`~bearingkit.physics.friction.components.roller_sliding_torque`); 0 = off (default:
+        no source gives it for a bearing without catalogue data; seed 000 identifies it).
     """
 
     speed_inner: float = 0.0
@@ -107,6 +112,7 @@ class OperatingPoint:
     viscous_line_model: str = "matsuyama"
     viscous_point_model: str = "fujiwara"
     raceway_control: str = "tangent"
+    roller_sliding: float = 0.0
 
     def __post_init__(self):
         checks.finite("speed_inner", self.speed_inner, "rad/s")
@@ -130,6 +136,7 @@ class OperatingPoint:
         checks.one_of("viscous_line_model", self.viscous_line_model, fc.VISCOUS_LINE_MODELS)
         checks.one_of("viscous_point_model", self.viscous_point_model, fc.VISCOUS_POINT_MODELS)
         checks.one_of("raceway_control", self.raceway_control, RACEWAY_CONTROLS)
+        checks.in_range("roller_sliding", self.roller_sliding, 0.0, 1.0)
 
     @classmethod
     def from_rpm(cls, rpm_inner=0.0, rpm_outer=0.0, **kwargs) -> OperatingPoint:
@@ -240,7 +247,8 @@ def _roller_row(row, kernel, state, op, ctx):
     length = np.asarray(row.effective_length, dtype=float).reshape(-1, 1)
     width = length[..., None] / row.n_slices
     e_red = kernel.e_reduced
-    out = {k: np.zeros_like(load) for k in ("hysteresis_roller", "viscous_roller", "differential_sliding")}
+    keys = ("hysteresis_roller", "viscous_roller", "differential_sliding", "roller_sliding")
+    out = {k: np.zeros_like(load) for k in keys}
     if row.direction == 0:
         kin_n = element_kinematics(dm, d, 0.0, ctx["wi_n"], ctx["wo_n"], "tangent")
         kin = element_kinematics(dm, d, 0.0, ctx["wi"], ctx["wo"], "tangent")
@@ -254,6 +262,7 @@ def _roller_row(row, kernel, state, op, ctx):
         kin_n = thrust_roller_kinematics(dm[:, 0], d[:, 0], y, ctx["wi_n"][:, 0], ctx["wo_n"][:, 0])
         kin = thrust_roller_kinematics(dm[:, 0], d[:, 0], y, ctx["wi"][:, 0], ctx["wo"][:, 0])
         radius_x = {"inner": d / 2 + 0 * dm, "outer": d / 2 + 0 * dm}
+        out["roller_sliding"] = fc.roller_sliding_torque(load, op.roller_sliding, dm)
         u_pitch = kin.entrainment_pitch.reshape(-1, 1)
         u_pitch_n = kin_n.entrainment_pitch.reshape(-1, 1)
         speeds = {

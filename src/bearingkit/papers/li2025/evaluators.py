@@ -21,9 +21,9 @@ SEED002_ROWS = ("ball_1", "roller_2", "ball_3")
 
 
 def _seed002_factors() -> dict[str, Factor]:
-    from bearingkit.bearings.ball_column import BallColumnGeometry
+    from bearingkit.papers.li2025.studies import paper_geometry
 
-    g = BallColumnGeometry()
+    g = paper_geometry()
     return {
         "clearance_ball": Factor("clearance_ball", "length", g.clearance_ball),
         "clearance_roller": Factor("clearance_roller", "length", g.clearance_roller),
@@ -44,17 +44,16 @@ def seed002_clearance(cases):
     +x and ``axial_load`` [N] along +z. ``compliance_scale`` 0 solves with rigid rings
     (:func:`bearingkit.analysis.solver.quasistatic.solve`); > 0 couples the flexible outer ring of
     :func:`bearingkit.bearings.ball_column.outer_ring` (:func:`bearingkit.analysis.flexible.solve_flexible`,
-    via :func:`bearingkit.papers.li2025.studies.solve_case`: beam + ovalisation in the default housing). The
+    via :func:`bearingkit.papers.li2025.studies.solve_case`: beam + ovalisation, the paper's free ring). The
     share of row r is |F_r,radial| / Σ_rows.
     """
     from bearingkit.analysis.solver.quasistatic import load_vector
-    from bearingkit.bearings.ball_column import BallColumnGeometry
-    from bearingkit.papers.li2025.studies import solve_case
+    from bearingkit.papers.li2025.studies import paper_geometry, solve_case
 
     parts = []
     for idx, key in group_cases(cases, SEED002_FACTORS):
         sub = cases.iloc[idx]
-        geom = BallColumnGeometry(
+        geom = paper_geometry(
             clearance_ball=sub["clearance_ball"].to_numpy(float),
             clearance_roller=sub["clearance_roller"].to_numpy(float),
             contact_angle=float(key["contact_angle"]),

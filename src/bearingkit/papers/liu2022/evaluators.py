@@ -73,7 +73,7 @@ def seed001_scatter(cases):
     """
     from bearingkit import checks
     from bearingkit.analysis.friction.tapered import TRBOperatingPoint, tapered_friction
-    from bearingkit.bearings.tapered import seed001_row
+    from bearingkit.papers.liu2022.calibration import seed001_row_identified as seed001_row
     from bearingkit.physics.deviations import arrange
 
     row = seed001_row()

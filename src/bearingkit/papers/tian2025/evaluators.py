@@ -132,6 +132,9 @@ def _friction_factors() -> dict[str, Factor]:
     out["lubricant"] = Factor("lubricant", "text", defaults["lubricant"], batched=False)
     out["viscosity_factor"] = Factor("viscosity_factor", "dimensionless", 1.0, batched=False)
     out["cage_mass"] = Factor("cage_mass", "mass", defaults["cage_mass"], batched=False)
+    out["roller_sliding"] = Factor(
+        "roller_sliding", "dimensionless", defaults["roller_sliding"], batched=False
+    )
     return out
 
 
@@ -139,7 +142,7 @@ def seed000_friction(cases):
     """Statics (:func:`seed000_statics`) plus the friction torque of the seed-000 bearing [N·m].
 
     Operating point: inner ring at ``speed`` [rad/s], outer ring fixed, ``lubricant`` at ``temperature``
-    [°C], ``viscosity_factor`` and ``cage_mass`` [kg] as
+    [°C], ``viscosity_factor``, ``cage_mass`` [kg] and ``roller_sliding`` [1] as
     :class:`bearingkit.analysis.friction.components.OperatingPoint`.
     """
 
@@ -151,6 +154,7 @@ def seed000_friction(cases):
             "friction_options": {
                 "viscosity_factor": float(key["viscosity_factor"]),
                 "cage_mass": float(key["cage_mass"]),
+                "roller_sliding": float(key["roller_sliding"]),
             },
         }
 

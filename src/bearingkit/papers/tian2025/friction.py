@@ -25,9 +25,12 @@ Studies (Tian et al. 2025, Machines 13:588, doi:10.3390/machines13070588):
 Model readings (:data:`VARIANTS`, keyed by documented names) fix the choices the paper leaves open
 (slice-law pairing, crowning of the base bearing, the spin coefficient f_s of M4, the viscous
 models, the YRT clearance); ``"seed000"`` is the validated reading of
-:mod:`bearingkit.papers.tian2025.validation`. A variant with ``viscosity_factor=None`` is
-recalibrated once against Table 3 run 1 (the single calibration of the seed-000 reproduction) by
-:func:`calibrated_factor`. ``python -m bearingkit.papers.tian2025.friction OUT`` writes CSV + PNG.
+:mod:`bearingkit.papers.tian2025.validation` with the constants of
+:mod:`bearingkit.papers.tian2025.calibration`. A variant with ``roller_sliding=None`` has its roller
+sliding coefficient μ_rs identified once on Table 3 run 1 (the single calibration of the seed-000
+reproduction) by :func:`calibrated_sliding`; ``viscous_only`` is the reading before issue 32 (no
+μ_rs, the grease viscosity factor identified on run 1 instead, :func:`calibrated_factor`).
+``python -m bearingkit.papers.tian2025.friction OUT`` writes CSV + PNG.
 """
 
 from __future__ import annotations
@@ -46,6 +49,7 @@ from bearingkit.analysis.friction.kinematics import RACEWAY_CONTROLS
 from bearingkit.analysis.solver.quasistatic import load_vector, solve
 from bearingkit.bearings.common import eccentric_axial_load
 from bearingkit.bearings.turntable import composite_turntable, yrt_turntable
+from bearingkit.papers.tian2025 import calibration as cal
 from bearingkit.papers.tian2025 import validation as v000
 from bearingkit.papers.tian2025.friction_plots import (
     _pyplot,
@@ -116,7 +120,10 @@ class FrictionVariant:
     yrt_clearance : float [m]
         Axial roller clearance of the YRT comparator (0 = as the validation case; < 0 preloaded).
     viscosity_factor : float or None [-]
-        η_eff/η_base; None = recalibrate on Table 3 run 1 (:func:`calibrated_factor`).
+        η_eff/η_base (1: base oil); None = identify it on Table 3 run 1 (:func:`calibrated_factor`).
+    roller_sliding : float or None [-]
+        μ_rs of the axial roller rows; None = identify it on Table 3 run 1 (:func:`calibrated_sliding`).
+        At most one of the two is None.
     description : str
     """
 
@@ -129,7 +136,8 @@ class FrictionVariant:
     viscous_point_model: str = "fujiwara"
     raceway_control: str = "tangent"
     yrt_clearance: float = 0.0
-    viscosity_factor: float | None = None
+    viscosity_factor: float | None = 1.0
+    roller_sliding: float | None = None
     description: str = ""
 
     def __post_init__(self):
@@ -143,6 +151,13 @@ class FrictionVariant:
         checks.in_range("yrt_clearance", self.yrt_clearance, -10e-6, 0.0, "m")
         if self.viscosity_factor is not None:
             checks.positive("viscosity_factor", self.viscosity_factor)
+        if self.roller_sliding is not None:
+            checks.in_range("roller_sliding", self.roller_sliding, 0.0, 1.0)
+        if self.viscosity_factor is None and self.roller_sliding is None:
+            raise checks.InputError(
+                f"variant {self.name!r}: viscosity_factor and roller_sliding are both None; one constant "
+                "is identified on Table 3 run 1, the other must be given"
+            )
 
     @property
     def geometry(self) -> dict:
@@ -155,8 +170,15 @@ VARIANTS: dict[str, FrictionVariant] = {
     for v in (
         FrictionVariant(
             "seed000",
-            viscosity_factor=v000.VISCOSITY_FACTOR,
-            description="validated reading (papers/tian2025/validation.py)",
+            viscosity_factor=cal.VISCOSITY_FACTOR,
+            roller_sliding=cal.ROLLER_SLIDING,
+            description="validated reading (papers/tian2025/validation.py, constants in calibration.py)",
+        ),
+        FrictionVariant(
+            "viscous_only",
+            viscosity_factor=None,
+            roller_sliding=0.0,
+            description="before issue 32: no roller sliding term, grease viscosity factor fitted on run 1",
         ),
         FrictionVariant("spin_ehl", spin="ehl", description="f_s = mu_EHL (full-film traction in the spin)"),
         FrictionVariant("spin_boundary", spin="boundary", description="f_s = mu_bl (Harris: Coulomb)"),
@@ -178,7 +200,8 @@ VARIANTS: dict[str, FrictionVariant] = {
         FrictionVariant(
             "yrt_preloaded",
             yrt_clearance=-2e-6,
-            viscosity_factor=v000.VISCOSITY_FACTOR,
+            viscosity_factor=cal.VISCOSITY_FACTOR,
+            roller_sliding=cal.ROLLER_SLIDING,
             description="YRT comparator preloaded (roller clearance -2 um, Schaeffler YRT are preloaded)",
         ),
     )
@@ -196,9 +219,11 @@ def operating_point(variant="seed000", rpm=RPM, viscosity_factor=None) -> Operat
     """The seed-000 operating point of ``variant`` at ``rpm`` [r/min] (inner ring turning)."""
     v = _variant(variant)
     vf = viscosity_factor or v.viscosity_factor or calibrated_factor(v)
+    mu_rs = v.roller_sliding if v.roller_sliding is not None else calibrated_sliding(v)
     return v000.operating_point(
         rpm,
         vf,
+        roller_sliding=mu_rs,
         viscous_line_model=v.viscous_line_model,
         viscous_point_model=v.viscous_point_model,
         raceway_control=v.raceway_control,
@@ -303,12 +328,8 @@ def table3(variant="seed000", viscosity_factor=None):
     return df
 
 
-@functools.cache
-def calibrated_factor(variant: FrictionVariant) -> float:
-    """η_eff/η_base that meets Table 3 run 1 (2.8717 N·m) with ``variant`` (the one calibration)."""
-    from scipy.optimize import brentq
-
-    v = dataclasses.replace(variant, viscosity_factor=1.0)
+def _run1(v: FrictionVariant):
+    """Table 3 run 1 solved with ``v``'s geometry, and its published torque [N·m]."""
     t = np.array(v000.TABLE3[0])
     model = composite_turntable(
         clearance_axial_roller=t[0] * 1e-6,
@@ -317,13 +338,41 @@ def calibrated_factor(variant: FrictionVariant) -> float:
         **v.geometry,
     )
     load = eccentric_axial_load(3000.0, t[3], radial_load=3000.0)
-    res = solve(model, np.atleast_2d(load))
+    return solve(model, np.atleast_2d(load)), t[4] / 1e3
+
+
+@functools.cache
+def calibrated_factor(variant: FrictionVariant) -> float:
+    """η_eff/η_base that meets Table 3 run 1 (2.8717 N·m) with ``variant``'s μ_rs (0 if unset)."""
+    from scipy.optimize import brentq
+
+    v = dataclasses.replace(variant, viscosity_factor=1.0, roller_sliding=variant.roller_sliding or 0.0)
+    res, target = _run1(v)
 
     def err(x):
         comps, _ = _friction(res, operating_point(v, RPM, x), v.spin, v.sliding)
-        return float(sum(comps.values())[0]) - t[4] / 1e3
+        return float(sum(comps.values())[0]) - target
 
     return float(brentq(err, 0.05, 200.0, xtol=1e-4))
+
+
+@functools.cache
+def calibrated_sliding(variant: FrictionVariant) -> float:
+    """μ_rs that meets Table 3 run 1 (2.8717 N·m) with ``variant``'s viscosity factor (the calibration)."""
+    from scipy.optimize import brentq
+
+    if variant.viscosity_factor is None:
+        raise checks.InputError(f"variant {variant.name!r}: give viscosity_factor to identify roller_sliding")
+    res, target = _run1(variant)
+
+    def err(mu):
+        v = dataclasses.replace(variant, roller_sliding=mu)
+        comps, _ = _friction(res, operating_point(v, RPM), v.spin, v.sliding)
+        return float(sum(comps.values())[0]) - target
+
+    if err(0.0) > 0:
+        raise checks.InputError(f"variant {variant.name!r} exceeds Table 3 run 1 without roller sliding")
+    return float(brentq(err, 0.0, 0.1, xtol=1e-8))
 
 
 # --- the studies ---------------------------------------------------------------------------------------

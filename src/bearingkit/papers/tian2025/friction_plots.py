@@ -19,6 +19,7 @@ _LABELS = {
     "viscous_ball": "ball EHL viscous (M32)",
     "spin_ball": "ball spin (M4)",
     "cage": "cage (M5)",
+    "roller_sliding": "roller sliding (identified)",
 }
 
 

@@ -1,16 +1,17 @@
-"""How large must the differential-sliding term E2 be for Table 3, and what do the documented readings give?
+"""Why the seed-000 reproduction needed a load-proportional roller sliding term (issue 32): E2 alone.
 
 SI units (N·m, Pa·s). Tian et al. (2025) Machines 13:588, doi:10.3390/machines13070588, §4.2 and Table 3.
-Two diagnostics behind docs/seed000-friction.md ("Differential sliding: the literature check"):
+Two diagnostics of the reading WITHOUT the roller sliding term (variant ``viscous_only``: μ_rs = 0, the
+grease viscosity factor identified on Table 3 run 1 instead), behind docs/seed000-friction.md:
 
-* :func:`multiplier_scan` — E2 multiplied by k (everything else as the validated reading ``seed000``),
-  the grease viscosity factor recalibrated on Table 3 run 1 for every k (the one calibration), and the
-  rms error of runs 1–9. It answers "which E2 does Table 3 need" without choosing a mechanism. The
-  effective coefficient μ_eff = E2_k / Σ(q |v|)/ω is the μ a Coulomb reading of E2 would need.
+* :func:`multiplier_scan` — E2 multiplied by k, the viscosity factor re-identified on run 1 for every k,
+  and the rms error of runs 1–9: which E2 Table 3 would need if the pitch-line differential sliding
+  carried the load-proportional loss. The effective coefficient μ_eff = E2_k / Σ(q |v|)/ω is the μ a
+  Coulomb reading of E2 would need (≈ 0.3, beyond lubricated steel).
 * :func:`reading_table` — the documented readings of μ_ij (:data:`~bearingkit.papers.tian2025.friction.
-  SLIDING_READINGS`, each recalibrated on run 1): their E2 relative to today's and their Table 3 error.
+  SLIDING_READINGS`, each re-identified on run 1): their E2 relative to the default's and their error.
 
-Nothing here is used by a validation case; it documents why no reading is adopted.
+Nothing here is used by a validation case.
 """
 
 from __future__ import annotations
@@ -36,8 +37,12 @@ def _solved():
     return solve(model, f._table3_loads()), t[:, 4] / 1e3
 
 
+#: The reading these diagnostics scan: no roller sliding term (the model before issue 32).
+BASE = "viscous_only"
+
+
 def _components(res, viscosity_factor, **op):
-    point = dataclasses.replace(f.operating_point("seed000", viscosity_factor=viscosity_factor), **op)
+    point = dataclasses.replace(f.operating_point(BASE, viscosity_factor=viscosity_factor), **op)
     return friction_torque(res, point).components
 
 
@@ -55,7 +60,9 @@ def multiplier_scan(multipliers=(1.0, 2.0, 3.0, 4.0, 4.5)):
     from scipy.optimize import brentq
 
     res, pub = _solved()
-    unit = _components(res, v000.VISCOSITY_FACTOR, mu_boundary=1.0, mu_ehl=1.0)["differential_sliding"]
+    unit = _components(res, f.calibrated_factor(f.VARIANTS[BASE]), mu_boundary=1.0, mu_ehl=1.0)[
+        "differential_sliding"
+    ]
 
     def total(vf, k):
         c = _components(res, vf)
@@ -103,7 +110,7 @@ def reading_table(readings=None):
     rows = []
     base_e2 = None
     for name in readings or f.SLIDING_READINGS:
-        variant = f.FrictionVariant(f"scan_{name}", sliding=name)
+        variant = f.FrictionVariant(f"scan_{name}", sliding=name, viscosity_factor=None, roller_sliding=0.0)
         t = f.table3(variant)
         e2 = float(t["differential_sliding_Nm"].iloc[0])
         base_e2 = e2 if base_e2 is None and name == "mixed" else base_e2

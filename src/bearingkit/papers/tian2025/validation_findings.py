@@ -2,14 +2,15 @@
 
 SI units (N·m, Pa, m); indicators are 1 when the statement holds, 0 when not (tolerance 0). Everything is
 computed with the validated reading ``"seed000"`` of :mod:`bearingkit.papers.tian2025.friction`
-(one viscosity calibration on Table 3 run 1, nothing else fitted). Tian et al. (2025) Machines 13:588,
-doi:10.3390/machines13070588.
+(one coefficient, the roller sliding μ_rs, identified on Table 3 run 1; nothing else fitted).
+Tian et al. (2025) Machines 13:588, doi:10.3390/machines13070588.
 
 Cases and thresholds:
 
 * ``seed000/section5.3.2/<speed|axial-load|moment>/mean-test-theory-error`` — the printed mean errors
   15.97 %, 17.84 %, 12.70 % between the rig and the paper's theory (Figs. 11–13). Not computable: both
-  curves are printed only as figures, so the cases return NaN and say so (known deviation).
+  curves are printed only as figures; registered as not-computable numbers (with the recommended
+  clearances and groove range of §6.1.1–6.1.2, design choices without a stated criterion).
 * ``seed000/section6.1.1/torque-rises-with-roller-preload`` — F_a = 5 kN, roller clearance 0, −1, −2 µm
   × ball clearance 0 … −6 µm (1 µm steps, Fig. 14): 1 if the torque averaged over the ball clearances
   rises strictly from 0 to −1 to −2 µm AND at no single ball clearance does the more negative roller
@@ -33,7 +34,7 @@ import functools
 
 import numpy as np
 
-from bearingkit.validation.registry import Case, register
+from bearingkit.validation.registry import Case, NotComputable, register, register_not_computable
 
 SOURCE = "Tian et al. (2025) Machines 13:588, doi:10.3390/machines13070588"
 #: §5.3.2: mean test–theory error of Figs. 11 (speed), 12 (axial load), 13 (moment) [1].
@@ -50,20 +51,6 @@ NOT_COMPUTABLE = (
     "only as a figure (the text prints the mean error alone), so neither bearingkit's error against the "
     "rig nor its distance to the paper's theory can be formed; the trend of the same figure is case "
     "seed000/conclusion/{trend}"
-)
-_ROOT = (
-    "the same root as Table 3's slope and the groove trend (docs/seed000-friction.md): the roller torque "
-    "is ~80 % Matsuyama EHL rolling resistance E31 (W^0.08: it counts loaded rollers, not load), so it "
-    "hardly falls when the balls take load, while the ball terms rise (Fujiwara M32 ~ Q^0.40, spin M4)"
-)
-FALLS_DEVIATION = (
-    "at roller -1 um the torque rises 10 % from ball 0 to -6 um (1.022 -> 1.125 N*m): the upper rollers "
-    "lose only 0.064 N*m (E2 -30 % but E31 -2 %) while the balls gain 0.167 N*m (M32 +0.14, the lower "
-    "ball row engaging at -3 um); " + _ROOT
-)
-FLAT_DEVIATION = (
-    "at roller -2 um the torque rises 15 % from ball 0 to -6 um (1.519 -> 1.752 N*m): the upper rollers "
-    "lose 0.04 N*m, but the lower roller row gains 0.09 N*m and the balls 0.19 N*m; " + _ROOT
 )
 TREND_OF_FIGURE = {"speed": "speed-rises", "axial-load": "axial-load-rises", "moment": "moment-rises"}
 
@@ -127,25 +114,48 @@ def roller_share() -> float:
     return float(rollers / row["total_Nm"])
 
 
-def _not_computable() -> float:
-    return float("nan")
+#: Published numbers of seed 000 that cannot be computed, with the reason (registered, shown in the docs).
+NOT_COMPUTABLE_ITEMS = (
+    *(
+        (
+            f"seed000/section5.3.2/{name}/mean-test-theory-error",
+            f"{err * 100:.2f} %",
+            NOT_COMPUTABLE.format(fig=fig, trend=TREND_OF_FIGURE[name]),
+        )
+        for name, (err, fig) in MEAN_ERRORS.items()
+    ),
+    (
+        "seed000/section6.1.1/recommended-roller-clearance",
+        "-1 um",
+        "a design choice 'to optimize the loading of rolling elements while minimizing the friction "
+        "torque' with no stated criterion: the paper's own Fig. 14 has the lowest torque at roller 0 um, "
+        "so -1 um is not a torque minimum; the torque trends it rests on are the section6.1.1 cases",
+    ),
+    (
+        "seed000/section6.1.1/recommended-ball-clearance",
+        "-5 um",
+        "a design choice with no stated criterion (at the recommended roller -1 um the torque 'decreases "
+        "continuously' down to -6 um by the paper's own words); the minimum at -5 um for roller 0 um is "
+        "case seed000/conclusion/clearance-minimum",
+    ),
+    (
+        "seed000/section6.1.2/recommended-groove-range-low",
+        "0.515",
+        "set by 'the manufacturing challenges associated with the groove and the overall structural "
+        "constraints', not by a computed quantity; the computable part, the steep rise up to 0.51, is case "
+        "seed000/conclusion/groove-steep-rise",
+    ),
+    (
+        "seed000/section6.1.2/recommended-groove-range-high",
+        "0.53",
+        "as the low end: a manufacturing and structural choice, no model output bounds it",
+    ),
+)
 
 
 def _register() -> None:
-    for name, (err, fig) in MEAN_ERRORS.items():
-        register(
-            Case(
-                id=f"seed000/section5.3.2/{name}/mean-test-theory-error",
-                source=f"{SOURCE}, §5.3.2 ({name}): 'the average error between the test values and "
-                f"theoretical values ... is {err * 100:.2f}%' (Fig. {fig})",
-                quantity=f"mean relative error between the rig and the theory of Fig. {fig}",
-                unit="1",
-                published=err,
-                compute=_not_computable,
-                tolerance=0.0,
-                known_deviation=NOT_COMPUTABLE.format(fig=fig, trend=TREND_OF_FIGURE[name]),
-            )
-        )
+    for item_id, published, why in NOT_COMPUTABLE_ITEMS:
+        register_not_computable(NotComputable(item_id, published, why))
     indicators = (
         (
             "section6.1.1/torque-rises-with-roller-preload",
@@ -163,7 +173,7 @@ def _register() -> None:
             "indicator, F_a = 5 kN, roller -1 um: torque falls at every 1 um step of the ball clearance "
             "0 -> -6 um",
             falls_with_ball_preload,
-            FALLS_DEVIATION,
+            None,
         ),
         (
             "section6.1.1/roller-2um/torque-unchanged-with-ball-preload",
@@ -172,7 +182,7 @@ def _register() -> None:
             "indicator, F_a = 5 kN, roller -2 um: (max - min)/mean of the torque over ball clearance "
             "0...-6 um <= 5 %",
             unchanged_with_ball_preload,
-            FLAT_DEVIATION,
+            None,
         ),
         (
             "section6.1.4/stresses-low-and-comparable-at-1to1",

@@ -28,6 +28,7 @@ from bearingkit.analysis.friction.threaded import (
 )
 from bearingkit.bearings.ptrb import ptrb_prototype
 from bearingkit.physics.friction import ptrb as pf
+from bearingkit.physics.life import ptrb_load_sharing as pls
 from bearingkit.physics.life import ptrb_rating as pr
 from bearingkit.rows.threaded.distribution import radial_roller_distribution
 from bearingkit.rows.threaded.geometry import PTRBGeometry
@@ -150,7 +151,8 @@ def ptrb_objectives(
     Notes
     -----
     Same rules as :func:`design_geometry` (D_pw = 42.5 mm, n·P = 12 mm, flat ring flanks, E = 212 GPa,
-    ν = 0.29); ratings as :func:`bearingkit.bearings.ptrb.ptrb_ratings` (calibrated f_amax, f_rmax),
+    ν = 0.29); ratings as :func:`bearingkit.bearings.ptrb.ptrb_ratings` (f_amax of each design from the tooth
+    load-sharing model at 20 kN, calibrated f_rmax),
     friction as :func:`ptrb_friction` (uniform tooth shares). Infeasible designs are evaluated anyway
     (flagged, not NaN) as long as the inputs are physical.
     """
@@ -174,7 +176,29 @@ def ptrb_objectives(
             for side, dx in (("inner", d_i), ("outer", d_o))
         )
     )
-    f_amax, f_rmax = pr.calibrated_distribution_coefficients(z)
+    _, f_rmax = pr.calibrated_distribution_coefficients(z)
+    f_amax = pls.design_f_amax(
+        pr.F_AMAX_REFERENCE_LOAD,
+        n_elements=z,
+        n_teeth=n_t,
+        contact_angle=alpha,
+        roller_pitch_diameter=d_r,
+        inner_pitch_diameter=d_i,
+        outer_pitch_diameter=d_o,
+        roller_contact_radius=r_rr,
+        contact_radius_inner=inf,
+        contact_radius_outer=inf,
+        thread_pitch=PROTOTYPE_THREAD_LENGTH / n_t,
+        dedendum=base.dedendum,
+        bottom_thickness_roller=base.bottom_thickness_roller,
+        bottom_thickness_inner=base.bottom_thickness_inner,
+        bottom_thickness_outer=base.bottom_thickness_outer,
+        bore_diameter=base.bore_diameter,
+        outside_diameter=base.outside_diameter,
+        youngs_modulus=base.youngs_modulus,
+        poisson_ratio=base.poisson_ratio,
+        body_compliance_factor=pr.BODY_COMPLIANCE_FACTOR,
+    )
     gamma = d_r / PROTOTYPE_PITCH_DIAMETER
     dw = d_r / np.cos(alpha)
     fca = pr.fc_axial(gamma, alpha, r_rr, inf, d_r)

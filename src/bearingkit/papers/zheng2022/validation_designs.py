@@ -13,6 +13,9 @@ Cases:
   column. Tolerances: ratings 0.05 (printed to 3 digits; Table 4's one-parameter sweeps agree to 3.5 %,
   Table 6 moves four parameters at once); μ 0.10 (printed to 2 digits, ±2–5 %, plus the friction
   model's Table 5 accuracy).
+Roles (issue 32): the prototype column's μ and the §6 ratios are diagnostics (derived from printed
+numbers).
+
 * ``seed004/section6/<point>/mu-vs-prototype``: §6 "4 % larger" (xa1, μ_a), "3 % larger" (xr1, μ_r),
   "lowered by 9 % and 13 %" (xa2 μ_a, xr2 μ_r) as the ratio μ(point)/μ(prototype), published 1.04,
   1.03, 0.91, 0.87; tolerance 0.10 (a ratio of two μ of the previous item; common errors cancel).
@@ -22,7 +25,8 @@ Cases:
 * ``seed004/section2/equivalent-ball-diameter``: §2 "a diameter of d_R/cos α = 8.5 mm"; tolerance
   0.006 (8.5 printed to two digits).
 
-Why xa1's C0a and Ca are high and xr1 is not reproduced: :data:`F_AMAX_DEVIATION`,
+f_amax of each design comes from the tooth load-sharing model (issue 32; with the prototype's constant
+f_amax xa1's C0a and Ca were 6.9 % and 5.5 % high, now +0.04 % and −1.3 %). Why xr1 is not reproduced:
 :data:`XR1_DEVIATION`; μ_r: :data:`MU_R_DEVIATION` (docs/ptrb_friction.md, docs/ratings.md).
 """
 
@@ -46,14 +50,6 @@ SECTION6_MU = {
 #: §2: equivalent ball diameter d_R / cos α of the prototype [m].
 EQUIVALENT_BALL_DIAMETER = 8.5e-3
 
-F_AMAX_DEVIATION = (
-    "f_amax is held at the prototype's calibrated 1.067, but the paper's f_amax (from its load-distribution "
-    "model, not printed) rises with n, alpha, R_rr and d_R: Table 4's sweep endpoints imply it through "
-    "C0a and Ca alike (agreeing to 0.4 %): 1.057 at n = 8 -> 1.096 at n = 16, 1.035 at 30 deg -> 1.080 at "
-    "60 deg, 1.061 -> 1.075 over R_rr 4.5-7.5 mm, 1.049 -> 1.083 over d_R 4.8-7.2 mm. The product of "
-    "these factors at xa1's design is x1.047, which would bring C0a to +2.1 % and Ca to +0.8 %; it is not "
-    "adopted as a model because the paper gives neither the distribution model nor f_amax"
-)
 XR1_DEVIATION = (
     "xr1's printed ratings are not consistent with each other under the paper's eqs. (2), (5), (12) for "
     "any roller count: xr1 differs from xa1 by a larger d_R (7.06 vs 6.96 mm) and R_rr (7.50 vs 6.64 mm) "
@@ -77,7 +73,7 @@ MU_A_DEVIATION = (
 )
 #: Table 6 quantities at the published designs that miss their tolerance: point → quantity → cause.
 KNOWN = {
-    "xa1": {"C0a": F_AMAX_DEVIATION, "Ca": F_AMAX_DEVIATION, "mu_r": MU_R_DEVIATION},
+    "xa1": {"mu_r": MU_R_DEVIATION},
     "xa2": {},
     "xr1": {"C0a": XR1_DEVIATION, "Ca": XR1_DEVIATION, "Cr": XR1_DEVIATION, "mu_r": MU_R_DEVIATION},
     "xr2": {"mu_a": MU_A_DEVIATION, "mu_r": MU_R_DEVIATION},
@@ -144,6 +140,7 @@ def _register() -> None:
         for name, column, key, factor, unit, tol, what in items:
             if point == "prototype" and not name.startswith("mu"):
                 continue  # the prototype's ratings are seed004/prototype/*
+            proto = point == "prototype"
             register(
                 Case(
                     id=f"seed004/table6-design/{point}/{name}",
@@ -154,6 +151,13 @@ def _register() -> None:
                     compute=lambda p=point, c=column: design_value(p, c),
                     tolerance=tol,
                     known_deviation=KNOWN[point].get(name),
+                    role="diagnostic" if proto else "prediction",
+                    note=(
+                        "derived: 2M/(d_0 F) of Table 5's Z = 11 torque at 20 kN, 4000 rpm (the prototype; "
+                        f"counted as seed004/table5/n_elements/11/{'axial' if name == 'mu_a' else 'radial'})"
+                        if proto
+                        else None
+                    ),
                 )
             )
     for point, (column, published, words) in SECTION6_MU.items():
@@ -167,6 +171,8 @@ def _register() -> None:
                 compute=lambda p=point, c=column: mu_ratio(p, c),
                 tolerance=TOL_MU,
                 known_deviation=KNOWN_SECTION6.get(f"{point}/mu-vs-prototype"),
+                role="diagnostic",
+                note=f"derived: the ratio of Table 6's {column} of {point} to the prototype's (both printed)",
             )
         )
     for point in ("xa1", "xr1"):
@@ -182,6 +188,9 @@ def _register() -> None:
                 compute=lambda p=point: rating_ratio(p),
                 tolerance=TOL_TWICE,
                 known_deviation=KNOWN_SECTION6.get(f"{point}/ratings-vs-prototype"),
+                role="diagnostic",
+                note=f"derived: 'twice' is the ratio of Table 6's ratings of {point} to the prototype's "
+                "(both printed; Table 6 itself gives 2.21 and 2.18)",
             )
         )
     register(

@@ -9,7 +9,20 @@ ONE number is calibrated: the contact traction μ_c, against ``seed004/table7/ax
 see :data:`bearingkit.physics.friction.ptrb_laws.CONTACT_TRACTION_CALIBRATED`. Nothing in the
 viscous (speed-dependent) term is fitted. All other cases follow: Table 7 within 6.4 %, Table 8 within 5.9 %,
 §4 within 6.3 %, Table 5 within 7.1 % except the contact-angle row.
-Tolerance 0.15 (the task's; the paper's own test/simulation deviation is up to 0.1 N·m, i.e. 20–50 %).
+Tolerance 0.10 (issue 32: values within 10 % where the paper states no accuracy for its simulation).
+
+Roles (issue 32): ``seed004/table7/axial/20kN`` is the calibration point; Table 7's 5 kN simulation
+values are diagnostics (Table 8 prints the same state, 5 kN / 600 rpm, with the same numbers); the
+Table 5 arrows are diagnostics (derived from the two printed values of each row). The Table 7 deviation
+row is registered beside the test values (:mod:`bearingkit.papers.zheng2022.validation_tests`).
+
+New predictions (issue 32): ``seed004/section4/life/<40|100>pct`` (§4: a constant load of 40–100 % of
+the dynamic rating gives 15.6 to 1.0 million revolutions: L10 = (C/P)³, ISO 281 for ball bearings, as
+the PTRB is rated), ``seed004/section8/mu_a/max`` (§8 prints the axial μ range as 0.0011–0.0023, §4 as
+0.0011–0.0024: the same computed maximum is compared with both), and
+``seed004/section5/other-parameters-below-0.1Nm`` (§5 (2): apart from the contact angle "the effect of
+other structural parameters on friction torque was less than 0.1 Nm": 1 if the largest change of M over
+the Table 5 range of n, R_rr, d_R and Z, both load cases, is below 0.1 N·m).
 
 Cases:
 
@@ -45,7 +58,26 @@ from bearingkit.validation.registry import Case, register
 
 SOURCE = "Zheng et al. (2022) Machines 10:1051, doi:10.3390/machines10111051"
 KN = 1.0e3
-TOLERANCE = 0.15
+TOLERANCE = 0.10
+#: The calibration point of the contact traction μ_c (ptrb_laws.CONTACT_TRACTION_CALIBRATED).
+CALIBRATION_CASE = "seed004/table7/axial/20kN"
+#: Simulation numbers printed twice for one state: diagnostic id → the counted case.
+DUPLICATES = {
+    "seed004/table7/axial/5kN": "seed004/table8/axial/5kN/600rpm (the same 0.103 N*m)",
+    "seed004/table7/radial/5kN": "seed004/table8/radial/5kN/600rpm (the same 0.132 N*m)",
+}
+#: Table 7, deviation row (test − simulation) [N·m], printed: case → load [kN] → deviation.
+TABLE7_DEVIATION = {
+    "axial": {1: 0.030, 5: 0.040, 10: 0.045, 15: 0.070, 20: 0.097, 25: 0.097, 30: 0.099},
+    "radial": {1: 0.029, 5: 0.031, 10: 0.053, 15: 0.071, 20: 0.071, 25: 0.092, 30: 0.075},
+}
+#: §4: "a constant load of 40–100 % of the basic dynamic load rating" → "15.6 million to 1.0 million"
+#: revolutions: P/C → L10 [10⁶ rev].
+SECTION4_LIVES = {40: (0.4, 15.6), 100: (1.0, 1.0)}
+#: §8's axial μ range upper end (§4 prints 0.0024 for the same range).
+SECTION8_MU_A_MAX = 0.0023
+#: §5 (2): bound on the torque change over the range of every parameter but α [N·m].
+SECTION5_OTHER_BOUND = 0.1
 
 #: Table 7, simulation data, 600 rpm: load [kN] → M [N·m].
 TABLE7 = {
@@ -144,7 +176,17 @@ def _mu_inside(case):
     return compute
 
 
-def _register(case_id, source, quantity, published, compute, unit="N*m", tolerance=TOLERANCE):
+def _register(case_id, source, quantity, published, compute, unit="N*m", tolerance=TOLERANCE, note=None):
+    role = "prediction"
+    if case_id == CALIBRATION_CASE:
+        role, tolerance = "calibration", 1e-3
+        note = (
+            "the contact traction mu_c (ptrb_laws.CONTACT_TRACTION_CALIBRATED) is identified on this number"
+        )
+    elif case_id in DUPLICATES:
+        role, note = "diagnostic", f"printed twice for one state: the counted case is {DUPLICATES[case_id]}"
+    elif note:
+        role = "diagnostic"
     register(
         Case(
             id=case_id,
@@ -155,6 +197,8 @@ def _register(case_id, source, quantity, published, compute, unit="N*m", toleran
             compute=compute,
             tolerance=tolerance,
             known_deviation=KNOWN_DEVIATIONS.get(case_id),
+            role=role,
+            note=note,
         )
     )
 
@@ -204,6 +248,8 @@ for _param, ((_lo, _hi), _unit, _ax, _ra) in TABLE5.items():
             _direction(_case, _param, _si(_lo, _unit), _si(_hi, _unit)),
             unit="1",
             tolerance=0.0,
+            note="derived: the arrow is the sign of the two printed values of the row (each counted); it "
+            "shows the trend of the computed pair",
         )
 
 for _case, _rows in SECTION4.items():
@@ -241,3 +287,58 @@ for _case, (_mu_lo, _mu_hi) in MU_RANGE.items():
         unit="1",
         tolerance=0.0,
     )
+
+
+def _life(load_ratio: float) -> float:
+    """L10 [10⁶ rev] at P/C = ``load_ratio`` (ISO 281 basic rating life, ball exponent 3)."""
+    from bearingkit.physics.life.iso281_life import MILLION, basic_rating_life
+
+    return float(basic_rating_life(1.0, load_ratio, "ball")) / MILLION
+
+
+for _pct, (_ratio, _pub) in SECTION4_LIVES.items():
+    _register(
+        f"seed004/section4/life/{_pct}pct",
+        f"{SOURCE}, section 4 ('a constant load of 40-100% of the basic dynamic load rating ... from 15.6 "
+        "million to 1.0 million' revolutions)",
+        f"basic rating life L10 [10^6 rev] at P = {_pct} % of the dynamic rating (ISO 281, ball: exponent 3)",
+        _pub,
+        lambda r=_ratio: _life(r),
+        unit="1",
+        tolerance=0.005,  # printed to 3 digits
+    )
+
+_register(
+    "seed004/section8/mu_a/max",
+    f"{SOURCE}, section 8 ('mu_PTRBa and mu_PTRBr ranged from 0.0011 to 0.0023 and 0.0016 to 0.0031')",
+    "max of the prototype's axial friction coefficient over 10-30 kN and 100-4000 rpm (section 8 prints "
+    "0.0023 where section 4 prints 0.0024 for the same range)",
+    SECTION8_MU_A_MAX,
+    _mu_end("axial", 1),
+    unit="1",
+)
+
+
+def other_parameters_max_change() -> float:
+    """Largest |M(high) − M(low)| [N·m] over Table 5's ranges of n, R_rr, d_R and Z (20 kN, 4000 rpm)."""
+    out = 0.0
+    for param, ((lo, hi), unit, _, _) in TABLE5.items():
+        if param == "contact_angle":
+            continue
+        for case in ("axial", "radial"):
+            m_lo, m_hi = (_friction(case, 20.0, 4000.0, param, _si(x, unit))() for x in (lo, hi))
+            out = max(out, abs(m_hi - m_lo))
+    return out
+
+
+_register(
+    "seed004/section5/other-parameters-below-0.1Nm",
+    f"{SOURCE}, section 5 (2) ('the effect of other structural parameters on friction torque was less "
+    "than 0.1 Nm')",
+    "indicator: 1 if the largest change of the friction torque over the Table 5 range of n, R_rr, d_R and Z "
+    "(axial and radial, 20 kN, 4000 rpm) is below 0.1 N*m",
+    1.0,
+    lambda: float(other_parameters_max_change() < SECTION5_OTHER_BOUND),
+    unit="1",
+    tolerance=0.0,
+)

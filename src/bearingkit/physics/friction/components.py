@@ -235,6 +235,48 @@ def cage_torque(cage_weight, cage_friction, guide_diameter):
     return w * f * np.asarray(guide_diameter, dtype=float) / 2.0
 
 
+#: SKF's constant friction coefficient of cylindrical roller thrust bearings, M = 0.5 μ P d (d: bore),
+#: against 0.0013 for thrust ball bearings (SKF Rolling bearings catalogue, "Friction", Table 1,
+#: "Constant coefficient of friction μ for open bearings"): the order of the load-proportional sliding
+#: a thrust cylindrical roller row shows beyond rolling. A reference value for
+#: :func:`roller_sliding_torque`, not a default of it.
+THRUST_CYLINDRICAL_MU_SKF = 0.005  # [-]
+
+
+def roller_sliding_torque(load, coefficient, pitch_diameter):
+    """Load-proportional sliding torque of the rollers of a thrust (axial) roller row [N·m].
+
+    Parameters
+    ----------
+    load : array_like [N]
+        Normal load Q_j of each roller (leading case axis, elements last).
+    coefficient : array_like [-]
+        Sliding coefficient μ_rs, referred to the pitch radius (≥ 0).
+    pitch_diameter : array_like [m]
+        Pitch diameter d_m of the row (> 0).
+
+    Returns
+    -------
+    ndarray [N·m]
+        Torque about the bearing axis per roller.
+
+    Notes
+    -----
+    .. math:: M_{rs} = \\mu_{rs}\\, Q_j\\, \\frac{d_m}{2}
+
+    Coulomb sliding of a thrust cylindrical roller (roller end on its cage pocket, roller edges on the
+    raceways: everything beyond the pitch-line differential sliding E2), referred to the pitch
+    radius: the form of SKF's constant-μ estimate M = 0.5 μ P d, whose μ for cylindrical roller
+    thrust bearings (:data:`THRUST_CYLINDRICAL_MU_SKF` = 0.005) is ≈ 4× that of thrust ball bearings
+    (0.0013). The coefficient of a bearing without catalogue data is identified on a measured (or
+    published) torque; seed 000: :mod:`bearingkit.papers.tian2025.calibration`.
+    """
+    q = _nonneg("load", load, "N")
+    mu = _nonneg("coefficient", coefficient, "")
+    checks.positive("pitch_diameter", pitch_diameter, "m")
+    return mu * q * np.asarray(pitch_diameter, dtype=float) / 2.0
+
+
 # --- EHL viscous rolling resistance ------------------------------------------------------------------
 def _groups(viscosity, entrainment_speed, pressure_viscosity, e_reduced, radius_x):
     checks.positive("viscosity", viscosity, "Pa*s")
@@ -434,5 +476,6 @@ COMPONENTS = {
     "viscous_ball": viscous_point_fujiwara,  # M32 (alternatives in VISCOUS_POINT_MODELS)
     "spin_ball": spin_moment,  # M4
     "cage": cage_torque,  # M5
+    "roller_sliding": roller_sliding_torque,  # identified sliding of the thrust roller rows (not in Tian)
 }
 REFERENCE_KEYS = ("tian2025", "tabor1955", "johnson1985", "harris2007", "matsuyama2012", "fujiwara_ntn")

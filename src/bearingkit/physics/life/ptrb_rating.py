@@ -19,9 +19,11 @@ ball ratings with PTRB-specific f_ca, f_cr, combined over the n teeth of a rolle
 
 The load-distribution coefficients f_amax (axial: largest tooth load over the mean tooth load) and
 f_rmax (radial: share of F_r carried by the most loaded roller) come from an earlier paper (Zheng et
-al. 2020) and are not published; :func:`calibrated_distribution_coefficients` is the ONE place where
-bearingkit calibrates them (against C0a and C0r of the prototype only). The physical model of the
-distribution is in :mod:`bearingkit.rows.threaded.distribution`.
+al. 2020) and are not published. This module is the ONE place where bearingkit calibrates them, each on
+one number of the prototype: :data:`BODY_COMPLIANCE_FACTOR` (f_amax of every design from the tooth
+load-sharing model :func:`bearingkit.physics.life.ptrb_load_sharing.design_f_amax` at
+:data:`F_AMAX_REFERENCE_LOAD`, identified on C0a = 38.36 kN) and :data:`K_RMAX_CALIBRATED` (f_rmax =
+k_r/Z, on C0r = 19.93 kN). :func:`calibrated_distribution_coefficients` gives the prototype's pair.
 
 References: ``zheng2022`` (doi:10.3390/machines10111051), ``zheng2021`` (doi:10.1115/1.4048983),
 ``zheng2020`` (doi:10.1155/2020/9593051), ``iso76``, ``iso281``, ``harris2007``.
@@ -36,11 +38,13 @@ from bearingkit.physics.contact import hertz
 
 __all__ = [
     "BM_BALL",
+    "BODY_COMPLIANCE_FACTOR",
     "CONTACT_STRESS_STATIC",
     "FC_AXIAL_CONST",
     "FC_LAMBDA",
     "FC_RADIAL_CONST",
     "F_AMAX_CALIBRATED",
+    "F_AMAX_REFERENCE_LOAD",
     "K_RMAX_CALIBRATED",
     "SIDES",
     "basic_dynamic_axial",
@@ -95,10 +99,19 @@ BALL_DIAMETER_LIMIT = 25.4e-3
 LARGE_BALL_FACTOR, BALL_D_EXP, LARGE_BALL_D_EXP, BALL_Z_EXP, ROW_EXP = 3.647, 1.8, 1.4, 2.0 / 3.0, 0.7
 _MM = 1.0e-3
 
-#: CALIBRATED maximum axial load-distribution coefficient f_amax [1] (largest tooth load / mean tooth
-#: load). See :func:`calibrated_distribution_coefficients`. Valid for the prototype (Table 1);
-#: used unchanged for the parameter sweeps of Table 4.
+#: Maximum axial load-distribution coefficient f_amax of the PROTOTYPE [1] (largest tooth load / mean
+#: tooth load) that meets C0a = 38.36 kN: what the load-sharing model gives for the prototype with
+#: :data:`BODY_COMPLIANCE_FACTOR` (by construction). Other designs: ``design_f_amax``.
 F_AMAX_CALIBRATED = 1.0670
+#: Bearing axial load at which f_amax of a design is evaluated [N]: 20 kN, the load of Zheng et al.
+#: (2022) §5 and §6 ("the axial load or radial load was 20 kN"), where Table 4 and Table 6 are computed.
+F_AMAX_REFERENCE_LOAD = 20.0e3
+#: CALIBRATED multiplier of the core compliances P/(EA) of roller and rings in the tooth load-sharing
+#: model [1], identified once so that the prototype's f_amax is :data:`F_AMAX_CALIBRATED` (i.e. on C0a =
+#: 38.36 kN; :func:`bearingkit.bearings.ptrb.identify_body_compliance_factor`). 0.56: the cores are
+#: ≈ 1.8× stiffer than their bare sections (the ring shoulders and thread ridges carry axial load too).
+#: With it Table 4's C0a and Ca of every sweep endpoint follow to 0.5 % (α = 60°: 1.5 %).
+BODY_COMPLIANCE_FACTOR = 0.5595
 #: CALIBRATED Stribeck-type constant k_r of f_rmax = k_r / Z [1] (Stribeck's theoretical value for
 #: point contact without clearance is 4.37, his design value 5). See
 #: :func:`calibrated_distribution_coefficients`.
@@ -425,13 +438,15 @@ def basic_dynamic_radial(thread_rating, n_teeth):
 
 
 def calibrated_distribution_coefficients(n_elements):
-    """The calibrated load-distribution coefficients (f_amax, f_rmax) [1] — a CALIBRATION.
+    """The calibrated load-distribution coefficients (f_amax, f_rmax) [1] of the PROTOTYPE — a CALIBRATION.
 
     Zheng et al. (2022) take f_amax and f_rmax from Zheng et al. (2020) without printing them. bearingkit
     calibrates them once, with flat ring flanks (r_I = r_O = inf) and exact Hertz coefficients:
 
     * f_amax = :data:`F_AMAX_CALIBRATED` = 1.0670 reproduces C_0a = 38.36 kN of the prototype
-      (Zheng et al. 2022, Table 3) and nothing else;
+      (Zheng et al. 2022, Table 3); for another design f_amax comes from the load-sharing model with the
+      identified :data:`BODY_COMPLIANCE_FACTOR` (:func:`bearingkit.bearings.ptrb.ptrb_ratings`,
+      ``distribution="design"``), this constant is then the prototype's value;
     * f_rmax = :data:`K_RMAX_CALIBRATED` / Z with k_r = 4.107 reproduces C_0r = 19.93 kN and nothing else
       (the 1/Z law is Stribeck's; the paper's Table 4 shows C_0r ∝ Z, which it honours).
 

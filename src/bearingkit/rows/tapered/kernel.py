@@ -86,7 +86,11 @@ class TaperedKernel(KernelBase):
         self.g_i = ring_dirs(p_i, geo.n_i)  # (Z, n_s, 5)
         self.g_f = ring_dirs(geo.p_f, geo.n_f)  # (Z, 5)
         # Stiffness constants.
-        k_line = float(line.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
+        k_line = (
+            float(line.line_stiffness(geo.length, self.e_reduced, law=row.line_law))
+            if row.raceway_stiffness is None
+            else float(row.raceway_stiffness)
+        )
         self.k_line = k_line
         self.c_s = k_line * float(width) / geo.length
         end_r = (

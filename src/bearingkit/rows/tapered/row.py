@@ -115,6 +115,9 @@ class TaperedRow:
         Crown drop of the roller (e.g. ``make_profile("iso16281_tapered", …)``).
     line_law : str
         ``"kunert"`` or ``"iso16281"`` (:data:`bearingkit.physics.contact.line.LINE_LAWS`).
+    raceway_stiffness : float or None [N/m^(10/9)]
+        K_a of one whole raceway line contact, Q = K_a δ^(10/9), where a source gives it (or it is
+        identified); None = from ``line_law`` with E′ and the roller length.
     e_reduced : float or None [Pa]
         E′ (steel–steel from the materials by default).
     flange_contact_height : float or None [m]
@@ -147,6 +150,7 @@ class TaperedRow:
     n_slices: int = 1
     profile: object | None = None
     line_law: str = "kunert"
+    raceway_stiffness: float | None = None
     e_reduced: float | None = None
     flange_contact_height: float | None = None
     end_radius: float | None = None
@@ -208,6 +212,9 @@ class TaperedRow:
         from bearingkit.physics.contact.line import LINE_LAWS
 
         checks.one_of("line_law", self.line_law, LINE_LAWS)
+        if self.raceway_stiffness is not None:
+            _scalar("raceway_stiffness", self.raceway_stiffness)
+            checks.positive("raceway_stiffness", self.raceway_stiffness, "N/m^(10/9)")
         if self.e_reduced is not None:
             checks.positive("e_reduced", self.e_reduced, "Pa")
         if self.flange_contact_height is not None:

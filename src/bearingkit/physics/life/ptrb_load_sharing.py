@@ -1,0 +1,324 @@
+"""Axial load sharing over the teeth of a planetary thread roller, batched over designs (f_amax).
+
+SI units (N, m). The maximum axial load-distribution coefficient f_amax of Zheng et al. (2022, eqs. 2
+and 11) is the largest tooth load of a roller over the mean tooth load. Zheng et al. take it from their
+load-distribution model (Zheng et al. 2020) without printing it; their Table 4 implies it varies with
+the design (from C0a and Ca alike, to 0.4 %: 1.035 at α = 30° … 1.096 at n = 16). This module computes it
+from a thread-connection model — Hertz approach and tooth bending of every ITP/OTP contact, axial
+compression of roller and ring cores between the teeth — for a whole population of designs at once
+(the design optimisation evaluates thousands), grouped by the tooth count n.
+
+The per-geometry model of the same equations, :func:`bearingkit.rows.threaded.distribution.
+axial_tooth_distribution`, is this function's test oracle.
+
+References: ``zheng2022`` (doi:10.3390/machines10111051), ``zheng2020`` (doi:10.1155/2020/9593051).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearingkit import checks
+
+__all__ = ["SUPPORTS", "max_tooth_share", "tooth_load_shares"]
+
+#: Outer-ring support relative to the end where the inner ring is loaded (tooth 0): "opposite" (both
+#: rings in compression, the usual shaft/housing shoulders) or "same" (outer ring in tension).
+SUPPORTS = ("opposite", "same")
+
+
+def _arr(x, c):
+    return np.broadcast_to(np.asarray(x, dtype=float), (c,)).astype(float)
+
+
+def tooth_load_shares(
+    roller_load,
+    n_teeth: int,
+    hertz_inner,
+    hertz_outer,
+    tooth_inner,
+    tooth_outer,
+    body_roller,
+    body_inner,
+    body_outer,
+    support: str = "opposite",
+    max_iter: int = 60,
+    tol: float = 1e-10,
+):
+    """Axial tooth loads of one roller for a batch of designs with the same tooth count.
+
+    Parameters
+    ----------
+    roller_load : array_like (C,) [N]
+        Axial load of one roller F_a/Z, > 0.
+    n_teeth : int
+        Teeth per roller n (≥ 1).
+    hertz_inner, hertz_outer : array_like (C,) [m/N^(2/3)]
+        Axial Hertz approach coefficient a_H of an ITP / OTP contact: g = a_H F^(2/3) for the axial force
+        F (a_H = (K sin α)^(−2/3) / sin α with the normal stiffness K, Q = K δ^1.5).
+    tooth_inner, tooth_outer : array_like (C,) [m/N]
+        Axial compliance of the roller tooth plus the ring tooth of an ITP / OTP contact.
+    body_roller, body_inner, body_outer : array_like (C,) [m/N]
+        Axial compliance of one thread pitch of the roller core, and of the inner / outer ring core per
+        roller (P/(E A), the ring's for Z rollers multiplied by Z).
+    support : {"opposite", "same"}
+        :data:`SUPPORTS`.
+    max_iter : int
+    tol : float
+        Convergence on the relative Newton step of y = F^(1/3).
+
+    Returns
+    -------
+    load_inner, load_outer : ndarray (C, n) [N]
+        Axial forces of the ITP and OTP contacts, tooth 0 at the loaded end.
+    fa_max : ndarray (C,) [1]
+        f_amax = max over both contact rows of F_i / (F_a/(Z n)).
+    converged : ndarray (C,) bool
+
+    Notes
+    -----
+    Compatibility at tooth i with roller displacement w_i and ring displacements u_I,i, u_O,i:
+
+    .. math::
+        g_I(F_{I,i}) = u_{I,i} - w_i,\\qquad g_O(F_{O,i}) = w_i - u_{O,i},\\qquad
+        \\sum_i F_{I,i} = \\sum_i F_{O,i} = F_a/Z
+
+    g(F) = a_H F^{2/3} + c F; u_I,i = U − λ_I Σ_j min(i, j) F_I,j; u_O,i = λ_O Σ_j min(e_i, e_j) F_O,j
+    (e_i pitches from the outer-ring support); w_i = w_0 − λ_R Σ_j max(i − j, 0)(F_I,j − F_O,j). Newton in
+    y = F^(1/3). A thread-connection model after Zheng et al. (2020) (bolt–nut analogue); the same
+    equations as :func:`bearingkit.rows.threaded.distribution.axial_tooth_distribution`.
+    """
+    checks.one_of("support", support, SUPPORTS)
+    n = checks.integer("n_teeth", n_teeth, low=1)
+    f_roller = np.atleast_1d(np.asarray(checks.positive("roller_load", roller_load, "N"), dtype=float))
+    c = f_roller.size
+    ai, ao = (
+        _arr(checks.positive(k, v, "m/N^(2/3)"), c)
+        for k, v in (("hertz_inner", hertz_inner), ("hertz_outer", hertz_outer))
+    )
+    ci, co = (
+        _arr(checks.non_negative(k, v, "m/N"), c)
+        for k, v in (("tooth_inner", tooth_inner), ("tooth_outer", tooth_outer))
+    )
+    lr, li, lo = (
+        _arr(checks.non_negative(k, v, "m/N"), c)
+        for k, v in (("body_roller", body_roller), ("body_inner", body_inner), ("body_outer", body_outer))
+    )
+    idx = np.arange(n)
+    dist_o = (n - 1 - idx) if support == "opposite" else idx
+    m_i = np.minimum.outer(idx, idx).astype(float)
+    m_o = np.minimum.outer(dist_o, dist_o).astype(float)
+    m_t = np.maximum(idx[:, None] - idx[None, :], 0).astype(float)
+    a_i = li[:, None, None] * m_i  # (C, n, n)
+    a_o = lo[:, None, None] * m_o
+    t = lr[:, None, None] * m_t
+    y = np.repeat((f_roller / n)[:, None] ** (1.0 / 3.0), 2 * n, axis=1)
+    w0 = ao * y[:, 0] ** 2 + co * y[:, 0] ** 3
+    u = w0 + ai * y[:, 0] ** 2 + ci * y[:, 0] ** 3
+    scale = ai / f_roller ** (1.0 / 3.0)  # equation scaling of the two sums (lengths, like the others)
+    eye = np.eye(n)
+    converged = np.zeros(c, dtype=bool)
+    for _ in range(max_iter):
+        yi, yo = y[:, :n], y[:, n:]
+        fi, fo = yi**3, yo**3
+        w = w0[:, None] - np.einsum("cij,cj->ci", t, fi - fo)
+        r = np.concatenate(
+            [
+                ai[:, None] * yi**2 + ci[:, None] * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w),
+                ao[:, None] * yo**2 + co[:, None] * fo - (w - np.einsum("cij,cj->ci", a_o, fo)),
+                ((fi.sum(axis=1) - f_roller) * scale)[:, None],
+                ((fo.sum(axis=1) - f_roller) * scale)[:, None],
+            ],
+            axis=1,
+        )
+        di, do = 3 * yi**2, 3 * yo**2
+        jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
+        jac[:, :n, :n] = (a_i - t) * di[:, None, :] + (2 * ai[:, None] * yi + ci[:, None] * di)[
+            :, :, None
+        ] * eye
+        jac[:, :n, n : 2 * n] = t * do[:, None, :]
+        jac[:, :n, 2 * n] = 1.0
+        jac[:, :n, 2 * n + 1] = -1.0
+        jac[:, n : 2 * n, :n] = t * di[:, None, :]
+        jac[:, n : 2 * n, n : 2 * n] = (a_o - t) * do[:, None, :] + (2 * ao[:, None] * yo + co[:, None] * do)[
+            :, :, None
+        ] * eye
+        jac[:, n : 2 * n, 2 * n] = -1.0
+        jac[:, 2 * n, :n] = di * scale[:, None]
+        jac[:, 2 * n + 1, n : 2 * n] = do * scale[:, None]
+        step = np.linalg.solve(jac, -r[..., None])[..., 0]
+        dy = step[:, : 2 * n]
+        y = np.maximum(y + dy, 0.2 * y)  # damped: loads stay positive
+        w0 = w0 + step[:, 2 * n]
+        u = u + step[:, 2 * n + 1]
+        converged = np.max(np.abs(dy) / y, axis=1) < tol
+        if converged.all():
+            break
+    fi, fo = y[:, :n] ** 3, y[:, n:] ** 3
+    mean = (f_roller / n)[:, None]
+    fa_max = np.maximum((fi / mean).max(axis=1), (fo / mean).max(axis=1))
+    return fi, fo, fa_max, converged
+
+
+def max_tooth_share(roller_load, n_teeth, **coefficients):
+    """f_amax [1] (C,) of designs that may differ in n: :func:`tooth_load_shares` per group of equal n.
+
+    Parameters
+    ----------
+    roller_load : array_like (C,) [N]
+    n_teeth : array_like (C,) int
+    **coefficients
+        The (C,) coefficient arrays of :func:`tooth_load_shares` (and ``support``).
+    """
+    n_all = np.rint(np.atleast_1d(np.asarray(n_teeth, dtype=float))).astype(int)
+    c = n_all.size
+    f_roller = _arr(roller_load, c)
+    support = coefficients.pop("support", "opposite")
+    coefs = {k: _arr(v, c) for k, v in coefficients.items()}
+    out = np.empty(c)
+    for n in np.unique(n_all):
+        sel = n_all == n
+        _, _, fa, conv = tooth_load_shares(
+            f_roller[sel], int(n), support=support, **{k: v[sel] for k, v in coefs.items()}
+        )
+        if not conv.all():
+            raise checks.InputError(
+                f"the tooth load sharing of {int((~conv).sum())} design(s) with n = {n} "
+                "did not converge; check the geometry (positive stiffnesses and areas)"
+            )
+        out[sel] = fa
+    return out
+
+
+#: Timoshenko shear coefficient of a rectangular tooth section [1] (as rows.threaded_distribution).
+SHEAR_COEFFICIENT = 5.0 / 6.0
+
+
+def _tooth_compliance(e, nu, h, width, thickness):
+    """Axial compliance of one tooth under its contact load [m/N]: cantilever bending + shear."""
+    g = e / (2.0 * (1.0 + nu))
+    return 4.0 * h**3 / (e * width * thickness**3) + h / (SHEAR_COEFFICIENT * g * width * thickness)
+
+
+def design_f_amax(
+    axial_load,
+    *,
+    n_elements,
+    n_teeth,
+    contact_angle,
+    roller_pitch_diameter,
+    inner_pitch_diameter,
+    outer_pitch_diameter,
+    roller_contact_radius,
+    contact_radius_inner,
+    contact_radius_outer,
+    thread_pitch,
+    dedendum,
+    bottom_thickness_roller,
+    bottom_thickness_inner,
+    bottom_thickness_outer,
+    bore_diameter,
+    outside_diameter,
+    youngs_modulus,
+    poisson_ratio,
+    body_compliance_factor=1.0,
+    support="opposite",
+):
+    """f_amax [1] of PTRB designs (arrays broadcast to (C,)) under the bearing axial load ``axial_load``.
+
+    Parameters
+    ----------
+    axial_load : array_like [N]
+        Bearing axial load F_a (each roller carries F_a/Z).
+    n_elements, n_teeth : array_like
+        Z and n [1].
+    contact_angle : array_like [rad]
+    roller_pitch_diameter, inner_pitch_diameter, outer_pitch_diameter : array_like [m]
+        d_R, d_I, d_O.
+    roller_contact_radius, contact_radius_inner, contact_radius_outer : array_like [m]
+        R_rr, r_I, r_O (inf: flat ring flank).
+    thread_pitch, dedendum : array_like [m]
+        P and the tooth dedendum h.
+    bottom_thickness_roller, bottom_thickness_inner, bottom_thickness_outer : array_like [m]
+        B_R, B_I, B_O.
+    bore_diameter, outside_diameter : array_like [m]
+        d_0, D_0 (the ring cores run from the bore to the inner thread root and from the outer thread
+        root to the outside).
+    youngs_modulus, poisson_ratio : array_like
+        E [Pa], ν [1] of all parts.
+    body_compliance_factor : array_like [1]
+        Multiplier of the core compliances P/(E A) (1: the bare core sections).
+    support : {"opposite", "same"}
+
+    Notes
+    -----
+    Coefficients of :func:`tooth_load_shares`: K of each contact from Hertz (Zheng et al. 2022 eq. 2
+    curvatures, :func:`bearingkit.physics.life.ptrb_rating.thread_contact_curvature`), a_H =
+    (K sin α)^(−2/3)/sin α; tooth compliance 4h³/(E w B³) + h/(κ G w B) with w = π d_R/2 (roller tooth:
+    one ITP and one OTP contact) and π d_X/Z (ring tooth shared by Z rollers); core compliances
+    P/(E A) with A_R = π(d_R − 2h)²/4, A_I = π((d_I − 2h)² − d_0²)/4, A_O = π(D_0² − (d_O + 2h)²)/4, the
+    ring cores per roller ×Z. Identical to :func:`bearingkit.rows.threaded.distribution.
+    axial_tooth_distribution` (tested) with the body compliances multiplied by the factor.
+    """
+    from bearingkit.physics.contact import hertz
+    from bearingkit.physics.life.ptrb_rating import thread_contact_curvature
+
+    arrays = np.broadcast_arrays(
+        *(
+            np.atleast_1d(np.asarray(v, dtype=float))
+            for v in (
+                axial_load,
+                n_elements,
+                n_teeth,
+                contact_angle,
+                roller_pitch_diameter,
+                inner_pitch_diameter,
+                outer_pitch_diameter,
+                roller_contact_radius,
+                contact_radius_inner,
+                contact_radius_outer,
+                thread_pitch,
+                dedendum,
+                bottom_thickness_roller,
+                bottom_thickness_inner,
+                bottom_thickness_outer,
+                bore_diameter,
+                outside_diameter,
+                youngs_modulus,
+                poisson_ratio,
+                body_compliance_factor,
+            )
+        )
+    )
+    (fa, z, n, alpha, d_r, d_i, d_o, r_rr, r_i, r_o, p, h, b_r, b_i, b_o, d0, dd0, e, nu, kb) = arrays
+    checks.non_negative("body_compliance_factor", kb)
+    e_red = e / (1.0 - nu**2)
+    sa = np.sin(alpha)
+    a_h = {}
+    for side, d_x, r_x in (("inner", d_i, r_i), ("outer", d_o, r_o)):
+        srho, frho, _, _ = thread_contact_curvature(d_r, d_x, r_rr, r_x, alpha, side)
+        k = hertz.point_stiffness(srho, frho, e_red)
+        a_h[side] = (1.0 / (k * sa)) ** (2.0 / 3.0) / sa
+    c_roller = _tooth_compliance(e, nu, h, np.pi * d_r / 2.0, b_r)
+    c_inner = _tooth_compliance(e, nu, h, np.pi * d_i / z, b_i)
+    c_outer = _tooth_compliance(e, nu, h, np.pi * d_o / z, b_o)
+    area_r = np.pi / 4.0 * (d_r - 2 * h) ** 2
+    area_i = np.pi / 4.0 * ((d_i - 2 * h) ** 2 - d0**2)
+    area_o = np.pi / 4.0 * (dd0**2 - (d_o + 2 * h) ** 2)
+    if np.any(area_i <= 0) or np.any(area_o <= 0) or np.any(area_r <= 0):
+        raise checks.InputError(
+            "the core sections of roller and rings (bore to inner thread root, outer thread root to outside) "
+            "must have positive area"
+        )
+    return max_tooth_share(
+        fa / z,
+        n,
+        hertz_inner=a_h["inner"],
+        hertz_outer=a_h["outer"],
+        tooth_inner=c_roller + c_inner,
+        tooth_outer=c_roller + c_outer,
+        body_roller=kb * p / (e * area_r),
+        body_inner=kb * z * p / (e * area_i),
+        body_outer=kb * z * p / (e * area_o),
+        support=support,
+    )
