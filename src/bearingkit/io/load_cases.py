@@ -118,12 +118,17 @@ def check_single_tapered(source: str, model, cases, free) -> None:
             )
 
 
-def check_fixed_loads(source: str, cases, free) -> None:
-    """No load on a DOF that ``free`` keeps fixed (it would be a reaction, not a load)."""
+def check_fixed_loads(source: str, cases, free, loads=None) -> None:
+    """No load on a DOF that ``free`` keeps fixed (it would be a reaction, not a load).
+
+    ``loads``: the cases' loads (C, 5) when the caller has them as one array already.
+    """
     fixed = np.flatnonzero(~np.asarray(free))
     if not len(cases) or not fixed.size:
         return
-    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
+    if loads is None:
+        loads = np.stack([c.load for c in cases])
+    loads = loads[:, fixed]  # one check for every case (studies: thousands)
     bad = np.argwhere(loads != 0.0)
     if bad.size:
         k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find

@@ -147,17 +147,34 @@ class BearingInput:
             )
         return self
 
-    def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
-        """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs)."""
+    def with_cases(self, cases: Sequence[LoadCase], loads: np.ndarray | None = None) -> BearingInput:
+        """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs).
+
+        ``loads``: the cases' loads (C, 5) when the caller has them as one array already (a study's
+        group of thousands of cases): kept as the copy's :meth:`load_matrix` instead of being
+        stacked again from the cases, one at a time (issue 34).
+        """
+        if loads is not None:
+            loads = np.asarray(loads, dtype=float)
+            if loads.shape != (len(cases), 5):
+                raise ValueError(f"loads (shape {loads.shape}) must be ({len(cases)}, 5), one row per case")
         _check_case_count(self.source, self.model, len(cases))
-        check_fixed_loads(self.source, cases, self.free)
+        check_fixed_loads(self.source, cases, self.free, loads)
         check_single_tapered(self.source, self.model, cases, self.free)
-        return dataclasses.replace(self, cases=tuple(cases))
+        out = dataclasses.replace(self, cases=tuple(cases))
+        if loads is not None:
+            frozen = loads.copy()
+            frozen.flags.writeable = False
+            object.__setattr__(out, "_loads", frozen)  # a cache beside the fields (frozen dataclass)
+        return out
 
     def load_matrix(self) -> np.ndarray:
-        """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases."""
+        """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases (a new array each call)."""
         if not self.cases:
             raise InputError(f"{self.source}: load_cases (none): give at least one [[load_cases]] or --load")
+        cached = self.__dict__.get("_loads")
+        if cached is not None:
+            return cached.copy()
         return np.stack([c.load for c in self.cases])
 
     def solve(self):
