@@ -27,10 +27,10 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "dgbb_6209.toml"
 
 
 def _bearings():
-    from benchmarks.bench_quasistatic import random_loads
     from bearingkit.analysis.solver.quasistatic import load_vector
     from bearingkit.bearings.turntable import composite_turntable
     from bearingkit.io.loader import load_file
+    from benchmarks.bench_quasistatic import random_loads
 
     b = load_file(EXAMPLE)
     rng = np.random.default_rng(6209)

@@ -41,7 +41,9 @@ def test_a_fresh_process_uses_the_hashed_directory_under_the_users_base(tmp_path
     """A NUMBA_CACHE_DIR the user set stays the base; numba writes its index files below the hash."""
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
     env.pop("BEARINGKIT_NUMBA_BASE", None)
-    code = "import numba.core.config as c; from bearingkit.rows.cylindrical import compiled;print(c.CACHE_DIR)"
+    code = (
+        "import numba.core.config as c; from bearingkit.rows.cylindrical import compiled; print(c.CACHE_DIR)"
+    )
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     used = Path(out.stdout.strip().splitlines()[-1])
     assert used == tmp_path / numba_cache.sources_hash()

@@ -89,7 +89,7 @@ def test_no_worker_outlives_the_command(tmp_path, how):
         if how == "interrupt":
             os.kill(proc.pid, signal.SIGINT)  # Ctrl-C, while both workers are inside a 5 s chunk
         t0 = time.monotonic()
-        out, err = proc.communicate(timeout=60)
+        _out, err = proc.communicate(timeout=60)
         ended = time.monotonic() - t0
         _gone, alive = psutil.wait_procs(children, timeout=5)
         assert not alive, f"{len(alive)} process(es) outlived `study --workers 2` ({how})"
