@@ -132,3 +132,28 @@ def test_in_process_threads_run_chunks_side_by_side():
     _BARRIER[:] = [threading.Barrier(2)]
     with pytest.raises(threading.BrokenBarrierError):  # one thread: the first chunk waits alone
         _BARRIER[0].wait(timeout=0.01)
+
+
+def test_the_stores_take_columns_as_the_workers_send_them(tmp_path):
+    """A chunk of numpy columns (text with a missing value among them) reads back as the DataFrame the
+    same values make, from the Parquet store and from the memory store alike."""
+    from bearingkit.studies.run.store import MemoryStore
+
+    cols = {
+        "case": np.array([4, 5, 6]),
+        "y": np.array([0.5, np.nan, 2.0]),
+        "n": np.array([1, 2, 3], dtype=np.int64),
+        "ok": np.array([True, False, True]),
+        "error": np.array(["", None, "refused"], dtype=object),
+    }
+    parquet = ParquetStore(tmp_path / "s")
+    parquet.open("f" * 64, 1, 3, resume=False, study="s")
+    parquet.write(0, cols)
+    memory = MemoryStore()
+    memory.open("f" * 64, 1, 3, resume=False)
+    memory.write(0, cols)
+    expected = pd.DataFrame({k: v for k, v in cols.items() if k != "error"})
+    for got in (parquet.read(), memory.read()):
+        pd.testing.assert_frame_equal(got.drop(columns="error"), expected, check_exact=True)
+        assert got["error"].iloc[0] == "" and pd.isna(got["error"].iloc[1]) and got["error"].iloc[2] == "refused"
+    parquet.close()

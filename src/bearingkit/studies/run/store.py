@@ -295,13 +295,14 @@ class ParquetStore:
 
 
 def _arrow(values):
-    """A column for pyarrow: numpy arrays as they are, object arrays (text) as strings."""
+    """A column for pyarrow: numpy arrays as they are; object arrays (text) with None/NaN as nulls,
+    as ``pa.Table.from_pandas`` reads a DataFrame's text column."""
     import numpy as np
     import pyarrow as pa
 
     values = np.asarray(values)
     if values.dtype == object:
-        return pa.array(values.tolist(), type=pa.string())
+        return pa.array(values, from_pandas=True)
     return values
 
 
