@@ -72,7 +72,12 @@ def _generic(n: int, chunk_size="auto", outputs=("u_x_m", "k_xx_N_per_m", "balls
                 "outputs": list(outputs),
             },
             "factors": [
-                {"name": "load_cases.radial_4kN.F_x", "distribution": "uniform", "low": "1 kN", "high": "15 kN"}
+                {
+                    "name": "load_cases.radial_4kN.F_x",
+                    "distribution": "uniform",
+                    "low": "1 kN",
+                    "high": "15 kN",
+                }
             ],
         },
         source="chunks_6209",
@@ -155,5 +160,7 @@ def test_the_stores_take_columns_as_the_workers_send_them(tmp_path):
     expected = pd.DataFrame({k: v for k, v in cols.items() if k != "error"})
     for got in (parquet.read(), memory.read()):
         pd.testing.assert_frame_equal(got.drop(columns="error"), expected, check_exact=True)
-        assert got["error"].iloc[0] == "" and pd.isna(got["error"].iloc[1]) and got["error"].iloc[2] == "refused"
+        assert (
+            got["error"].iloc[0] == "" and pd.isna(got["error"].iloc[1]) and got["error"].iloc[2] == "refused"
+        )
     parquet.close()
