@@ -16,6 +16,11 @@ number comes from ONE run, in this order, with the 1-minute load average after e
    chunk size (``stats["chunk_cost"]``), and as observed: 1 − (cases × per-case cost / workers) / wall,
    which also counts the idle tail of the last chunks; target < 5 %.
 
+Each rate's note gives the cores the run actually got: CPU seconds of this process and of the Dask
+workers over the wall time. On a shared machine (Linux groups the threads and processes of one
+session, ``sched_autogroup``) a run may get far less than CORES cores whatever its thread count: a
+ratio is only meaningful where the cores obtained scale with the threads or workers.
+
 ``run(cores, cases, dask_cases)`` returns the records for ``python -m benchmarks`` (via
 ``bench_scale``); the command line prints them.
 """
@@ -79,12 +84,22 @@ def definition(n: int, chunk_size="auto"):
     )
 
 
+def _cpu(executor) -> float:
+    """CPU seconds used so far by this process and, for Dask, by every worker process."""
+    used = time.process_time()
+    client = getattr(executor, "client", None)
+    if client is not None:
+        used += sum(client.run(time.process_time).values())
+    return used
+
+
 def _run(d, executor) -> dict:
     from bearingkit.studies.run.runner import run_study
 
-    t0 = time.perf_counter()
+    c0, t0 = _cpu(executor), time.perf_counter()
     res = run_study(d, executor=executor, progress=False)
     wall = time.perf_counter() - t0
+    cores = (_cpu(executor) - c0) / wall  # the cores the run actually got (a loaded machine gives fewer)
     assert res.results["converged"].all() and len(res.results) == d.samples
     s = res.stats
     cost = s.get("chunk_cost") or {}
@@ -100,6 +115,7 @@ def _run(d, executor) -> dict:
         "measured_overhead": cost.get("overhead_share"),
         "observed_overhead": observed,
         "per_chunk_ms": 1e3 * cost["per_chunk_s"] if cost else None,
+        "cores": cores,
         "load": load_average(),
         "results": res.results,
     }
@@ -161,20 +177,23 @@ def run(cores: int | None = None, cases: int = CASES, dask_cases: int = DASK_CAS
             "name": f"scale: generic 6209 statics, {cases} cases, in process 1 thread",
             "value": one["rate"],
             "unit": "cases/s",
-            "note": f"{one['chunks']} chunks of {one['chunk_size']}, load {load0:.2f} → {one['load']:.2f}",
+            "note": f"{one['chunks']} chunks of {one['chunk_size']}, {one['cores']:.2f} cores obtained, "
+            f"load {load0:.2f} → {one['load']:.2f}",
         },
         {
             "name": f"scale: same, in process {cores} threads",
             "value": many["rate"],
             "unit": "cases/s",
-            "note": f"{many['chunks']} chunks of {many['chunk_size']}, load after {many['load']:.2f}",
+            "note": f"{many['chunks']} chunks of {many['chunk_size']}, {many['cores']:.2f} cores obtained, "
+            f"load after {many['load']:.2f}",
         },
         {
             "name": f"scale: in process {cores} threads / 1 thread",
             "value": ratio,
             "unit": "x",
             "target": f">= {EFFICIENCY * cores:.3g}",
-            "note": f"{ratio / cores:.0%} efficiency; results equal bit for bit",
+            "note": f"{ratio / cores:.0%} efficiency; the machine gave "
+            f"{many['cores'] / one['cores']:.2f}x the cores (CPU-s / wall); results equal bit for bit",
         },
         {
             "name": f"scale: fixed cost per chunk, in process {cores} threads",
@@ -194,21 +213,23 @@ def run(cores: int | None = None, cases: int = CASES, dask_cases: int = DASK_CAS
             "name": f"scale: Dask LocalCluster 1 worker, {dask_cases} cases",
             "value": w1["rate"],
             "unit": "cases/s",
-            "note": f"{w1['chunks']} chunks of {w1['chunk_size']}, load after {w1['load']:.2f}",
+            "note": f"{w1['chunks']} chunks of {w1['chunk_size']}, {w1['cores']:.2f} cores obtained, "
+            f"load after {w1['load']:.2f}",
         },
         {
             "name": f"scale: Dask LocalCluster {cores} workers, {dask_cases} cases",
             "value": wn["rate"],
             "unit": "cases/s",
-            "note": f"{wn['chunks']} chunks of {wn['chunk_size']}, load after {wn['load']:.2f}",
+            "note": f"{wn['chunks']} chunks of {wn['chunk_size']}, {wn['cores']:.2f} cores obtained, "
+            f"load after {wn['load']:.2f}",
         },
         {
             "name": f"scale: Dask {cores} workers / 1 worker",
             "value": ratio,
             "unit": "x",
             "target": f">= {target:.3g}",
-            "note": f"{ratio / cores:.0%} efficiency; vs in process {cores} threads "
-            f"{wn['rate'] / many['rate']:.2f}x",
+            "note": f"{ratio / cores:.0%} efficiency; the machine gave {wn['cores'] / w1['cores']:.2f}x the "
+            f"cores; vs in process {cores} threads {wn['rate'] / many['rate']:.2f}x",
         },
         {
             "name": f"scale: fixed cost per chunk, Dask {cores} workers",
