@@ -5,8 +5,8 @@ SI units (N, m); throughputs in cases/s. All numbers come from ONE run, in this 
 1. raw ``solve(model, loads, free=…)`` of the 6209 of ``examples/dgbb_6209.toml`` for N random radial
    and axial loads (F_x 1–15 kN, F_z 0–2 kN, seeded), nothing else — the reference rate;
 2. the same N loads as a ``monte_carlo`` study on the generic evaluator (``bearing = dgbb_6209.toml``,
-   factors ``load_cases.radial_4kN.F_x`` / ``.F_z``), in process, chunks of :data:`CHUNK`, three output
-   sets:
+   factors ``load_cases.radial_4kN.F_x`` / ``.F_z``), in process (chunks side by side in one thread
+   per core), ``chunk_size = "auto"`` (:data:`CHUNK`), three output sets:
 
    - ``statics``: displacements, stiffness terms, converged (the solve and what it returns) — the
      target: ≥ 50 % of the raw rate;
@@ -30,8 +30,9 @@ from pathlib import Path
 
 #: Load cases of the benchmark (the issue's 10,000).
 CASES = 10_000
-#: Cases per chunk of the study (the solver splits a chunk over its thread pool in blocks of 512).
-CHUNK = 2048
+#: Cases per chunk of the study: "auto" (issue 34), the default a study gets — equal chunks, a
+#: multiple of the threads that evaluate them side by side, sized from the study's measured costs.
+CHUNK = "auto"
 SEED = 6209
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "dgbb_6209.toml"
 STATICS = ["u_x_m", "u_y_m", "u_z_m", "k_xx_N_per_m", "k_zz_N_per_m", "converged"]

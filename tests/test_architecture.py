@@ -182,7 +182,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
         ("compiled_linalg",),
         ("newton", "coarse", "speed"),
         ("cone", "solution"),
-        ("model",),
+        ("model", "threads"),
     ),
     "rows": (
         ("ball", "cylindrical", "tapered", "threaded", "self_aligning"),

@@ -10,14 +10,30 @@ from bearingkit.studies.evaluators import Evaluator, Factor
 
 
 def _slow(cases):
-    """y = x² + 1 after a short sleep; logs the chunk's first x to $BK_CALL_LOG (counts calls)."""
+    """y = x² + 1 after a short sleep; logs the chunk's first x to $BK_CALL_LOG (counts calls).
+
+    ``$BK_FAIL_AT``: a chunk whose first x is this value raises after 0.5 s (a study that fails
+    mid-run). ``$BK_DONE_LOG``: each chunk that finishes appends its first x there.
+    """
     log = os.environ.get("BK_CALL_LOG")
+    first = float(cases["x"].iloc[0])
     if log:
         with open(log, "a", encoding="utf-8") as fh:
-            fh.write(f"{float(cases['x'].iloc[0])!r}\n")
+            fh.write(f"{first!r}\n")
+    if os.environ.get("BK_FAIL_AT") and first == float(os.environ["BK_FAIL_AT"]):
+        time.sleep(0.5)
+        raise RuntimeError(f"chunk of x = {first} fails on purpose")
     time.sleep(float(os.environ.get("BK_SLEEP", "0.25")))
+    if os.environ.get("BK_DONE_LOG"):
+        with open(os.environ["BK_DONE_LOG"], "a", encoding="utf-8") as fh:
+            fh.write(f"{first!r}\n")
     x = cases["x"].to_numpy(float)
     return pd.DataFrame({"y": x**2 + 1.0})
+
+
+def pid_of(_item):
+    """The process id of the worker that runs it (top-level: picklable by reference)."""
+    return os.getpid()
 
 
 SLOW = Evaluator("slow_counter", _slow, {"x": Factor("x", "dimensionless", 0.0)}, outputs=("y",))
@@ -49,3 +65,31 @@ MIXED = Evaluator(
     {"n": Factor("n", "count", 1), "x": Factor("x", "dimensionless", 0.0)},
     outputs=("cost", "loss"),
 )
+
+
+class Logged:
+    """An evaluator function that logs each chunk it starts and then runs ``inner`` (picklable).
+
+    Each chunk appends ``"<first case value> <pid>"`` to ``$BK_CALL_LOG`` of the process that runs it
+    and sleeps ``$BK_SLEEP`` seconds (default 0) before computing, so that a test can see which
+    worker started which chunk and kill one mid-chunk.
+    """
+
+    def __init__(self, inner, first: str):
+        self.inner = inner
+        self.first = first  # the factor whose first value names the chunk in the log
+
+    def _log(self, cases):
+        log = os.environ.get("BK_CALL_LOG")
+        if log:
+            with open(log, "a", encoding="utf-8") as fh:
+                fh.write(f"{float(cases[self.first].iloc[0])!r} {os.getpid()}\n")
+        time.sleep(float(os.environ.get("BK_SLEEP", "0")))
+
+    def __call__(self, cases):
+        self._log(cases)
+        return self.inner(cases)
+
+    def columns(self, cases):
+        self._log(cases)
+        return self.inner.columns(cases)

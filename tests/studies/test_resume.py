@@ -133,13 +133,13 @@ def test_kill_and_resume_the_generic_evaluator(tmp_path, monkeypatch):
     stamps = {p.name: p.stat().st_mtime_ns for p in chunk_dir.glob("chunk-*.parquet")}
 
     calls = []
-    real = GenericModel.__call__
+    real = GenericModel.columns  # what a study's workers call (issue 34: numpy columns, no DataFrame)
 
     def counting(self, cases):
         calls.append(len(cases))
         return real(self, cases)
 
-    monkeypatch.setattr(GenericModel, "__call__", counting)
+    monkeypatch.setattr(GenericModel, "columns", counting)
     with pytest.warns(UserWarning, match="recovered the stale lock of study 'resume_generic'"):
         resumed = run_study(sd.load_study(study), store=out, resume=True, progress=False)
     assert len(calls) == n_chunks - len(finished)  # nothing finished is recomputed

@@ -17,6 +17,7 @@ from bearingkit.studies.definition import load as sd
 from bearingkit.studies.designs import generators
 from bearingkit.studies.evaluators import Evaluator, Factor
 from bearingkit.studies.results import analysis
+from bearingkit.studies.run.executors import InProcessExecutor
 from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "studies"
@@ -226,9 +227,10 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
     store = tmp_path / "store"
 
     CALLS.clear()
-    CRASH_AT.append(3)  # the fourth call raises
+    CRASH_AT.append(3)  # the fourth call raises (one chunk after the other: the calls are counted)
+    sequential = InProcessExecutor(threads=1)
     with pytest.raises(RuntimeError, match="killed"):
-        run_study(d, store=store, progress=False)
+        run_study(d, executor=sequential, store=store, progress=False)
     chunk_files = sorted((store / "chunks").glob("chunk-*.parquet"))
     assert [p.name for p in chunk_files] == [f"chunk-00000{i}.parquet" for i in range(3)]
     on_disk = pd.read_parquet(chunk_files[1])
@@ -238,7 +240,7 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
 
     CRASH_AT.clear()
     CALLS.clear()
-    resumed = run_study(d, store=store, resume=True, progress=False)
+    resumed = run_study(d, executor=sequential, store=store, resume=True, progress=False)
     assert CALLS == [25, 20], "only the two missing chunks (cases 75-99, 100-119) are computed"
     assert resumed.stats["computed"] == 2 and resumed.stats["reused"] == 3
     pd.testing.assert_frame_equal(resumed.results, fresh.results)

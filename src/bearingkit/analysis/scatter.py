@@ -99,10 +99,11 @@ def _roller_loads(model: BearingModel, q: np.ndarray, start=None):
     from bearingkit.analysis.solver import backend
 
     kernel = model.kernels[0]
-    if backend.requested(None) != "numpy" and backend.compiled_pack(model) is not None:
+    packed = backend.compiled_pack(model) if backend.requested(None) != "numpy" else None
+    if packed is not None:
         from bearingkit.rows.tapered.compiled import roller_loads
 
-        loads = roller_loads(kernel, q, start)
+        loads = roller_loads(kernel, q, start, pack=packed.tapered)  # the solve's pack (one row)
         return loads[..., 0], loads[..., 1], loads[..., 2]
     st = kernel.roller_state(q)
     return st["load_inner"], st["load_outer"], st["load_flange"]

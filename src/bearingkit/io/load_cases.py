@@ -118,7 +118,7 @@ def one_way_row(model):
     return None
 
 
-def mounted_free(source: str, model, cases, free, user_set: bool = False):
+def mounted_free(source: str, model, cases, free, user_set: bool = False, loads=None):
     """The DOFs a single one-way row is solved with, and the note of an automatic hold.
 
     A lone tapered or angular contact row carries axial load one way only: with u_z free it needs
@@ -131,14 +131,15 @@ def mounted_free(source: str, model, cases, free, user_set: bool = False):
     Returns
     -------
     (ndarray (5,) of bool, tuple of str)
-        The free DOFs and the notes (empty when nothing was held).
+        The free DOFs and the notes (empty when nothing was held). ``loads``: the cases' loads (C, 5)
+        when the caller has them as one array (a study's group).
     """
     found = one_way_row(model)
     free = np.asarray(free, bool)
     if found is None or not free[2] or not len(cases):
         return free, ()
     row, sign = found
-    fz = np.array([c.load[2] for c in cases]) * sign
+    fz = (np.asarray(loads)[:, 2] if loads is not None else np.array([c.load[2] for c in cases])) * sign
     if np.all(fz > 0.0):
         return free, ()
     what = "tapered roller" if row.kind == "tapered" else "angular contact ball"
@@ -189,12 +190,17 @@ def override_free(source: str, free, hold=(), release=()):
     return out
 
 
-def check_fixed_loads(source: str, cases, free) -> None:
-    """No load on a DOF that ``free`` keeps fixed (it would be a reaction, not a load)."""
+def check_fixed_loads(source: str, cases, free, loads=None) -> None:
+    """No load on a DOF that ``free`` keeps fixed (it would be a reaction, not a load).
+
+    ``loads``: the cases' loads (C, 5) when the caller has them as one array already.
+    """
     fixed = np.flatnonzero(~np.asarray(free))
     if not len(cases) or not fixed.size:
         return
-    loads = np.stack([c.load for c in cases])[:, fixed]  # one check for every case (studies: thousands)
+    if loads is None:
+        loads = np.stack([c.load for c in cases])
+    loads = loads[:, fixed]  # one check for every case (studies: thousands)
     bad = np.argwhere(loads != 0.0)
     if bad.size:
         k, j = bad[0]  # the first case, its first fixed DOF: as a loop over cases and DOFs would find

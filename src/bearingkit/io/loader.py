@@ -162,11 +162,25 @@ class BearingInput:
             )
         return self
 
-    def with_cases(self, cases: Sequence[LoadCase]) -> BearingInput:
+    def with_cases(self, cases: Sequence[LoadCase], loads: np.ndarray | None = None) -> BearingInput:
         """A copy with ``cases`` instead of the file's load cases (checked against fixed DOFs; a single
-        one-way row is mounted again for them, :func:`~bearingkit.io.load_cases.mounted_free`)."""
+        one-way row is mounted again for them, :func:`~bearingkit.io.load_cases.mounted_free`).
+
+        ``loads``: the cases' loads (C, 5) when the caller has them as one array already (a study's
+        group of thousands of cases): kept as the copy's :meth:`load_matrix` instead of being
+        stacked again from the cases, one at a time (issue 34).
+        """
+        if loads is not None:
+            loads = np.asarray(loads, dtype=float)
+            if loads.shape != (len(cases), 5):
+                raise ValueError(f"loads (shape {loads.shape}) must be ({len(cases)}, 5), one row per case")
         _check_case_count(self.source, self.model, len(cases))
-        return self._with_free(tuple(cases), self.dof_overrides)
+        out = self._with_free(tuple(cases), self.dof_overrides, loads)
+        if loads is not None:
+            frozen = loads.copy()
+            frozen.flags.writeable = False
+            object.__setattr__(out, "_loads", frozen)  # a cache beside the fields (frozen dataclass)
+        return out
 
     def with_dofs(self, hold: Sequence[str] = (), release: Sequence[str] = ()) -> BearingInput:
         """A copy with the DOFs named in ``hold`` fixed (at 0: their loads become reactions) and those in
@@ -177,7 +191,7 @@ class BearingInput:
         given.update({n: True for n in release})
         return self._with_free(self.cases, tuple(given.items()))
 
-    def _with_free(self, cases: tuple, overrides: tuple) -> BearingInput:
+    def _with_free(self, cases: tuple, overrides: tuple, loads: np.ndarray | None = None) -> BearingInput:
         base = self.free if self.file_free is None else self.file_free
         hold = [n for n, v in overrides if not v]
         release = [n for n, v in overrides if v]
@@ -187,8 +201,8 @@ class BearingInput:
         if overrides:
             said = [f"{n} {'freed' if v else 'held at 0'}" for n, v in overrides]
             notes = (f"DOFs set by the caller over the file's: {', '.join(said)}",)
-        check_fixed_loads(self.source, cases, free)
-        free, mounted = mounted_free(self.source, self.model, cases, free, user_set=user_set)
+        check_fixed_loads(self.source, cases, free, loads)
+        free, mounted = mounted_free(self.source, self.model, cases, free, user_set=user_set, loads=loads)
         return dataclasses.replace(
             self,
             cases=cases,
@@ -199,9 +213,12 @@ class BearingInput:
         )
 
     def load_matrix(self) -> np.ndarray:
-        """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases."""
+        """External loads (C, 5) [N, N, N, N·m, N·m] of the load cases (a new array each call)."""
         if not self.cases:
             raise InputError(f"{self.source}: load_cases (none): give at least one [[load_cases]] or --load")
+        cached = self.__dict__.get("_loads")
+        if cached is not None:
+            return cached.copy()
         return np.stack([c.load for c in self.cases])
 
     def solve(self):

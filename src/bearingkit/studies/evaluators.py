@@ -104,7 +104,8 @@ class Evaluator:
                 out[name] = f.default
         return out
 
-    def __call__(self, cases):
+    def _prepared(self, cases):
+        """``cases`` checked (no unknown factor), completed with defaults, on a default index."""
         columns = list(cases.columns)  # a list: `in` on a pandas 3 str Index costs µs per name
         unknown = [c for c in columns if c not in self.factors and c != "case"]
         if unknown:
@@ -117,9 +118,32 @@ class Evaluator:
             cases = cases.copy(deep=False)
         if not is_default_index(cases.index, len(cases)):
             cases = cases.reset_index(drop=True)
+        return cases
+
+    def __call__(self, cases):
+        cases = self._prepared(cases)
         out = self.function(cases)
         if len(out) != len(cases):
             raise RuntimeError(f"evaluator {self.name!r} returned {len(out)} rows for {len(cases)} cases")
+        return out
+
+    def columns(self, cases) -> dict:
+        """The outputs as numpy columns (name → (C,) array), what a study's workers send back.
+
+        A function with a ``columns(cases)`` method of its own (the generic evaluator) gives them
+        without building a DataFrame; any other is called and its table taken apart.
+        """
+        cases = self._prepared(cases)
+        direct = getattr(self.function, "columns", None)
+        if callable(direct):
+            out = {k: np.asarray(v) for k, v in direct(cases).items()}
+            rows = {len(v) for v in out.values()} or {len(cases)}
+        else:
+            table = self.function(cases)
+            out = {k: table[k].to_numpy() for k in table.columns}
+            rows = {len(table)}
+        if rows != {len(cases)}:
+            raise RuntimeError(f"evaluator {self.name!r} returned {sorted(rows)} rows for {len(cases)} cases")
         return out
 
 

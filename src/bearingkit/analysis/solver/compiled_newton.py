@@ -432,7 +432,9 @@ def _solve_case(
 # The parfor wrapper of ``prange`` takes arrays and scalars only, not namedtuples of arrays: the
 # parallel driver receives the packed rows flattened (order of :func:`_flat`) and rebuilds the pack
 # inside the loop body. The loop runs over blocks of ``block`` cases, one workspace per block.
-@njit(cache=True, parallel=True, error_model="numpy")
+# Both drivers release the GIL (nogil): a program that solves in several threads at once (a study's
+# chunks evaluated side by side, issue 34) runs their compiled solves on as many cores.
+@njit(cache=True, parallel=True, error_model="numpy", nogil=True)
 def _solve_batch(
     q0, load, free,
     b_B, b_s0, b_a0, b_kn, b_side, b_row,
@@ -470,7 +472,7 @@ def _flat(mp: ModelPack) -> tuple:
     )  # fmt: skip
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", nogil=True)
 def _solve_serial(
     q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner,
     out_x,

@@ -23,7 +23,6 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
-import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -35,6 +34,13 @@ from bearingkit.analysis.solver.coarse import COARSE_ITERATIONS
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.analysis.solver.newton import Problem, merge, newton, starting_point
 from bearingkit.analysis.solver.solution import QuasiStaticResult
+from bearingkit.analysis.solver.threads import (  # noqa: F401 (re-exported: their old home)
+    PARALLEL_CHUNK,
+    THREADS_ENV,
+    parallel_split,
+    solver_threads,
+    thread_limit,
+)
 from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.rows.base import N_DOF
 
@@ -105,29 +111,6 @@ CHUNK_CASES = 256
 #: matrix products are small, and OpenBLAS threads on them cost more than they give (issue 19:
 #: 6.7x slower per case at 256 cases with its threads).
 BLAS_SERIAL_ABOVE = 8
-
-#: Cases per block the compiled core's threads take at a time (dynamic scheduling of ``prange``
-#: over blocks; one workspace per block).
-PARALLEL_CHUNK = 32
-
-#: Environment variable that caps the solver's thread pool. Set it to 1 where the caller already
-#: runs one solver per core (Dask workers, process pools): nested pools would oversubscribe them.
-THREADS_ENV = "BEARINGKIT_THREADS"
-
-
-def solver_threads() -> int:
-    """Threads the solver uses for a chunked batch: ``$BEARINGKIT_THREADS`` or the core count."""
-    value = os.environ.get(THREADS_ENV, "").strip()
-    if not value:
-        return os.cpu_count() or 1
-    try:
-        n = int(value)
-    except ValueError:
-        raise InputError(f"{THREADS_ENV}={value!r}: expected a positive integer") from None
-    if n < 1:
-        raise InputError(f"{THREADS_ENV}={value!r}: expected a positive integer")
-    return n
-
 
 _CONTROLLER: list = []
 
@@ -375,7 +358,7 @@ def _solve_compiled(plan, q0, load, options, given):
     solve_packed = plan.solve_packed
     args = (plan.pack, q0, load, plan.free, plan.scale, plan.max_step, plan.limit, options)
     args += (plan.cone_matrix, given)
-    threads = min(solver_threads(), n) if n > 1 else 1
+    threads, block = parallel_split(n, solver_threads()) if n > 1 else (1, n)
     if threads > 1:
         import numba
 
@@ -386,10 +369,10 @@ def _solve_compiled(plan, q0, load, options, given):
         # a shared machine one thread is often descheduled, and cases differ in cost (continuation).
         previous = numba.set_parallel_chunksize(1)
         try:
-            out = solve_packed(*args, parallel=True, cache=plan.compiled, block=PARALLEL_CHUNK)
+            out = solve_packed(*args, parallel=True, cache=plan.compiled, block=block)
         finally:
             numba.set_parallel_chunksize(previous)
-    else:
+    else:  # one thread, or a batch too small to pay the threads' wake-up (threads.parallel_split)
         out = solve_packed(*args, False, plan.compiled)
     if plan.tapered:
         _record_inner(plan.kernels, out.inner)

@@ -460,7 +460,7 @@ def _roller_loads_batch(
         _case_roller_loads(c, q[c], tp, out, start)
 
 
-def roller_loads(kernel, q: np.ndarray, start: np.ndarray | None = None) -> np.ndarray:
+def roller_loads(kernel, q: np.ndarray, start: np.ndarray | None = None, pack=None) -> np.ndarray:
     """Contact loads (C, Z, 3) [N] — cone, cup, rib — of a tapered kernel's rollers at q (C, 5).
 
     The compiled counterpart of the loads of :meth:`TaperedKernel.roller_state` (same roller
@@ -468,8 +468,10 @@ def roller_loads(kernel, q: np.ndarray, start: np.ndarray | None = None) -> np.n
     Carlo of 10⁴ realisations needs only these three loads per roller. ``start`` (C, Z, 2): the
     rollers' positions a compiled solve left at these q (``QuasiStaticResult._roller_x``); the
     sub-problem then starts converged and only confirms it (NaN entries start from the guess).
+    ``pack``: the kernel's :func:`pack_tapered` when the caller has it (the solve's own: packing the
+    per-roller constants of 10⁴ realisations again cost a tenth of the Monte Carlo's solve).
     """
-    pack = pack_tapered([kernel], [0])
+    pack = pack_tapered([kernel], [0]) if pack is None else pack
     q = np.ascontiguousarray(q, dtype=np.float64)
     n_z = kernel.row.n_elements
     out = np.empty((q.shape[0], n_z, 3))

@@ -22,7 +22,8 @@ File layout (all sections but ``[study]`` optional)::
     samples = 1000              # monte_carlo
     sampler = "random"          # monte_carlo: random | lhs | sobol
     seed = 0
-    chunk_size = 1000           # cases per chunk (the unit of parallel work and of resume)
+    chunk_size = "auto"         # cases per chunk (the unit of parallel work and of resume): "auto"
+                                # (default) sizes it from the study's measured costs, or a number
 
     [fixed]                     # factor values common to all cases
     axial_load = "3 kN"

@@ -147,7 +147,7 @@ class StudyDefinition(_Strict):
     samples: int | None = Field(None, ge=1)
     sampler: Literal["random", "lhs", "sobol"] = "random"
     seed: int = Field(0, ge=0)
-    chunk_size: int = Field(1000, ge=1, le=MAX_CHUNK_SIZE)
+    chunk_size: int | str = "auto"
     outputs: tuple[str, ...] | None = None
     fixed: dict = Field(default_factory=dict)
     factors: tuple[FactorDef, ...] = ()
@@ -159,6 +159,16 @@ class StudyDefinition(_Strict):
     targets: dict = Field(default_factory=dict)
     plots: tuple[PlotDef, ...] = ()
     source: str = "<dict>"
+
+    @field_validator("chunk_size", mode="before")
+    @classmethod
+    def _chunk_size(cls, value):
+        # "auto" (bearingkit.studies.run.chunking) or a whole number of cases in range
+        if value == "auto":
+            return value
+        if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_CHUNK_SIZE:
+            raise ValueError(f'must be "auto" or a whole number of cases from 1 to {MAX_CHUNK_SIZE:,}')
+        return value
 
     @field_validator("name")
     @classmethod

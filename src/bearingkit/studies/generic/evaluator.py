@@ -134,23 +134,35 @@ class GenericModel:
     def __call__(self, cases):
         import pandas as pd
 
+        return pd.DataFrame(self.columns(cases))
+
+    def columns(self, cases) -> dict:
+        """Outputs (name → (C,) array) of the C cases of ``cases``, in their order.
+
+        What a study's workers send back (:meth:`bearingkit.studies.evaluators.Evaluator.columns`):
+        plain arrays, no DataFrame built, indexed, concatenated and sorted per chunk (issue 34).
+        """
         _, paths, _ = self._base()
-        keys = [c for c in cases.columns if paths[c].kind != "case"]
-        frames = []
-        if keys:
-            groups = cases.groupby(keys, sort=False, dropna=False).indices.items()
-        else:
-            groups = [((), np.arange(len(cases)))]
-        for key, idx in groups:
-            key = key if isinstance(key, tuple) else (key,)
-            idx = np.asarray(idx)
-            sub = cases.iloc[idx].reset_index(drop=True)
+        n = len(cases)
+        data = {c: cases[c].to_numpy() for c in cases.columns}
+        keys = [c for c in data if paths[c].kind != "case"]
+        parts = []
+        for idx, key in _groups(cases, data, keys):
+            sub = data if len(idx) == n else {c: v[idx] for c, v in data.items()}
             try:
-                table = self.evaluate_group(sub, dict(zip(keys, key, strict=True)))
+                table = self.evaluate_group(sub, key, len(idx))
             except InputError as exc:
                 table = self._failed(len(idx), str(exc))
-            frames.append(pd.DataFrame(table, index=idx))
-        return pd.concat(frames).sort_index().reset_index(drop=True)
+            parts.append((idx, table))
+        if len(parts) == 1:
+            return parts[0][1]
+        out = {}
+        for idx, table in parts:
+            for k, v in table.items():
+                if k not in out:
+                    out[k] = np.empty(n, dtype=np.asarray(v).dtype)
+                out[k][idx] = v
+        return out
 
     def _failed(self, n: int, reason: str) -> dict:
         table = {}
@@ -165,17 +177,19 @@ class GenericModel:
         table["error"] = np.full(n, reason, dtype=object)
         return table
 
-    def evaluate_group(self, sub, key: dict) -> dict:
-        """Outputs (name → (G,)) of the G cases of ``sub`` sharing the non-batched values ``key``.
+    def evaluate_group(self, sub: dict, key: dict, g: int | None = None) -> dict:
+        """Outputs (name → (G,)) of the G cases of ``sub`` (column → array) sharing the non-batched
+        values ``key``.
 
         The G cases are solved in runs of at most :func:`bearingkit.io.loader.max_cases` (the caps of
         one run: load cases, flexible rings, contact points; divided by the duty-cycle bins when those
-        are solved too), so a chunk of any size streams through in bounded memory.
+        are solved too), so a chunk of any size streams through in bounded memory. Their load cases
+        are formed once for the group, and each run takes its slice.
         """
         from bearingkit.io.loader import max_cases
 
         bearing = self.build(key)
-        g = len(sub)
+        g = len(next(iter(sub.values()))) if g is None else g
         quantities = [self.catalogue[n] for n in self.outputs]
         duty = "duty" in qmod.parts_of(quantities)
         settings = {k.split(".", 1)[1]: v for k, v in key.items() if self.paths[k].kind == "analysis"}
@@ -193,22 +207,22 @@ class GenericModel:
         # 1,000 + 1,000 + 48 (a run of 48 leaves the solver's thread pool idle)
         runs = -(-g // step)
         bounds = [g * i // runs for i in range(runs + 1)]
-        parts = [
-            self._run(bearing, sub.iloc[a:b].reset_index(drop=True), quantities, options, duty)
-            for a, b in itertools.pairwise(bounds)
-        ]
+        cases, loads = self._load_cases(bearing, sub, g)
+        parts = []
+        for a, b in itertools.pairwise(bounds):
+            part = sub if runs == 1 else {c: v[a:b] for c, v in sub.items()}
+            parts.append(self._run(bearing, part, cases[a:b], loads[a:b], quantities, options, duty))
         table = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]} if len(parts) > 1 else parts[0]
         table["error"] = np.full(g, "", dtype=object)
         return table
 
-    def _run(self, bearing, sub, quantities, options: dict, duty: bool) -> dict:
-        """Outputs of the cases of ``sub`` (one run within the caps): one batched Analysis."""
+    def _run(self, bearing, sub: dict, cases, loads, quantities, options: dict, duty: bool) -> dict:
+        """Outputs of one run within the caps (``cases`` and their ``loads``): one batched Analysis."""
         from bearingkit.pipeline import analyze
 
-        g = len(sub)
-        cases = self._load_cases(bearing, sub, g)
+        g = len(cases)
         # the pipeline's one entry: the same contamination and lubricant checks as the command line
-        analysis = analyze(bearing.with_cases(cases), **options)
+        analysis = analyze(bearing.with_cases(cases, loads), **options)
         lives = self._duty(bearing, sub, g, options) if duty else None
         return qmod.extract(analysis, g, quantities, lives)
 
@@ -219,17 +233,15 @@ class GenericModel:
             base = spec.get(f)
             col = f"{prefix}.{f}"
             alias = (extra or {}).get(f)
-            given = (
-                col if col in sub.columns else alias if alias is not None and alias in sub.columns else None
-            )
+            given = col if col in sub else alias if alias is not None and alias in sub else None
             if given is None:
                 out[f] = np.full(g, np.nan if base is None else float(base))
                 continue
-            values = sub[given].to_numpy(dtype=float)
+            values = np.asarray(sub[given], dtype=float)
             out[f] = np.where(np.isnan(values), np.nan if base is None else float(base), values)
         return out
 
-    def _load_cases(self, bearing, sub, g: int) -> list:
+    def _load_cases(self, bearing, sub: dict, g: int) -> tuple[list, np.ndarray]:
         from bearingkit.io.loader import LoadCase
 
         specs = {c.name: c.model_dump() for c in bearing.spec.load_cases}
@@ -241,7 +253,7 @@ class GenericModel:
             g,
             {"speed": "operating.speed", "temperature": "operating.temperature"},
         )
-        return _cases(self.load_case, cols, g, LoadCase)
+        return _cases(self.load_case, cols, g, LoadCase, with_loads=True)
 
     def _bin_cases(self, bearing, sub, g: int) -> list:
         """Every bin of the duty cycle for every case, bin-major (bin b of case k at g·b + k)."""
@@ -292,12 +304,34 @@ class GenericModel:
         return out
 
 
+def _groups(cases, data: dict, keys: list):
+    """(index array, key dict) of the groups of cases sharing the values of ``keys``.
+
+    The usual chunk is one group (the study fixes every non-batched path): found without pandas.
+    """
+    same = {}
+    for k in keys:
+        col = data[k]
+        if not len(col) or not np.all(col == col[0]):  # NaN ≠ NaN: left to groupby (dropna=False)
+            break
+        same[k] = col[0]
+    else:
+        yield np.arange(len(cases)), same
+        return
+    for key, idx in cases.groupby(keys, sort=False, dropna=False).indices.items():
+        key = key if isinstance(key, tuple) else (key,)
+        yield np.asarray(idx), dict(zip(keys, key, strict=True))
+
+
 def _missing(value) -> bool:
     return value is None or (isinstance(value, float) and value != value)
 
 
-def _cases(name: str, cols: dict, g: int, make) -> list:
-    """G load cases from per-case field arrays (the loader's rule: M_y − e·F_z from an eccentricity)."""
+def _cases(name: str, cols: dict, g: int, make, with_loads: bool = False):
+    """G load cases from per-case field arrays (the loader's rule: M_y − e·F_z from an eccentricity).
+
+    ``with_loads``: also return their loads (G, 5) as one array (the pipeline then never stacks them).
+    """
     from bearingkit.analysis.solver.quasistatic import load_vector
 
     zero = {k: np.nan_to_num(cols[k], nan=0.0) for k in ("F_x", "F_y", "F_z", "M_x", "M_y")}
@@ -307,7 +341,8 @@ def _cases(name: str, cols: dict, g: int, make) -> list:
     # cost a fifth of a statics study's time once the solve itself got fast.
     speed = [None if v != v else v for v in np.asarray(cols["speed"], float).tolist()]
     temp = [None if v != v else v for v in np.asarray(cols["temperature"], float).tolist()]
-    return [make(name, load[k], speed[k], temp[k]) for k in range(g)]
+    cases = [make(name, row, v, t) for row, v, t in zip(load, speed, temp, strict=True)]
+    return (cases, load) if with_loads else cases
 
 
 def _paths(bearing) -> dict:

@@ -1,4 +1,4 @@
-"""Executors of a study's chunks: in-process (default), local process pool, Dask distributed.
+"""Executors of a study's chunks: in process (threads), local process pool, Dask distributed.
 
 SI units are irrelevant here: an executor only maps a pure function over chunks of cases. Every
 executor yields ``(position, result)`` pairs as chunks *finish* (so the store can write them at once),
@@ -6,39 +6,56 @@ keeps at most ``max_in_flight`` chunks submitted at a time, and computes each ch
 function on the same data — so a study gives bit-identical results on all three; only the order in
 which chunks finish differs, and the runner puts them back in order.
 
-- :class:`InProcessExecutor` — sequential, in this process (each chunk is one batched solve).
+- :class:`InProcessExecutor` — in this process: ``threads`` chunks at once (default: one per core),
+  each with one solver thread; a lone chunk gets every solver thread instead.
 - :class:`ProcessPoolExecutor` — ``workers`` local processes (``spawn`` start method: safe with threads).
 - :class:`DaskExecutor` — a Dask ``distributed`` cluster: ``scheduler="tcp://host:8786"`` connects to a
   running scheduler, ``client=`` reuses a :class:`distributed.Client` (tests start a ``LocalCluster``),
   and neither starts a ``LocalCluster`` of ``workers`` single-threaded processes.
 
-One solver thread per worker: the quasi-static solver splits a large batch over a thread pool of
-:func:`bearingkit.analysis.solver.quasistatic.solver_threads` threads (all cores unless
-``$BEARINGKIT_THREADS``
-says otherwise). Inside a pool of worker processes that pool would put every core under every worker,
-so two workers on two cores ran four busy threads and scaled 1.37× instead of ~2× (issue 9 note).
-The process pool and the Dask executor therefore set ``BEARINGKIT_THREADS`` (and the BLAS thread
-limits) in their workers: ``solver_threads=1`` by default, ``None`` leaves the workers untouched.
+**Threads in one process (issue 34).** The compiled solve releases the GIL, so chunks evaluated in
+threads side by side run their solves on as many cores, and the post-processing of one chunk (Hertz,
+lives, outputs: numpy) overlaps the solves of the others. Before, a chunk was solved on every core
+and then post-processed on one, and an in-process study scaled 3.2x on 16 cores while its solve
+alone scaled 9.9x. Each chunk's thread gets one solver thread
+(:func:`bearingkit.analysis.solver.threads.thread_limit`, per thread).
+
+**One solver thread per worker process.** The solver splits a large batch over
+:func:`bearingkit.analysis.solver.threads.solver_threads` threads (all cores unless
+``$BEARINGKIT_THREADS`` says otherwise). Inside a pool of worker processes that would put every core
+under every worker, so two workers on two cores ran four busy threads and scaled 1.37× instead of
+~2× (issue 9 note). The process pool and the Dask executor therefore set ``BEARINGKIT_THREADS`` (and
+the BLAS thread limits) in their workers: ``solver_threads=1`` by default, ``None`` leaves the
+workers untouched (:mod:`bearingkit.studies.run.workers`).
+
+**Workers never outlive the run.** A process pool starts its workers once and reuses them for every
+chunk and every generation of an optimisation; :meth:`ProcessPoolExecutor.close` ends them, and
+kills them at once when chunks are still pending (an error, Ctrl-C): no worker finishes abandoned
+chunks after the command has ended. A pool left open is closed when the interpreter exits, and a
+worker whose parent dies exits by itself (:func:`~bearingkit.studies.run.workers.exit_with_parent`).
 """
 
 from __future__ import annotations
 
-import os
-import threading
+import atexit
+import time
+import weakref
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
 
-import numpy as np
-
-from bearingkit.analysis.solver.quasistatic import THREADS_ENV
+from bearingkit.analysis.solver.threads import solver_threads, thread_limit
 from bearingkit.errors import InputError
-from bearingkit.studies import evaluators
-from bearingkit.studies.evaluators import is_default_index
-
-#: Environment variables of the BLAS/OpenMP libraries numpy may load; set with ``THREADS_ENV`` so a
-#: worker process started with this environment never spawns more threads than it is given.
-BLAS_ENV = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
-
+from bearingkit.studies.run.workers import (  # noqa: F401 (their home before issue 34; tests import them here)
+    BLAS_ENV,
+    _init_pool_worker,
+    evaluate_chunk,
+    evaluate_columns,
+    exit_with_parent,
+    limit_worker_threads,
+    one_blas_thread,
+    restore_worker_threads,
+    solver_threads_plugin,
+    worker_environment,
+)
 
 #: The interface a LocalCluster started by :class:`DaskExecutor` listens on.
 LOOPBACK = "127.0.0.1"
@@ -51,244 +68,72 @@ LOOPBACK = "127.0.0.1"
 DASK_MALLOC_ENV = ("MALLOC_TRIM_THRESHOLD_",)
 
 
-def worker_environment(threads: int = 1) -> dict[str, str]:
-    """Environment variables that give a worker process ``threads`` solver and BLAS threads."""
-    if int(threads) < 1:
-        raise InputError(f"solver_threads ({threads}) must be >= 1")
-    return {name: str(int(threads)) for name in (THREADS_ENV, *BLAS_ENV)}
-
-
-# Worker state changed by :func:`limit_worker_threads`: one count per process, because in-process Dask
-# workers (``LocalCluster(processes=False)``) share the process and must restore it only when the last
-# of them closes.
-_LIMIT_LOCK = threading.Lock()
-_LIMIT_STATE: dict = {"users": 0, "environ": {}, "blas": None}
-
-
-def limit_worker_threads(threads: int = 1) -> None:
-    """Give this (worker) process ``threads`` solver threads and ``threads`` BLAS threads.
-
-    Sets the variables of :func:`worker_environment` in ``os.environ`` (the solver reads
-    ``BEARINGKIT_THREADS`` at every call) and limits the BLAS libraries already loaded (their thread
-    count was fixed when numpy was imported, so the environment alone is too late). Undone by
-    :func:`restore_worker_threads` once every caller has restored.
-    """
-    from threadpoolctl import threadpool_limits
-
-    env = worker_environment(threads)
-    with _LIMIT_LOCK:
-        if _LIMIT_STATE["users"] == 0:
-            _LIMIT_STATE["environ"] = {k: os.environ.get(k) for k in env}
-            _LIMIT_STATE["blas"] = threadpool_limits(limits=int(threads), user_api="blas")
-        else:
-            threadpool_limits(limits=int(threads), user_api="blas")
-        _LIMIT_STATE["users"] += 1
-        os.environ.update(env)
-
-
-def restore_worker_threads() -> None:
-    """Undo :func:`limit_worker_threads` when its last caller in this process restores."""
-    with _LIMIT_LOCK:
-        if _LIMIT_STATE["users"] == 0:
-            return
-        _LIMIT_STATE["users"] -= 1
-        if _LIMIT_STATE["users"]:
-            return
-        for k, v in _LIMIT_STATE["environ"].items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
-        if _LIMIT_STATE["blas"] is not None:
-            _LIMIT_STATE["blas"].restore_original_limits()
-        _LIMIT_STATE.update(environ={}, blas=None)
-
-
-# One BLAS thread while a chunk is evaluated, counted per process. Measured with numpy's OpenBLAS 0.3.31:
-# - threadpoolctl's limit (``openblas_set_num_threads``) set from a thread other than the main one has
-#   no effect on that thread's products, while ``openblas_set_num_threads_local`` (OpenBLAS >= 0.3.27)
-#   does, from any thread;
-# - the value the latter returns is shared between threads: two chunks restoring their "previous"
-#   values in the wrong order left the process at one thread.
-# So every chunk sets one thread in its own thread, the first chunk in remembers the previous count and
-# the last one out restores it (the first out must not lift the limit of a chunk still running). For
-# BLAS libraries without the thread-local call, threadpoolctl's process-wide limit, counted the same way.
-_BLAS_LOCK = threading.Lock()
-_BLAS_STATE: dict = {"users": 0, "limiter": None, "previous": None}
-_LOCAL_SETTERS: list | None = None
-
-#: Names of OpenBLAS's thread-local setter in the builds numpy and scipy ship (plain and prefixed).
-_LOCAL_SETTER_NAMES = (
-    "openblas_set_num_threads_local",
-    "scipy_openblas_set_num_threads_local64_",
-    "scipy_openblas_set_num_threads_local_64_",
-    "scipy_openblas_set_num_threads_local",
-)
-
-
-def _thread_local_setters() -> list:
-    """``openblas_set_num_threads_local`` of every loaded OpenBLAS that has it (looked up once)."""
-    global _LOCAL_SETTERS
-    if _LOCAL_SETTERS is None:
-        import ctypes
-
-        from threadpoolctl import threadpool_info
-
-        setters = []
-        for lib in threadpool_info():
-            if lib.get("internal_api") != "openblas":
-                continue
-            try:
-                handle = ctypes.CDLL(lib["filepath"])
-            except OSError:  # pragma: no cover - a library threadpoolctl saw but ctypes cannot open
-                continue
-            for name in _LOCAL_SETTER_NAMES:
-                fn = getattr(handle, name, None)
-                if fn is not None:
-                    fn.restype, fn.argtypes = ctypes.c_int, [ctypes.c_int]
-                    setters.append(fn)
-                    break
-        _LOCAL_SETTERS = setters
-    return _LOCAL_SETTERS
-
-
-@contextmanager
-def one_blas_thread():
-    """Run the body with one BLAS thread (what every executor does around a chunk).
-
-    Why: OpenBLAS partitions a matrix product (the row kernels' ``(C, N) @ (N, 5)`` products) by its
-    thread count, and the edge blocks of a partition are summed in another order, so a case's last
-    bits depended on the thread count: 32 of 3,000 seed-000 sweep cases (chunks of 250) differed by up
-    to 8e-16 between the in-process run (2 BLAS threads) and the worker processes (1). The solver
-    already runs large batches with one BLAS thread per solver thread, so this costs nothing there.
-    """
-    from threadpoolctl import threadpool_limits
-
-    setters = _thread_local_setters()
-    with _BLAS_LOCK:
-        previous = [set_local(1) for set_local in setters]
-        if _BLAS_STATE["users"] == 0:
-            _BLAS_STATE["previous"] = previous
-            if not setters:
-                _BLAS_STATE["limiter"] = threadpool_limits(limits=1, user_api="blas")
-        _BLAS_STATE["users"] += 1
-    try:
-        yield
-    finally:
-        with _BLAS_LOCK:
-            _BLAS_STATE["users"] -= 1
-            if _BLAS_STATE["users"] == 0:
-                for set_local, old in zip(setters, _BLAS_STATE["previous"], strict=True):
-                    set_local(old)
-                if _BLAS_STATE["limiter"] is not None:
-                    _BLAS_STATE["limiter"].restore_original_limits()
-                _BLAS_STATE.update(limiter=None, previous=None)
-
-
-def exit_with_parent() -> None:
-    """End this worker process as soon as the process that started it ends, however it ends.
-
-    A pool worker otherwise outlives a parent killed with SIGKILL (measured: over a minute, finishing
-    the chunks it had queued). ``multiprocessing`` gives every spawned child a sentinel that becomes
-    ready when its parent is gone (the pipe's other end closes with the parent); a daemon thread waits
-    on it and exits the process at once. No polling, any platform, and it does not depend on which
-    thread of the parent started the worker (Linux's ``PR_SET_PDEATHSIG`` would).
-    """
-    import multiprocessing
-    from multiprocessing.connection import wait
-
-    parent = multiprocessing.parent_process()
-    if parent is None or getattr(parent, "sentinel", None) is None:
-        return
-
-    def watch():
-        wait([parent.sentinel])
-        os._exit(1)
-
-    threading.Thread(target=watch, name="bearingkit-exit-with-parent", daemon=True).start()
-
-
-def _init_pool_worker(threads: int | None) -> None:
-    """Initializer of a process-pool worker (top-level: picklable under ``spawn``)."""
-    exit_with_parent()
-    if threads is not None:
-        limit_worker_threads(threads)
-
-
-def _make_plugin_class():
-    from distributed.diagnostics.plugin import WorkerPlugin
-
-    class SolverThreadsPlugin(WorkerPlugin):
-        """Dask worker plugin: ``threads`` solver/BLAS threads in every worker (also later joiners)."""
-
-        name = "bearingkit-solver-threads"
-        idempotent = False
-
-        def __init__(self, threads: int = 1):
-            self.threads = int(threads)
-
-        def setup(self, worker):
-            limit_worker_threads(self.threads)
-
-        def teardown(self, worker):
-            restore_worker_threads()
-
-    SolverThreadsPlugin.__module__ = __name__
-    return SolverThreadsPlugin
-
-
-def solver_threads_plugin(threads: int = 1):
-    """A ``SolverThreadsPlugin`` giving every Dask worker ``threads`` solver and BLAS threads."""
-    return __getattr__("SolverThreadsPlugin")(threads)
-
-
-def __getattr__(name):
-    # The plugin class subclasses distributed's WorkerPlugin; it is built on first use so that this
-    # module (imported by every study run and every process-pool worker) does not import distributed.
-    # Cached as a module attribute, it pickles by reference like any top-level class.
-    if name == "SolverThreadsPlugin":
-        cls = _make_plugin_class()
-        globals()[name] = cls
-        return cls
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def evaluate_chunk(evaluator, cases, with_ids: bool = True):
-    """Evaluate one chunk (top-level, picklable: what executors send to workers).
-
-    ``evaluator`` is the :class:`Evaluator` itself (resolved once, by the process that read the study
-    file; a worker never resolves a name from data) or the name of a built-in. The chunk runs with
-    one BLAS thread in every executor (:func:`one_blas_thread`): OpenBLAS
-    splits a matrix product differently for another thread count and the last bits of a result
-    depend on it, so this is what makes the executors agree bit for bit.
-
-    Returns the cases' ``case`` ids (0… when ``cases`` has no ``case`` column) joined with the outputs;
-    ``with_ids`` False: the outputs alone, row for row (a caller that keeps the order itself).
-    """
-    ev = evaluator if isinstance(evaluator, evaluators.Evaluator) else evaluators.get(evaluator)
-    ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))
-    if len(cases.columns) and cases.columns[0] == "case":
-        cases = cases.iloc[:, 1:]  # as drop(columns=["case"]), at a quarter of its cost in pandas 3
-    elif "case" in cases.columns:
-        cases = cases.drop(columns=["case"])
-    with one_blas_thread():
-        out = ev(cases)
-    if not is_default_index(out.index, len(out)):
-        out = out.reset_index(drop=True)
-    if with_ids:
-        out.insert(0, "case", ids)
-    return out
+def _noop(x):
+    """A task that does nothing (top-level, picklable): an executor's round trip is timed with it."""
+    return x
 
 
 class InProcessExecutor:
-    """Evaluate chunks one after the other in this process."""
+    """Evaluate chunks in this process, ``threads`` at once.
+
+    Parameters
+    ----------
+    threads : int or None
+        Chunks evaluated at the same time, each in its own thread with one solver thread (the
+        compiled solve releases the GIL). None: :func:`~bearingkit.analysis.solver.threads.solver_threads`
+        (every core unless ``$BEARINGKIT_THREADS`` says otherwise). 1: one chunk after the other,
+        each solved on every solver thread (the behaviour before issue 34). Fewer chunks than
+        threads share the solver threads among them.
+    max_in_flight : int or None
+        Chunks handed to the threads at once (default 2 × threads).
+    """
 
     name = "in-process"
-    workers = 1
+
+    def __init__(self, threads: int | None = None, max_in_flight: int | None = None):
+        if threads is not None and int(threads) < 1:
+            raise InputError(f"threads ({threads}) must be >= 1")
+        self.threads = None if threads is None else int(threads)
+        self.max_in_flight = max_in_flight
+
+    @property
+    def workers(self) -> int:
+        """Chunks evaluated at once."""
+        return self.threads or solver_threads()
+
+    def task_overhead(self) -> float:
+        """The executor's own cost per chunk [s] beyond the evaluation (none in this process)."""
+        return 0.0
 
     def map_unordered(self, fn: Callable, items: Sequence) -> Iterator[tuple[int, object]]:
-        for i, item in enumerate(items):
-            yield i, fn(item)
+        n = self.workers
+        side_by_side = min(n, len(items))
+        if side_by_side <= 1:
+            for i, item in enumerate(items):
+                yield i, fn(item)
+            return
+        from concurrent.futures import FIRST_COMPLETED, wait
+        from concurrent.futures import ThreadPoolExecutor as _Threads
+
+        each = max(1, n // side_by_side)  # solver threads per chunk
+
+        def run(item):
+            with thread_limit(each):
+                return fn(item)
+
+        limit = self.max_in_flight or 2 * side_by_side
+        pool = _Threads(max_workers=side_by_side, thread_name_prefix="bearingkit-chunk")
+        pending, nxt = {}, 0
+        try:
+            while nxt < len(items) or pending:
+                while nxt < len(items) and len(pending) < limit:
+                    pending[pool.submit(run, items[nxt])] = nxt
+                    nxt += 1
+                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+                for fut in sorted(done, key=pending.get):  # a fixed order among those done together
+                    yield pending.pop(fut), fut.result()
+        finally:  # an error or an abandoned run: queued chunks are dropped, running ones finish
+            pool.shutdown(wait=True, cancel_futures=True)
 
     def close(self) -> None:
         pass
@@ -300,8 +145,22 @@ class InProcessExecutor:
         self.close()
 
 
+#: Process pools not closed yet: closed (their workers ended) when the interpreter exits.
+_OPEN_POOLS: weakref.WeakSet = weakref.WeakSet()
+
+
+@atexit.register
+def _close_open_pools() -> None:
+    for ex in list(_OPEN_POOLS):
+        ex.close()
+
+
 class ProcessPoolExecutor(InProcessExecutor):
     """Evaluate chunks on ``workers`` local processes.
+
+    The processes start once (at the first chunk, or at :meth:`start`) and serve every chunk and
+    every generation of an optimisation until :meth:`close`; a chunk still pending at ``close`` (an
+    error, Ctrl-C) is abandoned and the workers are killed at once rather than left to finish it.
 
     Parameters
     ----------
@@ -321,41 +180,70 @@ class ProcessPoolExecutor(InProcessExecutor):
             raise InputError(f"workers ({workers}) must be >= 1")
         if solver_threads is not None:
             worker_environment(solver_threads)  # validates
-        self.workers = int(workers)
-        self.max_in_flight = max_in_flight or 2 * self.workers
+        self.threads = int(workers)
+        self.max_in_flight = max_in_flight or 2 * self.threads
         self.solver_threads = solver_threads
         self._pool = None
+        self._pending: dict = {}
 
-    def _ensure(self):
+    def start(self):
+        """Start the worker processes now (they load bearingkit while the caller does other work)."""
         if self._pool is None:
             import multiprocessing as mp
             from concurrent.futures import ProcessPoolExecutor as _Pool
 
             self._pool = _Pool(
-                max_workers=self.workers,
+                max_workers=self.threads,
                 mp_context=mp.get_context("spawn"),
                 initializer=_init_pool_worker,
                 initargs=(self.solver_threads,),
             )
+            _OPEN_POOLS.add(self)
+            for _ in range(self.threads):  # concurrent.futures spawns its processes on demand
+                self._pool.submit(_noop, None)
         return self._pool
+
+    _ensure = start
+
+    def task_overhead(self) -> float:
+        """A no-op task's round trip [s] (pickling, the pipe, the worker's loop), workers started."""
+        pool = self.start()
+        pool.submit(_noop, None).result()
+        t0 = time.perf_counter()
+        pool.submit(_noop, None).result()
+        return time.perf_counter() - t0
+
+    def worker_pids(self) -> list[int]:
+        """Process ids of the pool's workers (empty before :meth:`start`)."""
+        procs = getattr(self._pool, "_processes", None) or {}
+        return sorted(int(pid) for pid in procs)
 
     def map_unordered(self, fn, items):
         from concurrent.futures import FIRST_COMPLETED, wait
 
-        pool = self._ensure()
-        pending, nxt = {}, 0
+        pool = self.start()
+        pending, nxt = self._pending, 0
+        pending.clear()
         while nxt < len(items) or pending:
             while nxt < len(items) and len(pending) < self.max_in_flight:
                 pending[pool.submit(fn, items[nxt])] = nxt
                 nxt += 1
             done, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for fut in done:
+            for fut in sorted(done, key=pending.get):
                 yield pending.pop(fut), fut.result()
 
     def close(self):
-        if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
-            self._pool = None
+        """End the workers: after their chunks when none is pending, else at once (killed)."""
+        pool, self._pool = self._pool, None
+        _OPEN_POOLS.discard(self)
+        if pool is None:
+            return
+        abandoned = any(not f.done() for f in self._pending)
+        self._pending.clear()
+        if abandoned:  # an error or an interrupt: the chunks still running are not wanted
+            for proc in list((getattr(pool, "_processes", None) or {}).values()):
+                proc.kill()
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 class DaskExecutor(InProcessExecutor):
@@ -451,8 +339,15 @@ class DaskExecutor(InProcessExecutor):
             client.register_plugin(solver_threads_plugin(solver_threads))
         info = client.scheduler_info()
         threads = sum(w.get("nthreads", 1) for w in info.get("workers", {}).values()) or 1
-        self.workers = threads
+        self.threads = threads
         self.max_in_flight = max_in_flight or 4 * threads
+
+    def task_overhead(self) -> float:
+        """A no-op task's round trip [s] through the scheduler to a worker and back."""
+        self.client.submit(_noop, 0, pure=False).result()
+        t0 = time.perf_counter()
+        self.client.submit(_noop, 1, pure=False).result()
+        return time.perf_counter() - t0
 
     def map_unordered(self, fn, items):
         from distributed import as_completed

@@ -27,7 +27,7 @@ import numpy as np
 
 from bearingkit import references
 from bearingkit.errors import InputError
-from bearingkit.studies.run import executors
+from bearingkit.studies.run import workers
 from bearingkit.studies.run.cases import StudyResult, plan_study
 from bearingkit.studies.run.store import advance, progress_bar
 
@@ -186,7 +186,6 @@ def _population_cases(X, names, integer, fixed):
 
 def run_optimization(d, executor, store, resume: bool, progress, plan=None):
     """Run an ``optimize`` study (called by :func:`bearingkit.studies.run.runner.run_study`)."""
-    import pandas as pd
     from pymoo.optimize import minimize
 
     t0 = time.perf_counter()
@@ -196,7 +195,7 @@ def run_optimization(d, executor, store, resume: bool, progress, plan=None):
     o = d.optimizer
     done = store.open(plan.fingerprint, o.generations, d.chunk_size, resume, study=d.name)
     counts = {"computed": 0, "reused": 0, "generation": 0}
-    fn = functools.partial(executors.evaluate_chunk, ev, with_ids=False)  # chunks come back in order
+    fn = functools.partial(workers.evaluate_columns, ev)  # numpy columns: no DataFrame per chunk
     prog, task = progress_bar(o.pop_size * o.generations, d.name, progress)
 
     integer = [v.integer for v in d.variables]
@@ -216,16 +215,17 @@ def run_optimization(d, executor, store, resume: bool, progress, plan=None):
                 return old
             raise InputError(f"resume: generation {gen} in the store does not match the replayed population")
         cases = _population_cases(X, names, integer, fixed)
-        step = d.chunk_size
+        # "auto": one chunk per worker (a generation is small; one chunk on one worker leaves the
+        # others idle, more chunks than workers only add their fixed cost)
+        step = d.chunk_size if d.chunk_size != "auto" else -(-len(X) // max(1, executor.workers))
         chunks = [cases] if len(X) <= step else [cases.iloc[i : i + step] for i in range(0, len(X), step)]
         parts = dict(executor.map_unordered(fn, chunks))
-        out = parts[0] if len(parts) == 1 else pd.concat([parts[i] for i in sorted(parts)], ignore_index=True)
+        parts = [parts[i] for i in sorted(parts)]
         columns = {"generation": np.full(len(X), gen), **{n: X[:, j] for j, n in enumerate(names)}}
-        for c in d.outputs or out.columns:  # in the study's output order, as the store always had
+        for c in d.outputs or [k for k in parts[0] if k != "case"]:  # the study's output order
             if c not in names:
-                col = out[c]
-                columns[c] = col.to_numpy() if isinstance(col.dtype, np.dtype) else col.array
-        store.write(gen, pd.DataFrame(columns))
+                columns[c] = parts[0][c] if len(parts) == 1 else np.concatenate([p[c] for p in parts])
+        store.write(gen, columns)
         counts["computed"] += 1
         advance(prog, task, len(X))
         return columns  # pymoo's F and G come from the arrays, not from the frame

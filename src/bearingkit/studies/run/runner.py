@@ -24,7 +24,7 @@ import numpy as np
 from bearingkit.errors import InputError
 from bearingkit.studies.definition.load import StudyDefinition, load_study
 from bearingkit.studies.results import analysis
-from bearingkit.studies.run import executors
+from bearingkit.studies.run import chunking, workers
 from bearingkit.studies.run.cases import (
     INDEX_COLUMNS,
     StudyPlan,
@@ -118,20 +118,24 @@ def _run_cases(plan: StudyPlan, executor, store, resume: bool, progress) -> Stud
     t0 = time.perf_counter()
     inputs = cases[["case", *[c for c in cases.columns if c in ev.factors]]]
     index = [c for c in INDEX_COLUMNS if c in cases.columns]
-    bounds = list(range(0, len(cases), d.chunk_size))
-    done = store.open(plan.fingerprint, len(bounds), d.chunk_size, resume, study=d.name)
+    size, cost = chunk_size(plan, executor, store, resume, inputs)
+    bounds = list(range(0, len(cases), size))
+    done = store.open(plan.fingerprint, len(bounds), size, resume, study=d.name)
     todo = [i for i in range(len(bounds)) if i not in done]
-    chunks = [inputs.iloc[bounds[i] : bounds[i] + d.chunk_size].reset_index(drop=True) for i in todo]
-    fn = functools.partial(executors.evaluate_chunk, ev)
+    chunks = [inputs.iloc[bounds[i] : bounds[i] + size].reset_index(drop=True) for i in todo]
+    # The workers send back numpy columns (the outputs the study keeps, selected there); the index
+    # columns are added here by position, and the store writes the columns as they are.
+    fn = functools.partial(workers.evaluate_columns, ev, outputs=d.outputs)
+    index_values = {col: cases[col].to_numpy() for col in index}
     prog, task = progress_bar(len(cases), d.name, progress)
     with prog:
-        advance(prog, task, sum(min(d.chunk_size, len(cases) - bounds[i]) for i in done))
+        advance(prog, task, sum(min(size, len(cases) - bounds[i]) for i in done))
         for pos, out in executor.map_unordered(fn, chunks):
-            out = _select(out, d.outputs)
-            for k, col in enumerate(index):  # the chunk files say which point and draw they hold
-                out.insert(1 + k, col, cases[col].to_numpy()[out["case"].to_numpy()])
+            if index:  # the chunk files say which point and draw they hold
+                ids = out["case"]
+                out = {"case": ids, **{c: v[ids] for c, v in index_values.items()}, **out}
             store.write(todo[pos], out)
-            advance(prog, task, len(out))
+            advance(prog, task, len(out["case"]))
     outputs = store.read()
     got = np.sort(outputs["case"].to_numpy()) if len(outputs) else np.array([], int)
     if not np.array_equal(got, cases["case"].to_numpy()):
@@ -142,11 +146,18 @@ def _run_cases(plan: StudyPlan, executor, store, resume: bool, progress) -> Stud
     results = cases.merge(outputs, on=["case", *index], how="left", validate="one_to_one")
     stats = {
         "chunks": len(bounds),
+        "chunk_size": size,
         "computed": len(todo),
         "reused": len(done),
         "seconds": time.perf_counter() - t0,
         "executor": getattr(executor, "name", type(executor).__name__),
     }
+    if cost is not None:
+        stats["chunk_cost"] = {
+            "per_case_s": cost.per_case_s,
+            "per_chunk_s": cost.per_chunk_s,
+            "overhead_share": cost.overhead(size),
+        }
     if getattr(store, "discarded", 0):
         stats["discarded"] = store.discarded
     result = StudyResult(d, cases, results, stats=stats)
@@ -197,13 +208,32 @@ def _levels_by_samples_analysis(result: StudyResult, outputs) -> None:
             result.analysis["range_std"] = analysis.range_analysis(table, names, std, labels)
 
 
-def _select(frame, outputs):
-    if not outputs:
-        return frame
-    missing = [o for o in outputs if o not in frame.columns]
-    if missing:
-        raise InputError(
-            f"study.outputs {missing} are not outputs of the evaluator; it gives {list(frame.columns)}"
-        )
-    keep = ["error"] if "error" in frame.columns and "error" not in outputs else []  # why a group failed
-    return frame[["case", *outputs, *keep]]
+def chunk_size(plan: StudyPlan, executor, store, resume: bool, inputs) -> tuple[int, object]:
+    """Cases per chunk and the measured :class:`~bearingkit.studies.run.chunking.ChunkCost` (or None).
+
+    The study's number when it gives one; ``"auto"``: the size a resumed store recorded, else one
+    chosen from the study's own measured costs (:mod:`bearingkit.studies.run.chunking`).
+    """
+    from bearingkit.studies.definition.schema import MAX_CHUNK_SIZE
+
+    d = plan.definition
+    if d.chunk_size != "auto":
+        return int(d.chunk_size), None
+    if resume:
+        recorded = store.recorded_chunk_size(plan.fingerprint)
+        if recorded is not None:
+            return recorded, None
+    n, slots = len(inputs), max(1, int(getattr(executor, "workers", 1) or 1))
+    cost = None
+    if n >= chunking.MEASURE_FROM_CASES:
+        from bearingkit.analysis.solver.threads import thread_limit
+
+        if hasattr(executor, "start"):  # a pool's workers load while this process measures
+            executor.start()
+        evaluate = functools.partial(workers.evaluate_columns, plan.evaluator, outputs=d.outputs)
+        with thread_limit(1):  # as every chunk runs when there are several (one solver thread each)
+            cost = chunking.measure(evaluate, inputs)
+        overhead = getattr(executor, "task_overhead", None)
+        if overhead is not None:
+            cost = chunking.ChunkCost(cost.per_case_s, cost.per_chunk_s + overhead())
+    return chunking.choose(n, slots, cost, MAX_CHUNK_SIZE), cost

@@ -242,9 +242,19 @@ class ParquetStore:
     def _path(self, chunk: int) -> Path:
         return self.chunk_dir / f"chunk-{int(chunk):06d}.parquet"
 
+    def recorded_chunk_size(self, fingerprint: str) -> int | None:
+        """The chunk size the manifest records for this study (a resumed run keeps it), else None."""
+        old = _read_manifest(self.directory / MANIFEST)
+        size = old.get("chunk_size") if old.get("fingerprint") == fingerprint else None
+        return int(size) if isinstance(size, int) and size >= 1 else None
+
     # -- data ----------------------------------------------------------------------------------
     def write(self, chunk: int, frame) -> None:
-        """Store the results of one finished chunk (atomic), stamped with the study's fingerprint."""
+        """Store the results of one finished chunk (atomic), stamped with the study's fingerprint.
+
+        ``frame``: a DataFrame or columns (a dict of equally long arrays, as the executors return
+        them: written without a pandas round trip).
+        """
         import io
 
         import pyarrow as pa
@@ -252,8 +262,13 @@ class ParquetStore:
 
         if not self.locked or self._fingerprint is None:
             raise RuntimeError("ParquetStore.write before open(): the store is not locked")
-        table = pa.Table.from_pandas(frame, preserve_index=False)
-        stamp = json.dumps({"fingerprint": self._fingerprint, "chunk": int(chunk), "rows": len(frame)})
+        if isinstance(frame, dict):
+            table = pa.table({k: _arrow(v) for k, v in frame.items()})
+            rows = table.num_rows
+        else:
+            table = pa.Table.from_pandas(frame, preserve_index=False)
+            rows = len(frame)
+        stamp = json.dumps({"fingerprint": self._fingerprint, "chunk": int(chunk), "rows": rows})
         table = table.replace_schema_metadata({**(table.schema.metadata or {}), STAMP_KEY: stamp.encode()})
         buf = io.BytesIO()
         pq.write_table(table, buf)
@@ -279,8 +294,35 @@ class ParquetStore:
         return pd.concat([self.read_chunk(i) for i in ids], ignore_index=True)
 
 
+def _arrow(values):
+    """A column for pyarrow: numpy arrays as they are; object arrays (text) with None/NaN as nulls,
+    as ``pa.Table.from_pandas`` reads a DataFrame's text column."""
+    import numpy as np
+    import pyarrow as pa
+
+    values = np.asarray(values)
+    if values.dtype == object:
+        return pa.array(values, from_pandas=True)
+    return values
+
+
+def frame_of(chunks: list):
+    """One DataFrame of chunk results in the given order (DataFrames or columns, not mixed)."""
+    import numpy as np
+    import pandas as pd
+
+    if not chunks:
+        return pd.DataFrame()
+    if all(isinstance(c, dict) for c in chunks):  # columns: one concatenation per column
+        return pd.DataFrame({k: np.concatenate([np.asarray(c[k]) for c in chunks]) for k in chunks[0]})
+    return pd.concat([c if not isinstance(c, dict) else pd.DataFrame(c) for c in chunks], ignore_index=True)
+
+
 class MemoryStore:
-    """The in-memory stand-in for :class:`ParquetStore` (no persistence, no resume)."""
+    """The in-memory stand-in for :class:`ParquetStore` (no persistence, no resume).
+
+    Chunks are kept as they come (columns or DataFrames) and joined once, by :meth:`read`.
+    """
 
     def __init__(self):
         self._chunks: dict[int, object] = {}
@@ -297,18 +339,17 @@ class MemoryStore:
     def finished(self) -> set[int]:
         return set(self._chunks)
 
+    def recorded_chunk_size(self, fingerprint: str) -> int | None:
+        return None
+
     def write(self, chunk: int, frame) -> None:
         self._chunks[int(chunk)] = frame
 
     def read_chunk(self, chunk: int):
-        return self._chunks[int(chunk)]
+        return frame_of([self._chunks[int(chunk)]])
 
     def read(self):
-        import pandas as pd
-
-        if not self._chunks:
-            return pd.DataFrame()
-        return pd.concat([self._chunks[i] for i in sorted(self._chunks)], ignore_index=True)
+        return frame_of([self._chunks[i] for i in sorted(self._chunks)])
 
 
 def progress_bar(total: int, description: str, enabled: bool | None = None):
