@@ -250,8 +250,10 @@ def screen(row: Row, load_radial: float, load_axial: float) -> Screen:
     p_law, p0_law, n_rows = SCREEN_LAWS[e.family]
     alpha = 0.5 * math.pi if e.family.startswith("thrust") else row.estimate.contact_angle
     f0 = None
-    if p_law == "deep_groove_ball":
-        f0 = float(iso76.f0_radial_ball(row.estimate.element_diameter / row.estimate.pitch_diameter))
+    if p_law in ("deep_groove_ball", "angular_contact_ball"):
+        # ISO 281 Table 3 reads e, X, Y at i f0 F_a/C0r for deep groove and angular contact below 20°
+        gamma = row.estimate.element_diameter * math.cos(alpha) / row.estimate.pitch_diameter
+        f0 = float(iso76.f0_radial_ball(gamma))
     try:
         p = float(
             iso281_load.equivalent_dynamic_load(load_radial, load_axial, p_law, alpha, n_rows, row.C0, f0)

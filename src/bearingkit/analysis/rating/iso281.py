@@ -31,6 +31,8 @@ from bearingkit.physics.life import kinds as life_kinds
 _SAME = 1e-9
 #: F_r or F_a below this fraction of the larger one is round-off of a fixed DOF's reaction (taken as 0).
 _ROUND_OFF = 1e-9
+#: Contact angle [rad] from which ISO 281 Table 3's angular contact X, Y no longer depend on i f0 F_a/C0r.
+_XY_CONSTANT_FROM = np.radians(iso281_load.ANGULAR_CONSTANT_FROM_DEG)
 #: ``model.metadata`` key of slewing rings (:data:`bearingkit.bearings.slewing.SLEWING_KEY`; the
 #: bearings layer sits above this one).
 _SLEWING_KEY = "slewing_ring"
@@ -185,7 +187,7 @@ def _equivalent_load(fr, fa, p_law, alpha, n_rows, c0, f0, notes):
     # took 0.9 s per 10^4 cases one by one), then each refused case alone, so that its note carries the
     # law's own message. A refusal the screen does not know sends every case through one by one.
     p, failed = np.zeros(fr.shape), np.zeros(fr.shape, bool)
-    refused = iso281_load.refused_cases(fr, fa, p_law, alpha, static_rating=c0, f0=f0)
+    refused = iso281_load.refused_cases(fr, fa, p_law, alpha, static_rating=c0, f0=f0, n_rows=n_rows)
     ask = np.flatnonzero(refused)
     if ask.size < fr.shape[0]:
         try:
@@ -258,8 +260,9 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
         cases = ", ".join(str(c) for c in np.flatnonzero(moment))
         notes.append(f"ISO 281 P takes F_r and F_a only: the tilting moment of case(s) {cases} is not in P")
     f0 = None
-    if p_law == "deep_groove_ball":
-        gamma = float(np.max(row.element_diameter)) / float(np.max(row.pitch_diameter))
+    if p_law == "deep_groove_ball" or (p_law == "angular_contact_ball" and alpha < _XY_CONSTANT_FROM):
+        # ISO 281 Table 3 reads e, X, Y at i f0 F_a/C0r here; f0 of ISO 76 at γ = D_w cos α / d_m
+        gamma = float(np.max(row.element_diameter)) * np.cos(alpha) / float(np.max(row.pitch_diameter))
         f0 = iso76.f0_radial_ball(gamma)
     p, failed = _equivalent_load(fr, fa, p_law, alpha, xy_rows, c0, f0, notes)
     if failed.all():
