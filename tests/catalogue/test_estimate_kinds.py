@@ -89,7 +89,11 @@ def test_self_aligning_angle_from_published_e_and_balls_within_the_rings():
     centre plane (the engine refuses crossing rows)."""
     for e in entries("self_aligning_ball").values():
         est = estimate(e)
-        assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        if e.extra["e"]:
+            assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        else:  # series 13, 23: no printed e; the rows fill the width, B = 0.25 (D - d) + d_m tan α
+            ball = internal.SELF_ALIGNING_E_BALL_SHARE * (e.outer_diameter - e.bore)
+            assert est.pitch_diameter * math.tan(est.contact_angle) == pytest.approx(e.width - ball)
         z_c = 0.5 * est.pitch_diameter * math.tan(est.contact_angle)
         assert z_c + 0.5 * est.element_diameter <= 0.5 * e.width + 1e-12, e.designation
         assert z_c > 0.5 * est.element_diameter, e.designation
@@ -102,7 +106,7 @@ def test_self_aligning_derived_factors_against_nsk():
     angular contact value; ball size set by the ring width) C and C0 follow NSK E1102 B74-B79 over all 42
     sizes with median errors within ±3 % and at least 3 sizes in 4 within 10 % — the comparison that
     supports the derived columns (no constant was chosen to match C0)."""
-    ec, e0 = errors(list(entries("self_aligning_ball").values()))
+    ec, e0 = errors([e for e in entries("self_aligning_ball").values() if e.C is not None])
     assert len(ec) == 42
     assert abs(np.median(ec)) < 0.03 and abs(np.median(e0)) < 0.03
     assert np.mean(np.abs(ec) < 0.10) >= 0.75 and np.mean(np.abs(e0) < 0.10) >= 0.75
@@ -112,8 +116,18 @@ def test_self_aligning_derived_factors_against_nsk():
 def test_spherical_rows_fit_radially_and_axially():
     for e in entries("spherical_roller").values():
         est = estimate(e)
-        assert est.rows == 2 and math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
-        assert internal.axial_margin(est) > 0, e.designation
+        assert est.rows == 2
+        if e.extra["e"]:
+            assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+            assert internal.axial_margin(est) > 0, e.designation
+        else:  # no printed e: the rows reach the faces less the chamfer (the angle is the geometry's)
+            assert e.chamfer - 1e-9 <= internal.axial_margin(est) < e.chamfer + 1e-3 * e.width, e.designation
+            # and the rollers (their full diameter) stay on their side of the centre plane
+            a = est.contact_angle
+            inner = est.extra["row_offset"] - 0.5 * (
+                est.effective_length * math.cos(a) + est.element_diameter * math.sin(a)
+            )
+            assert inner > 0, e.designation
 
 
 def test_spherical_small_sizes_are_nsk_older_c_design():

@@ -12,7 +12,7 @@ tapered, thrust roller; four-point, self-aligning, spherical, needle through
 rated as ISO 281's paired unit (:func:`bearingkit.physics.life.iso281.paired_unit_ratings`): C = 2^0.7
 C_row (ball) or 2^(7/9) C_row (roller), C0 = 2 C0_row, with the double-row X, Y for rows of opposite
 contact angle (DB, DF; or 0°) and the single-row X, Y for a tandem set (DT). Anything else (composites
-of unequal rows, two cylindrical rows, crossed roller and slewing rings, threaded rows) gets a note
+of unequal rows, two thrust cylindrical rows, crossed roller and slewing rings, threaded rows) gets a note
 instead of an invented X/Y.
 """
 
@@ -145,7 +145,10 @@ def _law(model, ratings) -> tuple[str, int, float, int] | str:
             _equal(getattr(a, k), getattr(b, k)) for k in ("element_diameter", "pitch_diameter", "n_elements")
         )
         signs = _direction(a) * _direction(b)
-        if not same or not _equal(_alpha(a), _alpha(b)) or kind == "cylindrical":
+        # two equal radial cylindrical rows are a double-row bearing (NN): ISO 281 7.1 with i = 2, P = F_r;
+        # other cylindrical pairs (thrust rows of two directions) have no ISO 281 X, Y
+        radial_pair = kind == "cylindrical" and alpha == 0.0
+        if not same or not _equal(_alpha(a), _alpha(b)) or (kind == "cylindrical" and not radial_pair):
             return (
                 "ISO 281 gives no X, Y for this two-row composite (unequal rows, or rows ISO 281 does not "
                 "rate as one bearing): no ISO 281 basic rating life (see L10r)"
