@@ -79,6 +79,14 @@ CENTRE_PLANE_MARGIN = 1e-3
 #: it gives within ±15 % (mean |error| 6 %, tests/catalogue/test_series_new.py); used only for rows the
 #: source prints no e for (13, 23).
 SELF_ALIGNING_E_BALL_SHARE = 0.25
+#: Cage pitch ratio s = π d_m / (Z D_w) of angular contact and four-point rows with MACHINED cages (brass,
+#: phenolic): thicker cage bars than a pressed steel cage's (RULES). The median of the geometry NSK's C and
+#: C0 imply over the 72xxC sizes (machined brass by NSK E1102 B48 Table 1), the calibration set; 73, QJ
+#: and the pressed steel pitch's other series are predictions (docs/catalogue.md).
+MACHINED_CAGE_PITCH = 1.227
+#: Largest bore codes with a pressed steel cage per angular contact series (NSK E1102 B48 Table 1: 70A
+#: 7000–7018, 72A/B 7200–7222, 73A/B 7300–7320; 70C, 72C, 79A5/C machined brass throughout).
+PRESSED_STEEL_CAGE_UP_TO = {"70": 18, "72": 22, "73": 20}
 #: Spherical rollers no thicker than this times their length (D_we ≤ L_we): narrow sections (213) take
 #: slimmer rollers rather than rollers that cross into the other row.
 SPHERICAL_ROLLER_ASPECT = 1.0
@@ -111,17 +119,20 @@ class Rule:
     length: float = 0.0
     rows: int = 1
     k_b: float = 0.65
+    wall: float = 0.0
 
 
 #: The one place where the rule constants live (module docstring: where they come from).
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
-    "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    # D_w and the pitch of a pressed steel cage: the medians of the geometry NSK's C and C0 imply over the
+    # 72 series (calibration set, docs/catalogue.md); machined cages: MACHINED_CAGE_PITCH (cage_type)
+    "angular_contact_ball": Rule(k_w=0.317, pitch=1.145, k_b=0.80),
     # no filling slots: each row Conrad-assembled like a deep groove row, the deep groove ball rule with
     # the angular contact width cap per row (docs/catalogue.md: NSK's C and C0 together imply it)
     "double_row_angular_contact_ball": Rule(k_w=0.31, rows=2, k_b=0.80),
-    # QJ: the angular contact rule unchanged (nothing chosen for four-point bearings)
-    "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    # QJ: the angular contact rule unchanged, machined brass cages (nothing chosen for four-point bearings)
+    "four_point_contact_ball": Rule(k_w=0.317, pitch=1.145, k_b=0.80),
     # ball size mostly set by the width and centre-plane limits (estimate()); pitch = angular contact's
     # pitch CALIBRATED on the 1205 (docs/catalogue.md): at the angular contact 1.20 its count sits on the
     # boundary (π d_m/(s D_w) = 14.03 balls per row); 1.205 gives the 13 its published C0 implies
@@ -290,8 +301,8 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             cap_text = "min(B - d_m tan(alpha), d_m tan(alpha))"
         else:
             cap, cap_text = rule.k_b * width / rule.rows, f"{rule.k_b} B/{rule.rows}"
-        d_w = min(rule.k_w * (big_d - d), cap)
-        if rule.k_w * (big_d - d) > d_w:
+        d_w = min(rule.k_w * (big_d - d) - rule.wall, cap)
+        if rule.k_w * (big_d - d) - rule.wall > d_w:
             notes.append(f"D_w capped at {cap_text} by the width")
         if rule.pitch == 0.0:
             # Conrad-assembled rows (deep groove; double row 32/33 without filling slots, one row at a time)
@@ -314,10 +325,15 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
                 extra["row_spacing"] = width / rule.rows
             elif fam == "tapered_roller":
                 length = rule.length * width - ROLLER_END_ALLOWANCE
-            z = _pitch_count(d_m, d_w, rule.pitch)
+            pitch, cage = rule.pitch, ""
+            if fam in ("angular_contact_ball", "four_point_contact_ball"):
+                cage = cage_type(entry)
+                pitch = rule.pitch if cage == "pressed steel" else MACHINED_CAGE_PITCH
+                cage = f" ({cage} cage)"
+            z = _pitch_count(d_m, d_w, pitch)
             alpha = _nominal_angle(entry, contact_angle)
             what = "D_we" if length is not None else "D_w"
-            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {rule.pitch} {what}"]
+            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {pitch} {what}{cage}"]
             if "F_w" not in notes[-1]:
                 parts.append("d_m = (d + D)/2")
             if length:
@@ -378,6 +394,23 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         extra=extra,
         notes=tuple(n for n in notes if n),
     )
+
+
+def cage_type(entry: Entry) -> str:
+    """``"pressed steel"`` or ``"machined"`` cage of an angular contact or four-point catalogue row.
+
+    NSK E1102 B48 Table 1: 70A up to 7018, 72A/B up to 7222, 73A/B up to 7320 have pressed steel cages, the
+    larger sizes and every 15° (C) and 79 row machined brass ones. The spindle series (C, AC; 718, 719)
+    and four-point bearings (SKF QJ … MA, NSK QJ) take machined cages.
+    """
+    if entry.family == "four_point_contact_ball":
+        return "machined"
+    code = entry.designation[len(entry.series) : len(entry.series) + 2]
+    angle = entry.designation[len(entry.series) + 2 :]
+    limit = PRESSED_STEEL_CAGE_UP_TO.get(entry.series)
+    if angle in ("A", "B") and limit is not None and code.isdigit() and int(code) <= limit:
+        return "pressed steel"
+    return "machined"
 
 
 def _nominal_angle(entry: Entry, override: float | None) -> float:
