@@ -22,6 +22,7 @@ NAMES = {
     "four_point_contact_ball": "four-point contact ball (axial)",
     "self_aligning_ball": "self-aligning ball",
     "cylindrical_roller": "cylindrical roller",
+    "double_row_cylindrical_roller": "double-row cylindrical roller",
     "tapered_roller": "tapered roller",
     "thrust_ball": "thrust ball",
     "thrust_cylindrical_roller": "thrust cylindrical roller",

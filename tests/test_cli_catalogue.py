@@ -85,3 +85,10 @@ def test_analyze_four_point_designation_axial_load():
     assert data["bearing_type"] == "four_point_contact_ball"
     row = data["cases"][0]["rows"][0]
     assert abs(row["axial_load_N"] - 5000.0) < 1e-6 * 5000
+
+
+def test_catalogue_table_shows_the_from_memory_tag():
+    """A row's source "[from memory; …]" is text: the table prints it (rich would take it for a style)."""
+    result = runner.invoke(app, ["catalogue", "NN3020"], env={"COLUMNS": "400"})
+    assert result.exit_code == 0, result.output
+    assert "[from memory" in result.output

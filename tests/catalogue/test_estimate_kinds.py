@@ -62,24 +62,28 @@ def test_qj_nsk_axial_and_skf_radial_ratings_are_one_bearing_on_two_bases():
 
 
 def test_qj_radial_ratings_against_skf():
-    """The radial C_r, C_0r (i = 2, α = 35°) of the estimate against SKF 6000 pp. 456-458 within 10 % for
-    the listed sizes; over all 30 sizes the median error is -2 % (C) and -7 % (C0: SKF Explorer)."""
+    """The radial C_r, C_0r (i = 2, α = 35°) of the estimate against SKF 6000 pp. 456-458. The estimate
+    follows NSK's (axial) ratings (median −1 % C, −3 % C0, docs/catalogue.md); SKF rates the same sizes
+    6–8 % above NSK (test above: NSK · Y / SKF median 0.94 and 0.92; SKF Explorer is above ISO's b_m). So
+    against SKF the estimate's median is that offset: −6 % (C), −10 % (C0), every size within −21…+1 %."""
     skf = reference_ratings("four_point_radial_skf")
     rows = entries("four_point_contact_ball")
-    for name in ["QJ206", "QJ208", "QJ210", "QJ212", "QJ214", "QJ306", "QJ308", "QJ318"]:
-        c_r, c0_r = four_point_radial(estimate(rows[name]))
-        assert c_r == pytest.approx(skf[name][0], rel=0.10), name
-        assert c0_r == pytest.approx(skf[name][1], rel=0.10), name
-    ec = [four_point_radial(estimate(e))[0] / skf[e.designation][0] - 1 for e in rows.values()]
-    assert abs(np.median(ec)) < 0.05
+    err = np.array([np.array(four_point_radial(estimate(e))) / skf[e.designation][:2] for e in rows.values()])
+    err -= 1.0
+    assert err.shape == (30, 2)
+    assert -0.09 < np.median(err[:, 0]) < -0.03 and -0.13 < np.median(err[:, 1]) < -0.07
+    assert err.min() > -0.22 and err.max() < 0.02
 
 
 def test_qj_rule_is_the_angular_contact_rule_unchanged():
-    """No constant was chosen for QJ bearings: they use the single-row angular contact rule (k_w, cage pitch,
-    width cap), and the axial equivalents then follow NSK within 10 % for most sizes."""
+    """No constant was chosen for QJ bearings: they use the single-row angular contact rule (k_w, width cap,
+    the machined cage pitch of their brass cages: SKF QJ … MA), and the axial equivalents then follow NSK
+    within 10 % for every size."""
     assert internal.RULES["four_point_contact_ball"] == internal.RULES["angular_contact_ball"]
     ec, e0 = errors(list(entries("four_point_contact_ball").values()))
-    assert np.mean(np.abs(ec) < 0.10) >= 0.8 and abs(np.median(ec)) < 0.05 and abs(np.median(e0)) < 0.05
+    assert np.mean(np.abs(ec) < 0.10) == 1.0 and np.mean(np.abs(e0) < 0.10) == 1.0
+    assert abs(np.median(ec)) < 0.05 and abs(np.median(e0)) < 0.05
+    assert all(internal.cage_type(e) == "machined" for e in entries("four_point_contact_ball").values())
 
 
 # --- self-aligning ball ----------------------------------------------------------------------------------
@@ -89,7 +93,11 @@ def test_self_aligning_angle_from_published_e_and_balls_within_the_rings():
     centre plane (the engine refuses crossing rows)."""
     for e in entries("self_aligning_ball").values():
         est = estimate(e)
-        assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        if e.extra["e"]:
+            assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+        else:  # series 13, 23: no printed e; the rows fill the width, B = 0.25 (D - d) + d_m tan α
+            ball = internal.SELF_ALIGNING_E_BALL_SHARE * (e.outer_diameter - e.bore)
+            assert est.pitch_diameter * math.tan(est.contact_angle) == pytest.approx(e.width - ball)
         z_c = 0.5 * est.pitch_diameter * math.tan(est.contact_angle)
         assert z_c + 0.5 * est.element_diameter <= 0.5 * e.width + 1e-12, e.designation
         assert z_c > 0.5 * est.element_diameter, e.designation
@@ -102,7 +110,7 @@ def test_self_aligning_derived_factors_against_nsk():
     angular contact value; ball size set by the ring width) C and C0 follow NSK E1102 B74-B79 over all 42
     sizes with median errors within ±3 % and at least 3 sizes in 4 within 10 % — the comparison that
     supports the derived columns (no constant was chosen to match C0)."""
-    ec, e0 = errors(list(entries("self_aligning_ball").values()))
+    ec, e0 = errors([e for e in entries("self_aligning_ball").values() if e.C is not None])
     assert len(ec) == 42
     assert abs(np.median(ec)) < 0.03 and abs(np.median(e0)) < 0.03
     assert np.mean(np.abs(ec) < 0.10) >= 0.75 and np.mean(np.abs(e0) < 0.10) >= 0.75
@@ -112,8 +120,18 @@ def test_self_aligning_derived_factors_against_nsk():
 def test_spherical_rows_fit_radially_and_axially():
     for e in entries("spherical_roller").values():
         est = estimate(e)
-        assert est.rows == 2 and math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
-        assert internal.axial_margin(est) > 0, e.designation
+        assert est.rows == 2
+        if e.extra["e"]:
+            assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
+            assert internal.axial_margin(est) > 0, e.designation
+        else:  # no printed e: the rows reach the faces less the chamfer (the angle is the geometry's)
+            assert e.chamfer - 1e-9 <= internal.axial_margin(est) < e.chamfer + 1e-3 * e.width, e.designation
+            # and the rollers (their full diameter) stay on their side of the centre plane
+            a = est.contact_angle
+            inner = est.extra["row_offset"] - 0.5 * (
+                est.effective_length * math.cos(a) + est.element_diameter * math.sin(a)
+            )
+            assert inner > 0, e.designation
 
 
 def test_spherical_small_sizes_are_nsk_older_c_design():

@@ -110,6 +110,6 @@ def test_text_output_states_each_note_once_and_keeps_the_case_line_whole():
     res = runner.invoke(app, ["friction", SRB, "--model", "skf"])
     assert res.exit_code == 0, res.stderr
     assert (
-        res.stdout.count("SKF constants of series 222E (catalogue row 22220") == 1
+        res.stdout.count("SKF constants of series 222E ([bearing] series)") == 1
     )  # run notes, not per case
     assert "case 'radial_60kN' (skf model): M = " in res.stdout  # not wrapped to the table's width

@@ -12,6 +12,7 @@ import numpy as np
 from bearingkit import checks
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.bearings.common import e_reduced_of
+from bearingkit.errors import InputError
 from bearingkit.rows.ball.row import BallRow
 from bearingkit.rows.cylindrical.row import CylindricalRow
 
@@ -170,13 +171,85 @@ def cylindrical_roller(
     n_slices: int = 20,
     profile=None,
     line_law: str = "kunert",
+    rows: int = 1,
+    row_spacing: float | None = None,
     material=None,
     name: str = "cylindrical roller bearing",
 ) -> BearingModel:
-    """Radial cylindrical roller bearing (rollers sliced; carries F_x, F_y and, through the slices, M)."""
+    """Radial cylindrical roller bearing (rollers sliced; carries F_x, F_y and, through the slices, M).
+
+    ``rows = 2`` with ``row_spacing``: the double-row bearing (NN) of :func:`cylindrical_roller_double`.
+    """
+    if rows not in (1, 2):
+        raise InputError(f"rows ({rows}) must be 1 or 2 for a cylindrical roller bearing")
+    if rows == 2 or row_spacing is not None:
+        if rows != 2 or row_spacing is None:
+            raise InputError(
+                f"rows ({rows}) and row_spacing ({row_spacing}) go together: rows = 2 needs the axial "
+                "distance of the two rows (row_spacing), and row_spacing needs rows = 2"
+            )
+        if name == "cylindrical roller bearing":
+            name = "double-row cylindrical roller bearing"
+        return cylindrical_roller_double(
+            n_elements=n_elements, element_diameter=element_diameter, effective_length=effective_length,
+            pitch_diameter=pitch_diameter, row_spacing=row_spacing, clearance_radial=clearance_radial,
+            n_slices=n_slices, profile=profile, line_law=line_law, material=material, name=name,
+        )  # fmt: skip
     row = dict(n_elements=n_elements, element_diameter=element_diameter, effective_length=effective_length)
     row |= dict(pitch_diameter=pitch_diameter, n_slices=n_slices, profile=profile, line_law=line_law)
     return _roller_bearing(row, "radial", clearance_radial, material, name)
+
+
+def cylindrical_roller_double(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    effective_length: float,
+    pitch_diameter: float,
+    row_spacing: float,
+    clearance_radial: float = 0.0,
+    n_slices: int = 20,
+    profile=None,
+    line_law: str = "kunert",
+    material=None,
+    name: str = "double-row cylindrical roller bearing",
+) -> BearingModel:
+    """Double-row cylindrical roller bearing (NN, NNU): two equal sliced roller rows on shared rings.
+
+    The rows sit at z = ∓row_spacing/2 of one inner and one outer ring (the rings are rigid, as for every
+    row of the engine), so a tilt loads one row more than the other and the pair resists the moment
+    through both. Carries F_x, F_y and M (no axial load: the rollers are guided by ribs, not loaded).
+
+    Parameters
+    ----------
+    n_elements, element_diameter, effective_length, pitch_diameter : int, float [m]
+        Each row's roller count Z, D_we, L_we and d_m.
+    row_spacing : float [m]
+        Axial distance of the two row centres (> L_we: the rows do not overlap).
+    clearance_radial : float [m]
+        Radial internal clearance P_d of the bearing (both rows).
+    """
+    checks.positive("row_spacing", row_spacing, "m")
+    if row_spacing <= effective_length:
+        raise InputError(
+            f"row_spacing ({row_spacing:g} m) must exceed effective_length ({effective_length:g} m): the "
+            "rows would overlap"
+        )
+    row = dict(n_elements=n_elements, element_diameter=element_diameter, effective_length=effective_length)
+    row |= dict(pitch_diameter=pitch_diameter, n_slices=n_slices, profile=profile, line_law=line_law)
+    e_red = e_reduced_of(material)
+    rows = tuple(
+        CylindricalRow(
+            **row,
+            orientation="radial",
+            clearance=clearance_radial,
+            axial_position=z,
+            e_reduced=e_red,
+            name=f"rollers_{label}",
+        )
+        for z, label in ((-0.5 * row_spacing, "A"), (0.5 * row_spacing, "B"))
+    )
+    return BearingModel(rows, name=name, references=("harris2007", "kunert1961"))
 
 
 def cylindrical_roller_thrust(

@@ -25,6 +25,7 @@ CLEARANCE_GROUP = {
     "deep_groove_ball": "deep_groove_ball",
     "self_aligning_ball": "self_aligning_ball",
     "cylindrical_roller": "cylindrical_roller",
+    "double_row_cylindrical_roller": "cylindrical_roller",
     "spherical_roller": "spherical_roller",
     "needle_roller": "cylindrical_roller",
     "four_point_contact_ball": "four_point_contact_ball_axial",

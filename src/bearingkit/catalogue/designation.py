@@ -34,16 +34,18 @@ MAX_LENGTH = 60
 _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("four_point_contact_ball", re.compile(r"^(QJ\s?[23])(\d\d)(.*)$")),
     ("needle_roller", re.compile(r"^(R?NA\s?4[89])(\d\d|/\d\d)(.*)$")),
-    ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|22|23|2|3)(\d\d)(.*)$")),
+    ("double_row_cylindrical_roller", re.compile(r"^(NN\s?30)(\d\d)(.*)$")),
+    ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|19|22|23|2|3)(\d\d)(.*)$")),
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
-    ("tapered_roller", re.compile(r"^(30[23]|313|32[023])(\d\d|/\d\d)(.*)$")),
+    ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[01])(\d\d|/\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d)(.*)$")),
     ("angular_contact_ball", re.compile(r"^(71[89]|7[023])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
-    # spherical 222xx/223xx before self-aligning 22xx: "22208" is a spherical roller bearing, "2208" not
-    ("spherical_roller", re.compile(r"^(22[23])(\d\d)(.*)$")),
-    ("self_aligning_ball", re.compile(r"^(1[2]|2[2])(\d\d)(.*)$")),
+    # spherical 2xxyy before self-aligning 22yy/23yy: "22208", "23120" are spherical roller bearings, "2208",
+    # "2312" not
+    ("spherical_roller", re.compile(r"^(213|22[23]|23[012]|24[01])(\d\d)(.*)$")),
+    ("self_aligning_ball", re.compile(r"^(1[23]|2[23])(\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d)(.*)$")),
 )
 #: Prefixes before the basic designation: code → (the series it may precede (regex), meaning).
@@ -219,8 +221,9 @@ def parse(text: str) -> Designation:
         return _parse_family(raw, family, prefix, m)
     raise InputError(
         f"designation ({_shown(raw)}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, "
-        "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 22, 222, 223, N/NU/NJ/NUP 10/2/22/3/23, NA48, "
-        "NA49, RNA48, RNA49, 302, 303, 313, 320, 322, 323, 511, 512, 513, 811, 812) and no file of that "
+        "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 240, "
+        "241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, 322, 323, "
+        "329, 330, 331, 511, 512, 513, 811, 812) and no file of that "
         f"name exists; nearest: {', '.join(nearest(raw))}"
     )
 
@@ -240,7 +243,7 @@ def _parse_family(raw: str, family: str, prefix: str | None, m: re.Match) -> Des
         rest = re.sub(r"^\s?X", "", rest)
         angle = "X"
     if family == "cylindrical_roller":
-        angle = "" if series == "10" else "E"
+        angle = "" if series in ("10", "19") else "E"
         rest = re.sub(r"^\s?E(?![CWTM1])", "", rest)
     if family == "double_row_angular_contact_ball":
         rest = re.sub(r"^\s?A(?!C)", "", rest)

@@ -74,6 +74,22 @@ TAPER_HALF_ANGLE = 1.5 * DEG
 #: Relative margin that keeps self-aligning balls strictly on their side of the centre plane (the engine's
 #: row check is strict); a numerical margin, not a design value.
 CENTRE_PLANE_MARGIN = 1e-3
+#: Self-aligning ball rows without a published e: the two rows fill the ring width, B = D_w + d_m tan α,
+#: with the ball D_w = this · (D − d). CHOSEN over the 42 sizes of the 12 and 22 tables, whose published e
+#: it gives within ±15 % (mean |error| 6 %, tests/catalogue/test_series_new.py); used only for rows the
+#: source prints no e for (13, 23).
+SELF_ALIGNING_E_BALL_SHARE = 0.25
+#: Cage pitch ratio s = π d_m / (Z D_w) of angular contact and four-point rows with MACHINED cages (brass,
+#: phenolic): thicker cage bars than a pressed steel cage's (RULES). The median of the geometry NSK's C and
+#: C0 imply over the 72xxC sizes (machined brass by NSK E1102 B48 Table 1), the calibration set; 73, QJ
+#: and the pressed steel pitch's other series are predictions (docs/catalogue.md).
+MACHINED_CAGE_PITCH = 1.227
+#: Largest bore codes with a pressed steel cage per angular contact series (NSK E1102 B48 Table 1: 70A
+#: 7000–7018, 72A/B 7200–7222, 73A/B 7300–7320; 70C, 72C, 79A5/C machined brass throughout).
+PRESSED_STEEL_CAGE_UP_TO = {"70": 18, "72": 22, "73": 20}
+#: Spherical rollers no thicker than this times their length (D_we ≤ L_we): narrow sections (213) take
+#: slimmer rollers rather than rollers that cross into the other row.
+SPHERICAL_ROLLER_ASPECT = 1.0
 #: Groove conformities r/D_w (Harris 2006 ch. 2 [M]).
 CONFORMITY_INNER = 0.52
 CONFORMITY_OUTER = 0.53
@@ -103,17 +119,20 @@ class Rule:
     length: float = 0.0
     rows: int = 1
     k_b: float = 0.65
+    wall: float = 0.0
 
 
 #: The one place where the rule constants live (module docstring: where they come from).
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
-    "angular_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    # D_w and the pitch of a pressed steel cage: the medians of the geometry NSK's C and C0 imply over the
+    # 72 series (calibration set, docs/catalogue.md); machined cages: MACHINED_CAGE_PITCH (cage_type)
+    "angular_contact_ball": Rule(k_w=0.317, pitch=1.145, k_b=0.80),
     # no filling slots: each row Conrad-assembled like a deep groove row, the deep groove ball rule with
     # the angular contact width cap per row (docs/catalogue.md: NSK's C and C0 together imply it)
     "double_row_angular_contact_ball": Rule(k_w=0.31, rows=2, k_b=0.80),
-    # QJ: the angular contact rule unchanged (nothing chosen for four-point bearings)
-    "four_point_contact_ball": Rule(k_w=0.33, pitch=1.20, k_b=0.80),
+    # QJ: the angular contact rule unchanged, machined brass cages (nothing chosen for four-point bearings)
+    "four_point_contact_ball": Rule(k_w=0.317, pitch=1.145, k_b=0.80),
     # ball size mostly set by the width and centre-plane limits (estimate()); pitch = angular contact's
     # pitch CALIBRATED on the 1205 (docs/catalogue.md): at the angular contact 1.20 its count sits on the
     # boundary (π d_m/(s D_w) = 14.03 balls per row); 1.205 gives the 13 its published C0 implies
@@ -124,6 +143,9 @@ RULES: dict[str, Rule] = {
     "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
     "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
     "spherical_roller": Rule(k_w=0.24, pitch=1.15, length=0.80, rows=2),
+    # NN30 (diameter series 0): the roller of the NU10 rule (same diameter series) and the single-row
+    # length ratio on each half of the width; nothing chosen (no stored catalogue rates NN30)
+    "double_row_cylindrical_roller": Rule(k_w=0.22, pitch=1.15, length=0.63, rows=2),
     # needle pitch and length ratio from NSK's cage & needle assemblies with published D_w (docs), the
     # needle share of the section k_w chosen by C over the NA table
     "needle_roller": Rule(k_w=0.65, pitch=1.80, length=0.80),
@@ -132,6 +154,9 @@ RULES: dict[str, Rule] = {
 SERIES_RULES: dict[tuple[str, str], Rule] = {
     # chosen by C over the NU10 table with the roller end allowance (0.20, 0.38 B before it)
     ("cylindrical_roller", "10"): Rule(k_w=0.22, pitch=1.15, length=0.42),
+    # NU19: the light-section rule of NU10 (the 19 sections are as wide for their height, B ≈ 0.5 (D − d));
+    # no stored catalogue rates NU19, nothing chosen for it
+    ("cylindrical_roller", "19"): Rule(k_w=0.22, pitch=1.15, length=0.42),
     # heavy series 64: the section is deep for its width (B ≈ 0.38 (D - d)), so the width cap decides;
     # 0.80 B is the angular contact rule's cap (chosen over the 64 table: C -3 % median, see the docs)
     ("deep_groove_ball", "64"): Rule(k_w=0.31, k_b=0.80),
@@ -226,15 +251,33 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             "d_m = (d + D)/2"
         )
     elif fam == "spherical_roller":
-        d_w = rule.k_w * (big_d - d)
         length = rule.length * 0.5 * width
+        d_w = min(rule.k_w * (big_d - d), SPHERICAL_ROLLER_ASPECT * length)
         z = _pitch_count(d_m, d_w, rule.pitch)
-        alpha = _nominal_angle(entry, contact_angle)
+        if contact_angle is None and not entry.extra.get("e"):
+            alpha = spherical_angle_filling_width(entry, d_w, length, d_m)
+            how = (
+                f"alpha = {math.degrees(alpha):.1f} deg ESTIMATED (the source prints no e): the rows fill "
+                "the width, each roller end at the ring face less the chamfer"
+            )
+            half_reach = 0.5 * (length * math.cos(alpha) + d_w * math.sin(alpha))
+            if 0.5 * d_m * math.tan(alpha) - half_reach <= CENTRE_PLANE_MARGIN * d_w:
+                # a narrow section (213): the rollers would cross the centre plane; the two rows then span
+                # the width between the centre plane and the faces, each roller shortened to fit
+                z_c = 0.5 * (0.5 * width - entry.chamfer)
+                alpha = math.atan(2.0 * z_c / d_m)
+                length = (2.0 * z_c * (1.0 - CENTRE_PLANE_MARGIN) - d_w * math.sin(alpha)) / math.cos(alpha)
+                how += (
+                    "; the rows meet at the centre plane (narrow section): alpha = "
+                    f"{math.degrees(alpha):.1f} deg, L_we = {length * 1e3:.3g} mm"
+                )
+        else:
+            alpha = _nominal_angle(entry, contact_angle)
+            how = f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}"
         extra["row_offset"] = 0.5 * d_m * math.tan(alpha)
         notes.append(
             f"two rows: D_we = {rule.k_w} (D - d), L_we = {rule.length} B/2, Z per row from cage pitch "
-            f"{rule.pitch} D_we, d_m = (d + D)/2, alpha = atan(e/1.5) from the published "
-            f"e = {entry.extra['e']}"
+            f"{rule.pitch} D_we, d_m = (d + D)/2, {how}"
         )
     elif fam == "needle_roller":
         f_w = entry.number("F_w_mm", 1e-3)
@@ -258,8 +301,8 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             cap_text = "min(B - d_m tan(alpha), d_m tan(alpha))"
         else:
             cap, cap_text = rule.k_b * width / rule.rows, f"{rule.k_b} B/{rule.rows}"
-        d_w = min(rule.k_w * (big_d - d), cap)
-        if rule.k_w * (big_d - d) > d_w:
+        d_w = min(rule.k_w * (big_d - d) - rule.wall, cap)
+        if rule.k_w * (big_d - d) - rule.wall > d_w:
             notes.append(f"D_w capped at {cap_text} by the width")
         if rule.pitch == 0.0:
             # Conrad-assembled rows (deep groove; double row 32/33 without filling slots, one row at a time)
@@ -277,16 +320,25 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
                     d_m = f_w + d_w
                     notes.append("d_m = F_w + D_we with the published roller inscribed diameter F_w")
                 length = rule.length * width - ROLLER_END_ALLOWANCE
+            elif fam == "double_row_cylindrical_roller":
+                length = rule.length * width / rule.rows - ROLLER_END_ALLOWANCE
+                extra["row_spacing"] = width / rule.rows
             elif fam == "tapered_roller":
                 length = rule.length * width - ROLLER_END_ALLOWANCE
-            z = _pitch_count(d_m, d_w, rule.pitch)
+            pitch, cage = rule.pitch, ""
+            if fam in ("angular_contact_ball", "four_point_contact_ball"):
+                cage = cage_type(entry)
+                pitch = rule.pitch if cage == "pressed steel" else MACHINED_CAGE_PITCH
+                cage = f" ({cage} cage)"
+            z = _pitch_count(d_m, d_w, pitch)
             alpha = _nominal_angle(entry, contact_angle)
             what = "D_we" if length is not None else "D_w"
-            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {rule.pitch} {what}"]
+            parts = [f"{what} = {rule.k_w} (D - d)", f"Z from cage pitch {pitch} {what}{cage}"]
             if "F_w" not in notes[-1]:
                 parts.append("d_m = (d + D)/2")
             if length:
-                what = "B" if fam != "tapered_roller" else "B (cone width)"
+                what = {"tapered_roller": "B (cone width)", "double_row_cylindrical_roller": "B/2 per row"}
+                what = what.get(fam, "B")
                 parts.append(f"L_we = {rule.length} {what} - {ROLLER_END_ALLOWANCE * 1e3:g} mm (roller ends)")
             notes.append(", ".join(parts))
     if fam in (
@@ -300,8 +352,14 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         # ISO 281/76 assume this inner conformity for self-aligning ball bearings (physics.life.kinds);
         # the outer raceway is the sphere through the ball centres
         extra["conformity_inner"] = SELF_ALIGNING_CONFORMITY_INNER
+        source_e = (
+            f"the published e = {entry.extra['e']}"
+            if entry.extra.get("e")
+            else f"e = {1.5 * math.tan(alpha):.2f} ESTIMATED (the source prints none): the rows fill the "
+            f"width, B = {SELF_ALIGNING_E_BALL_SHARE} (D - d) + d_m tan(alpha)"
+        )
         notes.append(
-            f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}, inner conformity "
+            f"alpha = atan(e/1.5) from {source_e}, inner conformity "
             f"{SELF_ALIGNING_CONFORMITY_INNER}, outer raceway a sphere"
         )
     if fam == "tapered_roller":
@@ -319,6 +377,8 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
     if fam == "double_row_angular_contact_ball":
         extra["row_spacing"] = 0.5 * width
         notes.append("modelled as an angular contact pair DB with the rows B/2 apart")
+    if fam == "double_row_cylindrical_roller":
+        notes.append("two equal rows of rollers on shared rings, B/2 apart")
     if z < 3:
         raise InputError(
             f"{entry.designation}: estimated element count ({z}) below 3; the rules do not apply"
@@ -336,6 +396,23 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
     )
 
 
+def cage_type(entry: Entry) -> str:
+    """``"pressed steel"`` or ``"machined"`` cage of an angular contact or four-point catalogue row.
+
+    NSK E1102 B48 Table 1: 70A up to 7018, 72A/B up to 7222, 73A/B up to 7320 have pressed steel cages, the
+    larger sizes and every 15° (C) and 79 row machined brass ones. The spindle series (C, AC; 718, 719)
+    and four-point bearings (SKF QJ … MA, NSK QJ) take machined cages.
+    """
+    if entry.family == "four_point_contact_ball":
+        return "machined"
+    code = entry.designation[len(entry.series) : len(entry.series) + 2]
+    angle = entry.designation[len(entry.series) + 2 :]
+    limit = PRESSED_STEEL_CAGE_UP_TO.get(entry.series)
+    if angle in ("A", "B") and limit is not None and code.isdigit() and int(code) <= limit:
+        return "pressed steel"
+    return "machined"
+
+
 def _nominal_angle(entry: Entry, override: float | None) -> float:
     if override is not None:
         return override
@@ -346,10 +423,33 @@ def _nominal_angle(entry: Entry, override: float | None) -> float:
         return float(entry.extra["contact_angle_deg"]) * DEG
     if fam == "four_point_contact_ball":
         return FOUR_POINT_ANGLE
+    if fam == "self_aligning_ball" and not entry.extra.get("e"):
+        # no printed e (series 13, 23): the two rows fill the width, B = D_w + d_m tan α
+        d_m = 0.5 * (entry.bore + entry.outer_diameter)
+        ball = SELF_ALIGNING_E_BALL_SHARE * (entry.outer_diameter - entry.bore)
+        return math.atan((entry.width - ball) / d_m)
     if fam in ("tapered_roller", "self_aligning_ball", "spherical_roller"):
         # ISO 281:2007 Table 3 (self-aligning ball) and 7.2 (radial roller): e = 1.5 tan α
         return math.atan(float(entry.extra["e"]) / E_TAN_FACTOR)
     return 0.0
+
+
+def spherical_angle_filling_width(entry: Entry, d_we: float, l_we: float, d_m: float) -> float:
+    """Contact angle α [rad] of spherical roller rows that fill the ring width (no printed e).
+
+    A row's roller centre sits at z = (d_m/2) tan α and its end reaches z + (L_we cos α + D_we sin α)/2
+    (:func:`axial_margin`); the rows are set as wide as the rings allow: that reach equals B/2 less the
+    chamfer r_s min (the ring face's own edge). Geometry only: over the 49 sizes of the 222/223 tables
+    (whose e is printed) it gives e = 1.5 tan α −8 % on average (within ±15 %,
+    tests/catalogue/test_series_new.py).
+    """
+    target = 0.5 * entry.width - entry.chamfer
+    lo, hi = 0.0, 0.5 * math.pi * 0.9
+    for _ in range(80):  # bisection: the reach grows with α over (0, 81°)
+        mid = 0.5 * (lo + hi)
+        reach = 0.5 * d_m * math.tan(mid) + 0.5 * (l_we * math.cos(mid) + d_we * math.sin(mid))
+        lo, hi = (mid, hi) if reach < target else (lo, mid)
+    return 0.5 * (lo + hi)
 
 
 def with_element_diameter(est: Estimate, element_diameter: float, note: str) -> Estimate:

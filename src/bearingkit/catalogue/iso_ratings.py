@@ -35,6 +35,7 @@ ISO281_TYPES = {
     "four_point_contact_ball": "angular_contact_ball",
     "self_aligning_ball": "self_aligning_ball",
     "cylindrical_roller": "cylindrical_roller",
+    "double_row_cylindrical_roller": "cylindrical_roller",
     "tapered_roller": "tapered_roller",
     "thrust_ball": "thrust_ball",
     "thrust_cylindrical_roller": "thrust_cylindrical_roller",

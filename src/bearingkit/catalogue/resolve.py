@@ -261,6 +261,16 @@ def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
             profile={"name": "iso16281"},
         )
         notes.append("crowning: ISO/TS 16281 logarithmic profile (profile 'iso16281')")
+    elif fam == "double_row_cylindrical_roller":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            rows=2,
+            row_spacing=est.extra["row_spacing"],
+            clearance_radial=clearance,
+            profile={"name": "iso16281"},
+        )
+        notes.append("crowning: ISO/TS 16281 logarithmic profile (profile 'iso16281')")
     elif fam == "thrust_cylindrical_roller":
         g.update(
             element_diameter=est.element_diameter,

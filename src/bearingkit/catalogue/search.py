@@ -38,7 +38,7 @@ KINDS = {
     "double_row_angular_contact": ("double_row_angular_contact_ball",),
     "four_point": ("four_point_contact_ball",),
     "self_aligning": ("self_aligning_ball",),
-    "cylindrical": ("cylindrical_roller",),
+    "cylindrical": ("cylindrical_roller", "double_row_cylindrical_roller"),
     "tapered": ("tapered_roller",),
     "spherical": ("spherical_roller",),
     "needle": ("needle_roller",),
@@ -46,8 +46,8 @@ KINDS = {
     "thrust_cylindrical": ("thrust_cylindrical_roller",),
     "ball": ("deep_groove_ball", "angular_contact_ball", "double_row_angular_contact_ball",
              "four_point_contact_ball", "self_aligning_ball", "thrust_ball"),
-    "roller": ("cylindrical_roller", "tapered_roller", "spherical_roller", "needle_roller",
-               "thrust_cylindrical_roller"),
+    "roller": ("cylindrical_roller", "double_row_cylindrical_roller", "tapered_roller", "spherical_roller",
+               "needle_roller", "thrust_cylindrical_roller"),
 }  # fmt: skip
 #: Family → (ISO 281 P law, ISO 76 P0 law, rows whose X, Y apply) of the catalogue method (the laws of
 #: :mod:`bearingkit.physics.life.iso281_load` / ``iso76``; four-point, self-aligning, spherical and
@@ -59,6 +59,7 @@ SCREEN_LAWS = {
     "four_point_contact_ball": life_kinds.KIND_LOAD_LAWS["four_point"],
     "self_aligning_ball": life_kinds.KIND_LOAD_LAWS["self_aligning_ball"],
     "cylindrical_roller": ("radial_roller", "radial_roller", 1),
+    "double_row_cylindrical_roller": ("radial_roller", "radial_roller", 2),
     "tapered_roller": ("radial_roller", "radial_roller", 1),
     "spherical_roller": life_kinds.KIND_LOAD_LAWS["spherical_roller"],
     "needle_roller": life_kinds.KIND_LOAD_LAWS["needle"],
@@ -250,8 +251,10 @@ def screen(row: Row, load_radial: float, load_axial: float) -> Screen:
     p_law, p0_law, n_rows = SCREEN_LAWS[e.family]
     alpha = 0.5 * math.pi if e.family.startswith("thrust") else row.estimate.contact_angle
     f0 = None
-    if p_law == "deep_groove_ball":
-        f0 = float(iso76.f0_radial_ball(row.estimate.element_diameter / row.estimate.pitch_diameter))
+    if p_law in ("deep_groove_ball", "angular_contact_ball"):
+        # ISO 281 Table 3 reads e, X, Y at i f0 F_a/C0r for deep groove and angular contact below 20°
+        gamma = row.estimate.element_diameter * math.cos(alpha) / row.estimate.pitch_diameter
+        f0 = float(iso76.f0_radial_ball(gamma))
     try:
         p = float(
             iso281_load.equivalent_dynamic_load(load_radial, load_axial, p_law, alpha, n_rows, row.C0, f0)

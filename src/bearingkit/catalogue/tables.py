@@ -30,6 +30,7 @@ FAMILIES: dict[str, tuple[str, str | None, str]] = {
     "four_point_contact_ball": ("four_point_contact_ball.csv", "four_point_contact_ball", "ball"),
     "self_aligning_ball": ("self_aligning_ball.csv", "self_aligning_ball", "ball"),
     "cylindrical_roller": ("cylindrical_roller.csv", "cylindrical_roller", "roller"),
+    "double_row_cylindrical_roller": ("double_row_cylindrical_roller.csv", "cylindrical_roller", "roller"),
     "tapered_roller": ("tapered_roller.csv", "tapered_roller", "roller"),
     "thrust_ball": ("thrust_ball.csv", "thrust_ball", "ball"),
     "thrust_cylindrical_roller": ("thrust_cylindrical_roller.csv", "cylindrical_roller_thrust", "roller"),

@@ -12,6 +12,7 @@ import json
 import sys
 
 import typer
+from rich.markup import escape
 from rich.table import Table
 
 from bearingkit.cli.commands import app
@@ -110,7 +111,7 @@ def catalogue(
             _num(r["C0_catalogue_N"], 1e-3),
             _num(r["C0_estimate_N"], 1e-3),
             _num(r["mass_estimate_kg"], 1.0, ".2g"),
-            r["source"],
+            escape(r["source"]),  # "[from memory; …]" is text, not a rich style tag
         )
     console.print(table)
     console.print(

@@ -120,6 +120,12 @@ class RollerBase(Envelope):
 
 class CylindricalRollerGeometry(RollerBase):
     clearance_radial: Length | None = Field(None, description="Diametral clearance (negative: preload).")
+    rows: Literal[1, 2] | None = Field(
+        None, description="Roller rows: 2 for a double-row bearing (NN30) on shared rings. Default 1."
+    )
+    row_spacing: PositiveLength | None = Field(
+        None, description="Axial distance of the two rows' centres (rows = 2 only)."
+    )
 
 
 class CylindricalRollerThrustGeometry(RollerBase):

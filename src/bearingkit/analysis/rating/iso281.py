@@ -12,7 +12,7 @@ tapered, thrust roller; four-point, self-aligning, spherical, needle through
 rated as ISO 281's paired unit (:func:`bearingkit.physics.life.iso281.paired_unit_ratings`): C = 2^0.7
 C_row (ball) or 2^(7/9) C_row (roller), C0 = 2 C0_row, with the double-row X, Y for rows of opposite
 contact angle (DB, DF; or 0°) and the single-row X, Y for a tandem set (DT). Anything else (composites
-of unequal rows, two cylindrical rows, crossed roller and slewing rings, threaded rows) gets a note
+of unequal rows, two thrust cylindrical rows, crossed roller and slewing rings, threaded rows) gets a note
 instead of an invented X/Y.
 """
 
@@ -31,6 +31,8 @@ from bearingkit.physics.life import kinds as life_kinds
 _SAME = 1e-9
 #: F_r or F_a below this fraction of the larger one is round-off of a fixed DOF's reaction (taken as 0).
 _ROUND_OFF = 1e-9
+#: Contact angle [rad] from which ISO 281 Table 3's angular contact X, Y no longer depend on i f0 F_a/C0r.
+_XY_CONSTANT_FROM = np.radians(iso281_load.ANGULAR_CONSTANT_FROM_DEG)
 #: ``model.metadata`` key of slewing rings (:data:`bearingkit.bearings.slewing.SLEWING_KEY`; the
 #: bearings layer sits above this one).
 _SLEWING_KEY = "slewing_ring"
@@ -143,7 +145,10 @@ def _law(model, ratings) -> tuple[str, int, float, int] | str:
             _equal(getattr(a, k), getattr(b, k)) for k in ("element_diameter", "pitch_diameter", "n_elements")
         )
         signs = _direction(a) * _direction(b)
-        if not same or not _equal(_alpha(a), _alpha(b)) or kind == "cylindrical":
+        # two equal radial cylindrical rows are a double-row bearing (NN): ISO 281 7.1 with i = 2, P = F_r;
+        # other cylindrical pairs (thrust rows of two directions) have no ISO 281 X, Y
+        radial_pair = kind == "cylindrical" and alpha == 0.0
+        if not same or not _equal(_alpha(a), _alpha(b)) or (kind == "cylindrical" and not radial_pair):
             return (
                 "ISO 281 gives no X, Y for this two-row composite (unequal rows, or rows ISO 281 does not "
                 "rate as one bearing): no ISO 281 basic rating life (see L10r)"
@@ -185,7 +190,7 @@ def _equivalent_load(fr, fa, p_law, alpha, n_rows, c0, f0, notes):
     # took 0.9 s per 10^4 cases one by one), then each refused case alone, so that its note carries the
     # law's own message. A refusal the screen does not know sends every case through one by one.
     p, failed = np.zeros(fr.shape), np.zeros(fr.shape, bool)
-    refused = iso281_load.refused_cases(fr, fa, p_law, alpha, static_rating=c0, f0=f0)
+    refused = iso281_load.refused_cases(fr, fa, p_law, alpha, static_rating=c0, f0=f0, n_rows=n_rows)
     ask = np.flatnonzero(refused)
     if ask.size < fr.shape[0]:
         try:
@@ -258,8 +263,9 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
         cases = ", ".join(str(c) for c in np.flatnonzero(moment))
         notes.append(f"ISO 281 P takes F_r and F_a only: the tilting moment of case(s) {cases} is not in P")
     f0 = None
-    if p_law == "deep_groove_ball":
-        gamma = float(np.max(row.element_diameter)) / float(np.max(row.pitch_diameter))
+    if p_law == "deep_groove_ball" or (p_law == "angular_contact_ball" and alpha < _XY_CONSTANT_FROM):
+        # ISO 281 Table 3 reads e, X, Y at i f0 F_a/C0r here; f0 of ISO 76 at γ = D_w cos α / d_m
+        gamma = float(np.max(row.element_diameter)) * np.cos(alpha) / float(np.max(row.pitch_diameter))
         f0 = iso76.f0_radial_ball(gamma)
     p, failed = _equivalent_load(fr, fa, p_law, alpha, xy_rows, c0, f0, notes)
     if failed.all():

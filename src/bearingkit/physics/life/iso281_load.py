@@ -7,6 +7,8 @@ The basic ratings are in :mod:`bearingkit.physics.life.iso281`.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from bearingkit import checks
@@ -16,6 +18,12 @@ from bearingkit.physics.life.iso281 import RADIAL_MAX_ANGLE, _is_90
 
 _XY_RADIAL = "iso281_xy_radial_ball.csv"
 _XY_ANGULAR = "iso281_xy_angular_ball.csv"
+#: ISO 281:2007 Table 3, angular contact α = 5°, 10°, 15°: e, X, Y over the relative axial load i f0 Fa/C0r.
+_XY_ANGULAR_LOW = "iso281_xy_angular_ball_low.csv"
+#: Contact angle [deg] from which Table 3's angular contact rows no longer depend on i f0 Fa/C0r (20° … 45°).
+ANGULAR_CONSTANT_FROM_DEG = 20.0
+#: Smallest contact angle [deg] of Table 3's angular contact rows.
+ANGULAR_MIN_DEG = 5.0
 #: ISO 281:2007 Table 3: X of radial contact groove ball bearings for Fa/Fr > e (single, double row).
 X_DEEP_GROOVE_SINGLE = 0.56
 X_DEEP_GROOVE_DOUBLE = 0.78
@@ -55,9 +63,105 @@ def _p_deep_groove(fr, fa, alpha, n_rows, static_rating, f0):
     return np.where(has_axial, p, fr)
 
 
+@functools.cache
+def _low_blocks():
+    """Table 3's α = 5°, 10°, 15° blocks and the 20° row as a block: [(α [deg], {column: (grid, values)})].
+
+    The 20° row does not depend on the relative axial load; it enters as a constant block so that
+    α between 15° and 20° interpolates linearly in α, as Table 3's footnote asks for intermediate angles."""
+    t, a = _XY_ANGULAR_LOW, tables.column(_XY_ANGULAR_LOW, "alpha_deg")
+    rel = tables.column(t, "i_f0_fa_c0r")
+    blocks = []
+    for deg in np.unique(a):
+        rows = a == deg
+        cols = {name: (rel[rows], tables.column(t, name)[rows]) for name in _LOW_COLUMNS}
+        blocks.append((float(deg), cols))
+    at20 = tables.column(_XY_ANGULAR, "alpha_deg") == ANGULAR_CONSTANT_FROM_DEG
+    whole = np.array([0.0, 1e300])  # any relative axial load
+    row20 = {name: tables.column(_XY_ANGULAR, src)[at20] for name, src in _AT20.items()}
+    const = {name: (whole, np.repeat(value, 2)) for name, value in row20.items()}
+    blocks.append((ANGULAR_CONSTANT_FROM_DEG, const))
+    return blocks
+
+
+#: Columns of the low-angle table; the 20° row's columns that stand for them (single and double row share e).
+_LOW_COLUMNS = (
+    "e_single", "x_single_gt", "y_single_gt", "e_double", "y_double_le", "x_double_gt", "y_double_gt"
+)  # fmt: skip
+_AT20 = {
+    "e_single": "e",
+    "x_single_gt": "x_single_gt",
+    "y_single_gt": "y_single_gt",
+    "e_double": "e",
+    "y_double_le": "y_double_le",
+    "x_double_gt": "x_double_gt",
+    "y_double_gt": "y_double_gt",
+}
+
+
+#: Weight below which a block does not count (radians → degrees round-off at a tabulated angle).
+_SNAP = 1e-9
+
+
+def _low_weights(deg):
+    """Hat-function weights (blocks, cases) of the blocks of :func:`_low_blocks` at α [deg] (5° ≤ α ≤ 20°)."""
+    nodes = np.array([b[0] for b in _low_blocks()])
+    eye = np.eye(nodes.size)
+    w = np.array([np.interp(deg, nodes, eye[k]) for k in range(nodes.size)])
+    # an angle given in rad lands 1e-15 beside a tabulated one: that is the tabulated angle, one block
+    w = np.where(w < _SNAP, 0.0, w)
+    return w / np.sum(w, axis=0)
+
+
+def _low_outside(rel, deg):
+    """Cases whose relative axial load i f0 Fa/C0r lies outside the grid of a block α interpolates from."""
+    out = np.zeros(np.broadcast(rel, deg).shape, bool)
+    for w, (_, cols) in zip(_low_weights(deg), _low_blocks(), strict=True):
+        grid = cols["e_single"][0]
+        out |= (w > 0) & tables.outside(rel, grid)
+    return out
+
+
+def _low_column(name, rel, deg):
+    """Table 3 column ``name`` at (i f0 Fa/C0r, α): linear in each block's own grid, then linear in α."""
+    value = np.zeros(np.broadcast(rel, deg).shape)
+    for w, (_, cols) in zip(_low_weights(deg), _low_blocks(), strict=True):
+        grid, values = cols[name]
+        value = value + w * np.interp(rel, grid, values)
+    return value
+
+
+def relative_axial_load(load_axial, static_rating, f0, n_rows=1):
+    """ISO 281:2007 Table 3 relative axial load i f0 Fa/C0r [-] (f0 in MPa as ISO 76 tabulates it).
+
+    Parameters
+    ----------
+    load_axial : array_like
+        Fa [N].
+    static_rating : float
+        C0r [N] of the bearing (of the unit for a paired set).
+    f0 : float
+        ISO 76 factor f0 [MPa].
+    n_rows : int
+        i, the rows whose X, Y apply (2 for a double-row bearing or a DB/DF pair).
+    """
+    return n_rows * np.asarray(f0, float) * np.asarray(load_axial, float) / np.asarray(static_rating, float)
+
+
 def _p_angular(fr, fa, alpha, n_rows, static_rating, f0):
+    deg = np.round(np.degrees(alpha), 9)  # an angle given in rad: 5° is 4.999999999999999° (round-off)
+    checks.in_range("contact_angle", deg, ANGULAR_MIN_DEG, 45.0, "deg")
+    low = deg < ANGULAR_CONSTANT_FROM_DEG
+    p = _p_angular_constant(fr, fa, np.where(low, ANGULAR_CONSTANT_FROM_DEG, deg), n_rows)
+    if np.any(low):
+        p_low = _p_angular_low(fr, fa, np.where(low, deg, ANGULAR_MIN_DEG), n_rows, static_rating, f0, low)
+        p = np.where(low, p_low, p)
+    return p
+
+
+def _p_angular_constant(fr, fa, deg, n_rows):
+    # ISO 281:2007 Table 3, α = 20° … 45°: e, X, Y independent of the relative axial load
     t = _XY_ANGULAR
-    deg = np.degrees(alpha)
     a = tables.column(t, "alpha_deg")
 
     def col(name):
@@ -67,6 +171,53 @@ def _p_angular(fr, fa, alpha, n_rows, static_rating, f0):
     if n_rows == 1:
         return np.where(small, fr, col("x_single_gt") * fr + col("y_single_gt") * fa)
     return np.where(small, fr + col("y_double_le") * fa, col("x_double_gt") * fr + col("y_double_gt") * fa)
+
+
+def _p_angular_low(fr, fa, deg, n_rows, static_rating, f0, low):
+    # ISO 281:2007 Table 3, α < 20°: e, X, Y depend on i f0 Fa/C0r (5°, 10°, 15° blocks, 20° constant)
+    has_axial = fa > 0
+    if not np.any(low & has_axial):
+        return fr  # no axial load: P = Fr (X = 1, Y = 0 at any relative axial load)
+    if static_rating is None or f0 is None:
+        raise InputError(
+            "static_rating and f0 must be given for bearing_type 'angular_contact_ball' with a contact angle "
+            "below 20 deg (ISO 281 Table 3: e, X, Y depend on i f0 Fa/C0r)"
+        )
+    checks.positive("static_rating", static_rating, "N")
+    checks.positive("f0", f0, "MPa")
+    rel = relative_axial_load(fa, static_rating, f0, n_rows)
+    bad = low & has_axial & _low_outside(rel, deg)
+    if np.any(bad):
+        k = np.flatnonzero(np.ravel(bad))[0]
+        r, d = np.ravel(np.broadcast_to(rel, bad.shape))[k], np.ravel(np.broadcast_to(deg, bad.shape))[k]
+        lo, hi = _low_range(d)
+        raise InputError(
+            f"relative axial load i*f0*Fa/C0r ({r:.4g}) must lie in the table range [{lo:g}, {hi:g}] of "
+            f"ISO 281 Table 3 at contact angle {d:.4g} deg (an angular contact bearing below 20 deg)"
+        )
+    # no axial load: P = Fr whatever the column; evaluate at a grid point
+    rel = np.where(has_axial, rel, 1.0)
+
+    def col(name):
+        return _low_column(name, rel, deg)
+
+    if n_rows == 1:
+        small = _ratio(fr, fa) <= col("e_single")
+        p = np.where(small, fr, col("x_single_gt") * fr + col("y_single_gt") * fa)
+    else:
+        small = _ratio(fr, fa) <= col("e_double")
+        p = np.where(small, fr + col("y_double_le") * fa, col("x_double_gt") * fr + col("y_double_gt") * fa)
+    return np.where(has_axial, p, fr)
+
+
+def _low_range(deg: float) -> tuple[float, float]:
+    """The i f0 Fa/C0r range Table 3 covers at α [deg] < 20° (the common part of the blocks it uses)."""
+    lo, hi = 0.0, np.inf
+    for w, (_, cols) in zip(_low_weights(deg), _low_blocks(), strict=True):
+        if w > 0:
+            grid = cols["e_single"][0]
+            lo, hi = max(lo, grid[0]), min(hi, grid[-1])
+    return float(lo), float(hi)
 
 
 def _p_self_aligning(fr, fa, alpha, n_rows, static_rating, f0):
@@ -135,12 +286,16 @@ P_MODELS = {
 }
 
 
-def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, static_rating=None, f0=None):
+def refused_cases(
+    load_radial, load_axial, bearing_type, contact_angle=0.0, static_rating=None, f0=None, n_rows=1
+):
     """Cases whose loads :func:`equivalent_dynamic_load` refuses one by one (True: no P), in one pass.
 
     The refusals that depend on a case's loads, not on the bearing (ISO 281:2007 5.2, 6.2, 7.2, 8.2):
 
     - ``deep_groove_ball``: f0 Fa/C0r with Fa > 0 outside Table 3 (0.172 … 6.89);
+    - ``angular_contact_ball`` below 20°: i f0 Fa/C0r with Fa > 0 outside Table 3's grid of the angle
+      (5°: 0.173 … 6.92, 10°: 0.175 … 7.00, 15°: 0.178 … 7.14; between two angles the common part);
     - ``radial_roller`` with α = 0: Fa > 0;
     - ``thrust_ball``/``thrust_roller``: Fr > 0 at α = 90°, and Fa/Fr <= e below 90° (single direction).
 
@@ -156,9 +311,11 @@ def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, stat
     contact_angle : float
         α [rad].
     static_rating : float, optional
-        C0r [N] (deep groove ball bearings).
+        C0r [N] (deep groove ball bearings; angular contact below 20°).
     f0 : float, optional
-        f0 [MPa] of ISO 76 (deep groove ball bearings).
+        f0 [MPa] of ISO 76 (deep groove ball bearings; angular contact below 20°).
+    n_rows : int
+        i of the X, Y (angular contact below 20°: i f0 Fa/C0r).
 
     Returns
     -------
@@ -167,11 +324,18 @@ def refused_cases(load_radial, load_axial, bearing_type, contact_angle=0.0, stat
     """
     fr, fa = np.broadcast_arrays(np.asarray(load_radial, float), np.asarray(load_axial, float))
     alpha = float(contact_angle)
+    rated = static_rating is not None and f0 is not None and float(static_rating) > 0 and float(f0) > 0
     if bearing_type == "deep_groove_ball":
-        if static_rating is None or f0 is None or not (float(static_rating) > 0 and float(f0) > 0):
+        if not rated:
             return np.zeros(fr.shape, bool)  # the law refuses the bearing itself: nothing to screen
         rel = float(f0) * fa / float(static_rating)
         return (fa > 0) & tables.outside(rel, tables.column(_XY_RADIAL, "f0_fa_c0r"))
+    if bearing_type == "angular_contact_ball":
+        deg = np.degrees(alpha)
+        if not rated or not ANGULAR_MIN_DEG <= deg < ANGULAR_CONSTANT_FROM_DEG:
+            return np.zeros(fr.shape, bool)
+        rel = relative_axial_load(fa, float(static_rating), float(f0), n_rows)
+        return (fa > 0) & _low_outside(rel, np.full(fr.shape, deg))
     if bearing_type == "radial_roller" and alpha == 0.0:
         return fa > 0
     if bearing_type.startswith("thrust") and alpha > RADIAL_MAX_ANGLE:
@@ -191,7 +355,12 @@ def equivalent_dynamic_load(
     - ``deep_groove_ball``: e, Y from Table 3 as functions of f0 Fa/C0r (0.172 … 6.89; outside → error);
       Fa/Fr <= e: X = 1, Y = 0 (single row) or Y from the double-row column; Fa/Fr > e: X = 0.56 single
       row, 0.78 double row.
-    - ``angular_contact_ball``: Table 3 rows α = 20° … 45°, linear interpolation in α.
+    - ``angular_contact_ball``: Table 3, α = 5° … 45°. From 20° the rows do not depend on the load (linear
+      interpolation in α). Below 20° (the spindle bearings' 15°) e, X, Y are functions of the relative
+      axial load i f0 Fa/C0r (:func:`relative_axial_load`; i = ``n_rows``, C0r the bearing's): linear
+      interpolation in the grid of the 5°, 10°, 15° blocks, then in α (between 15° and 20° towards the
+      20° row); outside the grid (5°: 0.173 … 6.92, 10°: 0.175 … 7.00, 15°: 0.178 … 7.14) an error — the
+      standard gives no value there. Single row at 5°: the radial contact rows (ISO's note).
     - ``self_aligning_ball``: e = 1.5 tan α; X = 1, Y = 0.42 cot α or X = 0.65, Y = 0.65 cot α.
     - ``radial_roller``: α = 0 → P = Fr (Fa must be 0); else e = 1.5 tan α, single row X = 0.4,
       Y = 0.4 cot α above e; double row X = 1, Y = 0.45 cot α / X = 0.67, Y = 0.67 cot α.
@@ -209,9 +378,9 @@ def equivalent_dynamic_load(
     n_rows : int
         1 or 2.
     static_rating : array_like, optional
-        C0r [N] (deep groove ball bearings).
+        C0r [N] (deep groove ball bearings; angular contact below 20°).
     f0 : array_like, optional
-        f0 [MPa] of ISO 76 (deep groove ball bearings).
+        f0 [MPa] of ISO 76 (deep groove ball bearings; angular contact below 20°).
 
     Returns
     -------
