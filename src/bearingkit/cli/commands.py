@@ -15,7 +15,6 @@ import sys
 from pathlib import Path
 
 import typer
-from rich.table import Table
 
 from bearingkit.cli.common import (
     _CASE_OPTION,
@@ -42,8 +41,7 @@ from bearingkit.cli.common import (
     err_console,
     one_line_errors,
 )
-from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
-from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
+from bearingkit.cli.flagship import FLAGSHIP_REPORT
 from bearingkit.errors import InputError, one_line
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
@@ -65,6 +63,8 @@ def validate(
     if as_json:
         sys.stdout.write(json.dumps([r.to_dict() for r in results], indent=1) + "\n")
     else:
+        from rich.table import Table
+
         table = Table(title=f"bearingkit validate: {len(results)} cases")
         for col in ("id", "unit", "published", "computed", "rel. error", "tol.", "status"):
             table.add_column(col, justify="left" if col == "id" else "right")
@@ -111,8 +111,10 @@ def analyze(
     if as_json:
         _print_json(file, data)
     else:
-        _header(a, file)
         from bearingkit.cli.operating_tables import operating_text
+        from bearingkit.cli.tables import case_table, warnings_text
+
+        _header(a, file)
 
         for c in data["cases"]:
             console.print(case_table(c, data["free_dofs"]))
@@ -191,8 +193,10 @@ def rating(
     if as_json:
         _print_json(file, data)
     else:
-        _header(a, file)
         from bearingkit.cli.operating_tables import lubrication_table, thermal_text
+        from bearingkit.cli.tables import duty_cycle_table, rating_table, warnings_text
+
+        _header(a, file)
 
         for c in data["cases"]:
             if "thermal" in c:
@@ -278,6 +282,7 @@ def friction(
     if model == "components":
         _fail_unconverged(file, a)
     from bearingkit.cli.operating_tables import comparison_text, heat_text, thermal_text
+    from bearingkit.cli.tables import friction_table, warnings_text
 
     if compare:
         data = a.friction_comparison()
@@ -316,6 +321,8 @@ def run_flagship(
     no_report: bool = typer.Option(False, "--no-report", help="Do not write the HTML report."),
 ):
     """The flagship demonstration on seed 000 (what `make run` calls)."""
+    from bearingkit.cli.flagship import run_sections
+
     run_sections(console, as_json=as_json, report_path=None if no_report else report)
 
 
@@ -478,8 +485,46 @@ def serve(
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
 
 
+@app.command("compile")
+def compile_core(
+    quiet: bool = typer.Option(False, "--quiet", help="Print nothing (the background build runs this)."),
+    wait: float = typer.Option(600.0, "--wait", help="Seconds to wait for a build already running."),
+):
+    """Build the compiled solver core once (about a minute); large jobs load it from then on.
+
+    Until it is built, small jobs run on the numpy core and the first one starts this build in the
+    background; `make run` and `make test` run it first."""
+    import time
+
+    from bearingkit.bearings.warmup import build
+    from bearingkit.rows.numba_cache import cache_dir
+
+    t0 = time.perf_counter()
+    if not quiet:
+        console.print(f"compiled solver core: {cache_dir()}", markup=False, highlight=False)
+    done = build(wait=wait, echo=None if quiet else lambda line: console.print(line, highlight=False))
+    if not quiet:
+        console.print(f"compiled solver core {done} ({time.perf_counter() - t0:.1f} s)", highlight=False)
+    if done == "busy":
+        raise typer.Exit(1)
+
+
+def _notes_on_stderr() -> None:
+    """The solver's one-line notes (which core ran, a compile starting) as ``note: …`` on stderr."""
+    import logging
+
+    log = logging.getLogger("bearingkit.solver")
+    if not any(getattr(h, "bearingkit_cli", False) for h in log.handlers):
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("note: %(message)s"))
+        handler.bearingkit_cli = True
+        log.addHandler(handler)
+        log.setLevel(logging.INFO)
+
+
 def main() -> None:
-    """Entry point: one-line errors for bad input, exit code 2."""
+    """Entry point: one-line errors for bad input, exit code 2; the solver's notes on stderr."""
+    _notes_on_stderr()
     try:
         app()
     except InputError as exc:
