@@ -345,6 +345,9 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
+    from bearingkit.extras import check
+
+    check("studies", "bearingkit study")
     from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
     from bearingkit.studies.__main__ import list_factors as factors_of
     from bearingkit.studies.__main__ import list_outputs as outputs_of
@@ -480,6 +483,9 @@ def serve(
     ),
 ):
     """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    from bearingkit.extras import check
+
+    check("app", "bearingkit serve")
     from bearingkit.app import serve as run_server
 
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)

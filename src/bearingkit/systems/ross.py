@@ -30,6 +30,7 @@ import warnings
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.extras import MissingExtra
 from bearingkit.systems.stiffness import StiffnessTable, shaft_stiffness_table
 
 #: What to install when ROSS is missing.
@@ -43,11 +44,14 @@ def import_ross():
     both streams) when that proprietary library is absent; it is irrelevant here and would corrupt
     ``--json`` output, so the import runs with file descriptors 1 and 2 sent to the null device.
     """
+    from bearingkit.extras import check, message
+
+    check("ross", "the ROSS export (bearingkit.systems.ross)")
     try:
         with _quiet():
             import ross
-    except ImportError as exc:
-        raise InputError(f"ross-rotordynamics is not installed ({exc}); {INSTALL_HINT}") from None
+    except ImportError as exc:  # installed but broken (e.g. ROSS 2 with plotly >= 6)
+        raise MissingExtra(message("ross", "the ROSS export", [f"a working ross ({exc})"])) from None
     return ross
 
 

@@ -17,8 +17,8 @@ from pydantic import BaseModel
 
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
-from bearingkit.io.build import kinds
 from bearingkit.io import schema
+from bearingkit.io.build import kinds
 
 
 def _profile(geometry: dict, diameter: float | None = None):

@@ -32,6 +32,7 @@ import numpy as np
 
 from bearingkit.analysis.solver.quasistatic import THREADS_ENV
 from bearingkit.errors import InputError
+from bearingkit.extras import require
 from bearingkit.studies import evaluators
 from bearingkit.studies.evaluators import is_default_index
 
@@ -410,6 +411,7 @@ class DaskExecutor(InProcessExecutor):
         solver_threads: int | None = 1,
         dashboard: str | None = None,
     ):
+        require("distributed", "studies", "the Dask executor")  # one line naming the extra
         env = worker_environment(solver_threads) if solver_threads is not None else {}
         self._own = client is None
         self._cluster = None
