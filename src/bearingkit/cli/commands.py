@@ -51,11 +51,16 @@ app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bear
 def validate(
     prefixes: list[str] = typer.Argument(None, help="Only cases whose id starts with one of these."),
     as_json: bool = typer.Option(False, "--json", help="Print a JSON list instead of a table."),
+    quick: bool = typer.Option(
+        False, "--quick", help="Only the first case of every source (paper, standard): a few seconds."
+    ),
 ):
     """Recompute every published number bearingkit reproduces; exit 1 on an unexplained failure."""
-    from bearingkit.validation.registry import all_cases, failures, run_cases
+    from bearingkit.validation.registry import all_cases, failures, quick_cases, run_cases
 
     cases = all_cases(prefixes or ())
+    if quick:
+        cases = quick_cases(cases)
     if not cases:
         err_console.print(f"error: no validation case matches {prefixes}")
         raise typer.Exit(2)

@@ -65,6 +65,32 @@ class StudyResult:
     pareto: object = None
     selections: object = None
 
+    def __repr__(self) -> str:
+        d = self.definition
+        head = ", ".join(map(str, list(self.results.columns)[:6]))
+        return f"<StudyResult {d.name!r} ({d.design}): {len(self.results)} rows; columns {head} …>"
+
+    def _repr_html_(self) -> str:
+        """The notebook view (:mod:`bearingkit.display`): the first rows of :attr:`results` (column names
+        carry their units, ``max_load_N``), the run's counts, the cases with warnings."""
+        from bearingkit.display import MAX_ROWS, html_table, number
+
+        frame, d = self.results, self.definition
+        columns = [str(c) for c in frame.columns]
+        rows = [
+            [v if isinstance(v, str) else number(v) for v in record]
+            for record in frame.head(MAX_ROWS).itertuples(index=False)
+        ]
+        warned = []
+        if "warnings_count" in frame.columns:
+            counts = zip(frame["case"], frame["warnings_count"], strict=True)
+            warned = [f"case {c}: {int(n)} warning(s)" for c, n in counts if n > 0][:MAX_ROWS]
+        stats = ", ".join(
+            f"{k} {v:.3g}" if isinstance(v, float) else f"{k} {v}" for k, v in self.stats.items()
+        )
+        footer = f"{len(frame)} rows ({max(len(frame) - MAX_ROWS, 0)} not shown); {stats}"
+        return html_table(f"study {d.name} ({d.design})", columns, rows, warnings=warned, footer=footer)
+
 
 def base_values(definition: StudyDefinition) -> dict:
     """Value of every factor not varied by the design: evaluator default < bearing file < [fixed]."""
