@@ -71,16 +71,29 @@ class StudyResult:
         return f"<StudyResult {d.name!r} ({d.design}): {len(self.results)} rows; columns {head} …>"
 
     def _repr_html_(self) -> str:
-        """The notebook view (:mod:`bearingkit.display`): the first rows of :attr:`results` (column names
-        carry their units, ``max_load_N``), the run's counts, the cases with warnings."""
+        """The notebook view (:mod:`bearingkit.display`): the first rows of :attr:`results` in display
+        units named in the headers (``max_load [kN]``), the run's counts, the cases with warnings."""
+
         from bearingkit.display import MAX_ROWS, html_table, number
+        from bearingkit.studies.results.display import display
 
         frame, d = self.results, self.definition
-        columns = [str(c) for c in frame.columns]
-        rows = [
-            [v if isinstance(v, str) else number(v) for v in record]
-            for record in frame.head(MAX_ROWS).itertuples(index=False)
-        ]
+        try:
+            dims = {name: f.dimension for name, f in evaluator_of(d).factors.items()}
+        except Exception:  # a plugin evaluator that cannot be resolved here: SI columns, suffix units
+            dims = {}
+        head = frame.head(MAX_ROWS)
+        columns, cells = [], []
+        for name in frame.columns:
+            values = head[name].to_numpy()
+            if values.dtype.kind in "biuf" and name != "case":
+                shown, label = display(str(name), values.astype(float), dims.get(name))
+                columns.append(label)
+                cells.append([number(v) for v in shown])
+            else:
+                columns.append(str(name))
+                cells.append([str(v) for v in values])
+        rows = [list(r) for r in zip(*cells, strict=True)] if cells else []
         warned = []
         if "warnings_count" in frame.columns:
             counts = zip(frame["case"], frame["warnings_count"], strict=True)
