@@ -11,8 +11,13 @@ manufacturing deviations, flexible rings and design studies. SI units everywhere
 ``import bearingkit`` stays light).
 """
 
+from typing import TYPE_CHECKING
+
 from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.extras import MissingExtra
+
+if TYPE_CHECKING:  # what __getattr__ loads on first use, visible to type checkers and the API reference
+    from bearingkit.pipeline import Analysis, analyze, load_input
 
 __version__ = "0.1.0"
 __all__ = [

@@ -1,9 +1,9 @@
 """ROSS export: a rotor with bearingkit's exported stiffness has the critical speeds of the same rotor
 with that stiffness typed in by hand.
 
-Needs ross-rotordynamics (the ``[ross]`` extra). ``make test`` installs it and runs this file with
-``-m ross`` (ROSS's start-up, numba compilation included, takes ~40 s, so the default run leaves it
-out as slow). Under CI a missing ROSS is a failure, not a skip.
+Needs ross-rotordynamics (the ``[ross]`` extra, ROSS 2.3+ or 3). ``make test`` installs it and runs this
+file in its parallel run (``-m "not slow or ross"``; ROSS's start-up, numba compilation included, takes
+~40 s, so a plain ``pytest`` leaves it out as slow). Under CI a missing ROSS is a failure, not a skip.
 """
 
 from __future__ import annotations
