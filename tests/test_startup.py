@@ -193,7 +193,7 @@ def test_background_build_starts_once_and_respects_the_switch(tmp_path, monkeypa
     assert numba_cache.start_background_build() is True
     assert numba_cache.start_background_build() is False  # once per process
     (argv, kw) = calls[0]
-    assert argv == [sys.executable, "-m", "bearingkit", "compile", "--quiet"]
+    assert argv == [sys.executable, "-m", "bearingkit", "compile", "--quiet", "--wait", "0"]
     assert kw["start_new_session"] and kw["env"][numba_cache.BACKGROUND_ENV] == "0"
     # a build already running (fresh lock file): nothing started
     monkeypatch.setattr(numba_cache, "_DONE", {})

@@ -129,7 +129,7 @@ def build_lock(wait: float = 0.0):
 
 
 def start_background_build() -> bool:
-    """Start ``python -m bearingkit compile --quiet`` detached, once per process; True if started.
+    """Start ``python -m bearingkit compile --quiet --wait 0`` detached, once per process; True if started.
 
     Nothing is started when :data:`BACKGROUND_ENV` is ``0``, when the core is built, or when a build
     is already running (its lock file exists and is fresh). The child's output goes to the null
@@ -150,7 +150,7 @@ def start_background_build() -> bool:
 
     try:
         subprocess.Popen(
-            [sys.executable, "-m", "bearingkit", "compile", "--quiet"],
+            [sys.executable, "-m", "bearingkit", "compile", "--quiet", "--wait", "0"],
             stdin=subprocess.DEVNULL,
             stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL,
