@@ -26,6 +26,7 @@ PAGES = [
     ("systems.md", 2),
     ("lubricants.md", 1),
     ("drivetrains.md", 1),
+    ("index.md", 1),
 ]
 
 
@@ -54,6 +55,7 @@ PRINTS = {
     "systems.md": "[",
     "lubricants.md": "VG68 ester: VI 140",
     "drivetrains.md": "0.98",
+    "index.md": "",
 }
 
 

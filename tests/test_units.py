@@ -7,7 +7,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.units import parse
+from bearingkit.units import COMMON_UNITS, parse
 
 
 @pytest.mark.parametrize(
@@ -185,3 +185,56 @@ def test_a_missing_unit_suggests_the_unit_engineers_write(value, dimension, mess
     assert parse(suggestion, dimension, "speed") == pytest.approx(
         {"angular_velocity": 3000 * math.pi / 30, "angle": math.radians(40), "force": 2000.0}[dimension]
     )
+
+
+def _through_pint(number: float, unit_text: str, dimension: str) -> float:
+    """``number unit_text`` converted by pint itself (the path every unit outside COMMON_UNITS takes)."""
+    from bearingkit.units import SI_UNITS, _unit, registry
+
+    unit = _unit(unit_text)
+    assert not isinstance(unit, str), (unit_text, unit)
+    return registry().Quantity(number, unit).to(SI_UNITS[dimension]).magnitude
+
+
+_NUMBERS = (0.0, 1.0, -1.0, 2.0, 0.5, 3.7, -12.25, 25.0, 60.0, 1e-6, 123456.789, -7e5, 0.1, 1 / 3, 299.99)
+
+
+@pytest.mark.parametrize(
+    ("dimension", "unit_text"),
+    [(dim, u) for dim, table in COMMON_UNITS.items() for u in table],
+)
+def test_common_units_are_pints_conversion_bit_for_bit(dimension, unit_text):
+    """Issue 42: the units parsed without pint give exactly what pint gives (same float, every number)."""
+    for x in _NUMBERS:
+        assert parse(f"{x!r} {unit_text}", dimension, "f") == _through_pint(x, unit_text, dimension), x
+
+
+@given(st.floats(min_value=-1e6, max_value=1e6, allow_nan=False))
+def test_common_units_agree_with_pint_for_any_number(x):
+    pairs = (("force", "kN"), ("length", "mm"), ("angular_velocity", "rpm"), ("temperature", "K"),
+             ("angle", "deg"), ("length", "in"))  # fmt: skip
+    for dimension, unit_text in pairs:
+        assert parse(f"{x!r} {unit_text}", dimension, "f") == _through_pint(x, unit_text, dimension)
+
+
+def test_common_units_do_not_load_pint_and_the_rest_still_do():
+    """A one-case analysis's options (``--load Fr=2kN --speed 3000rpm``) parse without importing pint
+    (about a second of start-up); any other unit still goes through pint."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from bearingkit.units import parse\n"
+        "assert parse('2kN', 'force', 'Fr') == 2000.0 and parse('3000rpm', 'angular_velocity', 's') > 0\n"
+        "assert parse('60 degC', 'temperature', 't') == 60.0\n"
+        "print('pint' in sys.modules)\n"
+        "parse('2 lbf', 'force', 'Fr'); print('pint' in sys.modules)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["False", "True"]
+
+
+def test_a_common_unit_of_the_wrong_dimension_is_still_pints_error():
+    """'5 mm' for a force is not in the force table: pint's path words the dimension error."""
+    with pytest.raises(InputError, match=r"has dimension \[length\]; expected a force"):
+        parse("5 mm", "force", "F_x")

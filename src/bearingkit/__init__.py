@@ -11,10 +11,24 @@ manufacturing deviations, flexible rings and design studies. SI units everywhere
 ``import bearingkit`` stays light).
 """
 
+from typing import TYPE_CHECKING
+
 from bearingkit.errors import ConvergenceError, InputError
+from bearingkit.extras import MissingExtra
+
+if TYPE_CHECKING:  # what __getattr__ loads on first use, visible to type checkers and the API reference
+    from bearingkit.pipeline import Analysis, analyze, load_input
 
 __version__ = "0.1.0"
-__all__ = ["Analysis", "ConvergenceError", "InputError", "__version__", "analyze", "load_input"]
+__all__ = [
+    "Analysis",
+    "ConvergenceError",
+    "InputError",
+    "MissingExtra",
+    "__version__",
+    "analyze",
+    "load_input",
+]
 
 #: Names this package re-exports from the pipeline on first access.
 _PIPELINE_NAMES = ("Analysis", "analyze", "load_input")
@@ -26,3 +40,8 @@ def __getattr__(name: str):
 
         return getattr(pipeline, name)
     raise AttributeError(f"module 'bearingkit' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The public names (``analyze`` … loaded on first use) with the module's own: tab completion."""
+    return sorted(set(globals()) | set(__all__))

@@ -17,15 +17,20 @@ OverflowError): at most :data:`MAX_VALUE_CHARS` characters, made of
 Everything else (arithmetic, hexadecimal, ``nan``, several numbers) is refused with one line. A unit
 of the wrong dimension gets look-alike suggestions of the expected one (``"2 kn"`` is knots:
 "did you mean '2 kN'?").
+
+The units engineers type most (:data:`COMMON_UNITS`: ``kN``, ``mm``, ``rpm``, ``degC`` …) are converted
+without pint: importing pint and building its registry takes about a second, most of the start-up
+of a one-case analysis. Every entry is pint's own conversion, held to it bit for bit by
+``tests/test_units.py``; any other unit, and every error, goes through pint.
 """
 
 from __future__ import annotations
 
 import difflib
+import math
 import re
 from functools import lru_cache
-
-import pint
+from typing import TYPE_CHECKING
 
 from bearingkit.errors import InputError, quote
 
@@ -94,6 +99,44 @@ UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
     "dimensionless": (),
 }
 
+if TYPE_CHECKING:
+    import pint
+
+_DEG = math.pi / 180.0
+#: Units converted without pint: dimension → unit text (exactly as written after the number) →
+#: (factor, offset), SI value = number × factor + offset. Each is pint's conversion of that unit to
+#: :data:`SI_UNITS` (tests/test_units.py compares every entry with pint's, bit for bit); a unit not
+#: listed here, or written differently (``"5 KN"``, ``"5 kN*1"``), is parsed by pint.
+COMMON_UNITS: dict[str, dict[str, tuple[float, float]]] = {
+    "length": {
+        "m": (1.0, 0.0), "mm": (1e-3, 0.0), "um": (1e-6, 0.0), "µm": (1e-6, 0.0), "μm": (1e-6, 0.0),
+        "nm": (1e-9, 0.0), "cm": (1e-2, 0.0), "in": (0.0254, 0.0),
+    },
+    "force": {"N": (1.0, 0.0), "kN": (1e3, 0.0), "MN": (1e6, 0.0), "mN": (1e-3, 0.0)},
+    "moment": {
+        "N*m": (1.0, 0.0), "N·m": (1.0, 0.0), "Nm": (1.0, 0.0), "kN*m": (1e3, 0.0), "kNm": (1e3, 0.0),
+        "N*mm": (1e-3, 0.0), "Nmm": (1e-3, 0.0),
+    },
+    "pressure": {
+        "Pa": (1.0, 0.0), "kPa": (1e3, 0.0), "MPa": (1e6, 0.0), "GPa": (1e9, 0.0), "bar": (1e5, 0.0),
+        "N/mm^2": (1e6, 0.0),
+    },
+    "angle": {"rad": (1.0, 0.0), "mrad": (1e-3, 0.0), "deg": (_DEG, 0.0), "°": (_DEG, 0.0)},
+    "angular_velocity": {"rad/s": (1.0, 0.0), "rpm": (math.pi / 30.0, 0.0)},
+    "temperature": {"degC": (1.0, 0.0), "°C": (1.0, 0.0), "K": (1.0, -273.15)},
+    "kinematic_viscosity": {"mm^2/s": (1e-6, 0.0), "m^2/s": (1.0, 0.0)},
+    "dynamic_viscosity": {"Pa*s": (1.0, 0.0), "mPa*s": (1e-3, 0.0)},
+    "pressure_viscosity": {
+        "1/Pa": (1.0, 0.0), "1/GPa": (1e-9, 0.0), "mm^2/N": (1e-6, 0.0), "m^2/N": (1.0, 0.0),
+    },
+    "time": {"s": (1.0, 0.0), "min": (60.0, 0.0), "h": (3600.0, 0.0)},
+    "power": {"W": (1.0, 0.0), "kW": (1e3, 0.0)},
+    "mass": {"kg": (1.0, 0.0), "g": (1e-3, 0.0)},
+    "density": {"kg/m^3": (1.0, 0.0)},
+    "stiffness": {"N/m": (1.0, 0.0), "N/mm": (1e3, 0.0), "N/um": (1e6, 0.0)},
+    "area": {"m^2": (1.0, 0.0), "mm^2": (1e-6, 0.0)},
+}  # fmt: skip
+
 #: Longest accepted value text [characters] (a number and its unit; "-1.23456789e-12 kN*m" is 20).
 MAX_VALUE_CHARS = 64
 #: Longest accepted unit expression [characters] ("kg/m^3" is 6, "W/(m*K)" 7).
@@ -116,11 +159,13 @@ SYNTAX = "a number and a unit such as '5 kN'"
 
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The one pint registry (built lazily; pint is slow to import).
+    """The one pint registry (pint is imported and the registry built on first use: both are slow).
 
     ``Nm`` and ``Nmm`` are the engineer's newton-metre and newton-millimetre (torque, moment); pint's
     own ``Nm`` is the obscure "number metre" ([length]/[mass]), which made ``M_y = "5 Nm"`` an error.
     """
+    import pint
+
     reg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, on_redefinition="ignore")
     reg.define("newton_metre = newton * meter = Nm")
     reg.define("newton_millimetre = newton * millimeter = Nmm")
@@ -190,14 +235,18 @@ def parse(value, dimension: str, field: str) -> float:
             f"{field} ({quote(value)}) has no unit; "
             f"expected {article} {words} such as '{value.strip()} {suggested}'"
         )
+    common = COMMON_UNITS.get(dimension, {}).get(unit_text)
+    if common is not None:  # pint's own conversion, without loading pint
+        return _remember(value, dimension, _finite(number * common[0] + common[1], field, value))
     unit = _unit(unit_text)
     if isinstance(unit, str):
         raise InputError(
             f"{field} ({quote(value)}): unknown unit {unit_text!r}; expected a {words or 'pure number'}"
             f"{_suggestion(value, unit_text, dimension)}"
         )
-    ureg = registry()
-    quantity = ureg.Quantity(number, unit)
+    import pint  # already loaded by _unit's registry()
+
+    quantity = registry().Quantity(number, unit)
     try:
         out = quantity.to(target).magnitude if target else quantity.to("").magnitude
     except pint.DimensionalityError:

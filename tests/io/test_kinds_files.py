@@ -1,8 +1,6 @@
 """Input files of the bearing kinds: JSON Schema with units, and bad input refused in one line."""
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -15,9 +13,13 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_json_schema_has_every_kind_with_units():
-    out = subprocess.run(
-        [sys.executable, "-m", "bearingkit", "schema"], capture_output=True, text=True, check=True
-    ).stdout
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    result = CliRunner().invoke(app, ["schema"])
+    assert result.exit_code == 0, result.output
+    out = result.stdout
     schema = json.loads(out)
     assert set(KINDS) <= set(schema["$defs"]["BearingHeader"]["properties"]["type"]["enum"])
     srb = schema["$defs"]["geometry_spherical_roller"]["properties"]

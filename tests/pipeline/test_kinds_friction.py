@@ -109,7 +109,5 @@ def test_default_friction_on_a_new_kind_points_to_the_models_that_cover_it():
 def test_text_output_states_each_note_once_and_keeps_the_case_line_whole():
     res = runner.invoke(app, ["friction", SRB, "--model", "skf"])
     assert res.exit_code == 0, res.stderr
-    assert (
-        res.stdout.count("SKF constants of series 222E ([bearing] series)") == 1
-    )  # run notes, not per case
+    assert res.stdout.count("SKF constants of series 222E ([bearing] series)") == 1  # run notes, not per case
     assert "case 'radial_60kN' (skf model): M = " in res.stdout  # not wrapped to the table's width

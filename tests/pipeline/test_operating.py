@@ -101,10 +101,13 @@ def test_report_shows_the_operating_conditions(tmp_path):
         (('temperature = "50 degC"', 'temperature = "-60 degC"'), "below the range of lubricant"),
     ],
 )
-def test_bad_operating_input_is_one_line(tmp_path, edit, fragment):
+def test_bad_operating_input_is_one_line(tmp_path, edit, fragment, monkeypatch):
+    # a short relative path: the message names the file and is cut at MAX_MESSAGE_CHARS, and the
+    # temporary folders of parallel runs (pytest-xdist) are long enough to push the field out
     bad = tmp_path / "bad.toml"
-    bad.write_text(Path(FITS).read_text().replace(*edit))
-    result = runner.invoke(app, ["rating", str(bad)])
+    bad.write_text(Path(FITS).resolve().read_text().replace(*edit))
+    monkeypatch.chdir(tmp_path)
+    result = runner.invoke(app, ["rating", "bad.toml"])
     assert result.exit_code == 2, result.stdout
     lines = result.stderr.splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and fragment in lines[0]

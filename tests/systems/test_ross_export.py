@@ -1,9 +1,9 @@
 """ROSS export: a rotor with bearingkit's exported stiffness has the critical speeds of the same rotor
 with that stiffness typed in by hand.
 
-Needs ross-rotordynamics (the ``[ross]`` extra). ``make test`` installs it and runs this file with
-``-m ross`` (ROSS's start-up, numba compilation included, takes ~40 s, so the default run leaves it
-out as slow). Under CI a missing ROSS is a failure, not a skip.
+Needs ross-rotordynamics (the ``[ross]`` extra, ROSS 2.3+ or 3). ``make test`` installs it and runs this
+file in its parallel run (``-m "not slow or ross"``; ROSS's start-up, numba compilation included, takes
+~40 s, so a plain ``pytest`` leaves it out as slow). Under CI a missing ROSS is a failure, not a skip.
 """
 
 from __future__ import annotations
@@ -34,6 +34,12 @@ def _ross():
         if os.environ.get("CI"):
             pytest.fail("ross-rotordynamics must be installed in CI (make test installs the [ross] extra)")
         pytest.skip("ross-rotordynamics not installed (pip install 'bearingkit[ross]')")
+
+
+def _speed_keyword(rs) -> str:
+    """How a user types a rotor-speed table into the installed ROSS: ``speed=`` from ROSS 3.0 (PR #1371),
+    ``frequency=`` before (read from ROSS's version, independently of bearingkit's signature check)."""
+    return "speed" if int(rs.__version__.split(".")[0]) >= 3 else "frequency"
 
 
 def _first_critical_speeds(rotor, n=2):
@@ -78,9 +84,11 @@ def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(
     sweep = dataclasses.replace(inp.loads.take([0]), names=tuple("abcd"), speed=speeds)
     res4 = solve(inp.system, sweep)
     indexed = ross_rotor(res4)
-    assert (
-        indexed.bearing_elements[0].frequency is not None and len(indexed.bearing_elements[0].frequency) == 4
-    )
+    from bearingkit.systems.ross import speed_axis
+
+    assert speed_axis(rs) == _speed_keyword(rs)
+    axis = getattr(indexed.bearing_elements[0], _speed_keyword(rs))
+    assert axis is not None and len(axis) == 4
     path4 = write_tables(
         [shaft_stiffness_table(res4, b.name) for b in inp.system.bearings], tmp_path / "k4.csv"
     )
@@ -91,7 +99,7 @@ def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(
         hand_indexed.append(
             rs.BearingElement(
                 n=int(node),
-                frequency=rows["speed_rad_s"].to_numpy(float),
+                **{_speed_keyword(rs): rows["speed_rad_s"].to_numpy(float)},
                 cxx=np.zeros(len(rows)),
                 **{
                     key: rows[col].to_numpy(float)
@@ -126,3 +134,47 @@ def test_exported_stiffness_gives_the_critical_speeds_of_hand_entered_stiffness(
     ]
     wn_stiff = _first_critical_speeds(rs.Rotor(exported.shaft_elements, exported.disk_elements, stiff))
     assert wn_stiff[0] / wn_hand[0] - 1 > 0.01
+
+
+def _modal_wn(rotor, speed, n=4, **whirl):
+    return np.sort(np.asarray(rotor.run_modal(speed=speed, num_modes=12, **whirl).wn))[:n]
+
+
+def test_a_speed_table_is_read_along_the_rotor_speed_axis(tmp_path):
+    """Issue 42 (ROSS 3 gave ``frequency=`` the meaning of the whirl frequency): at a speed of the
+    exported table, the natural frequencies of the rotor equal those of the same rotor with the bearings'
+    stiffness AT that speed typed in as constants (from the CSV bearingkit writes). On ROSS 3 the modal
+    analysis is asked for another whirl frequency (another point of the table): a rotor-speed table
+    ignores it, a table wrongly passed along the whirl axis would be read there, and the frequencies
+    would differ (checked by hand with the ROSS 2 keyword on ROSS 3.1: this assertion fails). On ROSS 2
+    both axes are the rotor speed (synchronous evaluation)."""
+    rs = _ross()
+    from bearingkit.systems.ross import ross_rotor
+
+    inp = load_shaft_file(SPINDLE)
+    inp = dataclasses.replace(inp, system=dataclasses.replace(inp.system, max_element_length=0.03))
+    speeds = np.array([100.0, 700.0, 1300.0, 1900.0, 2500.0])
+    sweep = dataclasses.replace(inp.loads.take([0]), names=tuple("abcde"), speed=speeds)
+    res = solve(inp.system, sweep)
+    assert res.converged.all()
+    indexed = ross_rotor(res)
+    csv = pd.read_csv(
+        write_tables([shaft_stiffness_table(res, b.name) for b in inp.system.bearings], tmp_path / "k.csv")
+    )
+    keys = (("kxx", "K_ux_ux_N_per_m"), ("kxy", "K_ux_uy_N_per_m"), ("kyx", "K_uy_ux_N_per_m"),
+            ("kyy", "K_uy_uy_N_per_m"), ("kzz", "K_uz_uz_N_per_m"))  # fmt: skip
+    kxx = csv[csv["bearing"] == inp.system.bearings[0].name]["K_ux_ux_N_per_m"].to_numpy(float)
+    assert kxx[-1] < 0.97 * kxx[0]  # the table is not flat: the axis matters
+    for i in (1, 3):  # table points inside the range (no end effects of the interpolation)
+        at = csv[np.isclose(csv["speed_rad_s"], speeds[i])]
+        constant = [
+            rs.BearingElement(
+                n=b.n, cxx=0.0, **{k: float(at[at["bearing"] == b.tag][col].iloc[0]) for k, col in keys}
+            )
+            for b in indexed.bearing_elements
+        ]
+        fixed = rs.Rotor(indexed.shaft_elements, indexed.disk_elements, constant)
+        whirl = {"frequency": float(speeds[4 - i])} if _speed_keyword(rs) == "speed" else {}
+        wn_table, wn_fixed = _modal_wn(indexed, speeds[i], **whirl), _modal_wn(fixed, speeds[i], **whirl)
+        assert np.all(wn_fixed > 0)
+        assert np.allclose(wn_table, wn_fixed, rtol=1e-6), (speeds[i], wn_table, wn_fixed)

@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import json
 import re
-import subprocess
-import sys
 import tomllib
 from pathlib import Path
 
@@ -40,9 +38,18 @@ def spindle():
 
 
 def _cli(*args):
-    return subprocess.run(
-        [sys.executable, "-m", "bearingkit", *args], capture_output=True, text=True, timeout=600, check=False
-    )
+    """The command run in-process by typer's CliRunner (the code path of a subprocess without Python's
+    start-up, which the start-up tests cover): returncode, stdout and stderr as a subprocess gives them."""
+    from types import SimpleNamespace
+
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
+
+    result = CliRunner().invoke(app, [str(a) for a in args])
+    if result.exception is not None and not isinstance(result.exception, SystemExit):
+        raise result.exception
+    return SimpleNamespace(returncode=result.exit_code, stdout=result.stdout, stderr=result.stderr)
 
 
 @pytest.mark.parametrize("name", ["countershaft", "spindle"])

@@ -12,7 +12,11 @@ drawn in the browser from its JSON, or PNGs of :mod:`bearingkit.report.plots`); 
 - ``static/`` — the page: plain HTML, CSS and JavaScript, no build step, no CDN.
 """
 
-from bearingkit.app.api import create_app
-from bearingkit.app.server import serve
+from bearingkit.extras import check
+
+check("app", "the web app (bearingkit.app, bearingkit serve)")  # one line naming the extra, not a traceback
+
+from bearingkit.app.api import create_app  # noqa: E402
+from bearingkit.app.server import serve  # noqa: E402
 
 __all__ = ["create_app", "serve"]

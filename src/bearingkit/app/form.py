@@ -21,6 +21,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from bearingkit.errors import InputError
 from bearingkit.io import loader, schema
+from bearingkit.paths import examples_dir
 
 __all__ = [
     "EXAMPLES_DIR",
@@ -40,8 +41,8 @@ __all__ = [
     "open_source",
 ]
 
-#: The repository's example files (present in a source checkout; an installed wheel lists none).
-EXAMPLES_DIR = Path(__file__).resolve().parents[3] / "examples"
+#: The example files (the repository's, or the copy a wheel installs: bearingkit.paths).
+EXAMPLES_DIR = examples_dir()
 #: Largest input file [bytes] the app reads or accepts as an upload. The largest example is ~5 kB; a
 #: hand-written bearing file with many load cases stays far below 256 kB.
 MAX_TOML_BYTES = 256 * 1024

@@ -4,12 +4,18 @@ SI inside; units only in the input file and in option values. :mod:`bearingkit.c
 commands (:mod:`bearingkit.cli.catalogue_commands` the catalogue search and bearing selection),
 :mod:`bearingkit.cli.common` the options and helpers they share, :mod:`bearingkit.cli.tables` the rich
 tables, :mod:`bearingkit.cli.flagship` the flagship demonstration (``make run``).
+
+**Start-up.** ``bearingkit --help`` and every ``bearingkit COMMAND --help`` load typer, rich and these
+command modules only: a command module imports the pipeline, numpy, pint, pydantic, the tables … inside
+its command function, never at module level, so a command costs its imports only when it runs
+(``tests/test_startup.py`` runs every command's ``--help`` in a fresh interpreter and fails when one of
+the heavy libraries appears in ``sys.modules``). The names below other than ``app`` and ``main`` load on
+first use.
 """
 
 from bearingkit.cli import catalogue_commands  # noqa: F401  (registers catalogue, select)
 from bearingkit.cli.commands import app, main
-from bearingkit.cli.flagship import FLAGSHIP_SECTIONS, FlagshipContext, flagship_section, run_sections
-from bearingkit.cli.tables import case_table, friction_table, rating_table
+from bearingkit.lazy import exports
 
 __all__ = [
     "FLAGSHIP_SECTIONS",
@@ -22,3 +28,16 @@ __all__ = [
     "rating_table",
     "run_sections",
 ]
+
+__getattr__ = exports(
+    __name__,
+    {
+        "FLAGSHIP_SECTIONS": "flagship",
+        "FlagshipContext": "flagship",
+        "flagship_section": "flagship",
+        "run_sections": "flagship",
+        "case_table": "tables",
+        "friction_table": "tables",
+        "rating_table": "tables",
+    },
+)

@@ -12,8 +12,6 @@ import json
 import sys
 
 import typer
-from rich.markup import escape
-from rich.table import Table
 
 from bearingkit.cli.commands import app
 from bearingkit.cli.common import _JSON_OPTION, _fail, console, one_line_errors
@@ -85,6 +83,9 @@ def catalogue(
     if as_json:
         sys.stdout.write(json.dumps(out, indent=1) + "\n")
         return
+    from rich.markup import escape
+    from rich.table import Table
+
     table = Table(title=f"bearingkit catalogue {pattern}: {len(out)} designations (C, C0 in kN)")
     cols = (
         "designation",
@@ -167,6 +168,8 @@ def select(
             _fail(f"select: {exc}", 1)
         sys.stdout.write(text + "\n")
     else:
+        from rich.table import Table
+
         table = Table(title=f"bearingkit select: {len(data['candidates'])} candidates (lightest first)")
         cols = ("designation", "d mm", "D mm", "B mm", "kg est.", "C kN", "C from", "P kN", "L10h ISO 281",
                 "L10h ISO/TS 16281", "s0")  # fmt: skip

@@ -41,9 +41,8 @@ from bearingkit.cli.common import (
     err_console,
     one_line_errors,
 )
-from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
+from bearingkit.cli.flagship import FLAGSHIP_REPORT
 from bearingkit.cli.system import register as _register_system
-from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
 from bearingkit.errors import InputError, one_line
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
@@ -57,13 +56,25 @@ def validate(
     everything: bool = typer.Option(
         False, "--all", help="Include the diagnostic cases (derived values, duplicates, alternative models)."
     ),
+    quick: bool = typer.Option(
+        False, "--quick", help="Only the first case of every source (paper, standard): a few seconds."
+    ),
 ):
     """Recompute the published numbers bearingkit reproduces; print per paper predictions passing / total,
     calibrations and deviations; exit 1 on an unexplained failure."""
     from bearingkit.cli.validate_tables import case_table, not_computable_table, summary_table
-    from bearingkit.validation.registry import all_cases, failures, not_computable, run_cases, summarize
+    from bearingkit.validation.registry import (
+        all_cases,
+        failures,
+        not_computable,
+        quick_cases,
+        run_cases,
+        summarize,
+    )
 
     cases = all_cases(prefixes or (), diagnostics=everything)
+    if quick:
+        cases = quick_cases(cases)
     if not cases:
         err_console.print(f"error: no validation case matches {prefixes}")
         raise typer.Exit(2)
@@ -111,8 +122,10 @@ def analyze(
     if as_json:
         _print_json(file, data)
     else:
-        _header(a, file)
         from bearingkit.cli.operating_tables import limits_text, operating_text
+        from bearingkit.cli.tables import case_table, warnings_text
+
+        _header(a, file)
 
         for c in data["cases"]:
             console.print(case_table(c, data["free_dofs"]))
@@ -196,8 +209,10 @@ def rating(
     if as_json:
         _print_json(file, data)
     else:
-        _header(a, file)
         from bearingkit.cli.operating_tables import limits_text, lubrication_table, thermal_text
+        from bearingkit.cli.tables import duty_cycle_table, rating_table, warnings_text
+
+        _header(a, file)
 
         for c in data["cases"]:
             if "thermal" in c:
@@ -287,6 +302,7 @@ def friction(
     if (choose(a)[0] if model == AUTO else model) == "components":
         _fail_unconverged(file, a)
     from bearingkit.cli.operating_tables import comparison_text, heat_text, thermal_text
+    from bearingkit.cli.tables import friction_table, warnings_text
 
     if compare:
         data = a.friction_comparison()
@@ -328,6 +344,8 @@ def run_flagship(
     no_report: bool = typer.Option(False, "--no-report", help="Do not write the HTML report."),
 ):
     """The flagship demonstration on seed 000 (what `make run` calls)."""
+    from bearingkit.cli.flagship import run_sections
+
     run_sections(console, as_json=as_json, report_path=None if no_report else report)
 
 
@@ -350,6 +368,9 @@ def study(
     ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
+    from bearingkit.extras import check
+
+    check("studies", "bearingkit study")
     from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
     from bearingkit.studies.__main__ import list_factors as factors_of
     from bearingkit.studies.__main__ import list_outputs as outputs_of
@@ -493,9 +514,49 @@ def serve(
     ),
 ):
     """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    from bearingkit.extras import check
+
+    check("app", "bearingkit serve")
     from bearingkit.app import serve as run_server
 
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
+
+
+@app.command("compile")
+def compile_core(
+    quiet: bool = typer.Option(False, "--quiet", help="Print nothing (the background build runs this)."),
+    wait: float = typer.Option(600.0, "--wait", help="Seconds to wait for a build already running."),
+):
+    """Build the compiled solver core once (about a minute); large jobs load it from then on.
+
+    Until it is built, small jobs run on the numpy core and the first one starts this build in the
+    background; `make run` and `make test` run it first."""
+    import time
+
+    from bearingkit.bearings.warmup import build
+    from bearingkit.rows.numba_cache import cache_dir
+
+    t0 = time.perf_counter()
+    if not quiet:
+        console.print(f"compiled solver core: {cache_dir()}", markup=False, highlight=False)
+    done = build(wait=wait, echo=None if quiet else lambda line: console.print(line, highlight=False))
+    if not quiet:
+        console.print(f"compiled solver core {done} ({time.perf_counter() - t0:.1f} s)", highlight=False)
+    if done == "busy":
+        raise typer.Exit(1)
+
+
+def _notes_on_stderr() -> None:
+    """The solver's one-line notes (which core ran, a compile starting) as ``note: …`` on stderr."""
+    import logging
+
+    log = logging.getLogger("bearingkit.solver")
+    if not any(getattr(h, "bearingkit_cli", False) for h in log.handlers):
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("note: %(message)s"))
+        handler.bearingkit_cli = True
+        log.addHandler(handler)
+        log.setLevel(logging.INFO)
 
 
 # ``bearingkit system``: drivetrains (its own module, docs/drivetrains.md)
@@ -503,7 +564,8 @@ _register_system(app)
 
 
 def main() -> None:
-    """Entry point: one-line errors for bad input, exit code 2."""
+    """Entry point: one-line errors for bad input, exit code 2; the solver's notes on stderr."""
+    _notes_on_stderr()
     try:
         app()
     except InputError as exc:

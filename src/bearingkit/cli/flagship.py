@@ -23,8 +23,10 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-#: Repository examples (src/bearingkit/cli/flagship.py → ../../../examples).
-EXAMPLES_DIR = Path(__file__).resolve().parents[3] / "examples"
+from bearingkit.paths import examples_dir
+
+#: The example files (the repository's, or the copy a wheel installs: bearingkit.paths).
+EXAMPLES_DIR = examples_dir()
 #: The flagship input file and load case (seed 000, sections 6.1.4–6.1.5: F_a = F_r = 3 kN, M = 600 N·m).
 FLAGSHIP_FILE = EXAMPLES_DIR / "seed000_composite.toml"
 FLAGSHIP_CASE = "flagship"

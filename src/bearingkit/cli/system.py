@@ -10,7 +10,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.table import Table
 
 from bearingkit.cli.common import (
     _CONTAMINATION_OPTION,
@@ -20,7 +19,6 @@ from bearingkit.cli.common import (
     console,
     one_line_errors,
 )
-from bearingkit.cli.tables import _num
 from bearingkit.errors import one_line
 
 RPM = 30.0 / 3.141592653589793
@@ -28,6 +26,10 @@ RPM = 30.0 / 3.141592653589793
 
 def case_tables(c: dict) -> list:
     """Renderables of one case: meshes, bearings, power flow, warnings."""
+    from rich.table import Table
+
+    from bearingkit.cli.tables import _num
+
     out = []
     meshes = Table(
         title=f"{c['case']}: meshes (held torque {c['held_torque_Nm']:.4g} N·m)", title_justify="left"
@@ -150,6 +152,7 @@ def register(app: typer.Typer) -> None:
     ):
         """A drivetrain: shafts joined by gear meshes and planetary stages, every bearing's lives and
         friction, the system life, the power flow; exit 1 if a case fails."""
+        from bearingkit.cli.tables import _num
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 

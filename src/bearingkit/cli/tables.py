@@ -13,8 +13,6 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from bearingkit.analysis.rating.iso281 import caption as iso281_caption
-
 #: Displacements [m] and angles [rad] below this are the solver's round-off, shown as 0 (the solve
 #: converges to ~1e-10 of the load scale; 1e-12 m is a thousandth of a nanometre).
 DISPLACEMENT_NOISE = 1.0e-12
@@ -119,6 +117,8 @@ def rating_table(c: dict) -> Table:
         f"L_nr = {_num(s['Lnr_rev'], 1e-6)} 10⁶ rev, L_nmr = {_lnm(s['Lnmr_rev'])}; "
         f"bearing s0 = {_num(s['static_safety'], fmt='.3g')}"
     )
+    from bearingkit.analysis.rating.iso281 import caption as iso281_caption
+
     iso281 = iso281_caption(s)
     # the headline life first: ISO 281 where it rates the bearing (analysis.rating.compare.headline)
     lines = [iso281, ts] if s.get("headline", {}).get("method") == "ISO 281" else [ts, iso281]

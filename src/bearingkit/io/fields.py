@@ -42,7 +42,7 @@ MAX_ITERATIONS = 1_000
 class Strict(BaseModel):
     """Base of every section: unknown fields are errors, no type coercion, immutable."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, strict=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True, defer_build=True)
 
 
 def example(dimension: str) -> str:

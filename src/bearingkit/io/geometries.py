@@ -449,7 +449,8 @@ def _describe_defaults() -> None:
             if info.default is None and default is not inspect.Parameter.empty and default is not None:
                 note = f"Default (SI): {default!r}."
                 info.description = f"{info.description} {note}" if info.description else note
-        model.model_rebuild(force=True)
+        if model.__pydantic_complete__:  # built already; otherwise (defer_build) the first use reads them
+            model.model_rebuild(force=True)
 
 
 _describe_defaults()

@@ -22,14 +22,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from bearingkit.paths import examples_dir
 from bearingkit.studies.definition.load import StudyDefinition, load_study
 from bearingkit.studies.run.cases import StudyResult
 from bearingkit.studies.run.runner import run_study
 
 __all__ = ["STUDIES_DIR", "example", "resized", "run_example"]
 
-#: The example study files (src/bearingkit/papers/examples.py → ../../../examples/studies).
-STUDIES_DIR = Path(__file__).resolve().parents[3] / "examples" / "studies"
+#: The example study files (the repository's examples/studies, or the copy a wheel installs).
+STUDIES_DIR = examples_dir() / "studies"
 
 
 def example(name: str) -> Path:
@@ -38,7 +39,9 @@ def example(name: str) -> Path:
 
     path = STUDIES_DIR / f"{name}.toml"
     if not path.is_file():
-        raise InputError(f"example study ({name!r}) not found at {path} (run from a source checkout)")
+        raise InputError(
+            f"example study ({name!r}) not found at {path} (a source checkout or an installed wheel has it)"
+        )
     return path
 
 

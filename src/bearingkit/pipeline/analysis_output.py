@@ -197,6 +197,53 @@ class AnalysisOutput:
         out["references"] = self.references
         return out
 
+    def __repr__(self) -> str:
+        names = ", ".join(repr(n) for n in self.case_names[:3]) + (" …" if self.n_cases > 3 else "")
+        plural = "case" if self.n_cases == 1 else "cases"
+        source = str(self.input.source)
+        return f"<Analysis of {self.input.model.name!r} from {source!r}: {self.n_cases} {plural} {names}>"
+
+    def _repr_html_(self) -> str:
+        """The notebook view (:mod:`bearingkit.display`): one line per case with loads, the largest
+        element load and pressure, L10h by ISO 281 and ISO/TS 16281 and s0, then every warning."""
+        from bearingkit.display import html_table, number
+
+        try:
+            res = self.statics
+            rating = self.rating
+            rows, warnings = [], []
+            for i, name in enumerate(self.case_names):
+                load = res.load[i]
+                system = rating.to_dict(i)["system"] if rating is not None else {}
+                speed = self.operating.speed[i]
+                rows.append(
+                    [
+                        name,
+                        "yes" if res.converged[i] else "NO",
+                        number(speed, 30 / np.pi) if speed else "0",
+                        number(np.hypot(load[0], load[1]), 1e-3),
+                        number(load[2], 1e-3),
+                        number(np.hypot(load[3], load[4])),
+                        number(max(float(r.max_load[i]) for r in res.rows)),
+                        number(max(float(np.max(r.max_pressure[i])) for r in res.rows), 1e-6),
+                        number(system.get("L10h_iso281_h"), digits=4),
+                        number(system.get("L10h_h"), digits=4),
+                        number(system.get("static_safety"), digits=3),
+                    ]
+                )
+                warnings += [f"{name}: {w}" for w in self.warnings[i]]
+            columns = ["case", "converged", "n [r/min]", "F_r [kN]", "F_a [kN]", "M [N·m]", "Q_max [N]",
+                       "p_max [MPa]", "L10h ISO 281 [h]", "L10h ISO/TS 16281 [h]", "s0"]  # fmt: skip
+            notes = list(self.notes)
+            if rating is None:
+                notes.insert(0, f"no ratings: {self._rating[1]}")
+            title = f"{self.input.model.name} ({self.input.source})"
+            return html_table(title, columns, rows, warnings=warnings, notes=notes)
+        except Exception as exc:  # a notebook cell must show something, and say what went wrong
+            from html import escape
+
+            return f"<div class='bearingkit'><b>{escape(repr(self))}</b><br>error: {escape(str(exc))}</div>"
+
     def to_pandas(self):
         """One line per case with every headline quantity (SI, units in the column names).
 

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import hashlib
 import os
+import time
+from contextlib import contextmanager
 from pathlib import Path
 
 #: The modules holding ``@njit(cache=True)`` functions, relative to the package root. A new compiled
@@ -39,6 +41,16 @@ COMPILED_SOURCES = (
 
 #: Threading settings given to the OpenMP runtime when the user set none (see the module docstring).
 THREAD_ENV = {"OMP_WAIT_POLICY": "PASSIVE"}
+#: File written into the cache directory once every compiled kind has been compiled and cached.
+BUILT_MARKER = "built"
+#: File held (created exclusively) by the one process building the core; older than
+#: :data:`BUILD_LOCK_STALE_S` it is taken to be left by a process that died.
+BUILD_LOCK = "building"
+#: Age [s] after which a build lock is stale (a build takes 1–3 min, 10 on a very loaded machine).
+BUILD_LOCK_STALE_S = 1800.0
+#: Environment variable: ``0`` stops :func:`start_background_build` (tests, CI and benchmarks build the
+#: core with ``bearingkit compile`` in the foreground, or measure without it).
+BACKGROUND_ENV = "BEARINGKIT_BACKGROUND_COMPILE"
 
 _PACKAGE = Path(__file__).resolve().parent.parent
 _DONE: dict[str, str] = {}
@@ -59,6 +71,108 @@ def sources_hash() -> str:
     return digest.hexdigest()[:16]
 
 
+def cache_dir() -> Path:
+    """The directory :func:`configure` points numba at (computed, nothing created or set)."""
+    base = os.environ.get("BEARINGKIT_NUMBA_BASE") or os.environ.get("NUMBA_CACHE_DIR")
+    if not base:
+        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+        base = str(Path(xdg) / "bearingkit" / "numba")
+    if "hash" not in _DONE:
+        _DONE["hash"] = sources_hash()
+    return Path(base) / _DONE["hash"]
+
+
+def numba_installed() -> bool:
+    """Whether numba can be found (not imported: that takes a third of a second)."""
+    from importlib.util import find_spec
+
+    try:
+        return find_spec("numba") is not None
+    except (ImportError, ValueError):  # sys.modules["numba"] = None (a test hiding it) or a broken entry
+        return False
+
+
+def is_built() -> bool:
+    """Whether ``bearingkit compile`` finished for these sources and this numba (no numba import)."""
+    try:
+        return (cache_dir() / BUILT_MARKER).is_file()
+    except OSError:
+        return False
+
+
+def mark_built() -> None:
+    """Record that every compiled kind is in the cache (called by the build once it succeeded)."""
+    (cache_dir() / BUILT_MARKER).write_text("compiled by bearingkit compile\n", encoding="utf-8")
+
+
+@contextmanager
+def build_lock(wait: float = 0.0):
+    """Hold the build lock of the cache directory; yields False when another live build holds it.
+
+    ``wait`` [s]: how long to wait for another build to finish (checked every second); a lock older
+    than :data:`BUILD_LOCK_STALE_S` is broken.
+    """
+    folder = cache_dir()
+    folder.mkdir(parents=True, exist_ok=True)
+    lock = folder / BUILD_LOCK
+    deadline = time.monotonic() + wait
+    while True:
+        try:
+            fd = os.open(lock, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
+            break
+        except FileExistsError:
+            try:
+                if time.time() - lock.stat().st_mtime > BUILD_LOCK_STALE_S:
+                    lock.unlink(missing_ok=True)
+                    continue
+            except OSError:
+                continue
+            if time.monotonic() >= deadline or is_built():
+                yield False
+                return
+            time.sleep(1.0)
+    try:
+        os.write(fd, f"{os.getpid()}\n".encode())
+        os.close(fd)
+        yield True
+    finally:
+        lock.unlink(missing_ok=True)
+
+
+def start_background_build() -> bool:
+    """Start ``python -m bearingkit compile --quiet --wait 0`` detached, once per process; True if started.
+
+    Nothing is started when :data:`BACKGROUND_ENV` is ``0``, when the core is built, or when a build
+    is already running (its lock file exists and is fresh). The child's output goes to the null
+    device; it outlives this process (its own session), so a one-line command that answered on the
+    numpy core leaves the compiled core built for the next one.
+    """
+    if _DONE.get("spawned") or os.environ.get(BACKGROUND_ENV, "1").strip() == "0" or is_built():
+        return False
+    _DONE["spawned"] = "1"
+    lock = cache_dir() / BUILD_LOCK
+    try:
+        if lock.exists() and time.time() - lock.stat().st_mtime < BUILD_LOCK_STALE_S:
+            return False
+    except OSError:
+        pass
+    import subprocess
+    import sys
+
+    try:
+        subprocess.Popen(
+            [sys.executable, "-m", "bearingkit", "compile", "--quiet", "--wait", "0"],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            start_new_session=True,
+            env={**os.environ, BACKGROUND_ENV: "0"},
+        )
+    except OSError:  # no interpreter to start (embedded Python): the next big job compiles instead
+        return False
+    return True
+
+
 def configure() -> str | None:
     """Point numba's cache at ``<base>/<sources_hash>``; the directory used, or None if left alone.
 
@@ -70,11 +184,8 @@ def configure() -> str | None:
         return _DONE["dir"] or None
     for name, value in THREAD_ENV.items():
         os.environ.setdefault(name, value)
-    base = os.environ.get("BEARINGKIT_NUMBA_BASE") or os.environ.get("NUMBA_CACHE_DIR")
-    if not base:
-        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-        base = str(Path(xdg) / "bearingkit" / "numba")
-    target = Path(base) / sources_hash()
+    target = cache_dir()
+    base = str(target.parent)
     try:
         target.mkdir(parents=True, exist_ok=True)
     except OSError:  # read-only home: numba's default location still works

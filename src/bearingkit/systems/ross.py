@@ -2,11 +2,17 @@
 
 SI units (ROSS takes SI floats). Optional dependency: ``pip install 'bearingkit[ross]'``.
 
-A ROSS ``BearingElement`` takes kxx, kxy, kyx, kyy (and kzz) as constants or as arrays over
-``frequency`` [rad/s], which ROSS interpolates (a spline over ≥ 4 speeds, linear/quadratic over 2–3)
-when it evaluates the bearing at a rotor speed. :func:`ross_bearing` passes a
-:class:`~bearingkit.systems.shaft.stiffness.StiffnessTable`'s radial block and axial term that way: one
-point → constants, several points at distinct speeds → a speed-indexed element. The element has no
+A ROSS ``BearingElement`` takes kxx, kxy, kyx, kyy (and kzz) as constants or as tables over the rotor
+speed [rad/s], which ROSS interpolates when it evaluates the bearing at a rotor speed. ROSS 2 calls that
+axis ``frequency=``; ROSS 3 (petrobras/ross PR #1371, ROSS 3.0) calls it ``speed=`` and gives
+``frequency=`` another meaning, the excitation (whirl) frequency: a rotor-speed table passed as
+``frequency=`` to ROSS 3 would be read along the wrong axis, silently (a Campbell diagram or a modal
+analysis at speed would interpolate the stiffness at the whirl frequency instead of the rotor speed).
+:func:`speed_axis` reads which keyword the installed ROSS's ``BearingElement`` declares (ROSS 2.x
+accepts any keyword through ``**kwargs``, so only a declared ``speed`` parameter counts) and
+:func:`ross_bearing` passes the table along that axis. :func:`ross_bearing` passes a
+:class:`~bearingkit.systems.shaft.stiffness.StiffnessTable`'s radial block and axial term: one point →
+constants, several points at distinct speeds → a speed-indexed element. The element has no
 tilt stiffness and no force–tilt coupling (ROSS's bearing element acts on x, y, z only): those terms
 stay in the JSON/CSV table. Damping is not computed by bearingkit: the element gets ``damping``
 (default 0) in cxx = cyy.
@@ -30,6 +36,7 @@ import warnings
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.extras import MissingExtra
 from bearingkit.systems.shaft.stiffness import StiffnessTable, shaft_stiffness_table
 
 #: What to install when ROSS is missing.
@@ -43,11 +50,14 @@ def import_ross():
     both streams) when that proprietary library is absent; it is irrelevant here and would corrupt
     ``--json`` output, so the import runs with file descriptors 1 and 2 sent to the null device.
     """
+    from bearingkit.extras import check, message
+
+    check("ross", "the ROSS export (bearingkit.systems.ross)")
     try:
         with _quiet():
             import ross
-    except ImportError as exc:
-        raise InputError(f"ross-rotordynamics is not installed ({exc}); {INSTALL_HINT}") from None
+    except ImportError as exc:  # installed but broken (e.g. ROSS 2 with plotly >= 6)
+        raise MissingExtra(message("ross", "the ROSS export", [f"a working ross ({exc})"])) from None
     return ross
 
 
@@ -71,14 +81,30 @@ def _quiet():
                 os.close(copy)
 
 
+def speed_axis(rs=None) -> str:
+    """The ``BearingElement`` keyword of a rotor-speed table in the installed ROSS: ``"speed"`` (ROSS 3,
+    declared parameter) or ``"frequency"`` (ROSS 2, where ``frequency=`` is the rotor speed)."""
+    import inspect
+
+    rs = rs or import_ross()
+    params = inspect.signature(rs.BearingElement.__init__).parameters
+    declared = params.get("speed")
+    return (
+        "speed"
+        if declared is not None and declared.kind is not inspect.Parameter.VAR_KEYWORD
+        else "frequency"
+    )
+
+
 def ross_bearing(table: StiffnessTable, node: int, *, damping: float = 0.0, tag: str | None = None):
     """A ROSS ``BearingElement`` at ``node`` from the radial block and axial term of ``table``.
 
     Parameters
     ----------
     table : StiffnessTable
-        One point (constant coefficients) or points at distinct speeds (a speed-indexed element,
-        interpolated by ROSS; points are sorted by speed). Use ``table.select`` to pick one load level.
+        One point (constant coefficients) or points at distinct speeds (a rotor-speed table,
+        interpolated by ROSS; points are sorted by speed; ``speed=`` in ROSS 3, ``frequency=`` in ROSS 2).
+        Use ``table.select`` to pick one load level.
     node : int
         ROSS node index.
     damping : float [N·s/m]
@@ -115,8 +141,8 @@ def ross_bearing(table: StiffnessTable, node: int, *, damping: float = 0.0, tag:
     return rs.BearingElement(
         n=node,
         cxx=np.full(len(speeds), damping),
-        frequency=speeds,
         tag=tag,
+        **{speed_axis(rs): speeds},  # the rotor-speed axis of this ROSS (module docstring)
         **{n: np.asarray(v, dtype=float) for n, v in coeff.items()},
     )
 

@@ -241,6 +241,16 @@ def all_cases(prefixes: Iterable[str] = (), diagnostics: bool = True) -> list[Ca
     return sorted(cases, key=lambda c: c.id)
 
 
+def quick_cases(cases: Iterable[Case]) -> list[Case]:
+    """``validate --quick``: the first case (by id) of every source (the id's first segment: ``harris``,
+    ``iso281``, ``seed000`` …), a few seconds that touch every group of the registry. Each paper and
+    standard is represented once; the full run remains the validation."""
+    first: dict[str, Case] = {}
+    for case in sorted(cases, key=lambda c: c.id):
+        first.setdefault(case.id.partition("/")[0], case)
+    return list(first.values())
+
+
 def relative_error(computed: float, published: float) -> float:
     """``(computed - published) / |published|``; absolute difference when published is 0."""
     if published == 0:

@@ -23,6 +23,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
+import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -228,7 +229,7 @@ def solve(
     if plan.idle_free.size:
         _check_directions(plan, load)
 
-    if plan.pack is not None:
+    if plan.compiled_for(n_cases):
         out = _solve_compiled(plan, q0, load, options, displacement is not None)
         q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
         converged, iterations = out.flags[0], out.counts[0]
@@ -236,6 +237,7 @@ def solve(
         roller_x = out.roller_x if plan.tapered else None
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
     else:
+        started = time.perf_counter()
         evaluations = coarse_evaluations = roller_x = None
         iterations = np.zeros(q0.shape[0], int)
         q0 = q0.copy() if q0 is _ZERO_START else q0  # the shared start stays untouched
@@ -251,6 +253,8 @@ def solve(
             q = np.where(broken[:, None], q0, q)
             converged = converged & ~broken
         bad = q.shape[0] - int(np.count_nonzero(converged))
+        if plan.mode == "auto":
+            backend.spent_numpy(time.perf_counter() - started)
     reasons = [None] * q0.shape[0]
     if bad:
         problem = plan.problem(load)
@@ -466,13 +470,26 @@ class _Plan:
         self.tapered = any(hasattr(k, "inner_stats") for k in self.kernels)
         self._cone = None
         self.compiled = {}  # compiled core's constant arguments (compiled_newton.solve_packed)
-        # The compiled form, or None for the numpy reference: the backend is resolved once per plan
-        # (so $BEARINGKIT_BACKEND is read when a bearing is first solved with these options).
-        self.pack = pack = _compiled_pack(model, options, offsets)
-        if pack is not None:
-            self.solve_packed = backend.compiled_module().solve_packed
-            # Case-axis lengths of per-case geometry (empty when every row's geometry is shared).
-            self.lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
+        # The backend asked for is resolved once per plan (so $BEARINGKIT_BACKEND is read when a
+        # bearing is first solved with these options); the compiled form is built on first use.
+        self.mode = backend.requested(options.backend)
+        self._model = model
+        if self.mode == "compiled":
+            self.compiled_for(1)  # a bearing the compiled core cannot take is an error now
+
+    def compiled_for(self, n_cases: int) -> bool:
+        """Whether a solve of ``n_cases`` runs on the compiled core (``auto``: when it pays for itself,
+        :func:`bearingkit.analysis.solver.backend.wants_compiled`)."""
+        if self.mode == "numpy" or (self.mode == "auto" and not backend.wants_compiled(n_cases)):
+            return False
+        if "pack" not in self.__dict__:
+            # The compiled form, or None for the numpy reference (kinds without a compiled kernel).
+            self.pack = pack = _compiled_pack(self._model, self.options, self.offsets)
+            if pack is not None:
+                self.solve_packed = backend.compiled_module().solve_packed
+                # Case-axis lengths of per-case geometry (empty when every row's geometry is shared).
+                self.lead = {pack.balls.B.shape[0], pack.rollers.Ga.shape[0], pack.tapered.d0i.shape[0]} - {1}
+        return self.pack is not None
 
     @property
     def cone_matrix(self):

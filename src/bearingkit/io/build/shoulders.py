@@ -4,10 +4,10 @@ SI units. The ``[geometry]`` of the ball-bearing types may give each ring's shou
 bottom (for angular contact rings: the high shoulder, on the side the contact runs to) as a length or as a
 fraction of the ball diameter. :func:`shoulder_fractions` turns them into the ``shoulder_height`` mapping of
 :func:`bearingkit.analysis.rating.assembly.rate` (row name → (inner, outer) / D_w) and refuses, in one line
-naming
-the field, a height at or above the groove depth (the arc radius f D_w above the bottom, or f D_w cos θ_b
-above a gothic arch's seam) or a pair whose shoulders would overlap (h_i + h_o ≥ D_w). Fields not given
-take the kind's default in the rating (``bearingkit.analysis.rating.options.DEFAULT_SHOULDER_HEIGHTS``).
+naming the field, a height at or above the groove depth (the arc radius f D_w above the bottom, or
+f D_w cos θ_b above a gothic arch's seam) or a pair whose shoulders would overlap (h_i + h_o ≥ D_w).
+Fields not given take the kind's default in the rating
+(``bearingkit.analysis.rating.options.DEFAULT_SHOULDER_HEIGHTS``).
 """
 
 from __future__ import annotations

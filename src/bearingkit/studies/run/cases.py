@@ -65,6 +65,45 @@ class StudyResult:
     pareto: object = None
     selections: object = None
 
+    def __repr__(self) -> str:
+        d = self.definition
+        head = ", ".join(map(str, list(self.results.columns)[:6]))
+        return f"<StudyResult {d.name!r} ({d.design}): {len(self.results)} rows; columns {head} …>"
+
+    def _repr_html_(self) -> str:
+        """The notebook view (:mod:`bearingkit.display`): the first rows of :attr:`results` in display
+        units named in the headers (``max_load [kN]``), the run's counts, the cases with warnings."""
+
+        from bearingkit.display import MAX_ROWS, html_table, number
+        from bearingkit.studies.results.display import display
+
+        frame, d = self.results, self.definition
+        try:
+            dims = {name: f.dimension for name, f in evaluator_of(d).factors.items()}
+        except Exception:  # a plugin evaluator that cannot be resolved here: SI columns, suffix units
+            dims = {}
+        head = frame.head(MAX_ROWS)
+        columns, cells = [], []
+        for name in frame.columns:
+            values = head[name].to_numpy()
+            if values.dtype.kind in "biuf" and name != "case":
+                shown, label = display(str(name), values.astype(float), dims.get(name))
+                columns.append(label)
+                cells.append([number(v) for v in shown])
+            else:
+                columns.append(str(name))
+                cells.append([str(v) for v in values])
+        rows = [list(r) for r in zip(*cells, strict=True)] if cells else []
+        warned = []
+        if "warnings_count" in frame.columns:
+            counts = zip(frame["case"], frame["warnings_count"], strict=True)
+            warned = [f"case {c}: {int(n)} warning(s)" for c, n in counts if n > 0][:MAX_ROWS]
+        stats = ", ".join(
+            f"{k} {v:.3g}" if isinstance(v, float) else f"{k} {v}" for k, v in self.stats.items()
+        )
+        footer = f"{len(frame)} rows ({max(len(frame) - MAX_ROWS, 0)} not shown); {stats}"
+        return html_table(f"study {d.name} ({d.design})", columns, rows, warnings=warned, footer=footer)
+
 
 def base_values(definition: StudyDefinition) -> dict:
     """Value of every factor not varied by the design: evaluator default < bearing file < [fixed]."""

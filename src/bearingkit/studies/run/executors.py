@@ -44,6 +44,7 @@ from collections.abc import Callable, Iterator, Sequence
 
 from bearingkit.analysis.solver.threads import solver_threads, thread_limit
 from bearingkit.errors import InputError
+from bearingkit.extras import require
 from bearingkit.studies.run.workers import (  # noqa: F401 (their home before issue 34; tests import them here)
     BLAS_ENV,
     _init_pool_worker,
@@ -298,6 +299,7 @@ class DaskExecutor(InProcessExecutor):
         solver_threads: int | None = 1,
         dashboard: str | None = None,
     ):
+        require("distributed", "studies", "the Dask executor")  # one line naming the extra
         env = worker_environment(solver_threads) if solver_threads is not None else {}
         self._own = client is None
         self._cluster = None

@@ -27,6 +27,7 @@ import numpy as np
 
 from bearingkit import references
 from bearingkit.errors import InputError
+from bearingkit.extras import require
 from bearingkit.studies.run import workers
 from bearingkit.studies.run.cases import StudyResult, plan_study
 from bearingkit.studies.run.store import advance, progress_bar
@@ -186,6 +187,7 @@ def _population_cases(X, names, integer, fixed):
 
 def run_optimization(d, executor, store, resume: bool, progress, plan=None):
     """Run an ``optimize`` study (called by :func:`bearingkit.studies.run.runner.run_study`)."""
+    require("pymoo", "studies", "an optimisation study")  # one line naming the extra, not a traceback
     from pymoo.optimize import minimize
 
     t0 = time.perf_counter()

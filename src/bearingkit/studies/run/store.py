@@ -34,6 +34,7 @@ import warnings
 from pathlib import Path
 
 from bearingkit.errors import InputError
+from bearingkit.extras import require
 from bearingkit.studies.run.lock import LOCK_FILE, StoreLock, describe
 from bearingkit.studies.run.publish import CURRENT, OUTPUT_FILES, OUTPUTS_DIR, fsync_dir
 
@@ -92,6 +93,7 @@ class ParquetStore:
     """
 
     def __init__(self, directory):
+        require("pyarrow", "studies", "a study's Parquet store")  # one line naming the extra, not a traceback
         self.directory = Path(directory)
         self.chunk_dir = self.directory / CHUNK_DIR
         self.created = False

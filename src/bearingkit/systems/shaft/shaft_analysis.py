@@ -394,6 +394,40 @@ class ShaftAnalysis:
             "cases": cases,
         }
 
+    def __repr__(self) -> str:
+        names = ", ".join(b.name for b in self.system.bearings)
+        return f"<ShaftAnalysis of {self.system.name!r}: bearings {names}; {self.n_cases} load case(s)>"
+
+    def _repr_html_(self) -> str:
+        """The notebook view (:mod:`bearingkit.display`): per case each bearing's loads, pressure, s0,
+        lives and friction, then the system life; every warning below."""
+        from bearingkit.display import html_table, number
+
+        try:
+            rows, warnings = [], []
+            for c, case in enumerate(self.case_names):
+                for seat in self.system.bearings:
+                    s = self.bearing_summary(seat.name, c)
+                    rows.append([
+                        case, seat.name, number(s["position_m"], 1e3), number(s["radial_load_N"], 1e-3),
+                        number(s["axial_load_N"], 1e-3), number(s["misalignment_rad"], 1e3),
+                        number(s["max_pressure_Pa"], 1e-6), number(s["static_safety"], digits=3),
+                        number(s["L10h_h"]), number(s["Lnmr_h"]), number(s["friction_torque_Nm"]),
+                    ])  # fmt: skip
+                system = self.rating.to_dict(c)["system"]
+                rows.append(
+                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—"]
+                )
+                warnings += [f"{case}: {w}" for w in self.warnings[c]]
+            columns = ["case", "bearing", "z [mm]", "F_r [kN]", "F_a [kN]", "tilt [mrad]", "p_max [MPa]",
+                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]"]  # fmt: skip
+            title = f"{self.system.name} ({self.input.source})"
+            return html_table(title, columns, rows, warnings=warnings, notes=self.notes)
+        except Exception as exc:  # a notebook cell must show something, and say what went wrong
+            from html import escape
+
+            return f"<div class='bearingkit'><b>{escape(repr(self))}</b><br>error: {escape(str(exc))}</div>"
+
     def report(self, path, **options):
         """Write the HTML report of the shaft to ``path`` (atomic); returns the path."""
         if "html" not in SHAFT_RENDERERS:
