@@ -28,6 +28,7 @@ from bearingkit.cli.common import (
     _ROTATING_OPTION,
     _SPEED_OPTION,
     _TEMPERATURE_OPTION,
+    OneLineGroup,
     _analysis,
     _fail,
     _fail_unconverged,
@@ -35,17 +36,19 @@ from bearingkit.cli.common import (
     _load_ratings,
     _print_json,
     console,
-    err_console,
     one_line_errors,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT, run_sections
 from bearingkit.cli.tables import case_table, duty_cycle_table, friction_table, rating_table, warnings_text
-from bearingkit.errors import InputError, one_line
+from bearingkit.errors import InputError, error_line, quote
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
+app = typer.Typer(
+    add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.", cls=OneLineGroup
+)
 
 
 @app.command()
+@one_line_errors
 def validate(
     prefixes: list[str] = typer.Argument(None, help="Only cases whose id starts with one of these."),
     as_json: bool = typer.Option(False, "--json", help="Print a JSON list instead of a table."),
@@ -55,8 +58,7 @@ def validate(
 
     cases = all_cases(prefixes or ())
     if not cases:
-        err_console.print(f"error: no validation case matches {prefixes}")
-        raise typer.Exit(2)
+        raise InputError(f"no validation case matches {quote(list(prefixes or ()))}")
     results = run_cases(cases)
     if as_json:
         sys.stdout.write(json.dumps([r.to_dict() for r in results], indent=1) + "\n")
@@ -160,6 +162,7 @@ def rating(
         contamination=contamination,
         reliability=reliability,
         load_ratings=_load_ratings(load_rating),
+        duty_cycle_alone=True,
     )
     if a.operating.contamination is not None and a.operating.lubricant is None:
         raise InputError(
@@ -231,8 +234,7 @@ def friction(
     a.friction_model = model
     if not (a.operating.speed != 0).any() and speed is None:
         raise InputError(
-            f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
-            "[[load_cases]]"
+            f"{file}: every load case has no speed; give --speed 3000rpm or speed in the [[load_cases]]"
         )
     if model == "components":
         _fail_unconverged(file, a)
@@ -290,6 +292,11 @@ def study(
     allow_plugin: list[str] = typer.Option(
         [], "--allow-plugin", help="Evaluator plugin module:attr the study may use (files cannot import)."
     ),
+    allow_path: list[Path] = typer.Option(
+        [],
+        "--allow-path",
+        help="A folder the study's bearing file may lie in, beyond the study's folder and the one above it.",
+    ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
     from bearingkit.studies.__main__ import FACTOR_COLUMNS, print_table, run_cli
@@ -298,9 +305,9 @@ def study(
 
     if list_outputs or list_factors:
         if list_outputs:
-            print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
+            print_table(outputs_of(file, allow_path), ("output", "unit", "meaning"), echo=typer.echo)
         if list_factors:
-            print_table(factors_of(file), FACTOR_COLUMNS, echo=typer.echo)
+            print_table(factors_of(file, allow_path), FACTOR_COLUMNS, echo=typer.echo)
         return
 
     run_cli(
@@ -311,6 +318,7 @@ def study(
         out=out,
         echo=console.print,
         allow_plugins=allow_plugin,
+        allowed_paths=allow_path,
     )
 
 
@@ -409,7 +417,7 @@ def shaft(
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         what = f"load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}"
-        _fail(f"{file}: " + one_line(what), 1)
+        _fail(what, 1, source=file)
 
 
 @app.command()
@@ -432,5 +440,5 @@ def main() -> None:
     try:
         app()
     except InputError as exc:
-        sys.stderr.write("error: " + " ".join(str(exc).split()) + "\n")
+        sys.stderr.write(error_line(exc) + "\n")
         sys.exit(2)

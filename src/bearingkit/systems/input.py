@@ -33,7 +33,7 @@ from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
-from bearingkit.io.reading import load_toml
+from bearingkit.io.reading import confined_path, load_toml
 from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.loads import AXES, STANDARD_GRAVITY, Gear, LineLoad, PointLoad, PointMass, ShaftLoads
 from bearingkit.systems.shaft import SHAFT_STEEL, Section, Shaft
@@ -244,14 +244,20 @@ def load_shaft_file(path) -> ShaftInput:
 
 
 def shaft_from_dict(data: dict, source: str = "<dict>", base=None) -> ShaftInput:
-    """Validate a parsed shaft file; bearing files are read relative to ``base`` (default cwd)."""
+    """Validate a parsed shaft file; bearing files are read relative to ``base`` (default cwd).
+
+    With ``base`` (the shaft file's folder) every bearing ``file`` is confined by
+    :func:`bearingkit.io.reading.confined_path` before it is opened (no ``~``, no NUL, nothing outside
+    that folder and its project's folder above it); without it (a dict built by a program) names are
+    taken relative to the working directory as given."""
+    confine = base is not None
     base = Path(base) if base is not None else Path.cwd()
     try:
         spec = ShaftFile.model_validate(data)
     except ValidationError as exc:
         raise one_line(source, exc, (), _MODELS) from None
     try:
-        return _build(spec, source, base)
+        return _build(spec, source, base, confine)
     except InputError as exc:
         text = str(exc)
         raise InputError(text if text.startswith(f"{source}:") else f"{source}: {text}") from None
@@ -290,7 +296,7 @@ def _sections(specs: list[SectionSpec]) -> tuple:
     return tuple(out)
 
 
-def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
+def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingSeat:
     where = f"shaft.bearings[{i}] ({b.name})"
     if sum(v is not None for v in (b.file, b.designation, b.stiffness)) != 1:
         raise InputError(
@@ -306,9 +312,12 @@ def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
             raise InputError(f"{where}.designation: {exc}") from None
         bearing = source.model
     elif b.file is not None:
-        path = Path(b.file)
-        path = path if path.is_absolute() else base / path
         try:
+            if confine:  # a name from a file: checked and resolved before anything opens it
+                path = confined_path(b.file, base, "file")
+            else:
+                path = Path(b.file)
+                path = path if path.is_absolute() else base / path
             source = load_file(path)
         except InputError as exc:
             raise InputError(f"{where}.file: {exc}") from None
@@ -373,10 +382,10 @@ def _loads(cases: list[ShaftCaseSpec], gravity) -> ShaftLoads:
     )
 
 
-def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
+def _build(spec: ShaftFile, source: str, base: Path, confine: bool = False) -> ShaftInput:
     s = spec.shaft
     shaft = Shaft(_sections(s.sections), _material(s.material), s.shear_deformation, s.name)
-    seats = tuple(_seat(i, b, base) for i, b in enumerate(s.bearings))
+    seats = tuple(_seat(i, b, base, confine) for i, b in enumerate(s.bearings))
     gears = tuple(
         Gear(g.name, g.position, g.pitch_diameter, g.pressure_angle, g.helix_angle, g.mesh_angle, g.mass)
         for g in s.gears
