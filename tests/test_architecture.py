@@ -30,7 +30,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("rows", "rings"),
     ("physics",),
     ("materials", "lubricants"),
-    ("units", "errors", "references", "checks", "data", "lazy"),
+    ("units", "errors", "references", "checks", "data", "lazy", "budget"),
 )
 
 

@@ -350,7 +350,9 @@ def report(
         from bearingkit.systems.input import load_shaft_file
         from bearingkit.systems.shaft_analysis import ShaftAnalysis
 
-        path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
+        inp = load_shaft_file(file)
+        inp.check_work(report=True)  # before anything is solved
+        path = ShaftAnalysis(inp, contamination=contamination).report(output)
         console.print(f"wrote {path}")
         return
     a = _analysis(
@@ -391,6 +393,7 @@ def shaft(
     from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
 
     inp = load_shaft_file(file)
+    inp.check_work(report=report is not None or plot is not None)  # before anything is solved
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
     result = analysis.result
     data = analysis.to_dict()

@@ -124,6 +124,17 @@ class ShaftSpec(schema.Strict):
     gears: list[GearSpec] = Field(default_factory=list)
     masses: list[MassSpec] = Field(default_factory=list)
 
+    @field_validator("bearings", mode="before")
+    @classmethod
+    def _few_bearings(cls, value):
+        """Counted before the bearings are validated (each may name a file to read)."""
+        if isinstance(value, list) and len(value) > MAX_SHAFT_BEARINGS:
+            raise InputError(
+                f"shaft.bearings ({len(value)} bearings) must be at most {MAX_SHAFT_BEARINGS} per shaft; "
+                "a shaft rests on two to four"
+            )
+        return value
+
 
 class ForceSpec(schema.Strict):
     """``forces = [{...}]`` of a load case: force and moment at a position."""
@@ -171,6 +182,14 @@ class ShaftSolverSpec(schema.Strict):
 #: Most load cases of one shaft file. Measured on the 2-core reference machine (countershaft example):
 #: 100 cases take 24 s through ``bearingkit shaft``, 1,000 take 76 s and 300 MB.
 MAX_SHAFT_CASES = 100
+#: Most bearings on one shaft: shafts rest on two to four; 100 took 32 s per case batch and over
+#: 90 s with ``--report`` (issue 41).
+MAX_SHAFT_BEARINGS = 16
+#: Estimated work of one bearing in one load case [s, 2-core reference machine, countershaft and
+#: six-bearing variants measured]: the coupled solve with every bearing's pipeline (~0.035 s of
+#: processor time), and its part of the HTML report (~0.7 s: a load-distribution figure and tables).
+SHAFT_SOLVE_S = 0.05
+SHAFT_REPORT_S = 0.8
 
 
 class ShaftFile(schema.Strict):
@@ -229,10 +248,21 @@ class ShaftInput:
     warnings: tuple = field(default_factory=tuple)
     lubrication: LubricationSpec | None = None
 
+    def check_work(self, report: bool = False) -> None:
+        """Refuse (:func:`bearingkit.budget.check_work`) a solve, or a solve and report, estimated
+        past the work limit: bearings × load cases × :data:`SHAFT_SOLVE_S` (+ :data:`SHAFT_REPORT_S`)."""
+        from bearingkit.budget import check_work
+
+        n_b, n_c = len(self.system.bearings), len(self.loads.names)
+        per = SHAFT_SOLVE_S + (SHAFT_REPORT_S if report else 0.0)
+        what = f"{n_c} load cases x {n_b} bearings of the shaft{' with its report' if report else ''}"
+        check_work(n_b * n_c * per, what, "give fewer load cases (or leave out the report)")
+
     def solve(self):
         """Solve every load case in one batch (a :class:`~bearingkit.systems.result.ShaftResult`)."""
         from bearingkit.systems.solver import solve
 
+        self.check_work()
         return solve(self.system, self.loads, self.options)
 
 

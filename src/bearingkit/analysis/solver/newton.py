@@ -41,37 +41,52 @@ class Effort:
     deterministic; the time is the backstop for evaluations far more costly than usual.
     """
 
-    def __init__(self, n: int, max_evaluations: int, max_seconds: float):
+    def __init__(self, n: int, max_evaluations: int, max_seconds: float, batch_seconds: float = np.inf):
         self.evaluations = np.zeros(n, np.int64)
         self.seconds = np.zeros(n)
-        self.stopped = np.zeros(n, np.int8)  # 0 running, 1 evaluations spent, 2 time spent
+        self.stopped = np.zeros(n, np.int8)  # 0 running, 1 evaluations, 2 its time, 3 the batch's time
         self.max_evaluations = int(max_evaluations)
         self.max_seconds = float(max_seconds)
+        # The whole batch's time (shared by the parts of a chunked batch): a thousand cases that each
+        # stay within their own budget must not add up to hours.
+        self.batch_seconds = float(batch_seconds)
+        self.total = [0.0]
 
     def charge(self, cases: np.ndarray, seconds: float) -> None:
         """One evaluation of ``cases`` (indices) that took ``seconds`` in all."""
         if len(cases):
             self.evaluations[cases] += 1
             self.seconds[cases] += seconds / len(cases)
+            self.total[0] += seconds
 
     def exhausted(self, cases: np.ndarray) -> np.ndarray:
         """Which of ``cases`` have spent their budget (marked in :attr:`stopped`)."""
         over_n = self.evaluations[cases] >= self.max_evaluations
         over_t = self.seconds[cases] >= self.max_seconds
-        hit = cases[(over_n | over_t) & (self.stopped[cases] == 0)]
-        self.stopped[hit] = np.where(self.evaluations[hit] >= self.max_evaluations, 1, 2)
-        return over_n | over_t
+        over = over_n | over_t | (self.total[0] >= self.batch_seconds)
+        hit = cases[over & (self.stopped[cases] == 0)]
+        self.stopped[hit] = np.where(
+            self.evaluations[hit] >= self.max_evaluations,
+            1,
+            np.where(self.seconds[hit] >= self.max_seconds, 2, 3),
+        )
+        return over
 
     def take(self, cases: np.ndarray) -> Effort:
-        out = Effort(len(cases), self.max_evaluations, self.max_seconds)
+        out = Effort(len(cases), self.max_evaluations, self.max_seconds, self.batch_seconds)
         out.evaluations, out.seconds, out.stopped = (
-            self.evaluations[cases], self.seconds[cases], self.stopped[cases]
+            self.evaluations[cases],
+            self.seconds[cases],
+            self.stopped[cases],
         )
+        out.total = self.total  # one running total for the whole batch
         return out
 
     def put(self, cases: np.ndarray, part: Effort) -> None:
         self.evaluations[cases], self.seconds[cases], self.stopped[cases] = (
-            part.evaluations, part.seconds, part.stopped
+            part.evaluations,
+            part.seconds,
+            part.stopped,
         )
 
 

@@ -371,7 +371,9 @@ def _solve_numpy(
     start = q0 if displacement is not None else starting_point(problem, load, q0)
     if coarse is not None and displacement is None and options.coarse_iterations > 0:
         start = _coarse_start(problem, coarse, start, load)
-    effort = Effort(len(q0), options.max_evaluations, options.seconds_per_case())
+    from bearingkit.budget import max_work
+
+    effort = Effort(len(q0), options.max_evaluations, options.seconds_per_case(), max_work())
     q, converged, st, diverged, refused = _attempt(problem, start, load, iterations, effort)
     if options.continuation_steps and not (converged | refused).all():
         # Load continuation from the unloaded start for the failed cases (a load outside the contact
@@ -398,10 +400,17 @@ def _out_of_budget(effort: Effort, c: int, options: SolverOptions, why: str) -> 
             f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case "
             f"([solver] max_iterations {options.max_iterations} x {EVALUATIONS_PER_ITERATION})"
         )
-    else:
+    elif effort.stopped[c] == 2:
         spent = (
             f"stopped after {effort.seconds[c]:.3g} s, the time budget of one case ({CASE_SECONDS_ENV}="
             f"{options.seconds_per_case():g})"
+        )
+    else:
+        from bearingkit.budget import MAX_WORK_ENV
+
+        spent = (
+            f"stopped when the solve of all cases together had taken {effort.total[0]:.3g} s, the work "
+            f"limit ({MAX_WORK_ENV}={effort.batch_seconds:g})"
         )
     return f"{spent}; {why}"
 
