@@ -392,6 +392,8 @@ def shaft(
     from bearingkit.systems.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.stiffness import shaft_stiffness_table, write_tables
 
+    if stiffness is not None and stiffness.suffix not in (".csv", ".json"):  # refused before any work
+        raise InputError(f"--stiffness ({quote(str(stiffness))}) must end in .csv or .json")
     inp = load_shaft_file(file)
     inp.check_work(report=report is not None or plot is not None)  # before anything is solved
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)

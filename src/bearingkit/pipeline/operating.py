@@ -177,8 +177,8 @@ def check_speeds(bearing, speeds, names) -> None:
     if not d_m > 0.0:
         return
     worst = int(np.argmax(speeds))
-    if speeds[worst] * d_m > MAX_SPEED_FACTOR:
-        rpm = speeds[worst] * 60.0 / (2.0 * np.pi)
+    if float(speeds[worst]) * d_m > MAX_SPEED_FACTOR:
+        rpm = float(speeds[worst]) / (2.0 * np.pi / 60.0)  # Python floats: no overflow warning
         name = names[worst] if worst < len(names) else worst
         raise InputError(
             f"load case {quote(name)}: speed ({rpm:.4g} rpm) gives n·d_m = {rpm * d_m * 1e3:.3g} mm/min; "

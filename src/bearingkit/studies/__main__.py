@@ -22,10 +22,11 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 from pathlib import Path
 
-from bearingkit.errors import InputError, error_line
+from bearingkit.errors import InputError, error_line, quote
 
 
 def run_cli(
@@ -79,6 +80,7 @@ def run_cli(
     for spec in allow_plugins:
         evaluators.allow_plugin(spec)
     check_workers(workers)
+    check_scheduler(scheduler)
     d = load_study(file, allowed_paths)
     plan = plan_study(d)
     probe_study(plan, workers or 1)  # output names checked and the work estimated, before any write
@@ -120,6 +122,22 @@ def check_workers(workers) -> None:
         raise InputError(
             f"--workers ({workers}) must lie in 1 … {cores}, the cores of this machine (each worker is "
             "one process solving on one core)"
+        )
+
+
+#: A Dask scheduler address: scheme, host and port (Dask's own schemes over a network).
+SCHEDULER_ADDRESS = re.compile(r"^(tcp|tls|ws|wss)://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]{1,253}):[0-9]{1,5}$")
+
+
+def check_scheduler(address) -> None:
+    """``--scheduler ADDRESS``: ``tcp://host:port`` (or tls, ws, wss), checked before Dask sees it."""
+    if address is None:
+        return
+    match = SCHEDULER_ADDRESS.match(address)
+    if match is None or not 0 < int(address.rsplit(":", 1)[1]) < 65536:
+        raise InputError(
+            f"--scheduler ({quote(address)}) must be a Dask scheduler address such as tcp://host:8786 "
+            "(tcp, tls, ws or wss; a port in 1 … 65535)"
         )
 
 

@@ -412,6 +412,13 @@ def _loads(cases: list[ShaftCaseSpec], gravity) -> ShaftLoads:
     )
 
 
+@dataclass(frozen=True)
+class _HasModel:
+    """A bearing model seen as an input (what :func:`bearingkit.pipeline.operating.check_speeds` reads)."""
+
+    model: object
+
+
 def _build(spec: ShaftFile, source: str, base: Path, confine: bool = False) -> ShaftInput:
     s = spec.shaft
     shaft = Shaft(_sections(s.sections), _material(s.material), s.shear_deformation, s.name)
@@ -422,6 +429,12 @@ def _build(spec: ShaftFile, source: str, base: Path, confine: bool = False) -> S
     )
     masses = tuple(PointMass(m.position, m.mass, m.name) for m in s.masses)
     loads = _loads(spec.load_cases, s.gravity)
+    if loads.speed is not None:  # n·d_m of every bearing within what rolling bearings run at
+        from bearingkit.pipeline.operating import check_speeds
+
+        for seat in seats:
+            if hasattr(seat.bearing, "rows"):
+                check_speeds(_HasModel(seat.bearing), loads.speed, list(loads.names))
     try:
         system = ShaftSystem(shaft, seats, gears, masses, s.max_element_length, s.name)
         system.check_loads(loads)
