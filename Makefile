@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 ROSS   := $(VENV)/.installed-ross
 
-.PHONY: run test test-slow bench lint validate clean
+.PHONY: run test test-slow bench lint validate clean fuzz
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -28,6 +28,16 @@ test: $(ROSS)
 	$(BIN)/python -m pytest
 	$(BIN)/python -m pytest -m ross tests/systems
 	$(BIN)/bearingkit validate
+	$(BIN)/python tests/fuzz/bk_fuzz_run.py --n $(CI_FUZZ_N)
+
+# The mutation fuzz (tests/fuzz/bk_fuzz_run.py): N mutants of every command and input kind. SEED defaults
+# to today's date, so CI's 300 mutants change every day; the seed is printed first, and any mutant runs
+# again alone with --only INDEX.
+SEED ?= $(shell date +%Y%m%d)
+N ?= 10000
+CI_FUZZ_N ?= 300
+fuzz: $(STAMP)
+	$(BIN)/python tests/fuzz/bk_fuzz_run.py --seed $(SEED) --n $(N)
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -m slow

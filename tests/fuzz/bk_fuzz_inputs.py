@@ -340,7 +340,7 @@ def _apply(what: str, data: dict, rng: random.Random, huge: int) -> str:
             path, v = rng.choice(tables)
             n = rng.choice((17, 101, 1001))
             _parent(data, path)[path[-1]] = [copy.deepcopy(v[i % len(v)]) for i in range(n)]
-            return f"repeat {'.'.join(map(str, path))} x {n}"
+            return f"repeat_tables {'.'.join(map(str, path))} x {n}"
         what = "by_key"
     leaves = _leaves(data)
     if not leaves:
