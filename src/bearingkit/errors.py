@@ -15,9 +15,12 @@ MAX_MESSAGE_CHARS = 300
 MAX_QUOTED_CHARS = 40
 #: Items of a list shown before " … N items" (:func:`quote`).
 MAX_QUOTED_ITEMS = 3
-#: Longest file name or designation shown at the head of a message [characters] (:func:`shown`):
-#: a 10,240-character designation used to be echoed whole in front of its error.
-MAX_SOURCE_CHARS = 80
+#: Longest file name or designation shown in a message [characters] (:func:`shown`): a long path
+#: still shows whole; a 10,240-character designation used to be echoed whole in front of its error.
+MAX_SOURCE_CHARS = 200
+#: A file name inside a message that must keep its reason within :data:`MAX_MESSAGE_CHARS`
+#: (``PATH: cannot read the file (…)``) [characters].
+SHORT_SOURCE_CHARS = 120
 
 
 def one_line(message: str, limit: int = MAX_MESSAGE_CHARS) -> str:
@@ -61,7 +64,7 @@ def error_line(message, source=None) -> str:
     if source is None:
         return f"error: {one_line(text)}"
     rest = text
-    for name in (_printable(" ".join(str(source).split())), shown(source)):
+    for name in (_printable(" ".join(str(source).split())), shown(source), shown(source, SHORT_SOURCE_CHARS)):
         if rest.startswith(f"{name}:"):  # the message names the source already
             rest = rest[len(name) + 1 :].lstrip()
             break
@@ -78,13 +81,20 @@ def os_error_text(exc: OSError) -> str:
     ``[Errno 28] No space left on device: '/tmp/x'`` becomes ``cannot write /tmp/x: the disk is full
     (no space left on device); free some space or choose another folder``.
     """
+    where = f" {shown(exc.filename)}" if getattr(exc, "filename", None) is not None else ""
+    return f"cannot use{where}: {os_reason(exc)}"
+
+
+def os_reason(exc: Exception) -> str:
+    """Why the system refused, in words, with what to do: ``the disk is full (no space left on device);
+    free some space or choose another folder``."""
     import errno
 
-    where = f" {shown(exc.filename)}" if exc.filename is not None else ""
-    reason = (exc.strerror or type(exc).__name__).lower()
-    if exc.errno in (errno.ENOSPC, errno.EDQUOT):
+    code = getattr(exc, "errno", None)
+    reason = (getattr(exc, "strerror", None) or str(exc) or type(exc).__name__).lower()
+    if code in (errno.ENOSPC, errno.EDQUOT):
         reason = f"the disk is full ({reason})"
-    return f"cannot use{where}: {reason}{os_hint(exc.errno)}"
+    return f"{reason}{os_hint(code)}"
 
 
 #: What to do about the operating-system errors a user meets (keyed by errno).

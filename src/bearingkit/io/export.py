@@ -224,12 +224,13 @@ def write_atomic(path, write, what: str = "file"):
     import tempfile
     from pathlib import Path
 
-    from bearingkit.errors import InputError, os_hint, shown
+    from bearingkit.errors import InputError, os_reason, shown
 
     path = Path(path)
     if path.is_dir():
         raise InputError(
-            f"{shown(path)}: the {what} path is a folder; give a file name such as {shown(path / 'x')}"
+            f"{shown(path)}: the {what} path is a directory; give a file name such as "
+            f"{shown(path / ('report.html' if what == 'report' else 'x'))}"
         )
     created: list = []
     tmp = None
@@ -248,10 +249,7 @@ def write_atomic(path, write, what: str = "file"):
         os.replace(tmp, path)
         done = True
     except (OSError, ValueError) as exc:  # ValueError: a name with a NUL byte
-        reason = (getattr(exc, "strerror", None) or str(exc) or type(exc).__name__).lower()
-        raise InputError(
-            f"{shown(path)}: cannot write the {what} ({reason}{os_hint(getattr(exc, 'errno', None))})"
-        ) from None
+        raise InputError(f"{shown(path)}: cannot write the {what}: {os_reason(exc)}") from None
     finally:
         if not done:
             if tmp is not None:

@@ -25,7 +25,7 @@ import stat
 import tomllib
 from pathlib import Path
 
-from bearingkit.errors import InputError, os_hint, quote, shown
+from bearingkit.errors import SHORT_SOURCE_CHARS, InputError, os_hint, quote, shown
 
 #: Largest input file read [bytes]: 1 MiB. A bearing file is a few kB; 1,000 load cases (the cap
 #: per file, bearingkit.io.sections.MAX_LOAD_CASES) with comments stay below 300 kB.
@@ -61,7 +61,7 @@ def read_text(path) -> str:
         :data:`MAX_INPUT_BYTES` or is not UTF-8.
     """
     path = Path(path)
-    name = shown(path)
+    name = shown(path, SHORT_SOURCE_CHARS)  # the reason must fit the message after it
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags)
@@ -137,26 +137,24 @@ def confined_path(name, base, field: str, allowed=()) -> Path:
     Returns the resolved path; raises :class:`InputError` ``"FIELD (NAME): …"`` naming the rule. The
     file itself is neither opened nor read here.
     """
+    q = quote(name, SHORT_SOURCE_CHARS)
     if not isinstance(name, str):
-        raise InputError(f"{field} ({quote(name)}) must be a file name (text)")
+        raise InputError(f"{field} ({q}) must be a file name (text)")
     if not name.strip():
-        raise InputError(f"{field} ({quote(name)}) must name a file")
+        raise InputError(f"{field} ({q}) must name a file")
     if not name.isprintable():
-        raise InputError(
-            f"{field} ({quote(name)}) holds a NUL byte or a control character; expected a file name"
-        )
+        raise InputError(f"{field} ({q}) holds a NUL byte or a control character; expected a file name")
     raw = name.encode("utf-8", "surrogateescape")
     if len(raw) > MAX_PATH_BYTES or any(
         len(p) > MAX_NAME_BYTES for p in raw.replace(b"\\", b"/").split(b"/")
     ):
         raise InputError(
-            f"{field} ({quote(name)}) is too long a file name: at most {MAX_NAME_BYTES} bytes per folder or "
+            f"{field} ({q}) is too long a file name: at most {MAX_NAME_BYTES} bytes per folder or "
             f"file name and {MAX_PATH_BYTES} in all"
         )
     if name.startswith("~"):
         raise InputError(
-            f"{field} ({quote(name)}): '~' is not expanded in a file; give the path relative to this file's "
-            "folder"
+            f"{field} ({q}): '~' is not expanded in a file; give the path relative to this file's folder"
         )
     base = Path(os.path.realpath(base))
     roots = [base, *(Path(os.path.realpath(a)) for a in allowed)]
@@ -165,17 +163,17 @@ def confined_path(name, base, field: str, allowed=()) -> Path:
     try:
         target = Path(os.path.realpath(base / name))  # an absolute name replaces base
     except (OSError, ValueError):
-        raise InputError(f"{field} ({quote(name)}): the system cannot resolve this path") from None
+        raise InputError(f"{field} ({q}): the system cannot resolve this path") from None
     root = next((r for r in roots if target == r or r in target.parents), None)
     if root is None:
         raise InputError(
-            f"{field} ({quote(name)}) lies outside this file's folder (and its project's folder above it); a "
+            f"{field} ({q}) lies outside this file's folder (and its project's folder above it); a "
             "data file may name only files there, or in a folder given with --allow-path on the command line"
         )
     hidden = [p for p in target.relative_to(root).parts if p.startswith(".")]
     if hidden:
         raise InputError(
-            f"{field} ({quote(name)}) names a hidden file or folder ({quote(hidden[0])}); a data file may not"
+            f"{field} ({q}) names a hidden file or folder ({quote(hidden[0])}); a data file may not"
         )
     return target
 
