@@ -39,11 +39,12 @@ from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.rows.base import N_DOF
 
 #: Default evaluation budget of one case per Newton iteration allowed (``max_evaluations`` =
-#: this × ``max_iterations``; 20 × 60 = 1,200). A converging case uses 5–40 evaluations (3–13
-#: iterations, mostly full steps, and the coarse start); one that needs the load continuation up to a
-#: few hundred. The cap stops the cases that would otherwise spend 5 attempts × 60 iterations × 41
-#: line-search trials (12,300 evaluations, minutes for a row at speed).
-EVALUATIONS_PER_ITERATION = 20
+#: this × ``max_iterations``; 50 × 60 = 3,000). A converging case uses 5–70 evaluations (3–13
+#: iterations, mostly full steps, and the coarse start); the slowest converging one measured (a 6209
+#: at 3,000 rpm under 75 N, its first attempt crawling with ~28 line-search halvings per iteration
+#: before the load continuation converges) 1,755. The cap stops the cases that would otherwise spend
+#: 5 attempts × 60 iterations × 41 line-search trials (12,300 evaluations, minutes for a row at speed).
+EVALUATIONS_PER_ITERATION = 50
 #: Default time budget of one case in the numpy reference [s of processor time]: a converging ball
 #: row at speed takes well under 1 s per case on the 2-core reference machine; a case still running
 #: after this has met a problem the evaluation cap does not see (evaluations far slower than usual).
