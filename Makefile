@@ -7,7 +7,7 @@ ROSS   := $(VENV)/.installed-ross
 #: Test processes (pytest-xdist): one per core.
 JOBS   ?= auto
 
-.PHONY: run test test-slow bench lint validate docs compile wheel clean
+.PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -38,6 +38,16 @@ test: $(ROSS)
 	bash scripts/ensure_chromium.sh
 	$(BIN)/python -m pytest -n $(JOBS) -m "not slow or ross"
 	$(BIN)/bearingkit validate
+	$(BIN)/python tests/fuzz/bk_fuzz_run.py --n $(CI_FUZZ_N)
+
+# The mutation fuzz (tests/fuzz/bk_fuzz_run.py): N mutants of every command and input kind. SEED defaults
+# to today's date, so CI's 300 mutants change every day; the seed is printed first, and any mutant runs
+# again alone with --only INDEX.
+SEED ?= $(shell date +%Y%m%d)
+N ?= 10000
+CI_FUZZ_N ?= 300
+fuzz: $(STAMP)
+	$(BIN)/python tests/fuzz/bk_fuzz_run.py --seed $(SEED) --n $(N)
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS) -m slow

@@ -30,7 +30,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("rows", "rings"),
     ("physics",),
     ("materials", "lubricants", "hardness"),
-    ("units", "errors", "references", "checks", "data", "lazy", "extras", "paths", "display"),
+    ("units", "errors", "references", "checks", "data", "lazy", "extras", "paths", "display", "budget"),
 )
 
 

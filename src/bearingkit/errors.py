@@ -15,6 +15,12 @@ MAX_MESSAGE_CHARS = 300
 MAX_QUOTED_CHARS = 40
 #: Items of a list shown before " … N items" (:func:`quote`).
 MAX_QUOTED_ITEMS = 3
+#: Longest file name or designation shown in a message [characters] (:func:`shown`): a long path
+#: still shows whole; a 10,240-character designation used to be echoed whole in front of its error.
+MAX_SOURCE_CHARS = 200
+#: A file name inside a message that must keep its reason within :data:`MAX_MESSAGE_CHARS`
+#: (``PATH: cannot read the file (…)``) [characters].
+SHORT_SOURCE_CHARS = 120
 
 
 def one_line(message: str, limit: int = MAX_MESSAGE_CHARS) -> str:
@@ -28,6 +34,82 @@ def one_line(message: str, limit: int = MAX_MESSAGE_CHARS) -> str:
     tail = limit // 3
     head = limit - tail - 3
     return f"{text[:head].rstrip()} … {text[-tail:].lstrip()}"
+
+
+def shown(source, limit: int = MAX_SOURCE_CHARS) -> str:
+    """A file name or designation as a message shows it: printable, at most ``limit`` characters.
+
+    Control characters (a NUL byte, a line break in a name) become ``?``; a longer name keeps its
+    head and its end (where the file name is) around ``…``.
+
+    >>> shown("a" * 200, 20)
+    'aaaaaaaaaa…aaaaaaaaa'
+    """
+    text = "".join(c if c.isprintable() else "?" for c in str(source))
+    if len(text) <= limit:
+        return text
+    head = (limit - 1) // 2 + (limit - 1) % 2
+    return f"{text[:head]}…{text[len(text) - (limit - 1 - head) :]}"
+
+
+def error_line(message, source=None) -> str:
+    """The ``error: …`` line every face prints for a refusal: one line, bounded.
+
+    ``source`` (the file or designation the command was given) heads the line, shown by
+    :func:`shown`, unless the message already names it; the rest is held to
+    :data:`MAX_MESSAGE_CHARS` by :func:`one_line`. The whole line is at most about 390 characters,
+    whatever the input (the one message builder of the command line, the study runner and the app).
+    """
+    text = _printable(" ".join(str(message).split()))
+    if source is None:
+        return f"error: {one_line(text)}"
+    rest = text
+    for name in (_printable(" ".join(str(source).split())), shown(source), shown(source, SHORT_SOURCE_CHARS)):
+        if rest.startswith(f"{name}:"):  # the message names the source already
+            rest = rest[len(name) + 1 :].lstrip()
+            break
+    return f"error: {shown(source)}: {one_line(rest)}"
+
+
+def _printable(text: str) -> str:
+    return text if text.isprintable() else "".join(c if c.isprintable() else "?" for c in text)
+
+
+def os_error_text(exc: OSError) -> str:
+    """An operating-system error in words: the path it names (shortened) and the system's reason.
+
+    ``[Errno 28] No space left on device: '/tmp/x'`` becomes ``cannot write /tmp/x: the disk is full
+    (no space left on device); free some space or choose another folder``.
+    """
+    where = f" {shown(exc.filename)}" if getattr(exc, "filename", None) is not None else ""
+    return f"cannot use{where}: {os_reason(exc)}"
+
+
+def os_reason(exc: Exception) -> str:
+    """Why the system refused, in words, with what to do: ``the disk is full (no space left on device);
+    free some space or choose another folder``."""
+    import errno
+
+    code = getattr(exc, "errno", None)
+    reason = (getattr(exc, "strerror", None) or str(exc) or type(exc).__name__).lower()
+    if code in (errno.ENOSPC, errno.EDQUOT):
+        reason = f"the disk is full ({reason})"
+    return f"{reason}{os_hint(code)}"
+
+
+#: What to do about the operating-system errors a user meets (keyed by errno).
+_OS_HINTS = {
+    28: "; free some space or choose another folder",  # ENOSPC
+    122: "; free some space or choose another folder",  # EDQUOT
+    36: "; a file name may hold at most 255 bytes: choose a shorter one",  # ENAMETOOLONG
+    13: "; choose a folder you may write to",  # EACCES
+    30: "; choose a folder you may write to",  # EROFS
+}
+
+
+def os_hint(code) -> str:
+    """``"; free some space …"``: what to do about an operating-system error (its errno), or ``""``."""
+    return _OS_HINTS.get(code, "")
 
 
 def quote(value, limit: int = MAX_QUOTED_CHARS) -> str:

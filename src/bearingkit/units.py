@@ -258,7 +258,18 @@ def parse(value, dimension: str, field: str) -> float:
         ) from None
     except OverflowError:
         raise InputError(f"{field} ({quote(value)}) must be finite (it overflows in {target})") from None
-    return _remember(value, dimension, _finite(out, field, value))
+    out = _finite(out, field, value)
+    if dimension == "temperature" and out < ABSOLUTE_ZERO_C:
+        raise InputError(
+            f"{field} ({quote(value)}) lies below absolute zero ({ABSOLUTE_ZERO_C} degC); expected an "
+            "operating temperature such as '60 degC'"
+        )
+    return _remember(value, dimension, out)
+
+
+#: Absolute zero [°C]: the lowest temperature a ``temperature`` value may have (a value below it
+#: used to pass wherever no lubricant's viscosity law looked at it).
+ABSOLUTE_ZERO_C = -273.15
 
 
 #: Texts already parsed, (text, dimension) → SI value (successful parses only; errors name their field).

@@ -314,7 +314,7 @@ def test_failed_write_keeps_old_report_and_removes_temporaries(tmp_path, monkeyp
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(os, "replace", boom)
-    with pytest.raises(InputError, match="No space left"):
+    with pytest.raises(InputError, match="the disk is full \\(no space left on device\\); free some space"):
         write_report(old, "<p>new</p>")
     with pytest.raises(InputError):
         write_report(tmp_path / "new" / "deeper" / "report.html", "<p>new</p>")

@@ -267,7 +267,7 @@ def test_bad_study_on_the_command_line_exits_2_and_writes_no_folder(tmp_path):
         '[[factors]]\nname = "geometry.clearance_radial"\nlevels = ["5 kg"]\n'
     )
     out = tmp_path / "out"
-    res = CliRunner().invoke(app, ["study", str(study), "--out", str(out)])
+    res = CliRunner().invoke(app, ["study", str(study), "--out", str(out), "--allow-path", str(DGBB.parent)])
     assert res.exit_code == 2
     assert res.stderr.startswith("error: ") and res.stderr.count("\n") == 1
     assert "factors[0] (geometry.clearance_radial).levels ('5 kg')" in res.stderr

@@ -114,7 +114,8 @@ def test_kill_and_resume_the_generic_evaluator(tmp_path, monkeypatch):
     n_chunks = 100
     study = tmp_path / "study.toml"
     bearing = HERE.parents[1] / "examples" / "dgbb_6209.toml"
-    study.write_text(GENERIC_STUDY.format(bearing=bearing, samples=n_chunks))
+    (tmp_path / bearing.name).write_text(bearing.read_text())  # beside the study: a study reads no farther
+    study.write_text(GENERIC_STUDY.format(bearing=bearing.name, samples=n_chunks))
     out = tmp_path / "out"
     proc = subprocess.Popen(
         [sys.executable, "-m", "bearingkit.studies", str(study), "--out", str(out), "--no-progress"],

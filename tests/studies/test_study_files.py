@@ -222,7 +222,7 @@ def test_a_study_refused_at_run_time_leaves_no_folder(tmp_path, capsys):
         '[[factors]]\nname = "axial_load"\nlevels = ["1 kN"]\n'
     )
     out = tmp_path / "out"
-    assert main([str(f), "--out", str(out), "--no-progress"]) == 2
+    assert main([str(f), "--out", str(out), "--no-progress", "--allow-path", str(EXAMPLES)]) == 2
     err = capsys.readouterr().err
     assert "study.bearing" in err and "composite_turntable" in err
     assert not out.exists(), "a refused study leaves no output folder"

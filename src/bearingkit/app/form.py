@@ -116,9 +116,12 @@ class AnalyzeRequest(StrictModel):
 
 def _is_bearing_file(path: Path) -> bool:
     """A bearing input file (a ``[bearing]`` table), not a shaft or study file of the same folder."""
-    try:
-        return path.stat().st_size <= MAX_TOML_BYTES and "bearing" in tomllib.loads(path.read_text("utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+    from bearingkit.io.reading import read_text
+
+    try:  # the bounded reader, as every file bearingkit reads (regular files, size, UTF-8)
+        text = read_text(path)
+        return len(text.encode("utf-8")) <= MAX_TOML_BYTES and "bearing" in tomllib.loads(text)
+    except (InputError, tomllib.TOMLDecodeError, RecursionError):
         return False
 
 
@@ -143,10 +146,12 @@ def _source_document(source: Source) -> tuple[dict, str]:
     if source.kind == "example":
         if source.name not in examples():  # a name from the list, never a path
             raise InputError(f"example ({source.name!r}) is not one of {', '.join(examples()) or 'none'}")
+        from bearingkit.io.reading import read_text
+
         path = EXAMPLES_DIR / source.name
         if path.stat().st_size > MAX_TOML_BYTES:
             raise TooLarge(f"{source.name}: file too large; at most {MAX_TOML_BYTES} bytes")
-        return _parse_toml(path.read_text(encoding="utf-8"), source.name), source.name
+        return _parse_toml(read_text(path), source.name), source.name
     if source.kind == "designation":
         name = " ".join(source.name.split())
         if not name or len(name) > MAX_DESIGNATION or not name.isprintable():

@@ -31,6 +31,7 @@ from bearingkit.cli.common import (
     _ROTATING_OPTION,
     _SPEED_OPTION,
     _TEMPERATURE_OPTION,
+    OneLineGroup,
     _analysis,
     _fail,
     _fail_unconverged,
@@ -38,17 +39,19 @@ from bearingkit.cli.common import (
     _load_ratings,
     _print_json,
     console,
-    err_console,
     one_line_errors,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT
 from bearingkit.cli.system import register as _register_system
-from bearingkit.errors import InputError, one_line
+from bearingkit.errors import InputError, error_line, quote
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.")
+app = typer.Typer(
+    add_completion=False, no_args_is_help=True, help="Rolling-bearing mechanics.", cls=OneLineGroup
+)
 
 
 @app.command()
+@one_line_errors
 def validate(
     prefixes: list[str] = typer.Argument(None, help="Only cases whose id starts with one of these."),
     as_json: bool = typer.Option(False, "--json", help="Print a JSON list of the cases (with their role)."),
@@ -76,8 +79,7 @@ def validate(
     if quick:
         cases = quick_cases(cases)
     if not cases:
-        err_console.print(f"error: no validation case matches {prefixes}")
-        raise typer.Exit(2)
+        raise InputError(f"no validation case matches {quote(list(prefixes or ()))}")
     results = run_cases(cases)
     if as_json:
         sys.stdout.write(json.dumps([r.to_dict() for r in results], indent=1) + "\n")
@@ -195,6 +197,7 @@ def rating(
         contamination=contamination,
         reliability=reliability,
         load_ratings=_load_ratings(load_rating),
+        duty_cycle_alone=True,
     )
     if a.operating.contamination is not None and a.operating.lubricant is None:
         raise InputError(
@@ -294,8 +297,7 @@ def friction(
     )
     if not (a.operating.speed != 0).any() and speed is None:
         raise InputError(
-            f"{file}: load case {a.case_names[0]!r} has no speed; give --speed 5rpm or speed in every "
-            "[[load_cases]]"
+            f"{file}: every load case has no speed; give --speed 3000rpm or speed in the [[load_cases]]"
         )
     from bearingkit.pipeline.friction.choice import AUTO, choose
 
@@ -366,6 +368,11 @@ def study(
     allow_plugin: list[str] = typer.Option(
         [], "--allow-plugin", help="Evaluator plugin module:attr the study may use (files cannot import)."
     ),
+    allow_path: list[Path] = typer.Option(
+        [],
+        "--allow-path",
+        help="A folder the study's bearing file may lie in, beyond the study's folder and the one above it.",
+    ),
 ):
     """Run a design study (sweep, orthogonal array, Monte Carlo, optimisation); results stream to Parquet."""
     from bearingkit.extras import check
@@ -377,9 +384,9 @@ def study(
 
     if list_outputs or list_factors:
         if list_outputs:
-            print_table(outputs_of(file), ("output", "unit", "meaning"), echo=typer.echo)
+            print_table(outputs_of(file, allow_path), ("output", "unit", "meaning"), echo=typer.echo)
         if list_factors:
-            print_table(factors_of(file), FACTOR_COLUMNS, echo=typer.echo)
+            print_table(factors_of(file, allow_path), FACTOR_COLUMNS, echo=typer.echo)
         return
 
     run_cli(
@@ -390,6 +397,7 @@ def study(
         out=out,
         echo=console.print,
         allow_plugins=allow_plugin,
+        allowed_paths=allow_path,
     )
 
 
@@ -425,7 +433,9 @@ def report(
         from bearingkit.systems.shaft.input import load_shaft_file
         from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
 
-        path = ShaftAnalysis(load_shaft_file(file), contamination=contamination).report(output)
+        inp = load_shaft_file(file)
+        inp.check_work(report=True)  # before anything is solved
+        path = ShaftAnalysis(inp, contamination=contamination).report(output)
         console.print(f"wrote {path}")
         return
     from bearingkit.cli.system import report_drivetrain
@@ -474,7 +484,10 @@ def shaft(
     from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
+    if stiffness is not None and stiffness.suffix not in (".csv", ".json"):  # refused before any work
+        raise InputError(f"--stiffness ({quote(str(stiffness))}) must end in .csv or .json")
     inp = load_shaft_file(file)
+    inp.check_work(report=report is not None or plot is not None)  # before anything is solved
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
     result = analysis.result
     data = analysis.to_dict()
@@ -501,7 +514,7 @@ def shaft(
     if not result.converged.all():
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         what = f"load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}"
-        _fail(f"{file}: " + one_line(what), 1)
+        _fail(what, 1, source=file)
 
 
 @app.command()
@@ -569,5 +582,5 @@ def main() -> None:
     try:
         app()
     except InputError as exc:
-        sys.stderr.write("error: " + " ".join(str(exc).split()) + "\n")
+        sys.stderr.write(error_line(exc) + "\n")
         sys.exit(2)

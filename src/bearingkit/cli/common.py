@@ -12,37 +12,87 @@ decorated function each; the commands import these names from here.
 from __future__ import annotations
 
 import functools
+import os
 import sys
 from pathlib import Path
 
 import typer
 from rich.console import Console
+from typer import _click as click
+from typer.core import TyperGroup
 
-from bearingkit.errors import InputError, one_line
+from bearingkit.errors import InputError, error_line, one_line, os_error_text
 
 # Piped output (CI logs, files) gets a wide console so table ids are not cut.
 console = Console() if sys.stdout.isatty() else Console(width=200)
 err_console = Console(stderr=True)
 
 
-def _fail(message: str, code: int = 2):
-    """One line on stderr (no rich wrapping or markup), then exit with ``code``."""
-    sys.stderr.write("error: " + " ".join(str(message).split()) + "\n")
+class OneLineGroup(TyperGroup):
+    """The ``bearingkit`` command group: a usage error (an unknown option, a missing argument, a
+    value that is not an integer) is one line too, ``error: bearingkit CMD: … (see bearingkit CMD
+    --help)``, exit code 2, not click's boxed usage text."""
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):
+        if not standalone_mode:
+            return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        try:
+            code = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except click.exceptions.NoArgsIsHelpError as exc:  # `bearingkit` alone: its help, as before
+            exc.show()
+            sys.exit(exc.exit_code)
+        except click.ClickException as exc:
+            where = exc.ctx.command_path if getattr(exc, "ctx", None) is not None else "bearingkit"
+            sys.stderr.write(error_line(f"{exc.format_message()} (see {where} --help)", where) + "\n")
+            sys.exit(exc.exit_code)
+        except click.Abort:
+            sys.stderr.write("error: aborted\n")
+            sys.exit(1)
+        sys.exit(code if isinstance(code, int) else 0)
+
+
+#: Exit code of a failure that is bearingkit's own (a bug): EX_SOFTWARE of sysexits.h.
+INTERNAL_ERROR_EXIT = 70
+#: Environment variable that lets an unexpected exception through with its traceback (debugging).
+TRACEBACK_ENV = "BEARINGKIT_TRACEBACK"
+
+
+def _fail(message: str, code: int = 2, source=None):
+    """One line on stderr (no rich wrapping or markup, :func:`bearingkit.errors.error_line`), then
+    exit with ``code``. ``source``: the file or designation the line is about (shown shortened)."""
+    sys.stderr.write(error_line(message, source) + "\n")
     raise typer.Exit(code)
 
 
 def one_line_errors(fn):
-    """Decorator for commands: an InputError becomes ``error: …`` on stderr and exit code 2."""
+    """Decorator for commands: every failure is one line ``error: FILE: …`` on stderr.
+
+    An InputError exits with code 2; an operating-system error (a full disk, a path the system
+    refuses) names the path and the system's reason, exit code 2; anything else is a bug of
+    bearingkit: one line naming the exception type, exit code :data:`INTERNAL_ERROR_EXIT` (the
+    traceback only with ``BEARINGKIT_TRACEBACK=1``). A user never sees a traceback.
+    """
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
+        file = kwargs.get("file")
         try:
             return fn(*args, **kwargs)
+        except (typer.Exit, typer.Abort, KeyboardInterrupt):
+            raise
         except InputError as exc:
-            message, file = str(exc), kwargs.get("file")
-            if file is not None and not message.startswith(f"{file}:"):  # every error names the file
-                message = f"{file}: {message}"
-            _fail(message)
+            _fail(str(exc), source=file)
+        except OSError as exc:
+            _fail(os_error_text(exc), source=file)
+        except Exception as exc:
+            if os.environ.get(TRACEBACK_ENV):
+                raise
+            _fail(
+                f"internal error ({type(exc).__name__}: {one_line(str(exc), 120)}); this is a bug of "
+                "bearingkit: please report it with the input",
+                INTERNAL_ERROR_EXIT,
+                source=file,
+            )
 
     return wrapper
 
@@ -121,10 +171,27 @@ _OPTION_UNITS = {
 }
 
 
-def _analysis(file: Path, load, case, hold=None, free=None, preload: str | None = None, **operating):
+#: The one refusal of a command that needs a load case and was given none (``friction 6209``).
+NO_LOAD_CASE = (
+    "no load case: give --load, e.g. --load Fr=5kN --speed 3000rpm, or [[load_cases]] in the file "
+    "(docs/input-format.md)"
+)
+
+
+def _analysis(
+    file: Path,
+    load,
+    case,
+    hold=None,
+    free=None,
+    preload: str | None = None,
+    duty_cycle_alone: bool = False,
+    **operating,
+):
     """The Analysis of ``file`` with ``--load`` (replacing its cases) or ``--case`` (selecting some),
     ``--hold`` / ``--free`` over its DOFs and ``preload``, the ``--preload`` of a pair named by
-    designation."""
+    designation. A bearing without load cases is refused (:data:`NO_LOAD_CASE`) unless
+    ``duty_cycle_alone`` and it has a ``[[duty_cycle]]``."""
     from bearingkit.io.loader import parse_load_options
     from bearingkit.pipeline import analyze, load_input
     from bearingkit.units import parse
@@ -155,6 +222,8 @@ def _analysis(file: Path, load, case, hold=None, free=None, preload: str | None 
         bearing = bearing.with_cases([parse_load_options(load)])
     else:
         bearing = bearing.select(case)
+    if not bearing.cases and not (duty_cycle_alone and getattr(bearing, "duty_cycle", None) is not None):
+        raise InputError(NO_LOAD_CASE)
     if hold or free:
         bearing = bearing.with_dofs(hold or (), free or ())
     try:
@@ -172,7 +241,7 @@ def _print_json(file, data: dict) -> None:
     try:
         text = to_json(data)
     except ValueError as exc:
-        _fail(f"{file}: {exc}", 1)
+        _fail(str(exc), 1, source=file)
     sys.stdout.write(text + "\n")
 
 
@@ -190,12 +259,12 @@ def _fail_unconverged(file, analysis) -> None:
         i = int(next(i for i, ok in enumerate(res.converged) if not ok))
         # the file, then at most MAX_MESSAGE_CHARS (a long case name and the remedy must not overflow)
         what = f"load case {analysis.case_names[i]!r} did not converge: {res.reason[i]}"
-        _fail(f"{file}: " + one_line(what), 1)
+        _fail(what, 1, source=file)
     flex = analysis.flexible
     if flex is not None and not flex.converged.all():
         i = int(next(i for i, ok in enumerate(flex.converged) if not ok))
         what = f"load case {analysis.case_names[i]!r}: the flexible-ring coupling did not converge"
-        _fail(f"{file}: " + one_line(what), 1)
+        _fail(what, 1, source=file)
 
 
 def _load_ratings(items: list[str] | None) -> dict:

@@ -195,3 +195,68 @@ def to_json(obj, indent: int | None = 1) -> str:
     if bad:
         raise ValueError(f"non-finite value in results at {bad[0]} ({len(bad)} in all)")
     return json.dumps(obj, indent=indent, allow_nan=False)
+
+
+def write_atomic(path, write, what: str = "file"):
+    """Write an output file through ``write(tmp_path)`` and rename it onto ``path``: all or nothing.
+
+    The one writer of the files a command is asked for (reports, figures, tables): missing parent
+    folders are created, the content goes to a temporary name in the same folder, flushed to disk
+    by ``write`` (or closed by it), and is renamed onto ``path`` only when complete. On any error —
+    a bad name, a full disk, an error of ``write`` itself — nothing is left behind: no partial file,
+    no temporary file, no folder this call created (a refused command leaves no stray file).
+
+    Parameters
+    ----------
+    path : path
+        The file to write.
+    write : callable
+        ``write(tmp)`` writes the whole content to the path ``tmp``.
+    what : str
+        What the file is, for messages (``"report"``, ``"figure"``).
+
+    Returns
+    -------
+    Path
+        ``path``. An operating-system error becomes one :class:`~bearingkit.errors.InputError` line.
+    """
+    import os
+    import tempfile
+    from pathlib import Path
+
+    from bearingkit.errors import InputError, os_reason, shown
+
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(
+            f"{shown(path)}: the {what} path is a directory; give a file name such as "
+            f"{shown(path / ('report.html' if what == 'report' else 'x'))}"
+        )
+    created: list = []
+    tmp = None
+    done = False
+    try:
+        missing, p = [], path.parent
+        while not p.exists():
+            missing.append(p)
+            p = p.parent
+        for d in reversed(missing):
+            d.mkdir()
+            created.append(d)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name[:100]}.", suffix=".tmp", dir=path.parent)
+        os.close(fd)
+        write(Path(tmp))
+        os.replace(tmp, path)
+        done = True
+    except (OSError, ValueError) as exc:  # ValueError: a name with a NUL byte
+        raise InputError(f"{shown(path)}: cannot write the {what}: {os_reason(exc)}") from None
+    finally:
+        if not done:
+            if tmp is not None:
+                Path(tmp).unlink(missing_ok=True)
+            for d in reversed(created):
+                try:
+                    d.rmdir()
+                except OSError:
+                    pass
+    return path

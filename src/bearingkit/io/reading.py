@@ -25,7 +25,7 @@ import stat
 import tomllib
 from pathlib import Path
 
-from bearingkit.errors import InputError, quote
+from bearingkit.errors import SHORT_SOURCE_CHARS, InputError, os_hint, quote, shown
 
 #: Largest input file read [bytes]: 1 MiB. A bearing file is a few kB; 1,000 load cases (the cap
 #: per file, bearingkit.io.sections.MAX_LOAD_CASES) with comments stay below 300 kB.
@@ -61,44 +61,132 @@ def read_text(path) -> str:
         :data:`MAX_INPUT_BYTES` or is not UTF-8.
     """
     path = Path(path)
+    name = shown(path, SHORT_SOURCE_CHARS)  # the reason must fit the message after it
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags)
     except FileNotFoundError:
-        raise InputError(f"{path}: cannot read the file (no such file)") from None
+        raise InputError(f"{name}: cannot read the file (no such file)") from None
     except IsADirectoryError:
-        raise InputError(f"{path}: cannot read the file (it is a directory)") from None
+        raise InputError(f"{name}: cannot read the file (it is a directory)") from None
     except PermissionError:
-        raise InputError(f"{path}: cannot read the file (permission denied)") from None
+        raise InputError(f"{name}: cannot read the file (permission denied)") from None
+    except ValueError:  # os.open refuses a name holding a NUL byte
+        raise InputError(f"{name}: cannot read the file (its name holds a NUL byte)") from None
     except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc.strerror or type(exc).__name__})") from None
+        what = (exc.strerror or type(exc).__name__).lower()
+        raise InputError(f"{name}: cannot read the file ({what}{os_hint(exc.errno)})") from None
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
             kind = _kind(info.st_mode)
-            raise InputError(f"{path}: cannot read the file (it is {kind}, not a regular file)")
+            raise InputError(f"{name}: cannot read the file (it is {kind}, not a regular file)")
         if info.st_size > MAX_INPUT_BYTES:
             raise InputError(
-                f"{path}: cannot read the file (it holds {_size(info.st_size)}; input files may hold at "
+                f"{name}: cannot read the file (it holds {_size(info.st_size)}; input files may hold at "
                 f"most {_size(MAX_INPUT_BYTES)})"
             )
         with os.fdopen(fd, "rb", closefd=False) as f:
             data = f.read(MAX_INPUT_BYTES + 1)
     except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc.strerror or type(exc).__name__})") from None
+        raise InputError(f"{name}: cannot read the file ({exc.strerror or type(exc).__name__})") from None
     finally:
         os.close(fd)
+    if info.st_size == 0 and data:
+        # /proc/self/environ and its kind: "regular" files of size 0 whose bytes the kernel makes up
+        # as they are read. Their contents are never parsed (a TOML error would quote them).
+        raise InputError(
+            f"{name}: cannot read the file (it is a file the system generates, not an input file)"
+        )
     if len(data) > MAX_INPUT_BYTES:
         raise InputError(
-            f"{path}: cannot read the file (it holds more than {_size(MAX_INPUT_BYTES)}, the most an input "
+            f"{name}: cannot read the file (it holds more than {_size(MAX_INPUT_BYTES)}, the most an input "
             "file may hold)"
         )
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise InputError(
-            f"{path}: is not UTF-8 text (byte {exc.start} cannot be decoded); input files are TOML text"
+            f"{name}: is not UTF-8 text (byte {exc.start} cannot be decoded); input files are TOML text"
         ) from None
+
+
+#: Longest name of one path component and of a whole path a data file may give [bytes] (the limits
+#: of Linux, macOS and Windows file systems: a longer name is refused before the system sees it).
+MAX_NAME_BYTES = 255
+MAX_PATH_BYTES = 4096
+
+
+def confined_path(name, base, field: str, allowed=()) -> Path:
+    """The file a data file names (a study's ``bearing``, a shaft's bearing ``file``), confined.
+
+    A data file may come from someone else, so the path it gives is checked as text and resolved
+    before anything opens it (:func:`read_text` reads it afterwards):
+
+    - a string without NUL bytes or other control characters, components of at most
+      :data:`MAX_NAME_BYTES` bytes, at most :data:`MAX_PATH_BYTES` in all;
+    - no ``~`` (never expanded: ``~/.bashrc`` is refused, not read);
+    - relative to ``base`` (the data file's folder); with symbolic links resolved it must lie in
+      ``base``, in the folder above it (a project's ``studies/`` beside its bearing files; not when
+      that is the file system's root, a folder directly under it or the home folder), or in a folder
+      of ``allowed`` (folders the user named on the command line, ``--allow-path``); an absolute path
+      likewise;
+    - no hidden file or folder (a name starting with ``.``) below that folder: ``../.ssh/config`` is
+      refused even where the folder above is the home folder.
+
+    Returns the resolved path; raises :class:`InputError` ``"FIELD (NAME): …"`` naming the rule. The
+    file itself is neither opened nor read here.
+    """
+    q = quote(name, SHORT_SOURCE_CHARS)
+    if not isinstance(name, str):
+        raise InputError(f"{field} ({q}) must be a file name (text)")
+    if not name.strip():
+        raise InputError(f"{field} ({q}) must name a file")
+    if not name.isprintable():
+        raise InputError(f"{field} ({q}) holds a NUL byte or a control character; expected a file name")
+    raw = name.encode("utf-8", "surrogateescape")
+    if len(raw) > MAX_PATH_BYTES or any(
+        len(p) > MAX_NAME_BYTES for p in raw.replace(b"\\", b"/").split(b"/")
+    ):
+        raise InputError(
+            f"{field} ({q}) is too long a file name: at most {MAX_NAME_BYTES} bytes per folder or "
+            f"file name and {MAX_PATH_BYTES} in all"
+        )
+    if name.startswith("~"):
+        raise InputError(
+            f"{field} ({q}): '~' is not expanded in a file; give the path relative to this file's folder"
+        )
+    base = Path(os.path.realpath(base))
+    roots = [base, *(Path(os.path.realpath(a)) for a in allowed)]
+    if _project_folder(base.parent):
+        roots.append(base.parent)
+    try:
+        target = Path(os.path.realpath(base / name))  # an absolute name replaces base
+    except (OSError, ValueError):
+        raise InputError(f"{field} ({q}): the system cannot resolve this path") from None
+    root = next((r for r in roots if target == r or r in target.parents), None)
+    if root is None:
+        raise InputError(
+            f"{field} ({q}) lies outside this file's folder (and its project's folder above it); a "
+            "data file may name only files there, or in a folder given with --allow-path on the command line"
+        )
+    hidden = [p for p in target.relative_to(root).parts if p.startswith(".")]
+    if hidden:
+        raise InputError(
+            f"{field} ({q}) names a hidden file or folder ({quote(hidden[0])}); a data file may not"
+        )
+    return target
+
+
+def _project_folder(folder: Path) -> bool:
+    """Whether the folder above a data file's may be reached from it: not the file system's root, a
+    folder directly under it (``/tmp``, ``/home``) or the home folder (``~/Downloads/x.toml`` must not
+    reach the rest of ``~``)."""
+    try:
+        home = Path(os.path.realpath(Path.home()))
+    except (RuntimeError, KeyError, OSError):  # no home folder known
+        home = None
+    return len(folder.parts) > 2 and folder != home
 
 
 def parse_toml(text: str, source: str) -> dict:

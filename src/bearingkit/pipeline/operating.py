@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, quote
 from bearingkit.units import parse
 
 __all__ = ["DEFAULT_TEMPERATURE", "ROTATING_RINGS", "Operating"]
@@ -141,6 +141,7 @@ class Operating:
         rel = _value(reliability, "dimensionless", "reliability")
         if rotating not in ROTATING_RINGS:
             raise InputError(f"rotating ({rotating!r}) must be one of {', '.join(ROTATING_RINGS)}")
+        check_speeds(bearing, speeds, [c.name for c in cases])
         return cls(speeds.reshape(n), temps, given, rotating, lube, e_c, rel)
 
     def to_dict(self, case: int) -> dict:
@@ -154,3 +155,33 @@ class Operating:
             "contamination_factor": self.contamination,
             "reliability": self.reliability,
         }
+
+
+#: Largest speed factor n·d_m a case may ask for [m·rad/s]: 5·10⁶ mm/min (n in rpm, d_m in mm), above
+#: the 3–3.5·10⁶ mm/min of the fastest hybrid spindle bearings in makers' catalogues (from memory: no
+#: catalogue at hand) and far above any steel bearing's. Beyond it no rolling bearing runs, and the
+#: speed models solve forces of elements at tens of thousands of g (a 6209 at 10⁹ rpm: 15 s, then a
+#: misleading Newton message).
+MAX_SPEED_FACTOR = 5e6 * 1e-3 * 2.0 * np.pi / 60.0
+
+
+def check_speeds(bearing, speeds, names) -> None:
+    """Refuse a case whose |speed| × pitch diameter passes :data:`MAX_SPEED_FACTOR` (one line)."""
+    speeds = np.abs(np.asarray(speeds, float)).reshape(-1)
+    if not speeds.size or not speeds.max() > 0.0:
+        return
+    diameters = [
+        np.max(r.pitch_diameter) for r in getattr(bearing.model, "rows", ()) if hasattr(r, "pitch_diameter")
+    ]
+    d_m = float(max(diameters)) if diameters else 0.0
+    if not d_m > 0.0:
+        return
+    worst = int(np.argmax(speeds))
+    if float(speeds[worst]) * d_m > MAX_SPEED_FACTOR:
+        rpm = float(speeds[worst]) / (2.0 * np.pi / 60.0)  # Python floats: no overflow warning
+        name = names[worst] if worst < len(names) else worst
+        raise InputError(
+            f"load case {quote(name)}: speed ({rpm:.4g} rpm) gives n·d_m = {rpm * d_m * 1e3:.3g} mm/min; "
+            f"expected at most {MAX_SPEED_FACTOR * 60e3 / (2.0 * np.pi):.3g} mm/min (beyond every rolling "
+            "bearing)"
+        )

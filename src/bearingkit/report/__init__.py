@@ -19,7 +19,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -229,45 +228,13 @@ def write_report(path, html: str) -> Path:
     temporary file, no folder this call created) and :class:`~bearingkit.errors.InputError` names the
     path and the cause in one line. Returns the written path.
     """
-    path = Path(path)
-    if path.exists() and path.is_dir():
-        raise InputError(
-            f"{path}: report path is a directory; give a file name such as {path / 'report.html'}"
-        )
-    created: list[Path] = []
-    parent = path.parent
-    tmp = None
-    done = False
-    try:
-        missing = []
-        p = parent
-        while not p.exists():
-            missing.append(p)
-            p = p.parent
-        for d in reversed(missing):
-            d.mkdir()
-            created.append(d)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=parent)
-        with os.fdopen(fd, "w", encoding="utf-8", errors="xmlcharrefreplace") as fh:
+    from bearingkit.io.export import write_atomic
+
+    def write(tmp: Path) -> None:
+        with open(tmp, "w", encoding="utf-8", errors="xmlcharrefreplace") as fh:
             fh.write(html)
             fh.flush()
             os.fsync(fh.fileno())
         os.chmod(tmp, REPORT_MODE)
-        os.replace(tmp, path)
-        done = True
-    except OSError as exc:
-        raise InputError(
-            f"{path}: cannot write the report ({type(exc).__name__}: {exc.strerror or exc})".replace(
-                "\n", " "
-            )
-        ) from None
-    finally:
-        if not done:
-            if tmp is not None:
-                Path(tmp).unlink(missing_ok=True)
-            for d in reversed(created):
-                try:
-                    d.rmdir()
-                except OSError:
-                    pass
-    return path
+
+    return write_atomic(path, write, "report")

@@ -100,11 +100,12 @@ def ring_shape_figure(
 
 def write_ring_shape(path, rigid, flexible: dict, **kwargs) -> Path:
     """Draw :func:`ring_shape_figure` and write it as PNG (parent folders created); returns the path."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    from bearingkit.io.export import write_atomic
+
     fig = ring_shape_figure(rigid, flexible, **kwargs)
-    fig.savefig(path, dpi=DPI, metadata={"Software": None})
-    return path
+    return write_atomic(
+        Path(path), lambda tmp: fig.savefig(tmp, dpi=DPI, format="png", metadata={"Software": None}), "figure"
+    )
 
 
 #: Azimuths of the moment figure [–] (one point per degree).
@@ -159,8 +160,9 @@ def ring_moment_figure(flexible: dict, case: int = 0, title: str = "") -> Figure
 
 def write_ring_moment(path, flexible: dict, **kwargs) -> Path:
     """Draw :func:`ring_moment_figure` and write it as PNG (parent folders created); returns the path."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    from bearingkit.io.export import write_atomic
+
     fig = ring_moment_figure(flexible, **kwargs)
-    fig.savefig(path, dpi=DPI, metadata={"Software": None})
-    return path
+    return write_atomic(
+        Path(path), lambda tmp: fig.savefig(tmp, dpi=DPI, format="png", metadata={"Software": None}), "figure"
+    )

@@ -22,10 +22,11 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 from pathlib import Path
 
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, error_line, quote
 
 
 def run_cli(
@@ -37,6 +38,7 @@ def run_cli(
     progress: bool | None = None,
     echo=print,
     allow_plugins=(),
+    allowed_paths=(),
 ):
     """Run the study in ``file`` and write its outputs; returns the StudyResult.
 
@@ -56,6 +58,9 @@ def run_cli(
     allow_plugins : sequence of str
         Evaluator plugins ``"package.module:attribute"`` the study file may name (the explicit opt-in
         of ``--allow-plugin``; a file alone can name only built-in and installed evaluators).
+    allowed_paths : sequence of path
+        Folders the study's ``bearing`` may lie in beyond the study's own folder and its project's
+        folder above it (``--allow-path``; :func:`bearingkit.io.reading.confined_path`).
 
     Notes
     -----
@@ -67,14 +72,18 @@ def run_cli(
     from bearingkit.studies.definition.load import load_study
     from bearingkit.studies.run.cases import plan_study
     from bearingkit.studies.run.executors import make_executor
+    from bearingkit.studies.run.probe import probe_study
     from bearingkit.studies.run.publish import publish
     from bearingkit.studies.run.runner import run_study
     from bearingkit.studies.run.store import ParquetStore
 
     for spec in allow_plugins:
         evaluators.allow_plugin(spec)
-    d = load_study(file)
+    check_workers(workers)
+    check_scheduler(scheduler)
+    d = load_study(file, allowed_paths)
     plan = plan_study(d)
+    probe_study(plan, workers or 1)  # output names checked and the work estimated, before any write
     out = Path(out or f"study-{d.name}")
     store = ParquetStore(out)
     store.lock(d.name, notify=echo)
@@ -100,22 +109,52 @@ def run_cli(
     return res
 
 
-def _bearing_of(file) -> str:
-    """The bearing a ``--list-*`` request is about: FILE itself, or the ``bearing`` of a study FILE."""
-    import tomllib
+def check_workers(workers) -> None:
+    """``--workers N``: at least 1 and at most the machine's cores (each worker is a process of a few
+    hundred MB solving with one thread: more workers than cores only add memory; 12 on 2 cores
+    took 2.5 GB)."""
+    if workers is None:
+        return
+    import os
 
+    cores = os.cpu_count() or 1
+    if not 1 <= workers <= cores:
+        raise InputError(
+            f"--workers ({workers}) must lie in 1 … {cores}, the cores of this machine (each worker is "
+            "one process solving on one core)"
+        )
+
+
+#: A Dask scheduler address: scheme, host and port (Dask's own schemes over a network).
+SCHEDULER_ADDRESS = re.compile(r"^(tcp|tls|ws|wss)://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]{1,253}):[0-9]{1,5}$")
+
+
+def check_scheduler(address) -> None:
+    """``--scheduler ADDRESS``: ``tcp://host:port`` (or tls, ws, wss), checked before Dask sees it."""
+    if address is None:
+        return
+    match = SCHEDULER_ADDRESS.match(address)
+    if match is None or not 0 < int(address.rsplit(":", 1)[1]) < 65536:
+        raise InputError(
+            f"--scheduler ({quote(address)}) must be a Dask scheduler address such as tcp://host:8786 "
+            "(tcp, tls, ws or wss; a port in 1 … 65535)"
+        )
+
+
+def _bearing_of(file, allowed_paths=()) -> str:
+    """The bearing a ``--list-*`` request is about: FILE itself, or the ``bearing`` of a study FILE.
+
+    FILE is read by the bounded reader (:func:`bearingkit.io.reading.load_toml`: a regular file of at
+    most 1 MiB, UTF-8, nesting bounded) and the bearing it names is confined like a study's
+    (:func:`bearingkit.io.reading.confined_path`)."""
+    from bearingkit.io.reading import confined_path, load_toml
     from bearingkit.studies.generic.evaluator import is_designation
 
     text = str(file)
     if is_designation(text):
         return text
     path = Path(text)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read the file ({exc.strerror or exc})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{path}: not valid TOML ({exc})".replace("\n", " ")) from None
+    data = load_toml(path)
     study = data.get("study")
     if not isinstance(study, dict):
         return str(path.resolve())
@@ -126,10 +165,13 @@ def _bearing_of(file) -> str:
         )
     if is_designation(bearing, path.parent):
         return bearing
-    return str((path.parent / bearing).resolve())
+    try:
+        return str(confined_path(bearing, path.parent, "study.bearing", allowed_paths))
+    except InputError as exc:
+        raise InputError(f"{path}: {exc}") from None
 
 
-def list_outputs(file) -> list[tuple[str, str, str]]:
+def list_outputs(file, allowed_paths=()) -> list[tuple[str, str, str]]:
     """(name, SI unit, description) of every output the generic evaluator offers for FILE.
 
     FILE is a bearing file, a designation, or a study file (its ``bearing`` is used).
@@ -138,7 +180,7 @@ def list_outputs(file) -> list[tuple[str, str, str]]:
     from bearingkit.studies.generic import quantities
     from bearingkit.studies.generic.evaluator import load_bearing
 
-    source = _bearing_of(file)
+    source = _bearing_of(file, allowed_paths)
     bearing = from_dict(load_bearing(source)[0], source)
     return [(q.name, q.unit, q.description) for q in quantities.catalogue(bearing).values()]
 
@@ -147,14 +189,14 @@ def list_outputs(file) -> list[tuple[str, str, str]]:
 FACTOR_COLUMNS = ("path", "unit", "kind", "value in the file (SI)", "text levels")
 
 
-def list_factors(file) -> list[tuple[str, str, str, str, str]]:
+def list_factors(file, allowed_paths=()) -> list[tuple[str, str, str, str, str]]:
     """(path, SI unit, kind, nominal value, the names a text path takes) of every factor path of FILE
     (as :func:`list_outputs`)."""
     from bearingkit.io.loader import from_dict
     from bearingkit.studies.generic.evaluator import _paths as paths_of
     from bearingkit.studies.generic.evaluator import load_bearing
 
-    source = _bearing_of(file)
+    source = _bearing_of(file, allowed_paths)
     bearing = from_dict(load_bearing(source)[0], source)
     out = []
     for p in paths_of(bearing).values():
@@ -271,13 +313,20 @@ def main(argv=None) -> int:
         metavar="MODULE:ATTR",
         help="let the study use this evaluator plugin (a study file alone cannot import code)",
     )
+    p.add_argument(
+        "--allow-path",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="a folder the study's bearing file may lie in (beyond the study's folder and the one above)",
+    )
     a = p.parse_args(argv)
     try:
         if a.list_outputs or a.list_factors:
             if a.list_outputs:
-                print_table(list_outputs(a.file), ("output", "unit", "meaning"))
+                print_table(list_outputs(a.file, a.allow_path), ("output", "unit", "meaning"))
             if a.list_factors:
-                print_table(list_factors(a.file), FACTOR_COLUMNS)
+                print_table(list_factors(a.file, a.allow_path), FACTOR_COLUMNS)
             return 0
         run_cli(
             a.file,
@@ -287,9 +336,10 @@ def main(argv=None) -> int:
             a.out,
             progress=False if a.no_progress else None,
             allow_plugins=a.allow_plugin,
+            allowed_paths=a.allow_path,
         )
     except InputError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        print(error_line(exc, a.file), file=sys.stderr)
         return 2
     return 0
 

@@ -13,6 +13,7 @@ chunks, continuation, results).
 from __future__ import annotations
 
 import copy
+import time
 
 import numpy as np
 
@@ -26,6 +27,67 @@ from bearingkit.rows.base import N_DOF
 CONE_CHECK_ITERATION = 8
 #: Halvings of one Armijo backtracking line search.
 MAX_HALVINGS = 40
+
+
+class Effort:
+    """What each case of a solve has spent, against its budget (the numpy reference's cases).
+
+    A case may use at most ``max_evaluations`` row evaluations (every Newton attempt, line-search
+    trial and continuation step together) and ``max_seconds`` of processor time, counted as its
+    share of each batched evaluation (an evaluation of k cases that takes t seconds of the thread's
+    time charges t/k to each; the time of the evaluating thread, so a loaded machine does not stop
+    cases early). A case past either is stopped where it stands (not converged, :attr:`stopped`
+    says which budget): the rest of its batch goes on at its usual speed. The evaluation count is
+    deterministic; the time is the backstop for evaluations far more costly than usual.
+    """
+
+    def __init__(self, n: int, max_evaluations: int, max_seconds: float, batch_seconds: float = np.inf):
+        self.evaluations = np.zeros(n, np.int64)
+        self.seconds = np.zeros(n)
+        self.stopped = np.zeros(n, np.int8)  # 0 running, 1 evaluations, 2 its time, 3 the batch's time
+        self.max_evaluations = int(max_evaluations)
+        self.max_seconds = float(max_seconds)
+        # The whole batch's time (shared by the parts of a chunked batch): a thousand cases that each
+        # stay within their own budget must not add up to hours.
+        self.batch_seconds = float(batch_seconds)
+        self.total = [0.0]
+
+    def charge(self, cases: np.ndarray, seconds: float) -> None:
+        """One evaluation of ``cases`` (indices) that took ``seconds`` in all."""
+        if len(cases):
+            self.evaluations[cases] += 1
+            self.seconds[cases] += seconds / len(cases)
+            self.total[0] += seconds
+
+    def exhausted(self, cases: np.ndarray) -> np.ndarray:
+        """Which of ``cases`` have spent their budget (marked in :attr:`stopped`)."""
+        over_n = self.evaluations[cases] >= self.max_evaluations
+        over_t = self.seconds[cases] >= self.max_seconds
+        over = over_n | over_t | (self.total[0] >= self.batch_seconds)
+        hit = cases[over & (self.stopped[cases] == 0)]
+        self.stopped[hit] = np.where(
+            self.evaluations[hit] >= self.max_evaluations,
+            1,
+            np.where(self.seconds[hit] >= self.max_seconds, 2, 3),
+        )
+        return over
+
+    def take(self, cases: np.ndarray) -> Effort:
+        out = Effort(len(cases), self.max_evaluations, self.max_seconds, self.batch_seconds)
+        out.evaluations, out.seconds, out.stopped = (
+            self.evaluations[cases],
+            self.seconds[cases],
+            self.stopped[cases],
+        )
+        out.total = self.total  # one running total for the whole batch
+        return out
+
+    def put(self, cases: np.ndarray, part: Effort) -> None:
+        self.evaluations[cases], self.seconds[cases], self.stopped[cases] = (
+            part.evaluations,
+            part.seconds,
+            part.stopped,
+        )
 
 
 def evaluate(kernels, q, offsets=None):
@@ -146,7 +208,7 @@ def starting_point(problem: Problem, load: np.ndarray, q: np.ndarray) -> np.ndar
     return np.where(np.isfinite(out).all(axis=1, keepdims=True), out, q)
 
 
-def newton(problem: Problem, q, load, active, iterations):
+def newton(problem: Problem, q, load, active, iterations, effort: Effort | None = None):
     """Damped Newton on the active cases; returns q, converged, last state, diverged and refused masks.
 
     ``refused`` marks the cases stopped because their load lies outside the contact cone (they are
@@ -154,18 +216,29 @@ def newton(problem: Problem, q, load, active, iterations):
     :mod:`bearingkit.analysis.solver.coarse`) takes its last iteration's step without evaluating its end.
 
     Each iteration works on the cases still running only (kernels and loads restricted to them), so
-    a batch costs what its unconverged cases cost.
+    a batch costs what its unconverged cases cost. A case whose line search finds no decrease stops
+    here: its next step, a function of its own iterate alone, would be the same one (it used to
+    repeat :data:`MAX_HALVINGS` evaluations per iteration to the iteration cap). ``effort``
+    (:class:`Effort`, aligned with ``q``) charges every evaluation to its cases and stops a case that
+    has spent its budget.
     """
     opts = problem.options
     idx, s = problem.idx, problem.scale
     n = len(idx)
     q = q.copy()
+    started = time.thread_time()
     st = {k: v.copy() for k, v in problem.state(q, load).items()}
+    if effort is not None:
+        effort.charge(np.flatnonzero(active), time.thread_time() - started)
     converged = st["norm"] <= opts.rtol
     diverged = np.zeros_like(converged)
     refused = np.zeros_like(converged)
+    stalled = np.zeros_like(converged)
     for it in range(opts.max_iterations):
-        work = active & ~converged & ~diverged
+        work = active & ~converged & ~diverged & ~stalled
+        if effort is not None and work.any():
+            running = np.flatnonzero(work)
+            work[running[effort.exhausted(running)]] = False
         if it == CONE_CHECK_ITERATION and work.any():
             # A case still running here is checked against the contact cone: a load no combination
             # of contact forces balances is refused now instead of walking to the divergence limit
@@ -204,43 +277,58 @@ def newton(problem: Problem, q, load, active, iterations):
             diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
             break
         slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
-        new_q, trial = _line_search(sp, qw, lw, stw, step, slope)
+        new_q, trial, moved = _line_search(sp, qw, lw, stw, step, slope, effort, cases)
         q[cases] = new_q
         for k in st:
             st[k][cases] = trial[k]
         converged[cases] |= trial["norm"] <= opts.rtol
         diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
+        stuck = cases[~moved & ~converged[cases] & ~diverged[cases]]
+        if len(stuck) and it < CONE_CHECK_ITERATION:
+            # It would have met the cone check still stuck: a load outside the cone is refused as then.
+            check = getattr(problem, "outside_cone", None)
+            if check is not None:
+                outside = stuck[check(load[stuck])]
+                refused[outside] = diverged[outside] = True
+        stalled[stuck] = True
     return q, converged, st, diverged, refused
 
 
-def _line_search(sp: Problem, qw, lw, stw, step, slope):
-    """Armijo backtracking along ``step`` from ``qw``; returns the accepted iterates and their states.
+def _line_search(sp: Problem, qw, lw, stw, step, slope, effort: Effort | None = None, cases=None):
+    """Armijo backtracking along ``step`` from ``qw``; returns the accepted iterates, their states
+    and which cases moved.
 
     The full step is tried for every case at once; each halving then re-evaluates only the cases
     still backtracking (a case accepted at t = 1 is not evaluated again while another one halves:
     in a batch most cases take the full Newton step). A case that finds no decrease in
     :data:`MAX_HALVINGS` halvings keeps its iterate (it is then judged by the convergence and
-    divergence tests as before).
+    divergence tests as before) and is reported as not moved. ``effort``: every trial evaluation is
+    charged to its cases (``cases``: the positions of ``qw`` in the effort's arrays).
     """
     idx, s = sp.idx, sp.scale
     n_c = len(qw)
     t = np.ones(n_c)
     new_q, trial = qw, stw
+    moved = np.zeros(n_c, bool)
     pending = np.arange(n_c)  # cases still backtracking (positions in qw)
     sub = sp
     for _ls in range(MAX_HALVINGS):
         cand = qw[pending].copy()
         cand[:, idx] += (t[pending, None] * step[pending]) * s[idx]
+        started = time.thread_time()
         trial_state = sub.state(cand, lw[pending])
+        if effort is not None:
+            effort.charge(cases[pending], time.thread_time() - started)
         base = stw["potential"][pending]
         slack = 1e-12 * (np.abs(base) + 1e-30)
         ok = (trial_state["potential"] <= base + 1e-4 * t[pending] * slope[pending] + slack) | (
             trial_state["norm"] < 0.5 * stw["norm"][pending]
         )
         if ok.all() and len(pending) == n_c:  # the usual Newton step: nothing to mix
-            return cand, trial_state
+            return cand, trial_state, np.ones(n_c, bool)
         if ok.any():
             hit = pending[ok]
+            moved[hit] = True
             new_q = new_q.copy() if new_q is qw else new_q
             new_q[hit] = cand[ok]
             trial = {k: v.copy() for k, v in trial.items()} if trial is stw else trial
@@ -251,7 +339,7 @@ def _line_search(sp: Problem, qw, lw, stw, step, slope):
             break
         t[pending] *= 0.5
         sub = sp.take(pending) if len(pending) < n_c else sp
-    return new_q, trial
+    return new_q, trial, moved
 
 
 def merge(old: dict, new: dict, mask: np.ndarray) -> dict:

@@ -23,6 +23,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
+import os
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -33,7 +34,7 @@ from bearingkit import checks
 from bearingkit.analysis.solver import backend, cone
 from bearingkit.analysis.solver.coarse import COARSE_ITERATIONS
 from bearingkit.analysis.solver.model import BearingModel
-from bearingkit.analysis.solver.newton import Problem, merge, newton, starting_point
+from bearingkit.analysis.solver.newton import Effort, Problem, merge, newton, starting_point
 from bearingkit.analysis.solver.solution import QuasiStaticResult
 from bearingkit.analysis.solver.threads import (  # noqa: F401 (re-exported: their old home)
     PARALLEL_CHUNK,
@@ -44,6 +45,20 @@ from bearingkit.analysis.solver.threads import (  # noqa: F401 (re-exported: the
 )
 from bearingkit.errors import ConvergenceError, InputError
 from bearingkit.rows.base import N_DOF
+
+#: Default evaluation budget of one case per Newton iteration allowed (``max_evaluations`` =
+#: this × ``max_iterations``; 50 × 60 = 3,000). A converging case uses 5–70 evaluations (3–13
+#: iterations, mostly full steps, and the coarse start); the slowest converging one measured (a 6209
+#: at 3,000 rpm under 75 N, its first attempt crawling with ~28 line-search halvings per iteration
+#: before the load continuation converges) 1,755. The cap stops the cases that would otherwise spend
+#: 5 attempts × 60 iterations × 41 line-search trials (12,300 evaluations, minutes for a row at speed).
+EVALUATIONS_PER_ITERATION = 50
+#: Default time budget of one case in the numpy reference [s of processor time]: a converging ball
+#: row at speed takes well under 1 s per case on the 2-core reference machine; a case still running
+#: after this has met a problem the evaluation cap does not see (evaluations far slower than usual).
+CASE_SECONDS = 10.0
+#: Environment variable overriding :data:`CASE_SECONDS` (``SolverOptions.case_seconds`` wins).
+CASE_SECONDS_ENV = "BEARINGKIT_CASE_SECONDS"
 
 
 @dataclass(frozen=True)
@@ -66,6 +81,15 @@ class SolverOptions:
     backend : str or None
         ``"auto"``, ``"compiled"`` or ``"numpy"`` (:mod:`bearingkit.analysis.solver.backend`); None reads
         ``$BEARINGKIT_BACKEND`` (default ``"auto"``: the compiled core where it applies).
+    max_evaluations : int
+        Row evaluations one case may use in one solve of the numpy reference (every attempt, trial
+        step and continuation step together; :class:`~bearingkit.analysis.solver.newton.Effort`): a
+        case past it is stopped, not converged, and the rest of its batch goes on. The compiled core's
+        effort per case is bounded by its iteration caps instead (and costs microseconds per
+        evaluation).
+    case_seconds : float or None [s]
+        Processor time one case may use in one solve of the numpy reference (its share of each
+        batched evaluation); None reads ``$BEARINGKIT_CASE_SECONDS`` (default :data:`CASE_SECONDS`).
     coarse_iterations : int
         Newton iterations on the coarse model (sliced rollers at a few slices) before the full model's,
         when no start is given (:mod:`bearingkit.analysis.solver.coarse`); 0 starts the full model directly.
@@ -79,8 +103,12 @@ class SolverOptions:
     divergence_limit: float = 0.5
     backend: str | None = None
     coarse_iterations: int = COARSE_ITERATIONS
+    max_evaluations: int = 0
+    case_seconds: float | None = None
 
     def __post_init__(self):
+        if self.max_evaluations == 0:  # the default: proportional to the iteration cap
+            object.__setattr__(self, "max_evaluations", EVALUATIONS_PER_ITERATION * self.max_iterations)
         checks.positive("rtol", self.rtol)
         checks.integer("max_iterations", self.max_iterations, low=1)
         if self.max_step is not None:
@@ -90,6 +118,25 @@ class SolverOptions:
         if self.backend is not None:
             checks.one_of("backend", self.backend, backend.BACKENDS)
         checks.integer("coarse_iterations", self.coarse_iterations, low=0)
+        checks.integer("max_evaluations", self.max_evaluations, low=1)
+        if self.case_seconds is not None:
+            checks.positive("case_seconds", self.case_seconds, "s")
+
+    def seconds_per_case(self) -> float:
+        """The wall-time budget of one case [s]: ``case_seconds``, else ``$BEARINGKIT_CASE_SECONDS``,
+        else :data:`CASE_SECONDS`."""
+        if self.case_seconds is not None:
+            return self.case_seconds
+        value = os.environ.get(CASE_SECONDS_ENV, "").strip()
+        if not value:
+            return CASE_SECONDS
+        try:
+            seconds = float(value)
+        except ValueError:
+            seconds = -1.0
+        if not (seconds > 0 and math.isfinite(seconds)):
+            raise InputError(f"{CASE_SECONDS_ENV}={value!r}: expected a positive number of seconds")
+        return seconds
 
 
 #: The options of a solve that gives none (one instance: building and checking them costs more than
@@ -125,21 +172,24 @@ def _blas_serial():
     return _CONTROLLER[0].limit(limits=1, user_api="blas")
 
 
-def _attempt(problem: Problem, q, load, iterations):
+def _attempt(problem: Problem, q, load, iterations, effort: Effort | None = None):
     """One Newton attempt over every case: chunked and threaded for large batches."""
     n = len(q)
     everyone = np.ones(n, bool)
     if n <= BLAS_SERIAL_ABOVE:
-        return newton(problem, q, load, everyone, iterations)
+        return newton(problem, q, load, everyone, iterations, effort)
     if n <= CHUNK_CASES:
         with _blas_serial():
-            return newton(problem, q, load, everyone, iterations)
+            return newton(problem, q, load, everyone, iterations, effort)
     threads = solver_threads()
     chunks = [np.arange(i, min(i + CHUNK_CASES, n)) for i in range(0, n, CHUNK_CASES)]
 
     def run(cases):
         its = np.zeros(len(cases), int)
-        out = newton(problem.take(cases), q[cases], load[cases], np.ones(len(cases), bool), its)
+        part = None if effort is None else effort.take(cases)
+        out = newton(problem.take(cases), q[cases], load[cases], np.ones(len(cases), bool), its, part)
+        if part is not None:
+            effort.put(cases, part)
         return cases, its, out
 
     # Our threads already fill the cores: BLAS threads on top would oversubscribe them (measured:
@@ -234,18 +284,20 @@ def solve(
         q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
         converged, iterations = out.flags[0], out.counts[0]
         evaluations, coarse_evaluations = out.counts[1], out.counts[2]
+        effort = None  # the compiled core's effort is bounded by its iteration caps
         roller_x = out.roller_x if plan.tapered else None
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
     else:
         started = time.perf_counter()
-        evaluations = coarse_evaluations = roller_x = None
+        coarse_evaluations = roller_x = None
         iterations = np.zeros(q0.shape[0], int)
         q0 = q0.copy() if q0 is _ZERO_START else q0  # the shared start stays untouched
         problem = plan.problem(load)
         coarse = backend.coarse_of(model) if offsets is None else None
-        q, converged, st, diverged = _solve_numpy(
+        q, converged, st, diverged, effort = _solve_numpy(
             problem, q0, load, free, options, displacement, iterations, coarse
         )
+        evaluations = effort.evaluations
         norm, force, stiffness = st["norm"], st["force"], -st["jac"]
         # A case whose iterate or residual went non-finite failed numerically: report it, never NaN.
         broken = ~(np.isfinite(q).all(axis=1) & np.isfinite(norm))
@@ -266,6 +318,8 @@ def solve(
                     problem.kernels, problem.scale, problem.idx, load[c], bool(diverged[c]), norm[c]
                 )
             )
+            if effort is not None and effort.stopped[c] and not broken[c]:
+                reasons[c] = _out_of_budget(effort, c, options, reasons[c])
     reaction = load
     if not plan.all_free:
         reaction[:, ~free] = -force[:, ~free]
@@ -306,21 +360,48 @@ def _solve_numpy(
     start = q0 if displacement is not None else starting_point(problem, load, q0)
     if coarse is not None and displacement is None and options.coarse_iterations > 0:
         start = _coarse_start(problem, coarse, start, load)
-    q, converged, st, diverged, refused = _attempt(problem, start, load, iterations)
+    from bearingkit.budget import max_work
+
+    effort = Effort(len(q0), options.max_evaluations, options.seconds_per_case(), max_work())
+    q, converged, st, diverged, refused = _attempt(problem, start, load, iterations, effort)
     if options.continuation_steps and not (converged | refused).all():
         # Load continuation from the unloaded start for the failed cases (a load outside the contact
-        # cone stays refused: no ramp makes it carriable).
-        retry = ~converged & ~refused
+        # cone stays refused: no ramp makes it carriable; a case out of budget is not retried).
+        retry = ~converged & ~refused & (effort.stopped == 0)
         qc = np.where(retry[:, None], q0, q)
+        st_c = st
         for frac in np.linspace(1.0 / options.continuation_steps, 1.0, options.continuation_steps):
             ramp = np.where(retry[:, None], load * frac, load)
             ramp[:, ~free] = load[:, ~free]
-            qc, conv_c, st_c, div_c, _ = newton(problem, qc, ramp, retry, iterations)
-        q = np.where(retry[:, None], qc, q)
-        st = merge(st, st_c, retry)
-        converged = np.where(retry, conv_c, converged)
-        diverged = np.where(retry, div_c, diverged)
-    return q, converged, st, diverged
+            qc, conv_c, st_c, div_c, _ = newton(problem, qc, ramp, retry, iterations, effort)
+        if retry.any():
+            q = np.where(retry[:, None], qc, q)
+            st = merge(st, st_c, retry)
+            converged = np.where(retry, conv_c, converged)
+            diverged = np.where(retry, div_c, diverged)
+    return q, converged, st, diverged, effort
+
+
+def _out_of_budget(effort: Effort, c: int, options: SolverOptions, why: str) -> str:
+    """The reason of a case stopped by its budget: what it spent, what it had reached, the remedy."""
+    if effort.stopped[c] == 1:
+        spent = (
+            f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case "
+            f"([solver] max_iterations {options.max_iterations} x {EVALUATIONS_PER_ITERATION})"
+        )
+    elif effort.stopped[c] == 2:
+        spent = (
+            f"stopped after {effort.seconds[c]:.3g} s, the time budget of one case ({CASE_SECONDS_ENV}="
+            f"{options.seconds_per_case():g})"
+        )
+    else:
+        from bearingkit.budget import MAX_WORK_ENV
+
+        spent = (
+            f"stopped when the solve of all cases together had taken {effort.total[0]:.3g} s, the work "
+            f"limit ({MAX_WORK_ENV}={effort.batch_seconds:g})"
+        )
+    return f"{spent}; {why}"
 
 
 def _coarse_start(problem: Problem, coarse: list, start, load):

@@ -94,7 +94,9 @@ def write_shaft_figure(result, path, case: int = 0):
     """Write :func:`shaft_figure` as a PNG to ``path``; returns the path."""
     from pathlib import Path
 
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    shaft_figure(result, case).savefig(path, dpi=DPI, metadata={"Software": None})
-    return path
+    from bearingkit.io.export import write_atomic
+
+    fig = shaft_figure(result, case)
+    return write_atomic(
+        Path(path), lambda tmp: fig.savefig(tmp, dpi=DPI, format="png", metadata={"Software": None}), "figure"
+    )

@@ -281,7 +281,15 @@ class BallSpeedKernel(BallKernel):
         return (self.r_o + delta_o)[..., None] * n
 
     def _solve_balls(self, s, a):
-        """Ball-centre positions X (C, Z, 2) and their evaluation; bounded damped Newton."""
+        """Ball-centre positions X (C, Z, 2) and their evaluation; bounded damped Newton.
+
+        A thrust row's angles may swing to where the kinematics divide by zero (an iterate far from
+        any equilibrium, e.g. a milli-newton load at speed): its values are then NaN, which the line
+        searches reject and the solver reports as not converged, without numpy's warnings."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return self._solve_balls_raw(s, a)
+
+    def _solve_balls_raw(self, s, a):
         shape = s.shape
         guess = self._guess(s, a)
         x = guess
@@ -298,11 +306,16 @@ class BallSpeedKernel(BallKernel):
         ev = self._ball_eval(x, s)
         cap = BALL_STEP_CAP * self.d[..., None]
         done = np.zeros(shape[:-1], bool)
+        # A ball whose line search found no decrease keeps its position; its next step (a function of
+        # that ball's position alone) would be the same, and fail the same way: it is stalled, and no
+        # further iteration is spent on it (they used to run to BALL_MAX_ITER × BALL_MAX_HALVINGS
+        # evaluations per call under milli-newton loads at speed, ~1 s per outer evaluation).
+        stalled = np.zeros(shape[:-1], bool)
         used = 0
         for _ in range(BALL_MAX_ITER):
             norm = np.sqrt((ev["resid"] ** 2).sum(-1))
             done |= norm <= BALL_RTOL * ev["scale"] + self.force_floor
-            if done.all():
+            if (done | stalled).all():
                 break
             used += 1
             jac = ev["r_x"]
@@ -314,10 +327,10 @@ class BallSpeedKernel(BallKernel):
             step = -np.linalg.solve(jac - mu[..., None, None] * np.eye(2), ev["resid"][..., None])[..., 0]
             big = np.sqrt((step**2).sum(-1))
             step *= np.minimum(1.0, cap[..., 0] / np.maximum(big, 1e-300))[..., None]
-            step[done] = 0.0
+            step[done | stalled] = 0.0
             slope = -(ev["resid"] * step).sum(-1)  # dΦ/dt of the conservative part along the step
             t = np.ones(shape[:-1])
-            pending = ~done
+            pending = ~done & ~stalled
             new_x, new_ev = x, ev
             for _ls in range(BALL_MAX_HALVINGS):
                 trial = x + t[..., None] * step
@@ -338,6 +351,7 @@ class BallSpeedKernel(BallKernel):
                 t = np.where(pending, 0.5 * t, t)
             if pending.any():  # no decrease: round-off where the balance is already tight
                 done |= pending & (norm <= 1e-9 * ev["scale"] + self.force_floor)
+                stalled |= pending & ~done
             x, ev = new_x, new_ev
         else:
             norm = np.sqrt((ev["resid"] ** 2).sum(-1))

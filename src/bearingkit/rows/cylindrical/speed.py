@@ -132,12 +132,17 @@ class CylindricalSpeedKernel(CylindricalKernel):
         cap = ROLLER_STEP_CAP * float(np.min(self.row.element_diameter))
         length = float(np.max(self.row.effective_length))
         done = np.zeros(a.shape, bool)
+        # A roller whose line search found no decrease keeps its position, and its next step (a
+        # function of that roller alone) would fail the same way: it is stalled and left alone (as
+        # the balls at speed, rows.ball.speed); light loads used to run every roller to
+        # ROLLER_MAX_ITER x ROLLER_MAX_HALVINGS evaluations.
+        stalled = np.zeros(a.shape, bool)
         used = 0
         for _ in range(ROLLER_MAX_ITER):
             scale = ins[0].sum(-1) + outs[0].sum(-1) + np.abs(self.f_c)
             gnorm = np.abs(grad[..., 0]) + np.abs(grad[..., 1]) / length
             done |= gnorm <= ROLLER_RTOL * scale + self.force_floor
-            if done.all():
+            if (done | stalled).all():
                 break
             used += 1
             h = self._sums(ins[1] + outs[1])
@@ -147,10 +152,10 @@ class CylindricalSpeedKernel(CylindricalKernel):
             step = -np.linalg.solve(h + mu[..., None, None] * np.diag(scale_m), grad[..., None])[..., 0]
             big = np.abs(step[..., 0]) + np.abs(step[..., 1]) * length
             step *= np.minimum(1.0, cap / np.maximum(big, 1e-300))[..., None]
-            step[done] = 0.0
+            step[done | stalled] = 0.0
             slope = (grad * step).sum(-1)
             t = np.ones(a.shape)
-            pending = ~done
+            pending = ~done & ~stalled
             new = (y, phi, grad, ins, outs)
             for _ls in range(ROLLER_MAX_HALVINGS):
                 trial = y + t[..., None] * step
@@ -163,6 +168,7 @@ class CylindricalSpeedKernel(CylindricalKernel):
                 t = np.where(pending, 0.5 * t, t)
             if pending.any():  # no decrease along a descent direction: round-off
                 done |= pending & (gnorm <= 1e-9 * scale + self.force_floor)
+                stalled |= pending & ~done
             y, phi, grad, ins, outs = new
         self.inner_iterations = used
         self.inner_stats.record(used, int(np.count_nonzero(~done)))

@@ -64,7 +64,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, shown
 from bearingkit.studies.definition.checks import case_count, check_definition, check_plots
 from bearingkit.studies.definition.choice import evaluator_named, evaluator_of
 from bearingkit.studies.definition.schema import (
@@ -120,13 +120,16 @@ __all__ = [
 ]
 
 
-def load_study(path) -> StudyDefinition:
-    """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder)."""
+def load_study(path, allowed_paths=()) -> StudyDefinition:
+    """Read and validate a study TOML file (relative ``bearing`` paths are resolved from its folder).
+
+    ``allowed_paths``: folders beyond the file's own (and its project's) that its ``bearing`` may name
+    (``--allow-path``; :func:`bearingkit.io.reading.confined_path`)."""
     from bearingkit.io.reading import load_toml
 
     path = Path(path)
     data = load_toml(path)  # a regular file of at most 1 MiB, nesting bounded (bearingkit.io.reading)
-    return from_dict(data, source=str(path), base_dir=path.parent)
+    return from_dict(data, source=str(path), base_dir=path.parent, allowed_paths=allowed_paths)
 
 
 def _pydantic_message(exc: ValidationError, source: str, head: dict) -> str:
@@ -142,11 +145,14 @@ def _pydantic_message(exc: ValidationError, source: str, head: dict) -> str:
     return f"{source}: {loc} ({short(err.get('input'))}) {msg}"
 
 
-def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinition:
+def from_dict(data: dict, source: str = "<dict>", base_dir=None, allowed_paths=()) -> StudyDefinition:
     """Validate a parsed study file (see the module docstring); InputError with one line if malformed.
 
     Every malformed value gives one line naming the file, the field, the value and what was expected;
-    nothing else escapes (a study file may come from someone else).
+    nothing else escapes (a study file may come from someone else). With ``base_dir`` (the file's
+    folder) the ``bearing`` path is confined by :func:`bearingkit.io.reading.confined_path` before
+    anything opens it: no ``~``, no NUL, nothing outside that folder (and its project's folder above
+    it) or ``allowed_paths``.
     """
 
     if not isinstance(data, dict) or not isinstance(data.get("study"), dict):
@@ -174,11 +180,15 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         raise InputError(
             f"{source}: study.bearing ({short(bearing)}) must be a bearing file or a designation"
         )
-    if isinstance(bearing, str) and base_dir is not None and not Path(bearing).is_absolute():
+    if isinstance(bearing, str) and base_dir is not None:
+        from bearingkit.io.reading import confined_path
         from bearingkit.studies.generic.evaluator import is_designation
 
         if not is_designation(bearing, base_dir):
-            bearing = str((Path(base_dir) / bearing).resolve())
+            try:
+                bearing = str(confined_path(bearing, base_dir, "study.bearing", allowed_paths))
+            except InputError as exc:
+                raise InputError(f"{source}: {exc}") from None
     head["bearing"] = bearing
     ev_name = head.get("evaluator")
     if ev_name is None and bearing is not None:
@@ -194,7 +204,12 @@ def from_dict(data: dict, source: str = "<dict>", base_dir=None) -> StudyDefinit
         ev = evaluator_named(ev_name, bearing, head, data, source)
     except InputError as exc:
         text = str(exc)
-        raise InputError(text if text.startswith(source) else f"{source}: study.{text}") from None
+        if text.startswith(source):
+            raise
+        for name in (str(bearing), shown(bearing)) if isinstance(bearing, str) else ():
+            if text.startswith(f"{name}: "):  # the bearing file's own refusal (cannot read it, bad TOML …)
+                raise InputError(f"{source}: study.bearing: {text}") from None
+        raise InputError(f"{source}: study.{text}") from None
     fixed = {
         k: si_value(v, factor_of(ev, k, f"fixed.{k}", source), f"{source}: fixed.{k}")
         for k, v in flatten(as_table(data.get("fixed", {}), f"{source}: fixed"))

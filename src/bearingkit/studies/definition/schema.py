@@ -50,6 +50,23 @@ MAX_CHUNK_SIZE = 1_000_000
 MAX_REFERENCE_DIRECTIONS = 100_000
 
 
+#: Most panels (outputs) one ``[[plots]]`` entry draws: a figure of more is unreadable, and a
+#: histogram asking for ``y`` 1,000 times took 225 s.
+MAX_PLOT_PANELS = 12
+#: Most quantiles a study reports per output.
+MAX_QUANTILES = 20
+
+
+def _quantiles(value):
+    """Each quantile a finite number strictly between 0 and 1, at most :data:`MAX_QUANTILES` of them."""
+    if len(value) > MAX_QUANTILES:
+        raise ValueError(f"must list at most {MAX_QUANTILES} quantiles")
+    for q in value:
+        if not 0.0 < q < 1.0:  # NaN fails too
+            raise ValueError(f"must lie strictly between 0 and 1 (got {q})")
+    return value
+
+
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
@@ -81,6 +98,8 @@ class MonteCarloDef(_Strict):
     quantiles: tuple[float, ...] = (0.05, 0.5, 0.95)
     factors: tuple[FactorDef, ...] = ()
 
+    _check_quantiles = field_validator("quantiles")(_quantiles)
+
 
 class PlotDef(_Strict):
     """A plot of the results (``[[plots]]``, :mod:`bearingkit.studies.results.figures`)."""
@@ -100,6 +119,15 @@ class PlotDef(_Strict):
     @classmethod
     def _one_or_more(cls, value):
         return (value,) if isinstance(value, str) else value
+
+    @field_validator("y")
+    @classmethod
+    def _few_distinct(cls, value):
+        if len(value) > MAX_PLOT_PANELS:
+            raise ValueError(f"must name at most {MAX_PLOT_PANELS} outputs (one panel each)")
+        if len(set(value)) != len(value):
+            raise ValueError("must name each output once")
+        return value
 
 
 class VariableDef(_Strict):
@@ -169,6 +197,8 @@ class StudyDefinition(_Strict):
         if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_CHUNK_SIZE:
             raise ValueError(f'must be "auto" or a whole number of cases from 1 to {MAX_CHUNK_SIZE:,}')
         return value
+
+    _check_quantiles = field_validator("quantiles")(_quantiles)
 
     @field_validator("name")
     @classmethod

@@ -47,11 +47,20 @@ DEFAULT_CASE = "load"
 
 
 def is_designation(text: str, base_dir=None) -> bool:
-    """True when ``text`` names a standard bearing (``"6205 C3"``), not a file (relative to ``base_dir``)."""
-    path = Path(text)
-    if base_dir is not None and not path.is_absolute() and (Path(base_dir) / path).exists():
+    """True when ``text`` names a standard bearing (``"6205 C3"``), not a file (relative to ``base_dir``).
+
+    Text no file system would take (a NUL byte, a control character, more than 255 bytes) is taken
+    for a path, which :func:`bearingkit.io.reading.confined_path` then refuses in one line."""
+    if not text.isprintable() or len(text.encode("utf-8", "surrogateescape")) > 255:
         return False
-    return not path.exists() and path.suffix.lower() not in (".toml", ".json") and "/" not in text
+    path = Path(text)
+    try:
+        if base_dir is not None and not path.is_absolute() and (Path(base_dir) / path).exists():
+            return False
+        exists = path.exists()
+    except (OSError, ValueError):  # a name the system refuses to look up is no designation either
+        return False
+    return not exists and path.suffix.lower() not in (".toml", ".json") and "/" not in text
 
 
 def load_bearing(source: str) -> tuple[dict, str]:

@@ -33,7 +33,7 @@ from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
-from bearingkit.io.reading import load_toml
+from bearingkit.io.reading import confined_path, load_toml
 from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.shaft.loads import (
     AXES,
@@ -132,6 +132,17 @@ class ShaftSpec(schema.Strict):
     gears: list[GearSpec] = Field(default_factory=list)
     masses: list[MassSpec] = Field(default_factory=list)
 
+    @field_validator("bearings", mode="before")
+    @classmethod
+    def _few_bearings(cls, value):
+        """Counted before the bearings are validated (each may name a file to read)."""
+        if isinstance(value, list) and len(value) > MAX_SHAFT_BEARINGS:
+            raise InputError(
+                f"shaft.bearings ({len(value)} bearings) must be at most {MAX_SHAFT_BEARINGS} per shaft; "
+                "a shaft rests on two to four"
+            )
+        return value
+
 
 class ForceSpec(schema.Strict):
     """``forces = [{...}]`` of a load case: force and moment at a position."""
@@ -179,6 +190,14 @@ class ShaftSolverSpec(schema.Strict):
 #: Most load cases of one shaft file. Measured on the 2-core reference machine (countershaft example):
 #: 100 cases take 24 s through ``bearingkit shaft``, 1,000 take 76 s and 300 MB.
 MAX_SHAFT_CASES = 100
+#: Most bearings on one shaft: shafts rest on two to four; 100 took 32 s per case batch and over
+#: 90 s with ``--report`` (issue 41).
+MAX_SHAFT_BEARINGS = 16
+#: Estimated work of one bearing in one load case [s, 2-core reference machine, countershaft and
+#: six-bearing variants measured]: the coupled solve with every bearing's pipeline (~0.035 s of
+#: processor time), and its part of the HTML report (~0.7 s: a load-distribution figure and tables).
+SHAFT_SOLVE_S = 0.05
+SHAFT_REPORT_S = 0.8
 
 
 class ShaftFile(schema.Strict):
@@ -237,10 +256,21 @@ class ShaftInput:
     warnings: tuple = field(default_factory=tuple)
     lubrication: LubricationSpec | None = None
 
+    def check_work(self, report: bool = False) -> None:
+        """Refuse (:func:`bearingkit.budget.check_work`) a solve, or a solve and report, estimated
+        past the work limit: bearings × load cases × :data:`SHAFT_SOLVE_S` (+ :data:`SHAFT_REPORT_S`)."""
+        from bearingkit.budget import check_work
+
+        n_b, n_c = len(self.system.bearings), len(self.loads.names)
+        per = SHAFT_SOLVE_S + (SHAFT_REPORT_S if report else 0.0)
+        what = f"{n_c} load cases x {n_b} bearings of the shaft{' with its report' if report else ''}"
+        check_work(n_b * n_c * per, what, "give fewer load cases (or leave out the report)")
+
     def solve(self):
         """Solve every load case in one batch (a :class:`~bearingkit.systems.shaft.result.ShaftResult`)."""
         from bearingkit.systems.shaft.solver import solve
 
+        self.check_work()
         return solve(self.system, self.loads, self.options)
 
 
@@ -252,14 +282,20 @@ def load_shaft_file(path) -> ShaftInput:
 
 
 def shaft_from_dict(data: dict, source: str = "<dict>", base=None) -> ShaftInput:
-    """Validate a parsed shaft file; bearing files are read relative to ``base`` (default cwd)."""
+    """Validate a parsed shaft file; bearing files are read relative to ``base`` (default cwd).
+
+    With ``base`` (the shaft file's folder) every bearing ``file`` is confined by
+    :func:`bearingkit.io.reading.confined_path` before it is opened (no ``~``, no NUL, nothing outside
+    that folder and its project's folder above it); without it (a dict built by a program) names are
+    taken relative to the working directory as given."""
+    confine = base is not None
     base = Path(base) if base is not None else Path.cwd()
     try:
         spec = ShaftFile.model_validate(data)
     except ValidationError as exc:
         raise one_line(source, exc, (), _MODELS) from None
     try:
-        return _build(spec, source, base)
+        return _build(spec, source, base, confine)
     except InputError as exc:
         text = str(exc)
         raise InputError(text if text.startswith(f"{source}:") else f"{source}: {text}") from None
@@ -298,7 +334,7 @@ def _sections(specs: list[SectionSpec]) -> tuple:
     return tuple(out)
 
 
-def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
+def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingSeat:
     where = f"shaft.bearings[{i}] ({b.name})"
     if sum(v is not None for v in (b.file, b.designation, b.stiffness)) != 1:
         raise InputError(
@@ -314,9 +350,12 @@ def _seat(i: int, b: BearingSpec, base: Path) -> BearingSeat:
             raise InputError(f"{where}.designation: {exc}") from None
         bearing = source.model
     elif b.file is not None:
-        path = Path(b.file)
-        path = path if path.is_absolute() else base / path
         try:
+            if confine:  # a name from a file: checked and resolved before anything opens it
+                path = confined_path(b.file, base, "file")
+            else:
+                path = Path(b.file)
+                path = path if path.is_absolute() else base / path
             source = load_file(path)
         except InputError as exc:
             raise InputError(f"{where}.file: {exc}") from None
@@ -381,16 +420,29 @@ def _loads(cases: list[ShaftCaseSpec], gravity) -> ShaftLoads:
     )
 
 
-def _build(spec: ShaftFile, source: str, base: Path) -> ShaftInput:
+@dataclass(frozen=True)
+class _HasModel:
+    """A bearing model seen as an input (what :func:`bearingkit.pipeline.operating.check_speeds` reads)."""
+
+    model: object
+
+
+def _build(spec: ShaftFile, source: str, base: Path, confine: bool = False) -> ShaftInput:
     s = spec.shaft
     shaft = Shaft(_sections(s.sections), _material(s.material), s.shear_deformation, s.name)
-    seats = tuple(_seat(i, b, base) for i, b in enumerate(s.bearings))
+    seats = tuple(_seat(i, b, base, confine) for i, b in enumerate(s.bearings))
     gears = tuple(
         Gear(g.name, g.position, g.pitch_diameter, g.pressure_angle, g.helix_angle, g.mesh_angle, g.mass)
         for g in s.gears
     )
     masses = tuple(PointMass(m.position, m.mass, m.name) for m in s.masses)
     loads = _loads(spec.load_cases, s.gravity)
+    if loads.speed is not None:  # n·d_m of every bearing within what rolling bearings run at
+        from bearingkit.pipeline.operating import check_speeds
+
+        for seat in seats:
+            if hasattr(seat.bearing, "rows"):
+                check_speeds(_HasModel(seat.bearing), loads.speed, list(loads.names))
     try:
         system = ShaftSystem(shaft, seats, gears, masses, s.max_element_length, s.name)
         system.check_loads(loads)

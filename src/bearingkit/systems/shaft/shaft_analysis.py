@@ -430,6 +430,7 @@ class ShaftAnalysis:
 
     def report(self, path, **options):
         """Write the HTML report of the shaft to ``path`` (atomic); returns the path."""
+        self.input.check_work(report=True)
         if "html" not in SHAFT_RENDERERS:
             importlib.import_module(_RENDERER_MODULES["html"])  # the report layer registers itself
         return SHAFT_RENDERERS["html"](self, path, **options)

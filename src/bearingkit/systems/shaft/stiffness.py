@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearingkit.errors import InputError
+from bearingkit.errors import InputError, quote
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
 
 #: Short names of the DOFs in column names (θ_x → thx).
@@ -134,16 +134,17 @@ class StiffnessTable:
 
     def write(self, path) -> Path:
         """Write the table as CSV (``.csv``) or JSON (``.json``); returns the path."""
+        from bearingkit.io.export import write_atomic
+
         path = Path(path)
         if path.suffix == ".csv":
-            path.parent.mkdir(parents=True, exist_ok=True)
-            self.to_pandas().to_csv(path, index=False)
-        elif path.suffix == ".json":
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(json.dumps(self.to_dict(), indent=1) + "\n", encoding="utf-8")
-        else:
-            raise InputError(f"stiffness file ({str(path)!r}) must end in .csv or .json")
-        return path
+            return write_atomic(
+                path, lambda tmp: self.to_pandas().to_csv(tmp, index=False), "stiffness table"
+            )
+        if path.suffix == ".json":
+            text = json.dumps(self.to_dict(), indent=1) + "\n"
+            return write_atomic(path, lambda tmp: tmp.write_text(text, encoding="utf-8"), "stiffness table")
+        raise InputError(f"stiffness file ({quote(str(path))}) must end in .csv or .json")
 
 
 def speed_dependent(model) -> bool:
@@ -227,17 +228,16 @@ def shaft_stiffness_table(result, name: str, frame: str = "shaft") -> StiffnessT
 
 def write_tables(tables, path) -> Path:
     """Write several bearings' tables to one file: CSV (a ``bearing`` column) or JSON (a list)."""
+    from bearingkit.io.export import write_atomic
+
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     if path.suffix == ".csv":
         import pandas as pd
 
         frames = [t.to_pandas().assign(bearing=t.bearing, frame=t.frame) for t in tables]
-        pd.concat(frames, ignore_index=True).to_csv(path, index=False)
-    elif path.suffix == ".json":
-        path.write_text(
-            json.dumps({"bearings": [t.to_dict() for t in tables]}, indent=1) + "\n", encoding="utf-8"
-        )
-    else:
-        raise InputError(f"stiffness file ({str(path)!r}) must end in .csv or .json")
-    return path
+        table = pd.concat(frames, ignore_index=True)
+        return write_atomic(path, lambda tmp: table.to_csv(tmp, index=False), "stiffness table")
+    if path.suffix == ".json":
+        text = json.dumps({"bearings": [t.to_dict() for t in tables]}, indent=1) + "\n"
+        return write_atomic(path, lambda tmp: tmp.write_text(text, encoding="utf-8"), "stiffness table")
+    raise InputError(f"stiffness file ({quote(str(path))}) must end in .csv or .json")

@@ -1,0 +1,83 @@
+"""The fuzz itself: it finds each class of finding it claims to, its generator reaches every command,
+input kind and mutation kind, and a short run over bearingkit finds nothing (issue 41).
+
+The day's 300 mutants run in ``make test`` (tests/fuzz/bk_fuzz_run.py, the seed printed first);
+``make fuzz SEED=… N=…`` runs any number.
+"""
+
+from __future__ import annotations
+
+import bk_fuzz_inputs as inputs
+import bk_fuzz_run as run
+
+from bearingkit.app import create_app
+from bearingkit.cli import app
+
+
+def test_each_finding_class_is_found_in_a_planted_app():
+    """Every command of the planted app breaks one promise; the fuzz names each."""
+    s = run.fuzz(seed=1, n=40, workers=2, hang=5.0, app_spec="bk_fuzz_planted:app")
+    by_command = {}
+    for r in s["details"]:
+        for cls, _ in r["problems"]:
+            by_command.setdefault(r["command"], set()).add(cls)
+    assert {"traceback"} <= by_command["boom"]
+    assert {"json"} <= by_command["badjson"]
+    assert {"message"} <= by_command["chatty"]
+    assert {"stray"} <= by_command["litter"]
+    assert {"warning"} <= by_command["warny"]
+    assert "fine" not in by_command
+    assert s["findings"]["hang"] >= 1  # sleepy: killed after 5 s, its worker replaced
+    assert s["mutants"] == 40  # nothing lost when a worker was killed
+
+
+def test_a_server_error_is_found():
+    class Answer:
+        status_code = 500
+        text = '{"error": "internal error", "field": null}'
+
+        def __init__(self):
+            self.headers = {"content-type": "application/json"}
+
+    class Client:
+        def request(self, *args, **kwargs):
+            return Answer()
+
+    case = run.Case(
+        0, "app", request={"method": "GET", "path": "/", "json": None, "raw": None, "headers": {}}
+    )
+    problems, *_ = run.run_app_case(Client(), case)
+    assert [c for c, _ in problems] == ["server"]
+
+
+def test_the_generator_covers_every_command_input_kind_and_mutation_kind():
+    cmds = run.commands(app)
+    files = inputs.example_files()
+    routes = [r.path for r in create_app().routes if hasattr(r, "path")]
+    seen_cmds, seen_kinds, seen_mutations = set(), set(), set()
+    for i in range(4000):
+        case = run.make_case(20261128, i, cmds, files, routes)
+        seen_cmds.add(case.command)
+        seen_kinds |= set(case.inputs)
+        seen_mutations |= {m.split()[0] for m in case.mutations}
+    assert set(cmds) | {"app"} == seen_cmds  # every command of the app, whatever was added since
+    kinds = {k for k, _, _ in files.values()}
+    assert (
+        kinds | {"designation", "cli options", "path", "app request", "tolerances", "duty cycle"}
+        <= seen_kinds
+    )
+    assert set(inputs.FILE_MUTATIONS) - {"truncate"} <= seen_mutations
+    assert {"truncate", "option", "unmutated"} <= seen_mutations
+
+
+def test_a_mutant_is_made_again_from_its_seed_and_index():
+    cmds, files = run.commands(app), inputs.example_files()
+    a = run.make_case(7, 123, cmds, files, ["/api/download/{name}"])
+    b = run.make_case(7, 123, cmds, files, ["/api/download/{name}"])
+    assert (a.argv, a.files, a.request) == (b.argv, b.files, b.request)
+
+
+def test_sixty_mutants_through_bearingkit_find_nothing():
+    s = run.fuzz(seed=2024, n=60, workers=2)
+    assert s["details"] == [], s["details"][:3]
+    assert s["mutants"] == 60

@@ -1,0 +1,118 @@
+"""A study's definition is checked whole before any work, and a study that would run for minutes is
+refused before it starts (issue 41): quantiles, plots, outputs and names the results would lack,
+workers and scheduler addresses, the work estimate of the probe. Nothing is written when refused.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from bearingkit.cli import app
+from bearingkit.studies.run import executors
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fuzz"))  # its TOML writer
+from bk_fuzz_inputs import toml_text
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+STUDY = EXAMPLES / "studies" / "dgbb_6209_clearance_load.toml"
+runner = CliRunner()
+
+
+def _write(tmp_path: Path, edit) -> Path:
+    """The 6209 clearance × load study with ``edit(data)`` applied, beside a copy of its bearing."""
+    data = tomllib.loads(STUDY.read_text())
+    edit(data)
+    folder = tmp_path / "proj" / "studies"
+    folder.mkdir(parents=True)
+    (folder.parent / "dgbb_6209.toml").write_text((EXAMPLES / "dgbb_6209.toml").read_text())
+    path = folder / "s.toml"
+    path.write_text(toml_text(data))
+    return path
+
+
+def _refused(tmp_path, edit, fragment, *extra):
+    path = _write(tmp_path, edit)
+    out = tmp_path / "out"
+    res = runner.invoke(app, ["study", str(path), "--out", str(out), *extra])
+    assert res.exit_code == 2, (res.stdout, res.stderr)
+    assert res.stderr.count("\n") == 1 and fragment in res.stderr, res.stderr
+    assert not out.exists()  # nothing written, no chunk computed
+    return res.stderr
+
+
+def _set(path, value):
+    def edit(data):
+        node = data
+        for key in path[:-1]:
+            node = node[key]
+        node[path[-1]] = value
+
+    return edit
+
+
+@pytest.mark.parametrize("value", [[float("nan")], [1.5], [0.0], [0.5] * 21])
+def test_quantiles_are_checked_by_the_schema(tmp_path, value):
+    _refused(tmp_path, _set(("study", "quantiles"), value), "study.quantiles")
+
+
+def test_a_histogram_asking_for_y_a_thousand_times_is_refused(tmp_path):
+    """It cost 225 s."""
+    _refused(tmp_path, _set(("plots",), [{"kind": "histogram", "y": ["u_x_m"] * 1000}]), "at most 12 outputs")
+
+
+def test_plots_and_response_naming_columns_the_results_lack_are_refused_before_any_chunk(
+    tmp_path, monkeypatch
+):
+    calls = []
+    real = executors.evaluate_chunk
+
+    def counting(evaluator, cases, with_ids=True):
+        calls.append(len(cases))
+        return real(evaluator, cases, with_ids)
+
+    monkeypatch.setattr(executors, "evaluate_chunk", counting)
+
+    def edit(data):
+        data["study"]["outputs"] = ["u_x_m", "converged"]  # L10r_h, the response, no longer computed
+        data.pop("plots")
+
+    _refused(tmp_path, edit, "study.response ('L10r_h') is not an output")
+    assert sum(calls) <= 1 + 1 + 4  # at most the probe's warm-up, one case and four: never a chunk of 24
+
+
+def test_more_workers_than_cores_are_refused(tmp_path):
+    cores = os.cpu_count() or 1
+    _refused(tmp_path, lambda d: None, "the cores of this machine", "--workers", str(cores + 10))
+    _refused(tmp_path / "b", lambda d: None, "must lie in 1", "--workers", "0")
+
+
+@pytest.mark.parametrize("address", ["udp://x", "nonsense", "tcp://", "tcp://host:99999", ""])
+def test_a_scheduler_address_is_checked_before_dask_sees_it(tmp_path, address):
+    _refused(tmp_path, lambda d: None, "--scheduler", "--scheduler", address)
+
+
+def test_a_study_past_the_work_limit_is_refused_before_it_starts(tmp_path, monkeypatch):
+    monkeypatch.setenv("BEARINGKIT_MAX_WORK_S", "0.001")
+    line = _refused(tmp_path, lambda d: None, "would take")
+    assert "72 cases" in line and "BEARINGKIT_MAX_WORK_S=" in line and "give fewer levels" in line
+
+
+def test_within_the_limit_the_study_runs_and_equals_a_run_without_the_probe(tmp_path, monkeypatch):
+    """The probe's results are not kept: the study computes every case itself."""
+    path = _write(tmp_path, lambda d: None)
+    out = tmp_path / "out"
+    res = runner.invoke(app, ["study", str(path), "--out", str(out)])
+    assert res.exit_code == 0, res.stderr
+    import pandas as pd
+
+    from bearingkit.studies.definition.load import load_study
+    from bearingkit.studies.run.runner import run_study
+
+    plain = run_study(load_study(path), progress=False).results
+    pd.testing.assert_frame_equal(pd.read_parquet(out / "results.parquet"), plain, check_dtype=False)
