@@ -57,6 +57,7 @@ from bearingkit.rows.base import (
     RowResponse,
     RowState,
     azimuths,
+    element_offsets,
     steel_e_reduced,
     validate_common,
 )
@@ -478,11 +479,21 @@ class SelfAligningKernel(KernelBase):
         u = q if offset is None or offset.shift is None else q - offset.shift
         u_r = u[:, :1] * np.cos(self.psi) + u[:, 1:2] * np.sin(self.psi)  # (C, Z)
         reach = (self.touch - self.gap) * np.ones_like(u_r)
-        if offset is not None and offset.radial is not None:  # outer raceway moved outward: opens the line
-            reach = reach - offset.radial * np.cos(float(self.row.contact_angle))
+        parts = element_offsets(offset, u_r.shape)
+        if parts is not None:  # outer raceway moved: opens the line by its component along the line m
+            radial, axial, _ = parts  # a raceway tilt does not move a sphere about its element's line
+            reach = reach - (radial * np.cos(float(self.row.contact_angle)) + axial * self.m_rz[1])
         v = np.stack([reach * self.m_rz[0] + u_r, reach * self.m_rz[1] + u[:, 2:3]], axis=-1)
         length = np.sqrt(v[..., 0] ** 2 + v[..., 1] ** 2)
         return v / length[..., None], length - self.touch, length
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, 0) (C, Z, 3) each element puts on the outer raceway, −∂U/∂(radial, axial, tilt):
+        Q (n·m) m, the opening acting along the unloaded line m (the spherical raceway takes no tilt)."""
+        n, delta, _ = self._lines(q, offset)
+        load = self.element_law(delta)[0]
+        along = load * (n[..., 0] * self.m_rz[0] + n[..., 1] * self.m_rz[1])
+        return np.stack([along * self.m_rz[0], along * self.m_rz[1], np.zeros_like(along)], axis=-1)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Force (through O: no moment), Jacobian (zero tilt columns) and energy for q (C, 5)."""
