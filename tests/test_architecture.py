@@ -171,7 +171,7 @@ def test_generic_machinery_holds_no_paper_module(folder):
 SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     "analysis": (
         ("rating", "friction"),
-        ("flexible", "slewing", "scatter", "clearance", "lubrication"),
+        ("flexible", "structure", "slewing", "scatter", "clearance", "lubrication"),
         ("solver",),
     ),
     "analysis.solver": (
