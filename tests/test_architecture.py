@@ -198,6 +198,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
         ("loader",),
         ("build", "load_cases", "export"),
         ("schema_cycle", "schema_operating"),
+        ("schema_structure",),
         ("messages",),
         ("schema",),
         ("sections",),

@@ -117,7 +117,11 @@ def analyze(
         for c in data["cases"]:
             console.print(case_table(c, data["free_dofs"]))
             console.print(operating_text(c))
-            if "flexible" in c:
+            if "flexible" in c and "rigid_vs_flexible" in c["flexible"]:  # a [structure]
+                from bearingkit.cli.tables import structure_table
+
+                console.print(structure_table(c["flexible"]))
+            elif "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
                 console.print(case_table(c["flexible"], data["free_dofs"]))

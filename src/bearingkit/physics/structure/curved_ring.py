@@ -46,7 +46,7 @@ pseudo-inverse is used: the response then has no rigid-body part, which the supp
 n⁻⁴; their tails past the last harmonic N are added in closed form (:func:`fourier_series`), so the
 truncation error falls as N⁻³ or faster.
 
-References: ``roark2012`` (§9.2), ``timoshenko1951``, ``volterra1955``, ``hetenyi1946``, ``li2025``.
+References: ``roark2012`` (§9.2), ``timoshenko1951rings``, ``volterra1955``, ``hetenyi1946``, ``li2025``.
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ import numpy as np
 from bearingkit import checks, references
 
 references.add(
-    "timoshenko1951",
+    "timoshenko1951rings",
     "Timoshenko S.P., Goodier J.N. (1951) Theory of Elasticity, 2nd ed., McGraw-Hill (curved bars; "
     "torsion of prismatic bars, Prandtl's stress function, the rectangular section, §§ 99-109).",
 )
@@ -67,7 +67,7 @@ references.add(
     "Volterra E., Chung J.H. (1955) Constrained circular beam on elastic foundations. Transactions of "
     "the ASCE 120:301-310 (the circular ring loaded perpendicular to its plane on an elastic foundation).",
 )
-REFERENCES = ("roark2012", "timoshenko1951", "volterra1955", "hetenyi1946", "li2025")
+REFERENCES = ("roark2012", "timoshenko1951rings", "volterra1955", "hetenyi1946", "li2025")
 
 #: Harmonics of the ring series by default (n = 0 … N): the radial kernels (n⁻⁴) are then exact to
 #: ~1e-10 of their value and the twist and tangential ones (n⁻²) to ~1e-8 with the closed-form tails.
