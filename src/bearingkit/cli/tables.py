@@ -248,8 +248,9 @@ def structure_table(f: dict) -> Table:
         parts.append(f"L10 {life[0]} → {life[1]} 10⁶ rev")
     for ring in f.get("structure", {}).get("rings", []):
         if "radial_deflection_m" in ring:
-            w = max(abs(v) for v in ring["radial_deflection_m"]) * 1e6
-            u = max(abs(v) for v in ring["axial_deflection_m"]) * 1e6
+            # round-off of a ring held in its plane (1e-15 µm) prints as 0
+            w = round(max(abs(v) for v in ring["radial_deflection_m"]) * 1e6, 4)
+            u = round(max(abs(v) for v in ring["axial_deflection_m"]) * 1e6, 4)
             sigma = ring["max_fibre_stress_Pa"] / 1e6
             parts.append(f"{ring['side']} ring: |w| ≤ {w:.3g} µm, |u| ≤ {u:.3g} µm, σ ≤ {sigma:.3g} MPa")
     caption = "; ".join(parts)
