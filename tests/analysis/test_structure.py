@@ -52,7 +52,7 @@ def _independent_6209(model, load):
     out = []
     for f_x in load[:, 0]:
 
-        def equations(x):
+        def equations(x, f_x=f_x):
             u, w = x[0], x[1:]
             q = k_n * np.maximum(u * np.cos(psi) - gap - w, 0.0) ** 1.5
             return np.concatenate([[q @ np.cos(psi) / f_x - 1.0], (w - g @ q) * 1e6])
@@ -158,8 +158,9 @@ def _assert_balanced(res, load, rtol=1e-9, moments=True):
 
     Forces to ``rtol``. Moments within Σ|element force| times the largest displacement (rings and
     raceways): the rows take the moments of their contact forces at the undeformed points (small
-    displacements), the inner ring's at its groove centres, the outer raceway's here at its own. The tapered rows' are left out:
-    their rollers have no moment balance of their own (two translational DOFs, design.md).
+    displacements), the inner ring's at its groove centres, the outer raceway's here at its own. The
+    tapered rows' are left out: their rollers have no moment balance of their own (two translational
+    DOFs, design.md).
     """
     f = element_loads(res.result.model, res.result.displacement, res.offsets).reshape(load.shape[0], -1, 3)
     p = res.points
