@@ -18,7 +18,14 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 BLOCK = re.compile(r"```python\n(.*?)```", re.S)
 #: (page, number of its leading python blocks that run without optional extras)
-PAGES = [("catalogue.md", 1), ("engine.md", 1), ("ratings.md", 1), ("systems.md", 2), ("lubricants.md", 1)]
+PAGES = [
+    ("catalogue.md", 1),
+    ("engine.md", 1),
+    ("ratings.md", 1),
+    ("systems.md", 2),
+    ("lubricants.md", 1),
+    ("structure.md", 1),
+]
 
 
 def _run(page: str, n_blocks: int) -> str:
@@ -44,6 +51,7 @@ PRINTS = {
     "ratings.md": "'L10r_rev'",
     "systems.md": "[",
     "lubricants.md": "VG68 ester: VI 140",
+    "structure.md": "3 5",
 }
 
 
