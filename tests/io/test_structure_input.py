@@ -124,3 +124,19 @@ def test_structure_numbers_are_study_factors():
     data = apply(_data("dgbb_6209_thin_housing.toml"), {"structure.outer.stiffness_scale": 1e6}, paths)
     stiff = from_dict(data, "study")
     assert stiff.structure.outer.stiffness_scale == 1e6
+
+
+def test_a_study_over_the_housing_wall(tmp_path):
+    """examples/studies/dgbb_6209_housing_wall.toml: the peak ball load rises with the wall's thickness
+    towards the rigid solve's (2084.5 N at 4 kN), s0 and the life fall with it (the flexible rating)."""
+    import pandas as pd
+
+    out = runner.invoke(
+        app, ["study", str(EXAMPLES / "studies" / "dgbb_6209_housing_wall.toml"), "--out", str(tmp_path)]
+    )
+    assert out.exit_code == 0, out.output
+    d = pd.read_parquet(tmp_path / "results.parquet").sort_values("structure.outer.seat_wall_thickness")
+    q = d["balls_max_load_N"].to_numpy()
+    assert d["converged"].all() and np.all(np.diff(q) > 0)
+    assert q[-1] == pytest.approx(2084.46, rel=0.02) and q[0] < 0.9 * 2084.46
+    assert np.all(np.diff(d["s0"].to_numpy()) < 0) and np.all(np.diff(d["L10r_h"].to_numpy()) < 0)
