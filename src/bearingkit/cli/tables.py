@@ -251,8 +251,10 @@ def structure_table(f: dict) -> Table:
             # round-off of a ring held in its plane (1e-15 µm) prints as 0
             w = round(max(abs(v) for v in ring["radial_deflection_m"]) * 1e6, 4)
             u = round(max(abs(v) for v in ring["axial_deflection_m"]) * 1e6, 4)
-            sigma = ring["max_fibre_stress_Pa"] / 1e6
-            parts.append(f"{ring['side']} ring: |w| ≤ {w:.3g} µm, |u| ≤ {u:.3g} µm, σ ≤ {sigma:.3g} MPa")
+            text = f"{ring['side']} ring: |w| ≤ {w:.3g} µm, |u| ≤ {u:.3g} µm"
+            if "max_fibre_stress_Pa" in ring:
+                text += f", σ ≤ {ring['max_fibre_stress_Pa'] / 1e6:.3g} MPa"
+            parts.append(text)
     caption = "; ".join(parts)
     width = min(max(len(title), len(caption)) + 2, 110)
     table = Table(title=escape(title), caption=escape(caption), min_width=width)

@@ -253,10 +253,13 @@ class FlexibleRing:
             disp = np.zeros_like(disp)
         return disp, forces
 
-    def fibre_stress(self, forces) -> np.ndarray:
-        """Hoop stress (C, M, K) [Pa] at the section's outline points from resultants (C, M, 4)."""
+    def fibre_stress(self, forces) -> np.ndarray | None:
+        """Hoop stress (C, M, K) [Pa] at the section's outline points from resultants (C, M, 4); None for a
+        section given by its properties only (no outline: its fibres are unknown)."""
         sec = self.section
-        pts = sec.corners if sec.corners is not None else np.array([[sec.centroid_radius, sec.centroid_z]])
+        if sec.corners is None:
+            return None
+        pts = sec.corners
         d_r = pts[:, 0] - sec.centroid_radius
         d_z = pts[:, 1] - sec.centroid_z
         n, m_in, m_b = forces[..., 0:1], forces[..., 1:2], forces[..., 2:3]

@@ -47,6 +47,9 @@ TORSION_GRID = 160
 #: Cells across a thin wall (2A/perimeter), per TORSION_GRID cells across the larger side: a wall of
 #: a sixth of the section's length keeps ≥ 40 cells across it.
 TORSION_THIN_CELLS = 40
+#: Most cells of a Prandtl grid (bounds the work for a section of any proportions; a ring section needs
+#: far fewer: 160 × 47 for a 6:1 rectangle).
+TORSION_MAX_CELLS = 200_000
 #: Segments of a raceway groove's arc in the section polygon (the arc's area error ~ (π/n)²/6 of the
 #: segment, < 1e-4 for 96 segments).
 GROOVE_SEGMENTS = 96
@@ -340,6 +343,7 @@ def _weight_grid(parts, weights, n):
     perimeter = sum(np.linalg.norm(np.diff(np.vstack([p, p[:1]]), axis=0), axis=1).sum() for p in parts)
     thin = 2.0 * area / perimeter  # a thin wall's thickness (b h/(b + h) for a b × h rectangle)
     h = min(float(span.max()) / n, thin / (TORSION_THIN_CELLS * n / TORSION_GRID))
+    h = max(h, float(np.sqrt(span[0] * span[1] / TORSION_MAX_CELLS)))  # bounded work for any proportions
     nr, nz = (max(int(np.ceil(s / h)), 2) for s in span)
     h_r, h_z = span[0] / nr, span[1] / nz
     r = lo[0] + (np.arange(nr) + 0.5) * h_r

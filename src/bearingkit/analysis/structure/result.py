@@ -172,7 +172,8 @@ class StructureResult:
         d.update(part.describe() if hasattr(part, "describe") else {})
         if "displacement" not in ring:
             return d
-        disp, forces, stress = ring["displacement"][case], ring["forces"][case], ring["stress"][case]
+        disp, forces = ring["displacement"][case], ring["forces"][case]
+        stress = None if ring["stress"] is None else ring["stress"][case]
         d.update(
             shape_azimuth_rad=ring["theta"].tolist(),
             radial_deflection_m=disp[:, 0].tolist(),
@@ -183,7 +184,8 @@ class StructureResult:
             bending_moment_Nm=forces[:, 1].tolist(),
             out_of_plane_moment_Nm=forces[:, 2].tolist(),
             torque_Nm=forces[:, 3].tolist(),
-            max_fibre_stress_Pa=float(np.abs(stress).max()),
             unheld_modes=list(ring.get("unheld", ())),
         )
+        if stress is not None:  # a section given by its properties has no outline to stress
+            d["max_fibre_stress_Pa"] = float(np.abs(stress).max())
         return d
