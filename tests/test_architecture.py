@@ -172,7 +172,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     "analysis": (
         ("truncation",),
         ("rating", "friction"),
-        ("flexible", "slewing", "scatter", "clearance", "lubrication", "subsurface"),
+        ("flexible", "structure", "slewing", "scatter", "clearance", "lubrication", "subsurface"),
         ("solver",),
     ),
     "analysis.solver": (
@@ -199,6 +199,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
         ("loader", "rexs"),
         ("build", "load_cases", "export"),
         ("schema_cycle", "schema_operating"),
+        ("schema_structure",),
         ("messages",),
         ("schema",),
         ("sections",),

@@ -27,6 +27,7 @@ PAGES = [
     ("lubricants.md", 1),
     ("drivetrains.md", 1),
     ("index.md", 1),
+    ("structure.md", 1),
 ]
 
 
@@ -56,6 +57,7 @@ PRINTS = {
     "lubricants.md": "VG68 ester: VI 140",
     "drivetrains.md": "0.98",
     "index.md": "",
+    "structure.md": "3 5",
 }
 
 

@@ -65,6 +65,7 @@ SI_UNITS: dict[str, str] = {
     "specific_heat": "J/(kg*K)",
     "heat_transfer_coefficient": "W/(m^2*K)",
     "area": "m^2",
+    "second_moment": "m^4",
     "dimensionless": "",
 }
 
@@ -96,6 +97,7 @@ UNIT_LOOKALIKES: dict[str, tuple[str, ...]] = {
     "specific_heat": ("J/(kg*K)", "kJ/(kg*K)"),
     "heat_transfer_coefficient": ("W/(m^2*K)",),
     "area": ("m^2", "mm^2", "cm^2"),
+    "second_moment": ("m^4", "mm^4", "cm^4"),
     "dimensionless": (),
 }
 

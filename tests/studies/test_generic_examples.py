@@ -22,6 +22,7 @@ EXAMPLES = {
     "acbb_7209_DB_preload_speed": ("plot_1.png", "plot_2.png", "plot_3.png"),
     "crb_nu209_misalignment": ("plot_1.png", "main_effects.png"),
     "trb_32008_DB_tolerances": ("plot_1.png", "plot_2.png", "statistics.csv"),
+    "dgbb_6209_housing_wall": ("plot_1.png",),
 }
 runner = CliRunner()
 

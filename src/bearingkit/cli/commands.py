@@ -137,7 +137,11 @@ def analyze(
                 from bearingkit.cli.subsurface_tables import subsurface_table
 
                 console.print(subsurface_table(c, data["subsurface"]))
-            if "flexible" in c:
+            if "flexible" in c and "rigid_vs_flexible" in c["flexible"]:  # a [structure]
+                from bearingkit.cli.tables import structure_table
+
+                console.print(structure_table(c["flexible"]))
+            elif "flexible" in c:
                 how = c["flexible"]["coupling"]
                 console.print(f"flexible outer ring ({how['method']}, {how['iterations']} iterations):")
                 console.print(case_table(c["flexible"], data["free_dofs"]))

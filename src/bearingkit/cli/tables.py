@@ -227,3 +227,59 @@ def friction_table(c: dict):
     for name, value in f["rows_Nm"].items():
         rows.add_row(name, f"{value:.4g}", f"{value / total:.1%}" if total > 0 else "—")
     return Group(heading, parts, rows)
+
+
+def structure_table(f: dict) -> Table:
+    """Rigid against flexible rings of one case (the ``flexible`` dict of a ``[structure]``): per row the
+    loaded elements, peak load and pressure each way; the caption the static safety, the life and each
+    ring's largest deflection and fibre stress."""
+    how = f["coupling"]
+    status = "converged" if f["converged"] else "NOT converged"
+    title = (
+        f"case {f['case']!r} in its structure: rigid → flexible rings "
+        f"({how['iterations']} Newton its, {status})"
+    )
+    ch = f.get("change", {})
+    parts = []
+    if ch.get("static_safety_rigid") is not None:
+        s0 = (_num(ch["static_safety_rigid"], fmt=".3g"), _num(ch.get("static_safety_flexible"), fmt=".3g"))
+        parts.append(f"s0 {s0[0]} → {s0[1]}")
+    if ch.get("life_rev_rigid") is not None:
+        flex = ch.get("life_rev_flexible")
+        life = (_compact(ch["life_rev_rigid"] / 1e6), _compact(None if flex is None else flex / 1e6))
+        parts.append(f"L10 {life[0]} → {life[1]} 10⁶ rev")
+    for ring in f.get("structure", {}).get("rings", []):
+        if "radial_deflection_m" in ring:
+            # round-off of a ring held in its plane (1e-15 µm) prints as 0
+            w = round(max(abs(v) for v in ring["radial_deflection_m"]) * 1e6, 4)
+            u = round(max(abs(v) for v in ring["axial_deflection_m"]) * 1e6, 4)
+            text = f"{ring['side']} ring: |w| ≤ {w:.3g} µm, |u| ≤ {u:.3g} µm"
+            if "max_fibre_stress_Pa" in ring:
+                text += f", σ ≤ {ring['max_fibre_stress_Pa'] / 1e6:.3g} MPa"
+            parts.append(text)
+    caption = "; ".join(parts)
+    width = min(max(len(title), len(caption)) + 2, 110)
+    table = Table(title=escape(title), caption=escape(caption), min_width=width)
+    columns = (
+        "row",
+        "loaded",
+        "Q_max N rigid",
+        "Q_max N flex",
+        "change",
+        "p_max MPa rigid",
+        "p_max MPa flex",
+    )
+    for col in columns:
+        table.add_column(col, justify="left" if col == "row" else "right", no_wrap=True)
+    for name, r in f["rigid_vs_flexible"].items():
+        change = r["max_load_change"]
+        table.add_row(
+            name,
+            f"{r['loaded_count_rigid']} → {r['loaded_count_flexible']}",
+            _f1(r["max_load_rigid_N"]),
+            _f1(r["max_load_flexible_N"]),
+            "—" if change is None else f"{change:+.1%}",
+            _f1(r["max_pressure_rigid_Pa"] / 1e6),
+            _f1(r["max_pressure_flexible_Pa"] / 1e6),
+        )
+    return table

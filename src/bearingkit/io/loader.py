@@ -71,6 +71,8 @@ __all__ = [
 #: ball–column bearing): the coupled Newton solve keeps a (cases, n, n) Jacobian of the ~240 raceway
 #: offsets. Measured on the 2-core reference machine: 100 cases take 27 s and 270 MB through analyze.
 MAX_FLEXIBLE_LOAD_CASES = 100
+#: Metadata key of a model whose input has a ``[structure]`` (flexible rings for any bearing).
+STRUCTURE_KEY = "structure"
 #: Most load cases in one HTML report: two figures per case (~1 s each) and a page a person reads.
 #: Measured: 20 cases of a deep groove ball bearing take about a minute. More: analyze --json.
 MAX_REPORT_CASES = 20
@@ -109,6 +111,8 @@ class BearingInput:
         The raceways' hardness against depth (``[hardness]``, else the material's).
     tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
         The ``[[tolerances]]`` a tolerance study samples (values keep their units).
+    structure : bearingkit.analysis.structure.Structure or None
+        Flexible rings or an imported FE matrix from ``[structure]`` (docs/structure.md).
     file_free : ndarray (5,) of bool or None
         The free DOFs of the file ([solver] free, else all) before an automatic hold or a caller's
         override changed ``free`` (None: ``free`` is the file's).
@@ -134,6 +138,7 @@ class BearingInput:
     dof_overrides: tuple = ()
     free_notes: tuple = ()
     hardness: object = None
+    structure: object = None
 
     @property
     def bearing_type(self) -> str:
@@ -296,6 +301,14 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     from bearingkit.io.schema_operating import validate_sections
 
     sections = validate_sections(spec, source, one_line)
+    from bearingkit.io.build.structure import structure_of
+
+    try:
+        structure = structure_of(source, sections.structure, model, gdict, material)
+    except InputError as exc:
+        raise InputError(f"{source}: {exc}") from None
+    if structure is not None:
+        model = dataclasses.replace(model, metadata={**model.metadata, STRUCTURE_KEY: True})
     cases = tuple(load_case_of(c) for c in spec.load_cases)
     _check_case_count(source, model, len(cases))
     check_fixed_loads(source, cases, free)
@@ -322,13 +335,21 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
         file_free=file_free,
         free_notes=free_notes,
         hardness=hardness,
+        structure=structure,
+    )
+
+
+def _coupled(model) -> bool:
+    """Whether ``model`` is solved with a flexible ring: a ball–column ring, or a ``[structure]``."""
+    return getattr(model.metadata.get("ring"), "flexible", False) is True or bool(
+        model.metadata.get(STRUCTURE_KEY)
     )
 
 
 def max_cases(model) -> int:
     """Most load cases one run of ``model`` may take under the caps above (a study of more cases
     solves them in runs of at most this many: :mod:`bearingkit.studies.generic.evaluator`)."""
-    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
+    flexible = _coupled(model)
     points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
     most = MAX_FLEXIBLE_LOAD_CASES if flexible else schema.MAX_LOAD_CASES
     return max(1, min(most, MAX_CASE_POINTS // max(points, 1)))
@@ -339,12 +360,16 @@ def _check_case_count(source: str, model, n_cases: int, section: str = "load_cas
     bounded time and memory (caps above)."""
     if n_cases > schema.MAX_LOAD_CASES:
         raise InputError(f"{source}: {section} ({n_cases} cases) must be at most {schema.MAX_LOAD_CASES}")
-    # a ball–column model carries its RingOptions (flexible by default, [geometry.ring] or not)
-    flexible = getattr(model.metadata.get("ring"), "flexible", False) is True
-    if flexible and n_cases > MAX_FLEXIBLE_LOAD_CASES:
+    # a ball–column model carries its RingOptions (flexible by default, [geometry.ring] or not); a
+    # [structure] marks the model with STRUCTURE_KEY
+    if _coupled(model) and n_cases > MAX_FLEXIBLE_LOAD_CASES:
+        how = (
+            "a [structure] (flexible rings); split the file"
+            if model.metadata.get(STRUCTURE_KEY)
+            else "flexible ring ([geometry.ring] flexible = true); split the file or set flexible = false"
+        )
         raise InputError(
-            f"{source}: {section} ({n_cases} cases) must be at most {MAX_FLEXIBLE_LOAD_CASES} with a "
-            "flexible ring ([geometry.ring] flexible = true); split the file or set flexible = false"
+            f"{source}: {section} ({n_cases} cases) must be at most {MAX_FLEXIBLE_LOAD_CASES} with a {how}"
         )
     points = sum(int(r.n_elements) * int(getattr(r, "n_slices", 1) or 1) for r in model.rows)
     if n_cases * points > MAX_CASE_POINTS:

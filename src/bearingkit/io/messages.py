@@ -69,6 +69,12 @@ def one_line(source: str, exc: ValidationError, prefix: tuple, models: dict) -> 
         text = path + msg[len(field) :] if field and msg.startswith(field) else f"{path}: {msg}"
     elif kind == "missing":
         text = f"{path}: missing required field"
+    elif kind == "extra_forbidden" and path == "geometry.ring":
+        # [geometry.ring] belongs to the ball–column bearing; every bearing's rings go under [structure]
+        text = (
+            f"{path} ({quote(value)}): unknown field for this bearing type; flexible rings, housings and "
+            "flanges of any bearing go under [structure.outer] / [structure.inner] (docs/structure.md)"
+        )
     elif kind == "extra_forbidden":
         text = f"{path} ({quote(value)}): unknown field{_valid_fields(loc[-1], models.get(section), errors)}"
     else:

@@ -51,8 +51,9 @@ _TOKENS = re.compile(f"{_STRINGS_AND_COMMENTS.pattern}|(?P<bracket>[\\[\\]{{}}])
 _POSITION = re.compile(r"\(at line (\d+), column (\d+)\)")
 
 
-def read_text(path) -> str:
-    """The text of the input file at ``path``, read within the limits above.
+def read_text(path, limit: int = MAX_INPUT_BYTES) -> str:
+    """The text of the input file at ``path``, read within the limits above (``limit`` bytes at most:
+    :data:`MAX_INPUT_BYTES` for input files, more for the matrix files an input names).
 
     Raises
     ------
@@ -81,13 +82,13 @@ def read_text(path) -> str:
         if not stat.S_ISREG(info.st_mode):
             kind = _kind(info.st_mode)
             raise InputError(f"{name}: cannot read the file (it is {kind}, not a regular file)")
-        if info.st_size > MAX_INPUT_BYTES:
+        if info.st_size > limit:
             raise InputError(
                 f"{name}: cannot read the file (it holds {_size(info.st_size)}; input files may hold at "
-                f"most {_size(MAX_INPUT_BYTES)})"
+                f"most {_size(limit)})"
             )
         with os.fdopen(fd, "rb", closefd=False) as f:
-            data = f.read(MAX_INPUT_BYTES + 1)
+            data = f.read(limit + 1)
     except OSError as exc:
         raise InputError(f"{name}: cannot read the file ({exc.strerror or type(exc).__name__})") from None
     finally:
@@ -98,9 +99,9 @@ def read_text(path) -> str:
         raise InputError(
             f"{name}: cannot read the file (it is a file the system generates, not an input file)"
         )
-    if len(data) > MAX_INPUT_BYTES:
+    if len(data) > limit:
         raise InputError(
-            f"{name}: cannot read the file (it holds more than {_size(MAX_INPUT_BYTES)}, the most an input "
+            f"{name}: cannot read the file (it holds more than {_size(limit)}, the most an input "
             "file may hold)"
         )
     try:

@@ -1,4 +1,5 @@
-"""Input sections of the operating conditions: ``[operating]``, ``[fits]``, ``[lubrication]``, ``[thermal]``.
+"""Input sections of the operating conditions: ``[operating]``, ``[fits]``, ``[lubrication]``, ``[thermal]``;
+and ``[structure]`` (its model in :mod:`bearingkit.io.schema_structure`), validated the same way.
 
 SI after validation (m, N, rad, rad/s, W/K; temperatures in °C), as the rest of the schema
 (:mod:`bearingkit.io.schema`, whose unit-carrying types these models use). The sections are kept as
@@ -24,6 +25,7 @@ from bearingkit.io.schema import (
     Temperature,
     quantity,
 )
+from bearingkit.io.schema_structure import StructureSpec
 
 
 class OperatingSpec(Strict):
@@ -130,6 +132,7 @@ class OperatingSections:
     fits: FitsSpec | None = None
     lubrication: LubricationSpec | None = None
     thermal: ThermalSpec | None = None
+    structure: StructureSpec | None = None
 
 
 #: Section name → model.
@@ -138,6 +141,7 @@ SECTION_MODELS = {
     "fits": FitsSpec,
     "lubrication": LubricationSpec,
     "thermal": ThermalSpec,
+    "structure": StructureSpec,
 }
 
 

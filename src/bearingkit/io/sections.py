@@ -287,6 +287,11 @@ class BearingFile(Strict):
     thermal: dict[str, Any] | None = Field(
         None, description="Heat balance: the operating temperature found (io.schema_operating.ThermalSpec)."
     )
+    structure: dict[str, Any] | None = Field(
+        None,
+        description="Flexible rings, housings, flanges or an imported FE matrix for any bearing "
+        "(io.schema_structure.StructureSpec; docs/structure.md).",
+    )
 
     @field_validator("load_cases", mode="before")
     @classmethod

@@ -184,12 +184,27 @@ class Analysis(AnalysisOutput):
 
     @functools.cached_property
     def flexible(self):
-        """FlexibleResult of the coupled flexible-ring solve, or None when the input has no flexible ring."""
+        """The coupled flexible-ring solve, or None when the input has no flexible ring: a
+        :class:`~bearingkit.analysis.structure.StructureResult` for a ``[structure]`` (any bearing,
+        :mod:`bearingkit.pipeline.structure`), a :class:`~bearingkit.analysis.flexible.FlexibleResult`
+        for the seed-002 ball–column ring."""
+        if getattr(self.input, "structure", None) is not None:
+            from bearingkit.pipeline.structure import solve_input
+
+            return solve_input(self)
         if self.input.bearing_type != "ball_column":
             return None
         from bearingkit.bearings.ball_column import solve_flexible_input
 
         return solve_flexible_input(self.input)
+
+    @functools.cached_property
+    def flexible_rating(self):
+        """RatingResult of the ``[structure]``'s coupled solution (None without one), beside
+        :attr:`rating` of the rigid rings (:func:`bearingkit.pipeline.structure.change`)."""
+        from bearingkit.pipeline.structure import flexible_rating
+
+        return flexible_rating(self)
 
     def friction_by(self, model: str | None = None) -> FrictionOutcome:
         """Friction by ``model`` (default :attr:`friction_model`); InputError when it does not apply."""
@@ -458,6 +473,8 @@ class Analysis(AnalysisOutput):
                 notes.append(tilt)
             if flex is not None and not flex.converged[c]:
                 notes.append("the flexible-ring coupling did not converge")
+            if flex is not None:
+                notes.extend(getattr(flex, "warnings", []))
             if rating is not None:
                 notes.extend(w for w in rating.warnings[c] if res.converged[c] or "did not converge" not in w)
             from bearingkit.pipeline.operating_output import operating_warnings

@@ -58,6 +58,10 @@ class AnalysisOutput:
                 d["clearance"] = self.clearance.to_dict(i)
             if self.flexible is not None:
                 d["flexible"] = self.flexible.to_dict(i) | {"case": d["case"]}
+                if hasattr(self.flexible, "rigid"):  # a [structure]: what the flexibility changes
+                    from bearingkit.pipeline.structure import change
+
+                    d["flexible"]["change"] = change(self, i)
             if self.thermal is not None:
                 d["thermal"] = self.thermal.to_dict(i)
             d["warnings"] = self.warnings[i]

@@ -167,8 +167,14 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     sub = analysis.statics_dict(subsurface=analysis.subsurface)
     statics = sub["cases"]
     lub = analysis.lubrication
+    from bearingkit.report.ring_plots import structure_html
+
     extras = [
-        (lambda number, c=c, i=i: operating_html(c, None if lub is None else lub.to_dict(i), number))
+        (
+            lambda number, c=c, i=i: (
+                operating_html(c, None if lub is None else lub.to_dict(i), number) + structure_html(c, number)
+            )
+        )
         for i, c in enumerate(statics)
     ]
     html = build_report(

@@ -166,3 +166,123 @@ def write_ring_moment(path, flexible: dict, **kwargs) -> Path:
     return write_atomic(
         Path(path), lambda tmp: fig.savefig(tmp, dpi=DPI, format="png", metadata={"Software": None}), "figure"
     )
+
+
+# -- any bearing in its structure ([structure]) ----------------------------------------------------------
+def structure_figure(case: dict) -> Figure:
+    """The rings of a ``[structure]`` and what they change, for one case of ``statics_dict``.
+
+    ``case`` is a case dict of :meth:`~bearingkit.pipeline.Analysis.statics_dict` whose ``flexible`` entry
+    is a :class:`~bearingkit.analysis.structure.StructureResult`'s. Top left: each ring's centroid deformed
+    in its plane (radial deflection magnified, the factor in the legend) over its undeformed circle; top
+    right: the element loads against azimuth, rigid (thin) and flexible (thick) rings; bottom left: the
+    rings' axial deflection and twist; bottom right: their in-plane and out-of-plane bending moments.
+    """
+    flex = case["flexible"]
+    rings = [r for r in flex["structure"]["rings"] if "radial_deflection_m" in r]
+    fig = Figure(figsize=(10.5, 7.5))
+    FigureCanvasAgg(fig)
+    ax_ring = fig.add_subplot(2, 2, 1, projection="polar")
+    ax_load = fig.add_subplot(2, 2, 2)
+    ax_axial = fig.add_subplot(2, 2, 3)
+    ax_moment = fig.add_subplot(2, 2, 4)
+    biggest = max([max(abs(v) for v in r["radial_deflection_m"]) for r in rings] + [1e-12])
+    for i, ring in enumerate(rings):
+        theta = np.asarray(ring["shape_azimuth_rad"] + ring["shape_azimuth_rad"][:1])
+        w = np.asarray(ring["radial_deflection_m"] + ring["radial_deflection_m"][:1])
+        radius = 1.0 if ring["side"] == "outer" else 0.75
+        scale = 0.1 / biggest  # the largest deflection drawn as 10 % of the outer ring's radius
+        colour = f"C{i}"
+        ax_ring.plot(theta, np.full_like(theta, radius), ":", color=colour, lw=0.8)
+        ax_ring.plot(theta, radius + scale * w, "-", color=colour, label=f"{ring['side']} ring")
+        deg, order = _unrolled(theta[:-1])
+        ax_axial.plot(deg, np.asarray(ring["axial_deflection_m"])[order] * 1e6, "-", color=colour,
+                      label=f"{ring['side']}: axial u [µm]")  # fmt: skip
+        ax_axial.plot(deg, np.asarray(ring["twist_rad"])[order] * 1e6, "--", color=colour,
+                      label=f"{ring['side']}: twist φ [µrad]")  # fmt: skip
+        ax_moment.plot(deg, np.asarray(ring["bending_moment_Nm"])[order], "-", color=colour,
+                       label=f"{ring['side']}: in plane")  # fmt: skip
+        ax_moment.plot(deg, np.asarray(ring["out_of_plane_moment_Nm"])[order], "--", color=colour,
+                       label=f"{ring['side']}: out of plane")  # fmt: skip
+    ax_ring.set_yticklabels([])
+    ax_ring.set_title(f"rings deformed in their plane (largest radial deflection, {biggest * 1e6:.3g} µm, "
+                      "drawn as 10 % of the radius)", fontsize=9)  # fmt: skip
+    ax_ring.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.1, -0.15))
+    rigid_rows = {r["name"]: r for r in case["rows"]}
+    for k, row in enumerate(flex["rows"]):
+        deg, order = _unrolled(row["azimuth_rad"])
+        style = _STYLES[k % len(_STYLES)]
+        ax_load.plot(deg, np.asarray(rigid_rows[row["name"]]["loads_N"])[order], style, color="0.55", lw=1,
+                     label=f"{row['name']} rigid")  # fmt: skip
+        ax_load.plot(deg, np.asarray(row["loads_N"])[order], style, color="C3", lw=1.8,
+                     label=f"{row['name']} flexible")  # fmt: skip
+    ax_load.set_xlabel("azimuth ψ [°]")
+    ax_load.set_ylabel("element load Q [N]")
+    ax_load.legend(fontsize=8)
+    ax_load.grid(alpha=0.3)
+    for ax, label in ((ax_axial, "µm, µrad"), (ax_moment, "bending moment [N·m]")):
+        ax.set_xlabel("azimuth θ [°]")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"case {case.get('case', '')!r}: the bearing in its structure", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def structure_html(case: dict, number: str) -> str:
+    """The report's section of one case in its structure ("" without a ``[structure]``)."""
+    from bearingkit.report.html_format import _e, _figure_html, _table, fmt
+
+    flex = case.get("flexible")
+    if flex is None or "rigid_vs_flexible" not in flex:
+        return ""
+    rows = []
+    for name, r in flex["rigid_vs_flexible"].items():
+        change = r["max_load_change"]
+        rows.append(
+            [
+                _e(name),
+                f"{r['loaded_count_rigid']} → {r['loaded_count_flexible']}",
+                fmt(r["max_load_rigid_N"], 4),
+                fmt(r["max_load_flexible_N"], 4),
+                "—" if change is None else f"{change * 100:+.2f} %",
+                fmt(r["max_pressure_rigid_Pa"], 4, 1e-6),
+                fmt(r["max_pressure_flexible_Pa"], 4, 1e-6),
+            ]
+        )
+    ch = flex.get("change", {})
+    extra = []
+    for key, label, factor in (("static_safety", "s0", 1.0), ("life_rev", "L10 [10⁶ rev]", 1e-6)):
+        a, b = ch.get(f"{key}_rigid"), ch.get(f"{key}_flexible")
+        if a is not None and b is not None:
+            extra.append(f"{label}: {fmt(a, 4, factor)} rigid → {fmt(b, 4, factor)} flexible")
+    stresses = [
+        f"{r['side']} ring: largest hoop fibre stress {fmt(r['max_fibre_stress_Pa'], 3, 1e-6)} MPa"
+        for r in flex["structure"]["rings"]
+        if "max_fibre_stress_Pa" in r
+    ]
+    how = flex["coupling"]
+    caption = (
+        "Rigid rings (grey) against the rings and supports of [structure] (red): the rings' deflection, "
+        "twist and bending moments come from the same coupled solution "
+        f"(Newton, {how['iterations']} iterations, {'converged' if flex['converged'] else 'NOT converged'})."
+    )
+    return (
+        f'<section data-section="structure"><h3>{number} In its structure: rigid → flexible rings</h3>'
+        + _table(
+            [
+                "row",
+                "loaded",
+                "Q_max rigid [N]",
+                "Q_max flexible [N]",
+                "change",
+                "p_max rigid [MPa]",
+                "p_max flexible [MPa]",
+            ],
+            rows,
+        )
+        + (f"<p>{_e('; '.join(extra + stresses))}.</p>" if extra or stresses else "")
+        + _figure_html(structure_figure(case), "the rings deformed and the load distribution", caption)
+        + "</section>"
+    )

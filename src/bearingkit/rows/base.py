@@ -73,7 +73,12 @@ def case_column(value) -> np.ndarray:
 
 @dataclass(frozen=True)
 class RacewayOffset:
-    """Deflection of a row's outer raceway, imposed on the contact geometry (flexible rings).
+    r"""Deflection of a row's outer raceway relative to its inner one, imposed on the contact geometry.
+
+    What flexible rings and structures impose (:mod:`bearingkit.analysis.flexible`,
+    :mod:`bearingkit.analysis.structure`). The per-element fields are the motion of the OUTER raceway
+    relative to the INNER raceway at the element's reference point, the element centre (pitch
+    radius r_e, the row's axial position z_e): a flexible inner ring enters with the opposite sign.
 
     Attributes
     ----------
@@ -83,15 +88,63 @@ class RacewayOffset:
     radial : ndarray (C, Z) or None [m]
         Outward radial deflection of the outer raceway at each element (thin-ring bending); it
         opens the radial gap, reducing the element's approach by its radial component.
+    axial : ndarray (C, Z) or None [m]
+        Axial (+z) displacement of the outer raceway at each element's reference point.
+    tilt : ndarray (C, Z) or None [rad]
+        Rotation of the outer raceway's section in the element's radial–axial plane, in the sense of
+        the ring tilt θ_t = θ_x sin ψ − θ_y cos ψ: a raceway point at (r, z) moves by
+        tilt·(−(z − z_e), r − r_e) on top of (radial, axial). The contacts see θ_t − tilt.
+
+    Notes
+    -----
+    An outer raceway point at (r, z) of element j moves by
+
+    .. math:: d_r = \text{radial}_j - (z - z_e)\,\text{tilt}_j, \qquad
+              d_z = \text{axial}_j + (r - r_e)\,\text{tilt}_j
+
+    (small rotations), and every contact of that element loses the approach n·d, n its outward
+    normal on the outer raceway. Offsets equal to a rigid shift s at every element
+    (radial = B_r(z_e) s, axial = B_a(r_e) s, tilt = B_θ s) give the contacts the shift does
+    (tested per row kind). Every row kind's kernel accepts these fields and reports, with
+    ``raceway_loads(q, offset)`` (C, Z, 3), the generalised loads (F_r, F_z, M_t) the elements put on
+    the outer raceway, conjugate to (radial, axial, tilt): −∂U/∂offset.
     """
 
     shift: np.ndarray | None = None
     radial: np.ndarray | None = None
+    axial: np.ndarray | None = None
+    tilt: np.ndarray | None = None
 
     def take(self, cases: np.ndarray) -> RacewayOffset:
         """The offsets of some cases only (arrays with a leading case axis of 1 are shared)."""
         pick = lambda a: a if a is None or np.shape(a)[0] == 1 else np.asarray(a)[cases]  # noqa: E731
-        return RacewayOffset(pick(self.shift), pick(self.radial))
+        return RacewayOffset(pick(self.shift), pick(self.radial), pick(self.axial), pick(self.tilt))
+
+    @property
+    def local(self) -> bool:
+        """Whether any per-element field (radial, axial, tilt) is set."""
+        return self.radial is not None or self.axial is not None or self.tilt is not None
+
+
+def element_offsets(offset: RacewayOffset | None, shape) -> tuple | None:
+    """(radial, axial, tilt) of ``offset`` as arrays of ``shape`` (C, Z) (zeros where None); None when
+    the offset has no per-element field."""
+    if offset is None or not offset.local:
+        return None
+    fill = lambda a: np.zeros(shape) if a is None else np.broadcast_to(np.asarray(a, float), shape)  # noqa: E731
+    return fill(offset.radial), fill(offset.axial), fill(offset.tilt)
+
+
+def point_offset(offset: RacewayOffset | None, shape, arm_r, arm_z) -> np.ndarray | None:
+    """Displacement (C, Z, 2) [m] of an outer-raceway point at (r_e + arm_r, z_e + arm_z) of each element.
+
+    ``arm_r``, ``arm_z`` broadcast against (C, Z). None when ``offset`` has no per-element field.
+    """
+    parts = element_offsets(offset, shape)
+    if parts is None:
+        return None
+    radial, axial, tilt = parts
+    return np.stack([radial - arm_z * tilt, axial + arm_r * tilt], axis=-1)
 
 
 def relative_displacement(q: np.ndarray, offset: RacewayOffset | None) -> np.ndarray:

@@ -57,6 +57,7 @@ from bearingkit.rows.base import (
     RowResponse,
     RowState,
     azimuths,
+    element_offsets,
     steel_e_reduced,
     validate_common,
 )
@@ -391,6 +392,12 @@ def split_approach(total, outer, inner, normal_force=None):
     return y
 
 
+def _moved(offset) -> bool:
+    """Whether a structure's offsets (axial or tilt given) move the raceway, as opposed to the
+    radial-only offsets of fits."""
+    return offset is not None and (offset.axial is not None or offset.tilt is not None)
+
+
 class SelfAligningKernel(KernelBase):
     """Element lines through the sphere centre of a :class:`SphericalRollerRow` or
     :class:`SelfAligningBallRow`: response from the inner ring's translation only."""
@@ -478,11 +485,28 @@ class SelfAligningKernel(KernelBase):
         u = q if offset is None or offset.shift is None else q - offset.shift
         u_r = u[:, :1] * np.cos(self.psi) + u[:, 1:2] * np.sin(self.psi)  # (C, Z)
         reach = (self.touch - self.gap) * np.ones_like(u_r)
-        if offset is not None and offset.radial is not None:  # outer raceway moved outward: opens the line
+        u_z = u[:, 2:3] + np.zeros_like(u_r)
+        if _moved(offset):  # a structure moved the raceway: the relative motion, exactly
+            radial, axial, _ = element_offsets(offset, u_r.shape)  # a sphere takes no tilt about O
+            u_r, u_z = u_r - radial, u_z - axial
+        elif offset is not None and offset.radial is not None:
+            # radial-only offsets (fits, as before structures existed): the opening along the line
             reach = reach - offset.radial * np.cos(float(self.row.contact_angle))
-        v = np.stack([reach * self.m_rz[0] + u_r, reach * self.m_rz[1] + u[:, 2:3]], axis=-1)
+        v = np.stack([reach * self.m_rz[0] + u_r, reach * self.m_rz[1] + u_z], axis=-1)
         length = np.sqrt(v[..., 0] ** 2 + v[..., 1] ** 2)
         return v / length[..., None], length - self.touch, length
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, 0) (C, Z, 3) each element puts on the outer raceway, −∂U/∂(radial, axial, tilt):
+        Q n along its line (the spherical raceway takes no tilt). With radial-only offsets (fits) the
+        opening acts along the unloaded line m, and −∂U/∂radial is Q (n·m) m_r."""
+        n, delta, _ = self._lines(q, offset)
+        load = self.element_law(delta)[0]
+        zero = np.zeros_like(load)
+        if offset is not None and offset.radial is not None and not _moved(offset):
+            along = load * (n[..., 0] * self.m_rz[0] + n[..., 1] * self.m_rz[1])
+            return np.stack([along * self.m_rz[0], zero, zero], axis=-1)
+        return np.stack([load * n[..., 0], load * n[..., 1], zero], axis=-1)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Force (through O: no moment), Jacobian (zero tilt columns) and energy for q (C, 5)."""

@@ -48,6 +48,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    element_offsets,
     radial_row,
     relative_displacement,
     steel_e_reduced,
@@ -262,8 +263,11 @@ class FourPointKernel(KernelBase):
         c, z = q.shape[0], self.psi.shape[-1]
         inner = self.inner0 + u  # (C, Z, 2, 2)
         outer = np.broadcast_to(self.outer0, (c, z, 2, 2))
-        if offset is not None and offset.radial is not None:  # the outer raceway moved outward
-            outer = outer + np.stack([offset.radial, np.zeros_like(offset.radial)], axis=-1)[:, :, None, :]
+        parts = element_offsets(offset, (c, z))
+        if parts is not None:  # each outer arc centre moves with the raceway (radial, axial, tilt)
+            radial, axial, tilt = (p[..., None] for p in parts)
+            arm_r, arm_z = self.outer0[..., 0], self.outer0[..., 1]
+            outer = outer + np.stack([radial - arm_z * tilt, axial + arm_r * tilt], axis=-1)
         return np.concatenate([outer, inner], axis=-2)
 
     def _contacts(self, x, centres):
@@ -371,6 +375,19 @@ class FourPointKernel(KernelBase):
         centres = self._centres(q, offset)
         x = self._solve_balls(centres)
         return x, centres, self._contacts(x, centres)
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each ball puts on the outer raceway, −∂U/∂(radial, axial, tilt).
+
+        Σ over the two outer contacts of Q n (n from the arc centre to the ball, outward on the ring),
+        and their moment about the ball's nominal centre through each arc centre's arm (the balls are
+        in equilibrium, so the derivative at fixed ball positions is the total one).
+        """
+        _, _, (_, load, _, n, _) = self._solution(q, offset)
+        f = load[..., :2, None] * n[..., :2, :]  # (C, Z, 2 arcs, 2)
+        arm = np.broadcast_to(self.outer0, f.shape)
+        moment = (f[..., 1] * arm[..., 0] - f[..., 0] * arm[..., 1]).sum(-1)
+        return np.concatenate([f.sum(-2), moment[..., None]], axis=-1)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian (condensed over the ball positions) and energy for q (C, 5)."""

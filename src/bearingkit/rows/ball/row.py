@@ -29,6 +29,7 @@ from bearingkit.rows.base import (
     axial_row,
     azimuths,
     case_column,
+    point_offset,
     radial_row,
     relative_displacement,
     steel_e_reduced,
@@ -199,6 +200,9 @@ class BallKernel(KernelBase):
         # The inner groove centre sits (f_i − ½)D_w from the ball centre along the contact line; the
         # tilt acts at the point TILT_ARMS names (that centre, or the ball centre on the pitch circle).
         offset = ((fi - 0.5) * d)[..., None] * unit0
+        # The outer groove centre from the ball centre (the element's reference point of a raceway
+        # offset): a raceway tilt moves it by tilt·(−Δz, Δr) (RacewayOffset).
+        self.outer_arm = -((fo - 0.5) * d)[..., None] * unit0  # (C|1, 1, 2)
         r_c, z_c = TILT_ARMS[row.tilt_arm](dm / 2, col(row.axial_position), offset)
         self.B = np.stack([radial_row(self.psi, z_c), axial_row(self.psi, r_c)], axis=-2)  # (C|1, Z, 2, 5)
         # Series stiffness of the two contacts, at the free contact angle.
@@ -241,10 +245,24 @@ class BallKernel(KernelBase):
         else:
             u = np.einsum("czij,cj->czi", self.B, q)
         s = self.s0 + u
-        if offset is not None and offset.radial is not None:  # outer groove centre moves outward
-            s = s - np.stack([offset.radial, np.zeros_like(offset.radial)], axis=-1)
+        moved = point_offset(offset, s.shape[:-1], self.outer_arm[..., 0], self.outer_arm[..., 1])
+        if moved is not None:  # the outer groove centre moves with the raceway
+            s = s - moved
         a = np.sqrt(s[..., 0] ** 2 + s[..., 1] ** 2)
         return u, s, a
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each ball puts on the outer raceway, −∂U/∂(radial, axial, tilt).
+
+        Q n along the line of the groove centres (n = s/|s|, outward), and its moment about the ball
+        centre through the outer groove centre's arm (RacewayOffset).
+        """
+        _, s, a = self._geometry(q, offset)
+        load = self.k_n * self._approach(s, a) ** POINT_EXPONENT
+        n = s / a[..., None]
+        arm_r, arm_z = self.outer_arm[..., 0], self.outer_arm[..., 1]
+        moment = load * (n[..., 1] * arm_r - n[..., 0] * arm_z)
+        return np.stack([load * n[..., 0], load * n[..., 1], moment], axis=-1)
 
     def _approach(self, s, a):
         """Contact approach δ ≥ 0; zero where a one-sided groove would be loaded on its relieved side."""

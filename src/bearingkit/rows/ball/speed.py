@@ -391,6 +391,17 @@ class BallSpeedKernel(BallKernel):
         ).sum(-1)
         return RowResponse(force, jac, energy)
 
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each ball's OUTER contact puts on the outer raceway: Q_o along
+        its contact angle α_o, and its moment about the ball centre through the outer groove centre's arm
+        (the outer contact carries the centrifugal force too)."""
+        st = self.ball_state(q, offset)
+        load, alpha = st["load_outer"], st["contact_angle_outer"]
+        n_r, n_z = np.cos(alpha), np.sin(alpha)
+        arm_r, arm_z = self.outer_arm[..., 0], self.outer_arm[..., 1]
+        moment = load * (n_z * arm_r - n_r * arm_z)
+        return np.stack([load * n_r, load * n_z, moment], axis=-1)
+
     def ball_state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> dict:
         """Per-ball loads, angles, speeds and inertia forces at displacements q (C, 5), SI arrays."""
         q = np.asarray(q, dtype=float)

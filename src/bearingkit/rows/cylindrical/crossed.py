@@ -38,6 +38,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    element_offsets,
     radial_row,
     relative_displacement,
     steel_e_reduced,
@@ -180,10 +181,22 @@ class CrossedRollerKernel(KernelBase):
     def _delta(self, q, offset: RacewayOffset | None = None):
         q = relative_displacement(q, offset)
         delta = q @ self.G.T + self.delta0
-        if offset is not None and offset.radial is not None:  # an outward raceway deflection opens the gap
-            opening = offset.radial * np.cos(self.alpha)  # (C, Z) along each roller's normal
+        parts = element_offsets(offset, (q.shape[0], self.shape[0]))
+        if parts is not None:  # the raceway moved: each roller's normal (cos α, sin α), slices along it
+            radial, axial, tilt = parts
+            opening = radial * np.cos(self.alpha) + axial * np.sin(self.alpha)  # (C, Z)
             delta = delta - np.repeat(opening, self.shape[1], axis=-1)
+            delta = delta + (tilt[..., None] * self.x).reshape(delta.shape[0], -1)
         return delta
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each roller puts on the outer raceway, −∂U/∂(radial, axial, tilt):
+        Σq along the roller's normal (cos α_j, sin α_j) and −Σq x about its middle."""
+        z_el, n_s = self.shape
+        delta = np.maximum(self._delta(q, offset), 0.0).reshape(-1, z_el, n_s)
+        q_slice = self.c_s * delta**LINE_EXPONENT
+        total, moment = q_slice.sum(-1), (q_slice * self.x).sum(-1)
+        return np.stack([total * np.cos(self.alpha), total * np.sin(self.alpha), -moment], axis=-1)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5)."""

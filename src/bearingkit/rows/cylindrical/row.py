@@ -33,6 +33,7 @@ from bearingkit.rows.base import (
     axial_row,
     azimuths,
     case_column,
+    element_offsets,
     radial_row,
     relative_displacement,
     steel_e_reduced,
@@ -227,8 +228,7 @@ class CylindricalKernel(KernelBase):
             a, b = q @ self.Ga[0].T, q @ self.Gb[0].T
         else:
             a, b = np.einsum("czd,cd->cz", self.Ga, q), np.einsum("czd,cd->cz", self.Gb, q)
-        if offset is not None and offset.radial is not None and self.row.direction == 0:
-            a = a - offset.radial  # an outward raceway deflection opens every slice of that roller
+        a, b = self._offset_ab(a, b, offset)
         delta = b[:, :, None] * self.x[:, None, :]
         delta += a[:, :, None]
         delta += self.delta0[:, None, :]
@@ -258,9 +258,31 @@ class CylindricalKernel(KernelBase):
             a, b = q @ self.Ga[0].T, q @ self.Gb[0].T
         else:
             a, b = np.einsum("czd,cd->cz", self.Ga, q), np.einsum("czd,cd->cz", self.Gb, q)
-        if offset is not None and offset.radial is not None and self.row.direction == 0:
-            a = a - offset.radial  # an outward raceway deflection opens every slice of that roller
-        return a, b
+        return self._offset_ab(a, b, offset)
+
+    def _offset_ab(self, a, b, offset):
+        """(a, b) with the raceway offset: a radial row opens by ``radial`` and tilts by ``tilt``
+        (slice k at x_k sees radial − x_k tilt); a thrust row (σ) by σ·``axial`` and σ·``tilt``."""
+        parts = element_offsets(offset, a.shape)
+        if parts is None:
+            return a, b
+        radial, axial, tilt = parts
+        sigma = self.row.direction
+        if sigma == 0:  # an outward raceway deflection opens every slice of that roller
+            return a - radial, b + tilt
+        return a - sigma * axial, b - sigma * tilt
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each roller puts on the outer raceway, −∂U/∂(radial, axial, tilt):
+        radial rows (Σq, 0, −Σq x), thrust rows (0, σΣq, σΣq x), x the slice positions."""
+        delta = np.maximum(self._delta3(q, offset), 0.0)
+        q_slice = self.c_s[..., None] * delta**LINE_EXPONENT
+        total, moment = q_slice.sum(-1), (q_slice * self.x[:, None, :]).sum(-1)
+        zero = np.zeros_like(total)
+        sigma = self.row.direction
+        if sigma == 0:
+            return np.stack([total, zero, -moment], axis=-1)
+        return np.stack([zero, sigma * total, sigma * moment], axis=-1)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5) (raceway offset optional)."""

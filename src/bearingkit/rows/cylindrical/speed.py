@@ -210,6 +210,13 @@ class CylindricalSpeedKernel(CylindricalKernel):
             )
         return RowResponse(force, jac.reshape(q.shape[0], 5, 5), phi.sum(-1))
 
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, 0, M_t) (C, Z, 3) the rollers' OUTER contacts put on the outer raceway: Σq_o and
+        −Σq_o x (the outer contact carries the centrifugal force on top of the inner one)."""
+        q_o = self._rollers(np.asarray(q, dtype=float), offset)[5][0]
+        total, moment = q_o.sum(-1), (q_o * self.x[:, None, :]).sum(-1)
+        return np.stack([total, np.zeros_like(total), -moment], axis=-1)
+
     def state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowState:
         """Per-roller results: ``load``/``slice_load`` are the inner contact's; extras add the outer
         contact's slice loads and pressures, the centrifugal force and the cage speed."""

@@ -19,6 +19,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    element_offsets,
     radial_row,
     relative_displacement,
     steel_e_reduced,
@@ -187,9 +188,34 @@ class TaperedKernel(KernelBase):
         a_i = (q @ self.G_flat_i.T).reshape(c, z_el, n_s) + self.d0_i
         a_f = q @ self.g_f.T  # (C, Z)
         d0_e = self.d0_e
-        if offset is not None and offset.radial is not None:
-            d0_e = d0_e - (np.asarray(offset.radial, float) * self.geo.n_e[0])[..., None]
+        parts = element_offsets(offset, (c, z_el))
+        if parts is not None:  # the cup moved: each cup slice opens by n_e·(its displacement)
+            d0_e = d0_e - self._cup_opening(*parts)
         return a_i, a_f, d0_e
+
+    def _cup_weights(self):
+        """∂(opening of cup slice k)/∂(radial, axial, tilt) (3, n_s): the slice point p_k = centre + r_m e
+        + x_k t_e in the meridian frame (r, s = σ(z − z_e)), moved by (radial − (z − z_e) tilt,
+        axial + (r − r_e) tilt) (RacewayOffset)."""
+        geo, sigma = self.geo, float(self.row.direction)
+        arm = geo.r_m * geo.e + self.x[:, None] * geo.t_e  # (n_s, 2): (r − r_e, s)
+        n0, n1 = geo.n_e
+        ones = np.ones_like(self.x)
+        return np.stack([n0 * ones, sigma * n1 * ones, sigma * (n1 * arm[:, 0] - n0 * arm[:, 1])])
+
+    def _cup_opening(self, radial, axial, tilt):
+        w = self._cup_weights()
+        n0, n1 = self.geo.n_e
+        sigma = float(self.row.direction)
+        # radial first, as the radial-only offset always did (same floating-point sum)
+        return (n0 * radial)[..., None] + (sigma * n1 * axial)[..., None] + tilt[..., None] * w[2]
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each roller's cup contact puts on the outer raceway,
+        −∂U/∂(radial, axial, tilt) = Σ_k q_e,k ∂(opening_k)/∂(…) (rollers in equilibrium: the derivative
+        at fixed roller positions is the total one)."""
+        qe = self.roller_state(q, offset)["slice_load_outer"]  # (C, Z, n_s)
+        return np.einsum("czk,ak->cza", qe, self._cup_weights())
 
     def _approaches(self, a_i, a_f, xr, d0_e):
         d_i = a_i + (xr @ self.b_i)[..., None]

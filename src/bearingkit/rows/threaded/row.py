@@ -48,6 +48,7 @@ from bearingkit.rows.base import (
     RowState,
     axial_row,
     azimuths,
+    element_offsets,
     radial_row,
     relative_displacement,
 )
@@ -149,6 +150,13 @@ class ThreadedKernel(KernelBase):
         self.G = gm.reshape(1, -1, 5)
         self.GG = (self.G[..., :, None] * self.G[..., None, :]).reshape(1, -1, 25)
         self.delta0 = -row.clearance / 2.0
+        # ∂(opening of each equivalent ball)/∂(radial, axial, tilt) of its roller's raceway offset
+        # (RacewayOffset: the contact point sits on the roller axis at (D_pw/2, z_i), the element's
+        # reference point at (D_pw/2, z_0); a tilt moves it radially by −(z_i − z_0)·tilt).
+        arm = np.broadcast_to((z_t - row.axial_position)[:, None], (n, 2))
+        self.opening = np.stack(
+            [np.full((n, 2), ca), np.broadcast_to(sa * sigma, (n, 2)), -ca * arm]
+        ).reshape(3, 2 * n)  # (3, n·2) in the order (tooth, flank) of one roller
         self.k = _pair_stiffness(g)
         self.start_matrix = self.k * np.einsum("mi,mj->ij", self.G[0], self.G[0])
         self.start_exponent = POINT_EXPONENT
@@ -157,7 +165,20 @@ class ThreadedKernel(KernelBase):
 
     def _delta(self, q, offset: RacewayOffset | None = None):
         q = relative_displacement(q, offset)
-        return q @ self.G[0].T + self.delta0
+        delta = q @ self.G[0].T + self.delta0
+        parts = element_offsets(offset, (q.shape[0], self.shape[0]))
+        if parts is not None:  # the nut's raceway moved at each roller: every flank contact opens
+            opening = np.einsum("acz,am->czm", np.stack(parts), self.opening)  # (C, Z, 2n)
+            delta = delta - opening.reshape(delta.shape)
+        return delta
+
+    def raceway_loads(self, q: np.ndarray, offset: RacewayOffset | None = None) -> np.ndarray:
+        """Loads (F_r, F_z, M_t) (C, Z, 3) each roller puts on the nut (outer raceway), −∂U/∂(radial, axial,
+        tilt) = Σ over its teeth and flanks of Q ∂(opening)/∂(…)."""
+        z_el, n, _ = self.shape
+        delta = np.maximum(self._delta(q, offset), 0.0)
+        load = (self.k * delta**POINT_EXPONENT).reshape(-1, z_el, 2 * n)
+        return np.einsum("czm,am->cza", load, self.opening)
 
     def response(self, q: np.ndarray, offset: RacewayOffset | None = None) -> RowResponse:
         """Generalised force, Jacobian and energy for displacements q (C, 5)."""

@@ -322,7 +322,9 @@ def _flags(rows) -> list[Quantity]:
 
 
 def _rating(c: _Context):
-    return c.analysis.rating
+    # a [structure]'s outputs are the coupled solution's (as the statics above), its lives and s0 too
+    flexible = getattr(c.analysis, "flexible_rating", None)
+    return flexible if flexible is not None else c.analysis.rating
 
 
 def _rated(c: _Context, get) -> np.ndarray:
