@@ -15,8 +15,10 @@ command line's own runner and Parquet store — in a child process, so:
   gets one solver thread (the page keeps a core), and at most :data:`MAX_JOBS` job folders are kept
   (the oldest finished one is removed); they all go with the server's temporary folder.
 
-The download is the job folder as a zip: the study file, the subject, the results and plots, and the
-chunks, so ``bearingkit study study.toml --out out --resume`` continues it on the user's machine.
+The download is the job folder as a zip: the study file, the subject, the results, tables and plots,
+the chunks and the run's log; ``bearingkit study study.toml --out OUT`` in the unpacked folder gives the
+same numbers. (It cannot ``--resume`` there: a study's fingerprint holds the absolute path of its
+bearing file, so the moved folder is another study to the store; the app resumes in place.)
 """
 
 from __future__ import annotations

@@ -54,10 +54,10 @@ class Workbench:
 
 def _catalogue_field(message: str, _source: str) -> str:
     """``catalogue.d_min``, ``select.life`` … (the form field a message names), else ``catalogue``."""
-    m = re.match(r"^(catalogue|select|compare)\.(\w+)", message)
-    if m:
-        return f"{m.group(1)}.{m.group(2)}"
-    return "select" if message.startswith("select") else "catalogue"
+    m = re.match(r"^(catalogue|select|compare)(?:\.(\w+))?", message)
+    if m is None:
+        return "catalogue"
+    return f"{m.group(1)}.{m.group(2)}" if m.group(2) else m.group(1)
 
 
 def _study_field(message: str, _source: str) -> str:

@@ -404,7 +404,7 @@ def study_files(request: StudyRequest) -> StudyFiles:
 def _header(request: StudyRequest) -> str:
     return (
         f"# A study made by `bearingkit serve` on the {request.subject} of its page. Run it again here with\n"
-        "#     bearingkit study study.toml --out out            (--resume continues a stopped run)\n\n"
+        "#     bearingkit study study.toml --out my_run\n\n"
     )
 
 
