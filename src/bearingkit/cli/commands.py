@@ -492,7 +492,8 @@ def serve(
         "127.0.0.1", "--host", help="Address to bind; anything but loopback exposes the app (no login)."
     ),
 ):
-    """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    """Local web app (http://127.0.0.1:8765/): a bearing, the catalogue and comparisons, shafts, drivetrains,
+    studies and duty cycles in the browser."""
     from bearingkit.app import serve as run_server
 
     run_server(host=host, port=port, open_browser=open_browser, echo=console.print)
