@@ -402,6 +402,93 @@ def test_study_runs_in_the_background_stops_resumes_and_equals_the_cli(client, t
         assert np.array_equal(ours[col].to_numpy(float), theirs[col].to_numpy(float)), col
 
 
+def test_an_optimisation_draws_its_pareto_front(client):
+    body = {
+        "subject": "bearing",
+        "bearing": {**BASE, "temperature": "70 degC"},
+        "design": "optimize",
+        "population": 6,
+        "generations": 2,
+        "factors": [
+            {"path": "geometry.clearance_radial", "start": "0 um", "stop": "40 um"},
+            {"path": "lubricant.nu_40", "start": "20 mm^2/s", "stop": "200 mm^2/s"},
+        ],
+        "objectives": [
+            {"output": "L10r_h", "sense": "max"},
+            {"output": "friction_torque_Nm", "sense": "min"},
+        ],
+    }
+    r = client.post("/api/study", json=body)
+    assert r.status_code == 200, r.text
+    assert r.json()["cases"] == 12
+    done = _wait(client, r.json()["id"])
+    assert done["state"] == "done", done
+    res = client.get(f"/api/study/{done['id']}/results").json()
+    assert res["figures"] == ["pareto.png"]
+    front = res["tables"]["pareto"]
+    life = np.array([row[front["columns"].index("L10r_h")] for row in front["rows"]])
+    torque = np.array([row[front["columns"].index("friction_torque_Nm")] for row in front["rows"]])
+    # no point of the front is dominated by another (longer life AND less friction), checked here
+    for i in range(len(life)):
+        better = (life >= life[i]) & (torque <= torque[i]) & ((life > life[i]) | (torque < torque[i]))
+        assert not better.any(), i
+    # and every evaluated design off the front is dominated by a point of it
+    cases = np.array(
+        [[row[res["columns"].index(c)] for c in ("L10r_h", "friction_torque_Nm")] for row in res["rows"]]
+    )
+    for a, b in cases:
+        on = np.any(np.isclose(life, a, rtol=1e-12) & np.isclose(torque, b, rtol=1e-12))
+        assert on or np.any((life >= a) & (torque <= b))
+
+
+def test_a_shaft_study_is_written_with_the_bearing_files_it_names(client):
+    from bearingkit.app.workbench.studies import StudyRequest, study_files
+
+    shaft = {"system": "shaft", "source": {"kind": "example", "name": "shaft_countershaft.toml"}}
+    body = {
+        "subject": "shaft",
+        "system": shaft,
+        "factors": [
+            {"path": "load_scale", "start": "0.5", "stop": "1.5", "n": 3},
+            {"path": "designation", "levels": ["6209", "6309"]},
+        ],
+        "outputs": ["system_L10h_h"],
+    }
+    data = error_of(client.post("/api/study", json=body), 400)
+    assert data["field"] == "study.factor.1" and "add it, with one level to fix it (A, B)" in data["error"]
+    body["factors"].append({"path": "bearing", "levels": ["A"]})
+    made = study_files(StudyRequest.model_validate(body))
+    assert set(made.files) == {"study.toml", "shaft.toml", "dgbb_6209.toml", "crb_nu209.toml"}
+    assert made.files["shaft.toml"] == (EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8")
+    assert made.n_cases == 6 and 'evaluator = "shaft"' in made.files["study.toml"]
+
+
+@pytest.mark.slow
+def test_a_shaft_study_runs_as_the_cli_runs_it(client, tmp_path):
+    shaft = {"system": "shaft", "source": {"kind": "example", "name": "shaft_countershaft.toml"}}
+    body = {
+        "subject": "shaft",
+        "system": shaft,
+        "factors": [{"path": "load_scale", "levels": ["1.0", "1.5"]}],
+        "outputs": ["system_L10h_h", "max_bearing_radial_load_N"],
+    }
+    r = client.post("/api/study", json=body)
+    assert r.status_code == 200, r.text
+    done = _wait(client, r.json()["id"])
+    assert done["state"] == "done", done
+    res = client.get(f"/api/study/{done['id']}/results").json()
+    import pandas as pd
+
+    from bearingkit.studies.generic.shaft import SHAFT
+
+    ref = SHAFT(
+        pd.DataFrame({"file": [str(EXAMPLES / "shaft_countershaft.toml")] * 2, "load_scale": [1.0, 1.5]})
+    )
+    got = [row[res["columns"].index("system_L10h_h")] for row in res["rows"]]
+    # the study's child runs one solver thread, this process all cores: equal to the last bits of the solve
+    assert got == pytest.approx(list(ref["system_L10h_h"]), rel=1e-10)
+
+
 def test_unknown_study_is_404_and_ids_are_not_paths(client):
     assert client.get("/api/study/0123456789abcdef").status_code == 404
     assert client.get("/api/study/..%2F..%2Fetc").status_code == 404

@@ -298,33 +298,40 @@ def _number(text: str, dimension: str):
 
 
 # ------------------------------------------------------------------------------------------ the file
-def _plots(request: StudyRequest, numeric: list[str], units: dict, factor_names: list[str]) -> list[dict]:
-    """The study's ``[[plots]]`` (module docstring)."""
-    if not numeric:
+def _plots(request: StudyRequest, numeric: list[str], units: dict, axes: list[str]) -> list[dict]:
+    """The study's ``[[plots]]`` (module docstring); ``axes`` are the numeric factors (a name on an axis
+    cannot be drawn); an optimisation draws its Pareto front itself (``pareto.png``) and takes none."""
+    if not numeric or not axes or request.design == "optimize":
         return []
     shown = numeric[:PLOTTED]
     log = [o for o in shown if units.get(o) in ("h", "rev")]
-    if request.design == "factorial":
-        first = factor_names[0]
-        lines = {"kind": "lines", "x": first, "y": shown, "title": f"outputs against {first}"}
-        if len(factor_names) > 1:
-            lines["series"] = factor_names[1]
-        if log:
-            lines["log_y"] = log
-        plots = [lines]
-        if len(factor_names) > 1:
-            plots.append({"kind": "map", "x": first, "series": factor_names[1], "y": shown[:2],
-                          "title": f"{', '.join(shown[:2])} over {first} × {factor_names[1]}"})  # fmt: skip
-        return plots
+    first = axes[0]
     if request.design == "monte_carlo":
         return [
             {"kind": "histogram", "y": shown, "title": "distribution over the draws"},
-            {"kind": "scatter", "x": factor_names[0], "y": shown[:2], "title": f"against {factor_names[0]}"},
+            {"kind": "scatter", "x": first, "y": shown[:2], "title": f"against {first}"},
         ]
-    goals = [o.output for o in request.objectives]
-    if len(goals) >= 2:
-        return [{"kind": "scatter", "x": goals[0], "y": [goals[1]], "title": "every evaluated design"}]
-    return []
+    lines = {"kind": "lines", "x": first, "y": shown, "title": f"outputs against {first}"}
+    if len(axes) > 1:
+        lines["series"] = axes[1]
+    if log:
+        lines["log_y"] = log
+    plots = [lines]
+    if len(axes) > 1:
+        plots.append({"kind": "map", "x": first, "series": axes[1], "y": shown[:2],
+                      "title": f"{', '.join(shown[:2])} over {first} × {axes[1]}"})  # fmt: skip
+    return plots
+
+
+#: Factors of the shaft and drivetrain evaluators that change the bearing named by the factor ``bearing``
+#: (and the drivetrain's ``ratio_teeth``, the gear named by ``ratio_gear``).
+_NEEDS = {
+    "designation": "bearing",
+    "position_change": "bearing",
+    "axial_offset_change": "bearing",
+    "axial_offset": "bearing",
+    "ratio_teeth": "ratio_gear",
+}
 
 
 def study_files(request: StudyRequest) -> StudyFiles:
@@ -340,6 +347,15 @@ def study_files(request: StudyRequest) -> StudyFiles:
     names = [f.path for f in request.factors]
     if len(set(names)) < len(names):
         raise InputError("study.factors: a factor is listed twice")
+    if request.subject != "bearing":
+        for i, name in enumerate(names):
+            needed = _NEEDS.get(name)
+            if needed and needed not in names:
+                choices = ", ".join(known.get(needed, {}).get("choices", [])) or "see the file"
+                raise InputError(
+                    f"study.factors[{i}].path ({name!r}) changes the {needed} named by the factor "
+                    f"{needed!r}: add it, with one level to fix it ({choices})"
+                )
     outputs = list(dict.fromkeys(request.outputs))
     for o in outputs:
         if o not in units:
@@ -393,7 +409,8 @@ def study_files(request: StudyRequest) -> StudyFiles:
     study["chunk_size"] = max(1, math.ceil(n_cases / PROGRESS_STEPS))
     if fixed:
         doc["fixed"] = fixed
-    plots = _plots(request, numeric, units, names)
+    axes = [f.path for f in request.factors if known[f.path]["dimension"] not in ("text", "flag")]
+    plots = _plots(request, numeric, units, axes)
     if plots:
         doc["plots"] = plots
     files = {**files, "study.toml": _header(request) + tomli_w.dumps(doc)}
