@@ -169,6 +169,19 @@ def test_generic_machinery_holds_no_paper_module(folder):
 #: never one of its own layer or above (parts of one layer are independent). ``__init__`` and
 #: ``__main__`` are the package's faces and may import any part.
 SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
+    "app": (
+        ("server",),
+        ("api",),
+        ("workbench",),
+        ("sweep",),
+        ("form", "store"),
+        ("common",),
+    ),
+    "app.workbench": (
+        ("routes",),
+        ("studies",),
+        ("catalogue", "duty", "jobs", "systems"),
+    ),
     "analysis": (
         ("truncation",),
         ("rating", "friction"),

@@ -11,7 +11,9 @@ reads the :class:`~bearingkit.pipeline.Analysis`; it computes no physics. Routes
 - ``POST /api/sweep`` a one-factor sweep (:mod:`bearingkit.app.sweep`);
 - ``GET /api/download/<id>.toml|json|html`` the input, the JSON and the HTML report of an analysis;
 - ``GET /api/figure/<id>/pressure.png`` the slice-pressure map of roller rows
-  (:mod:`bearingkit.report.plots`).
+  (:mod:`bearingkit.report.plots`);
+- the workbench's routes (catalogue, comparison, shaft, drivetrain, studies, duty cycles):
+  :mod:`bearingkit.app.workbench.routes`.
 
 Errors are one line of JSON, ``{"error": …, "field": …}``: bad input → 400 with the loader's message
 and the form field it is about; a malformed request → 422; too large → 413; unknown → 404; anything
@@ -28,17 +30,19 @@ import time
 
 from fastapi import FastAPI, HTTPException, Request
 from fastapi.exceptions import RequestValidationError
-from fastapi.responses import FileResponse, JSONResponse, Response
+from fastapi.responses import FileResponse, Response
 from fastapi.staticfiles import StaticFiles
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.middleware.trustedhost import TrustedHostMiddleware
 
+from bearingkit.app.common import PageError, on_field
+from bearingkit.app.common import error_response as _error
+from bearingkit.app.common import json_response as _json
 from bearingkit.app.form import (
     FRICTION_CHOICES,
     MAX_TOML_BYTES,
     AnalyzeRequest,
     OpenRequest,
-    TooLarge,
     build_document,
     examples,
     field_of,
@@ -46,9 +50,9 @@ from bearingkit.app.form import (
 )
 from bearingkit.app.store import Kept, Store, request_id
 from bearingkit.app.sweep import MAX_POINTS, SweepRequest, run_sweep
+from bearingkit.app.workbench.routes import register as register_workbench
 from bearingkit.errors import InputError
 from bearingkit.io import loader
-from bearingkit.io.export import non_finite_paths
 
 __all__ = ["LOOPBACK_HOSTS", "MAX_REQUEST_BYTES", "create_app"]
 
@@ -66,25 +70,9 @@ CONTENT_SECURITY_POLICY = (
 STATIC = importlib.resources.files("bearingkit.app") / "static"
 
 
-class PageError(Exception):
-    """Bad input, with the form field it is about (HTTP 400)."""
-
-    def __init__(self, message: str, field: str = "source", status: int = 400):
-        super().__init__(message)
-        self.message = " ".join(str(message).split())
-        self.field = field
-        self.status = status
-
-
-@contextlib.contextmanager
 def _on_field(source: str):
-    """Turn an InputError into a PageError naming the form field of its message."""
-    try:
-        yield
-    except TooLarge as exc:
-        raise PageError(str(exc), "source", status=413) from None
-    except InputError as exc:
-        raise PageError(str(exc), field_of(str(exc), source)) from None
+    """An InputError → a PageError naming the form field of its message (:func:`form.field_of`)."""
+    return on_field(source, field_of)
 
 
 class _BodyLimit:
@@ -118,17 +106,6 @@ class _BodyLimit:
         return await self.app(scope, limited, send)
 
 
-def _error(status: int, message: str, field: str | None = None) -> JSONResponse:
-    return JSONResponse({"error": " ".join(str(message).split()), "field": field}, status_code=status)
-
-
-def _json(data: dict, source: str) -> JSONResponse:
-    bad = non_finite_paths(data)
-    if bad:
-        raise PageError(f"{source}: non-finite value in results at {bad[0]} ({len(bad)} in all)", status=422)
-    return JSONResponse(data, headers={"Cache-Control": "no-store"})
-
-
 def create_app(
     store: Store | None = None,
     *,
@@ -154,6 +131,7 @@ def create_app(
         if warm:
             threading.Thread(target=_warm_up, args=(compute,), daemon=True, name="warm-up").start()
         yield
+        bench.close()  # stop a running study before its folder goes with the store's
         store.close()
 
     app = FastAPI(title="bearingkit", docs_url=None, redoc_url=None, openapi_url=None, lifespan=lifespan)
@@ -213,6 +191,9 @@ def create_app(
     @app.get("/api/meta")
     def meta():
         from bearingkit import __version__
+        from bearingkit.app.workbench.studies import MAX_STUDY_CASES
+        from bearingkit.app.workbench.systems import system_examples
+        from bearingkit.catalogue.search import KINDS as catalogue_kinds
         from bearingkit.lubricants import BASE_OILS, THICKENERS, lubricant_names
 
         return {
@@ -224,6 +205,9 @@ def create_app(
             "friction_models": list(FRICTION_CHOICES),
             "max_file_bytes": MAX_TOML_BYTES,
             "max_sweep_points": MAX_POINTS,
+            "catalogue_kinds": list(catalogue_kinds),
+            "systems": system_examples(),
+            "max_study_cases": MAX_STUDY_CASES,
         }
 
     @app.post("/api/open")
@@ -242,12 +226,12 @@ def create_app(
             with compute:
                 analysis = analyze_document(document, source, request)
                 with _on_field(source):
-                    data = analysis.to_dict()
+                    data = page_data(analysis, request.subsurface)
             kept = Kept(analysis, document, source, request.contamination, request.friction_model)
             store.put(key, kept)
         else:
             with compute:
-                data = kept.analysis.to_dict()
+                data = page_data(kept.analysis, request.subsurface)
         from bearingkit.report.plots import roller_rows
 
         return _json(
@@ -294,7 +278,28 @@ def create_app(
             png = png_bytes(fig)
         return Response(png, media_type="image/png", headers={"Cache-Control": "no-store"})
 
+    # the workbench's pages: catalogue, shaft, drivetrain, studies, duty cycles (same middleware)
+    bench = register_workbench(app, store, compute, analyze_document)
+    app.state.workbench = bench
     return app
+
+
+def page_data(analysis, subsurface: bool) -> dict:
+    """``Analysis.to_dict()``, with ``rows[].subsurface`` (stresses against depth, the case check) and
+    the settings as ``subsurface`` where asked for or where a raceway is case-hardened (the check then
+    runs for every face, docs/subsurface.md)."""
+    if not (subsurface or not analysis.hardness.through_hardened):
+        return analysis.to_dict()
+    below = analysis.subsurface  # before the warnings, which carry the case check
+    data = analysis.to_dict()
+    rows = analysis.statics_dict(subsurface=below)
+    for case, case_rows in zip(data["cases"], rows["cases"], strict=True):
+        for row, row_below in zip(case["rows"], case_rows["rows"], strict=True):
+            row["subsurface"] = row_below.get("subsurface")
+            if "truncation" in row_below:
+                row["truncation"] = row_below["truncation"]
+    data["subsurface"] = rows["subsurface"]
+    return data
 
 
 def _warm_up(lock: threading.Lock) -> None:

@@ -19,15 +19,18 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from bearingkit.app.common import TooLarge
 from bearingkit.errors import InputError
 from bearingkit.io import loader, schema
 from bearingkit.paths import examples_dir
 
 __all__ = [
+    "DUTY_FIELDS",
     "EXAMPLES_DIR",
     "LOAD_FIELDS",
     "MAX_TOML_BYTES",
     "AnalyzeRequest",
+    "FormText",
     "OpenRequest",
     "Opened",
     "Source",
@@ -36,6 +39,7 @@ __all__ = [
     "bearing_type_of",
     "build_document",
     "clearance_fields",
+    "duty_bins",
     "examples",
     "field_of",
     "open_source",
@@ -50,15 +54,12 @@ MAX_TOML_BYTES = 256 * 1024
 MAX_DESIGNATION = 64
 #: Load-case fields the form edits (the rest of the chosen case, e.g. eccentricity, is kept).
 LOAD_FIELDS = ("F_x", "F_y", "F_z", "M_x", "M_y")
-#: Friction models the page offers (:data:`bearingkit.pipeline.FRICTION_MODELS`); "auto" (the first, the
-#: default) is the model of the bearing's kind, named with its reason in the result.
-FRICTION_CHOICES = ("auto", "components", "skf", "palmgren")
+#: Friction models the page offers: every key of :data:`bearingkit.pipeline.FRICTION_MODELS` (a test holds
+#: them equal); "auto" (the first, the default) is the model of the bearing's kind, named with its reason
+#: in the result. A model that does not apply to the bearing is not computed and the notes say why.
+FRICTION_CHOICES = ("auto", "components", "skf", "palmgren", "trb", "slewing")
 #: Name of the one load case the page analyses when the file has none (a designation).
 PAGE_CASE = "page"
-
-
-class TooLarge(InputError):
-    """An input file above :data:`MAX_TOML_BYTES` (the server answers 413)."""
 
 
 class StrictModel(BaseModel):
@@ -111,7 +112,12 @@ class AnalyzeRequest(StrictModel):
     heat: bool | None = Field(None, description="Heat balance on/off (None: as the file's [thermal]).")
     thermal: dict[ThermalField, FormText] = Field(default_factory=dict)
     contamination: FormText = ""
-    friction_model: Literal["auto", "components", "skf", "palmgren"] = "auto"
+    friction_model: Literal[FRICTION_CHOICES] = "auto"
+    subsurface: bool = Field(
+        False,
+        description="Stresses below the contacts and the hardened-layer check (always for a case-"
+        "hardened raceway).",
+    )
 
 
 def _is_bearing_file(path: Path) -> bool:
@@ -291,6 +297,9 @@ class Opened(BaseModel):
     lubricant: str | None
     free_dofs: list[str]
     thermal: bool = False
+    designation: str | None = None
+    duty_cycle: list[dict] = []
+    duty_fraction: Literal["time", "revolution"] = "time"
 
 
 def _text(value) -> str:
@@ -318,6 +327,8 @@ def open_source(source: Source) -> Opened:
             value = getattr(bearing.geometry, key, None)
             clearances[key] = "" if value is None else f"{value * 1e6:.6g} um"
     free = [n for n, f in zip(loader.DOF_NAMES, bearing.free, strict=True) if f]
+    header = document.get("bearing") if isinstance(document.get("bearing"), dict) else {}
+    bins, fraction = duty_bins(document)
     return Opened(
         source=name,
         bearing_name=bearing.model.name,
@@ -328,7 +339,29 @@ def open_source(source: Source) -> Opened:
         lubricant=None if bearing.lubricant is None else bearing.lubricant.name,
         free_dofs=free,
         thermal="thermal" in document,
+        designation=header.get("designation") if isinstance(header.get("designation"), str) else None,
+        duty_cycle=bins,
+        duty_fraction=fraction,
     )
+
+
+#: Fields of a duty-cycle bin the page edits (besides its name and its share).
+DUTY_FIELDS = (*LOAD_FIELDS, "speed", "temperature")
+
+
+def duty_bins(document: dict) -> tuple[list[dict], str]:
+    """The file's ``[[duty_cycle]]`` bins as the duty page shows them (texts) and their share's kind."""
+    raw = document.get("duty_cycle") or []
+    bins = []
+    kind = "revolution" if any(isinstance(b, dict) and "revolution_fraction" in b for b in raw) else "time"
+    for b in raw:
+        if not isinstance(b, dict):
+            continue
+        entry = {"name": _text(b.get("name"))}
+        entry.update({k: _text(b.get(k)) for k in DUTY_FIELDS})
+        entry["fraction"] = _text(b.get(f"{kind}_fraction"))
+        bins.append(entry)
+    return bins, kind
 
 
 #: A loader message's field: ``SOURCE: load_cases[0].F_x (…)`` or ``load case 'x': M_x (…) acts on …``.

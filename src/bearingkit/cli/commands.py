@@ -530,7 +530,8 @@ def serve(
         "127.0.0.1", "--host", help="Address to bind; anything but loopback exposes the app (no login)."
     ),
 ):
-    """Local web app: open a bearing, edit loads and speed, see the analysis (http://127.0.0.1:8765/)."""
+    """Local web app (http://127.0.0.1:8765/): a bearing, the catalogue and comparisons, shafts, drivetrains,
+    studies and duty cycles in the browser."""
     from bearingkit.extras import check
 
     check("app", "bearingkit serve")

@@ -7,7 +7,10 @@ const SVGNS = "http://www.w3.org/2000/svg";
 const LOADS = ["F_x", "F_y", "F_z", "eccentricity", "M_x", "M_y"];
 const VIRIDIS = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
 const RPM = 60 / (2 * Math.PI);
-const state = { source: null, opened: null, dirty: new Set(), seq: 0, shown: 0, last: null, timer: null };
+const state = { source: null, opened: null, dirty: new Set(), seq: 0, shown: 0, last: null, timer: null, freeDofs: null };
+// The other pages (catalogue.js, systems.js, study.js, duty.js) register their start here; each runs once
+// the server's meta data is in (the scripts load in order, all before DOMContentLoaded).
+const PAGES = {};
 
 // ------------------------------------------------------------------------------------------ helpers
 const $ = (id) => document.getElementById(id);
@@ -111,6 +114,7 @@ function showError(err) {
 // ------------------------------------------------------------------------------------------ opening
 async function openSource(source) {
   clearErrors();
+  clearBearing(source); // nothing of the previous bearing stays on screen while this one opens
   setStatus("opening…", "busy");
   try {
     const opened = await api("/api/open", { source });
@@ -124,10 +128,60 @@ async function openSource(source) {
   }
 }
 
+// Forget the open bearing: its form values, results, plots, sweep and downloads. The three ways to open
+// one show only the current source: the example list, the designation box and the upload field.
+function clearBearing(source) {
+  state.source = null;
+  state.opened = null;
+  state.last = null;
+  state.sweep = null;
+  state.freeDofs = null;
+  state.seq += 1; // an answer still on its way belongs to the old bearing: it is not shown
+  $("status").dataset.requested = String(state.seq);
+  $("status").dataset.seq = String(state.seq);
+  if (source.kind !== "example") $("example").value = "";
+  if (source.kind !== "designation") $("designation").value = "";
+  else $("designation").value = source.name;
+  if (source.kind !== "upload") $("upload").value = "";
+  $("bearing-title").textContent = "No bearing open";
+  $("bearing-description").textContent = "";
+  $("duty-hint").hidden = true;
+  $("fixed-dofs").textContent = "—";
+  for (const id of [...LOADS, "speed", "temperature", "contamination"]) $(id).value = "";
+  $("friction-model").value = "auto";
+  $("subsurface").checked = false;
+  $("case").replaceChildren();
+  $("clearances").replaceChildren();
+  for (const input of document.querySelectorAll("[data-lube], [data-thermal]")) input.value = "";
+  $("heat").checked = false;
+  $("case-title").textContent = "";
+  $("thermal").hidden = true;
+  for (const id of ["summary", "warnings", "polar", "angles", "ratings", "limits", "friction", "stiffness", "pressure", "subsurface-out", "notes"]) {
+    $(id).replaceChildren();
+  }
+  $("subsurface-card").hidden = true;
+  $("references").textContent = "";
+  $("sweep-plot").replaceChildren();
+  $("sweep-status").textContent = "";
+  $("sweep-error").textContent = "";
+  for (const id of ["dl-toml", "dl-json", "dl-html"]) {
+    $(id).classList.add("disabled");
+    $(id).removeAttribute("href");
+  }
+}
+
+// Open a standard bearing on the bearing page (the catalogue's "Open").
+function openDesignation(name) {
+  showPage("bearing");
+  $("designation").value = name;
+  return openSource({ kind: "designation", name });
+}
+
 function fillForm(o) {
   $("bearing-title").textContent = `${o.bearing_name} (${o.bearing_type.replaceAll("_", " ")})`;
   $("bearing-description").textContent = o.description;
-  $("fixed-dofs").textContent = ["u_x", "u_y", "u_z", "theta_x", "theta_y"].filter((d) => !o.free_dofs.includes(d)).join(", ") || "none";
+  $("fixed-dofs").textContent = "—"; // the DOFs the analysis solved with (render): the pipeline may fix the tilt
+  $("duty-hint").hidden = !(o.duty_cycle && o.duty_cycle.length);
   const sel = $("case");
   sel.replaceChildren(...o.cases.map((c) => el("option", { value: c.name }, c.name)));
   $("case-field").hidden = o.cases.length < 2;
@@ -148,7 +202,7 @@ function fillForm(o) {
   $("lube-thickener").replaceChildren(el("option", { value: "" }, "(oil)"), ...(state.meta.thickeners || []).map((n) => el("option", { value: n }, n)));
   for (const input of document.querySelectorAll("[data-lube], [data-thermal]")) input.value = "";
   $("heat").checked = Boolean(o.thermal);
-  fillSweepFactors(o);
+  fillSweepFactors(o, o.free_dofs);
 }
 
 function fillCase(c) {
@@ -179,6 +233,7 @@ function request() {
     thermal: Object.fromEntries([...document.querySelectorAll("[data-thermal]")].map((i) => [i.dataset.thermal, i.value.trim()]).filter(([, v]) => v)),
     contamination: $("contamination").value.trim(),
     friction_model: $("friction-model").value,
+    subsurface: $("subsurface").checked,
   };
 }
 
@@ -228,6 +283,14 @@ function render(data) {
   renderPressure(data, c);
   renderStiffness(c.stiffness_SI);
   renderRatings(c);
+  renderLimits(c.limits);
+  renderSubsurface(c, a.subsurface);
+  const dofs = ["u_x", "u_y", "u_z", "theta_x", "theta_y"];
+  $("fixed-dofs").textContent = dofs.filter((d) => !a.free_dofs.includes(d)).join(", ") || "none";
+  if (String(state.freeDofs) !== String(a.free_dofs)) {
+    state.freeDofs = a.free_dofs;
+    if (state.opened) fillSweepFactors(state.opened, a.free_dofs);
+  }
   $("notes").replaceChildren(...a.notes.map((n) => el("li", {}, n)));
   $("references").textContent = a.references.length ? `References: ${a.references.join(", ")}` : "";
   for (const [ext, href] of Object.entries(data.downloads)) {
@@ -370,14 +433,28 @@ function chart({ width = 460, height = 230, series, xlabel, ylabel, title, logy 
     if (pts.length > 1) {
       s.append(svg("polyline", { points: pts.map(([x, y]) => `${px(x)},${py(tf(y))}`).join(" "), fill: "none", stroke: colours[k % 4], "stroke-width": 1.8 }));
     }
+    const dots = se.x.length <= 60 || bad.some(Boolean); // a dense line (a shaft's) needs no dots
     se.x.forEach((x, i) => {
       const y = se.y[i];
-      if (y === null || !Number.isFinite(y) || (logy && y <= 0)) return;
+      if (!dots || y === null || !Number.isFinite(y) || (logy && y <= 0)) return;
       const dot = svg("circle", { cx: px(x), cy: py(tf(y)), r: bad[i] ? 4 : 2.6, fill: bad[i] ? "#c0392b" : colours[k % 4] });
       dot.append(svg("title", {}, `${fmt(x, 5)}: ${fmt(y, 5)}`));
       s.append(dot);
     });
   });
+  // a legend of the labelled series, right-aligned at the top of the plot area, on a white backdrop
+  const labelled = series.filter((se) => se.label);
+  if (labelled.length) {
+    const widths = labelled.map((se) => 24 + 6.2 * String(se.label).length);
+    const total = widths.reduce((a, b) => a + b, 0);
+    let x = width - m.r - total - 4;
+    s.append(svg("rect", { x: x - 2, y: m.t + 2, width: total + 4, height: 15, fill: "#fff", opacity: 0.85 }));
+    labelled.forEach((se, k) => {
+      s.append(svg("line", { x1: x, x2: x + 14, y1: m.t + 10, y2: m.t + 10, stroke: colours[series.indexOf(se) % 4], "stroke-width": 2 }));
+      s.append(svg("text", { x: x + 17, y: m.t + 14 }, se.label));
+      x += widths[k];
+    });
+  }
   s.append(svg("text", { x: (m.l + width - m.r) / 2, y: height - 6, "text-anchor": "middle" }, xlabel));
   s.append(svg("text", { x: 12, y: (m.t + height - m.b) / 2, "text-anchor": "middle", transform: `rotate(-90 12 ${(m.t + height - m.b) / 2})` }, ylabel));
   if (title) s.append(svg("text", { x: m.l, y: 14, class: "title" }, title));
@@ -483,6 +560,106 @@ function renderRatings(c) {
     el("p", { class: "muted small" }, `reliability ${c.rating.reliability}, a1 = ${c.rating.a1}; lives in hours need a speed; a_ISO and Lnmr need a lubricant, a temperature and e_C.`));
 }
 
+function renderLimits(lim) {
+  const box = $("limits");
+  if (!lim) {
+    box.replaceChildren(el("p", { class: "muted" }, "No catalogue rule covers this bearing (seed composites, slewing rings, models built in code): no limiting speed or minimum load."));
+    return;
+  }
+  const f = lim.flags || {};
+  const rpm = (w) => (w === null || w === undefined ? null : w * RPM);
+  const line = (name, value, unit, note, bad, id) => el("tr", {},
+    el("td", {}, name),
+    el("td", { class: bad ? "bad" : "", id, "data-value": value === null || value === undefined ? "" : String(value) }, value === null || value === undefined ? "—" : `${fmt(value, 4)} ${unit}`),
+    el("td", { class: "muted small wrap" }, note || ""));
+  const rows = [
+    line("limiting speed", rpm(lim.limiting_speed_rad_s), "r/min", lim.limiting_speed_source, f.above_limiting_speed, "limit-speed"),
+    line("n·d_m", lim.n_dm_mm_rpm, "mm·r/min", `lubrication: ${lim.lubrication || "—"}`, false),
+    line("thermal reference speed", rpm(lim.thermal_reference_speed_rad_s), "r/min", lim.thermal_reference_speed_note, f.above_reference_speed, "limit-reference"),
+    line("minimum load", lim.minimum_load_N, "N", lim.minimum_load_rule ? `${lim.minimum_load_rule}; load compared ${fmt(lim.load_compared_N, 4)} N` : "", f.below_minimum_load, "limit-minimum-load"),
+  ];
+  if (lim.seal) rows.push(line(`seal lip speed (${lim.seal})`, lim.seal_lip_speed_m_s, "m/s", lim.seal_lip_speed_limit_m_s ? `limit ${fmt(lim.seal_lip_speed_limit_m_s, 3)} m/s` : "", f.seal_lip_speed_exceeded));
+  box.replaceChildren(el("table", { id: "limits-table" }, el("tr", {}, el("th", {}, "limit"), el("th", {}, "value"), el("th", {}, "source / rule")), ...rows),
+    ...(lim.notes || []).map((n) => el("p", { class: "muted small" }, n)));
+}
+
+function renderSubsurface(c, settings) {
+  const rows = c.rows.filter((r) => r.subsurface && r.subsurface.max_von_mises_Pa);
+  $("subsurface-card").hidden = !rows.length;
+  if (!rows.length) { $("subsurface-out").replaceChildren(); return; }
+  const at = (v, z) => (v === null || v === undefined ? "—" : `${fmt(v / 1e6, 4)} @ ${fmt(z * 1e3, 3)}`);
+  const head = el("tr", {}, ...["row", "raceway", "p₀ [MPa]", "σ_vM max [MPa @ mm]", "σ_vM/p₀", "τ_max [MPa @ mm]", "τ₀ [MPa @ mm]", "case safety [@ mm]", "case depth needed [mm]"].map((h) => el("th", {}, h)));
+  const body = rows.map((r) => {
+    const s = r.subsurface;
+    const safety = s.case_safety === null ? "through-hardened" : `${fmt(s.case_safety, 3)} @ ${fmt(s.depth_case_safety_m * 1e3, 3)}${s.case_safety_zone ? ` (${s.case_safety_zone})` : ""}`;
+    const need = s.required_case_depth_m === null ? "—" : fmt(s.required_case_depth_m * 1e3, 3);
+    return el("tr", {}, el("td", {}, r.name), el("td", {}, `${s.raceway || "—"}${s.edge_slice ? " (edge slice)" : ""}`),
+      el("td", {}, fmt(s.max_pressure_Pa / 1e6, 4)), el("td", { id: `sub-vm-${r.name}`, "data-value": String(s.max_von_mises_Pa) }, at(s.max_von_mises_Pa, s.depth_max_von_mises_m)),
+      el("td", {}, fmt(s.von_mises_over_pressure, 3)), el("td", {}, at(s.max_tresca_Pa, s.depth_max_tresca_m)),
+      el("td", {}, at(s.max_orthogonal_shear_Pa, s.depth_max_orthogonal_shear_m)),
+      el("td", { class: s.case_safety !== null && s.case_safety < 1 ? "bad" : "" }, safety), el("td", {}, need));
+  });
+  const charts = rows.map((r) => {
+    const s = r.subsurface, z = s.depth_m.map((v) => v * 1e3);
+    const mpa = (k) => s[k].map((v) => (v === null ? null : v / 1e6));
+    return chart({
+      width: 460, height: 240, xlabel: "depth below the surface [mm]", ylabel: "stress [MPa]",
+      title: `${r.name}: ${s.raceway} raceway, p₀ = ${fmt(s.max_pressure_Pa / 1e6, 4)} MPa`,
+      series: [{ x: z, y: mpa("von_mises_Pa"), label: "von Mises" }, { x: z, y: mpa("tresca_Pa"), label: "Tresca" },
+        { x: z, y: mpa("orthogonal_shear_Pa"), label: "τ₀" }, { x: z, y: mpa("strength_Pa"), label: "strength" }],
+    });
+  });
+  const profile = settings ? `${settings.hardness_profile}${settings.case_depth_m ? `; effective case depth ${fmt(settings.case_depth_m * 1e3, 3)} mm` : ""}` : "";
+  $("subsurface-out").replaceChildren(el("p", { class: "small" }, profile),
+    el("div", { class: "table-wrap" }, el("table", { id: "subsurface-table" }, head, ...body)), el("div", { class: "plots" }, ...charts));
+}
+
+// ------------------------------------------------------------------------------------------ pages
+function showPage(name) {
+  if (!$(`page-${name}`)) name = "bearing";
+  for (const page of document.querySelectorAll("main.page")) page.hidden = page.id !== `page-${name}`;
+  for (const a of document.querySelectorAll("#tabs a")) a.classList.toggle("active", a.dataset.page === name);
+  if (location.hash !== `#${name}`) history.replaceState(null, "", `#${name}`);
+  if (PAGES[name] && PAGES[name].shown) PAGES[name].shown();
+}
+
+// An error of a workbench page: under the field it names (data-for), else in the page's own error line.
+function pageError(page, err, fallback) {
+  const box = $(`page-${page}`);
+  let target = box.querySelector(`.error[data-for="${CSS.escape(err.field || "")}"]`);
+  if (!target) target = $(fallback);
+  target.textContent = err.message;
+  const input = box.querySelector(`[data-field="${CSS.escape(err.field || "")}"]`);
+  if (input) input.classList.add("invalid");
+}
+
+function clearPageErrors(page) {
+  const box = $(`page-${page}`);
+  for (const e of box.querySelectorAll(".error")) e.textContent = "";
+  for (const i of box.querySelectorAll(".invalid")) i.classList.remove("invalid");
+}
+
+// A table of rows of cells; a cell is text, a Node, or {text, value, cls, id} (value: the exact SI number).
+function table(id, head, rows, cls = "data") {
+  const cell = (c, tag = "td") => {
+    if (c instanceof Node) return el(tag, {}, c);
+    if (c !== null && typeof c === "object") {
+      return el(tag, { class: c.cls || null, id: c.id || null, title: c.title || null, "data-value": c.value === undefined || c.value === null ? null : String(c.value) }, c.text);
+    }
+    return el(tag, {}, c === null || c === undefined ? "—" : String(c));
+  };
+  const t = $(id);
+  t.className = cls;
+  t.replaceChildren(el("thead", {}, el("tr", {}, ...head.map((h) => cell(h, "th")))), el("tbody", {}, ...rows.map((r) => el("tr", {}, ...r.map((c) => cell(c))))));
+  return t;
+}
+
+// A number cell: shown in display units, the exact SI value kept in data-value.
+function num(value, scale = 1, digits = 4, extra = {}) {
+  const v = value === null || value === undefined || Number.isNaN(value) ? null : value;
+  return { text: v === null ? "—" : fmt(v * scale, digits), value: v, ...extra };
+}
+
 // ------------------------------------------------------------------------------------------ sweep
 const SWEEP_OUTPUTS = {
   max_load_N: ["max element load [kN]", 1e-3, false],
@@ -501,16 +678,16 @@ const SWEEP_DEFAULTS = {
   speed: ["500 rpm", "6000 rpm", RPM, "rpm"], temperature: ["20 degC", "100 degC", 1, "°C"],
 };
 
-function fillSweepFactors(o) {
+function fillSweepFactors(o, free) {
   const fixed = { F_x: "u_x", F_y: "u_y", F_z: "u_z", M_x: "theta_x", M_y: "theta_y" };
-  const factors = Object.keys(SWEEP_DEFAULTS).filter((f) => !fixed[f] || o.free_dofs.includes(fixed[f]));
+  const factors = Object.keys(SWEEP_DEFAULTS).filter((f) => !fixed[f] || free.includes(fixed[f]));
   const options = [...factors.map((f) => el("option", { value: f }, f)),
     ...Object.keys(o.clearances).map((k) => el("option", { value: `geometry.${k}` }, k))];
   const sel = $("sweep-factor");
   const before = sel.value;
   sel.replaceChildren(...options);
   if ([...sel.options].some((op) => op.value === before)) sel.value = before;
-  sweepDefaults();
+  else sweepDefaults();
 }
 
 function sweepDefaults() {
@@ -594,6 +771,12 @@ async function start() {
   $("sweep-factor").addEventListener("change", sweepDefaults);
   $("sweep-run").addEventListener("click", runSweep);
   $("sweep-output").addEventListener("change", drawSweep);
+  $("subsurface").addEventListener("change", scheduleAnalyze);
+  for (const name of Object.keys(PAGES)) {
+    try { PAGES[name].start(state.meta); } catch (err) { console.error(name, err); }
+  }
+  window.addEventListener("hashchange", () => showPage(location.hash.slice(1)));
+  showPage(location.hash.slice(1) || "bearing");
   setStatus("choose an example, type a designation or upload a file", "ready");
 }
 
