@@ -2,12 +2,13 @@
 
 import json
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 from bearingkit.cli import app
 from bearingkit.errors import InputError
-from bearingkit.validation.registry import Case, failures, relative_error, run_case
+from bearingkit.validation.registry import Case, failures, relative_error, run_case, run_cases
 
 KEYS = {
     "id",
@@ -60,3 +61,12 @@ def test_validate_json_prefix_and_exit_code():
     assert all(set(r) == KEYS and r["passed"] for r in rows)
     none = runner.invoke(app, ["validate", "no-such-prefix"])
     assert none.exit_code == 2
+
+
+def test_every_case_serialises_to_plain_json_types():
+    """A case registered with numpy scalars (published value, a numpy bool from the comparison) is
+    written as plain JSON by ``validate --json`` (the ring cases once stopped it with a TypeError)."""
+    case = Case("numpy/scalar", "s", "q", "1", np.float64(2.0), lambda: np.float64(2.0), np.float64(0.01))
+    row = run_cases([case])[0].to_dict()
+    assert json.loads(json.dumps(row))["passed"] is True
+    assert all(type(v) in (str, float, bool, type(None)) for v in row.values()), row
