@@ -12,8 +12,9 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from bearingkit.catalogue import entries, estimate, internal, resolve
+from bearingkit.catalogue import entries, estimate, internal, parse, resolve
 from bearingkit.cli import app
+from bearingkit.errors import InputError
 
 NEW = {
     "self_aligning_ball": ("13", "23"),
@@ -127,7 +128,12 @@ def test_narrow_213_rows_meet_at_the_centre_plane():
 
 
 def test_thrust_spherical_roller_bearings_are_not_designations():
-    """bearingkit has no thrust spherical roller builder: 29412 is answered in one line."""
+    """bearingkit has no thrust spherical roller builder: 29412 is answered in one line that says what it
+    is (not the nearest spellings of another kind, 32912 …)."""
     result = CliRunner().invoke(app, ["rating", "29412", "--load", "Fa=10kN"])
     assert result.exit_code == 2 and "not a designation bearingkit knows" in result.stderr
+    assert "thrust spherical roller bearing (series 294)" in result.stderr and "32912" not in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+    for text in ("29230 E", "293/530", "29320"):
+        with pytest.raises(InputError, match=r"thrust spherical roller bearing \(series 29[23]\)"):
+            parse(text)

@@ -48,6 +48,10 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("self_aligning_ball", re.compile(r"^(1[23]|2[23])(\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d)(.*)$")),
 )
+#: Designations of kinds bearingkit has no builder for: pattern (group 1 = series) → what they are.
+_NOT_MODELLED: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"^(29[234])(\d\d|/\d+)"), "thrust spherical roller bearing"),
+)
 #: Prefixes before the basic designation: code → (the series it may precede (regex), meaning).
 PREFIXES = {
     "HCB": (r"7", "FAG hybrid spindle bearing (ceramic balls)"),
@@ -219,6 +223,15 @@ def parse(text: str) -> Designation:
         if m is None:
             continue
         return _parse_family(raw, family, prefix, m)
+    for pattern, kind in _NOT_MODELLED:
+        m = pattern.match(body)
+        if m is not None:
+            # say what it is rather than offer the nearest spellings of another kind (29412 → 32912)
+            raise InputError(
+                f"designation ({_shown(raw)}) names a {kind} (series {m.group(1)}): bearingkit has no model "
+                "of that kind, so it is not a designation bearingkit knows (its thrust kinds: thrust ball "
+                "511, 512, 513; cylindrical roller thrust 811, 812)"
+            )
     raise InputError(
         f"designation ({_shown(raw)}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, "
         "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 240, "
