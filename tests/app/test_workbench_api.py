@@ -364,6 +364,12 @@ def test_study_runs_in_the_background_stops_resumes_and_equals_the_cli(client, t
     job = r.json()
     key = job["id"]
     assert job["cases"] == 50 and job["state"] == "running"
+    # its files are in the server's temporary folder, under the name the server made
+    root = client.app.state.store.root.resolve()
+    folder = client.app.state.workbench.jobs.get(key).folder.resolve()
+    assert folder == root / "studies" / key and {"study.toml", "bearing.toml"} <= {
+        p.name for p in folder.iterdir()
+    }
     # the server answers while the study runs (its own process), and refuses a second study
     t0 = time.perf_counter()
     assert client.get("/api/meta").status_code == 200
@@ -493,3 +499,87 @@ def test_unknown_study_is_404_and_ids_are_not_paths(client):
     assert client.get("/api/study/0123456789abcdef").status_code == 404
     assert client.get("/api/study/..%2F..%2Fetc").status_code == 404
     assert client.post("/api/study/0123456789abcdef/resume").status_code == 404
+
+
+# ------------------------------------------------------------------------------------------ guards
+#: Every POST route of the workbench with a body it would accept (the same guards as the bearing page's).
+WORKBENCH_POSTS = {
+    "/api/catalogue/search": {"kind": "deep_groove"},
+    "/api/catalogue/select": {"radial": "5 kN", "speed": "3000 rpm", "life": "20000 h", "count": 1},
+    "/api/catalogue/compare": {"designations": ["6209"]},
+    "/api/system/open": {"system": "shaft", "source": {"kind": "example", "name": "shaft_countershaft.toml"}},
+    "/api/system/analyze": {
+        "system": "shaft",
+        "source": {"kind": "example", "name": "shaft_countershaft.toml"},
+    },
+    "/api/study/paths": {"subject": "bearing", "bearing": BASE},
+    "/api/study": STUDY,
+    "/api/duty": {"base": BASE, "bins": [{"values": {"F_x": "3 kN"}, "fraction": "1"}]},
+}
+
+
+@pytest.mark.parametrize("path", sorted(WORKBENCH_POSTS))
+def test_every_workbench_route_has_the_pages_guards(client, path):
+    from bearingkit.app.api import MAX_REQUEST_BYTES
+
+    jobs = client.app.state.workbench.jobs._jobs
+    before = set(jobs)
+    body = json.dumps(WORKBENCH_POSTS[path]).encode()
+    # DNS rebinding: a foreign Host header is refused before the route runs
+    r = client.post(path, content=body, headers={"host": "evil.example", "content-type": "application/json"})
+    assert r.status_code == 400
+    # a cross-site form can post text/plain without a preflight (CSRF): the JSON in it is not read
+    data = error_of(client.post(path, content=body, headers={"content-type": "text/plain"}), 422)
+    assert data["field"] == "source"
+    # a body above the cap, declared: 413 before it is read
+    big = body[:-1] + b', "x": "' + b"x" * MAX_REQUEST_BYTES + b'"}'
+    assert error_of(client.post(path, content=big, headers={"content-type": "application/json"}), 413)
+    assert set(jobs) == before  # nothing of the above started a study
+
+
+def test_a_study_without_the_studies_extra_is_one_line_and_starts_nothing(client, monkeypatch):
+    import sys
+
+    before = dict(client.app.state.workbench.jobs._jobs)
+    monkeypatch.setitem(sys.modules, "pymoo", None)  # as if `pip install bearingkit[app]` only
+    data = error_of(client.post("/api/study", json=STUDY), 400)
+    assert data["error"].startswith("a study of the web app needs the [studies] extra"), data
+    assert data["field"] == "study" and client.app.state.workbench.jobs._jobs == before
+
+
+def test_the_study_child_runs_under_the_apps_bounds(tmp_path, monkeypatch):
+    import subprocess
+
+    from bearingkit.app.workbench import jobs as jobs_module
+    from bearingkit.budget import MAX_WORK_ENV
+
+    seen = {}
+
+    class Finished:  # a child that ended at once, and what it was started with
+        pid = -1
+
+        def __init__(self, command, **kwargs):
+            seen.update(kwargs, command=command)
+
+        def wait(self, timeout=None):
+            return 0
+
+        def poll(self):
+            return 0
+
+    monkeypatch.setattr(subprocess, "Popen", Finished)
+    monkeypatch.delenv(MAX_WORK_ENV, raising=False)
+    jobs = jobs_module.Jobs(lambda: tmp_path, max_seconds=321.0)
+    job = jobs.start({"study.toml": "# a study\n"}, 1, "factorial", "bearing", ["s0"], ["x"])
+    assert seen["cwd"] == job.folder and job.folder.parent == tmp_path / "studies"
+    assert seen["command"][1:] == ["-m", "bearingkit.studies", "study.toml", "--out", "out", "--no-progress"]
+    # the study's work estimate may take one run of the app (a page cannot set the variable) …
+    assert seen["env"][MAX_WORK_ENV] == "321" and seen["env"]["BEARINGKIT_THREADS"] == "1"
+    # … unless the server was started with a limit of its own
+    monkeypatch.setenv(MAX_WORK_ENV, "50")
+    deadline = time.monotonic() + 10
+    while jobs.get(job.id).state == "running":
+        assert time.monotonic() < deadline
+        time.sleep(0.02)
+    jobs.start({"study.toml": "# a study\n"}, 1, "factorial", "bearing", ["s0"], ["x"])
+    assert seen["env"][MAX_WORK_ENV] == "50"

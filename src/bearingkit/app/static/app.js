@@ -108,7 +108,7 @@ function showError(err) {
   target.textContent = err.message;
   const input = document.querySelector(`[data-field="${CSS.escape(field)}"]`);
   if (input) input.classList.add("invalid");
-  setStatus("error: see the message next to the field", "error");
+  setStatus("bearing page: error, see the message next to the field", "error"); // the bar shows on every page
 }
 
 // ------------------------------------------------------------------------------------------ opening
@@ -243,7 +243,7 @@ async function analyze() {
   const seq = ++state.seq;
   $("status").dataset.requested = String(seq); // the page is settled when data-seq reaches it
   clearErrors();
-  setStatus("analysing…", "busy");
+  setStatus("analysing the bearing…", "busy");
   const t0 = performance.now();
   try {
     const data = await api("/api/analyze", request());
@@ -252,7 +252,7 @@ async function analyze() {
     state.shown = seq;
     $("status").dataset.seq = String(seq);
     const total = performance.now() - t0;
-    setStatus(`analysed in ${fmt(data.elapsed_ms, 2)} ms (page ${fmt(total, 2)} ms)`, "ready");
+    setStatus(`bearing analysed in ${fmt(data.elapsed_ms, 2)} ms (page ${fmt(total, 2)} ms)`, "ready");
   } catch (err) {
     if (seq !== state.seq) return;
     $("status").dataset.seq = String(seq);

@@ -11,9 +11,11 @@ command line's own runner and Parquet store — in a child process, so:
   store's lock dies with its holder), and **resume** runs the same command with ``--resume``, which
   computes only the missing chunks;
 - it is bounded: one job runs at a time (a second is refused until it ends), a run is stopped after
-  :data:`MAX_RUN_SECONDS` (resumable), the case count was capped when the study was made, the child
-  gets one solver thread (the page keeps a core), and at most :data:`MAX_JOBS` job folders are kept
-  (the oldest finished one is removed); they all go with the server's temporary folder.
+  :data:`MAX_RUN_SECONDS` (resumable) and the study's own work estimate refuses, before any case, a
+  study estimated above that (``BEARINGKIT_MAX_WORK_S``, :mod:`bearingkit.budget`), the case count
+  was capped when the study was made, the child gets one solver thread (the page keeps a core), and
+  at most :data:`MAX_JOBS` job folders are kept (the oldest finished one is removed); they all go
+  with the server's temporary folder.
 
 The download is the job folder as a zip: the study file, the subject, the results, tables and plots,
 the chunks and the run's log; ``bearingkit study study.toml --out OUT`` in the unpacked folder gives the
@@ -37,6 +39,7 @@ import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from bearingkit.budget import MAX_WORK_ENV
 from bearingkit.errors import InputError
 
 __all__ = ["FIGURES", "MAX_JOBS", "MAX_RUN_SECONDS", "Busy", "Job", "Jobs"]
@@ -214,6 +217,10 @@ class Jobs:
             command.append("--resume")
         env = {**os.environ, "BEARINGKIT_THREADS": "1", "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
         env["MPLBACKEND"] = "Agg"
+        # the study's own work estimate (bearingkit.budget) may take what one run of the app may take: the
+        # app's bounds (cases, seconds per run) govern, not the command line's default of 120 s, which a
+        # page cannot raise (a limit the server was started with stays)
+        env.setdefault(MAX_WORK_ENV, f"{self.max_seconds:g}")
         log = (job.folder / "run.log").open("ab")
         job.state, job.message, job.stop_asked = "running", "", False
         job.started, job.finished = time.time(), 0.0

@@ -191,7 +191,11 @@ def register(app: FastAPI, store, compute, analyze_document) -> Workbench:
 
     @app.post("/api/study")
     def study_start(request: studies.StudyRequest):
+        from bearingkit.extras import check
+
         with on_field("study", _study_field):
+            # the child runs `bearingkit study` (Parquet store, pymoo): one line before anything is written
+            check("studies", "a study of the web app")
             with compute:
                 made = studies.study_files(request)
             try:
