@@ -278,6 +278,9 @@ class QuasiStaticResult:
                 "axial_load_N": float(row_force[2]),
                 "radial_load_N": float(np.hypot(*row_force[:2])),
             }
+            contacts = _contacts(r, c)
+            if contacts is not None:
+                entry["contacts"] = contacts
             out["rows"].append(entry)
         out["references"] = list(self.references)
         return out
@@ -318,3 +321,24 @@ class QuasiStaticResult:
                 )
             )
         return pd.concat(frames, ignore_index=True)
+
+
+def _contacts(state: RowState, c: int) -> dict | None:
+    """Every contact of every element of a row whose elements touch a race at more than one point
+    (four-point balls: ``outer_upper``, ``outer_lower``, ``inner_lower``, ``inner_upper``), else None.
+
+    ``loads_N`` and ``contact_angle_rad`` of the row entry give one contact per element (the most
+    loaded); a four-point ball under a radial load or a moment carries on both diagonals, so only the
+    contacts here add up to the row's load: the inner ring's contacts of element j push it along
+    (cos α cos ψ_j, cos α sin ψ_j, sin α) with load Q (docs/input-format.md, "Output").
+    """
+    extras = state.extras or {}
+    if "contact_load" not in extras or "contact_angle_all" not in extras:
+        return None
+    from bearingkit.rows.ball.four_point import CONTACTS
+
+    return {
+        "names": list(CONTACTS),
+        "loads_N": np.asarray(extras["contact_load"])[c].tolist(),
+        "contact_angle_rad": np.asarray(extras["contact_angle_all"])[c].tolist(),
+    }
