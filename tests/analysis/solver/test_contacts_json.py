@@ -92,3 +92,19 @@ def test_a_crossed_roller_row_sums_from_its_element_loads():
     )
     assert np.allclose(total, (1e4, 0.0, 1e5), rtol=0, atol=1e-9 * 1e5), total
     assert (np.sign(a[q > 0]) > 0).any() and (np.sign(a[q > 0]) < 0).any()  # both orientations carry
+
+
+def test_a_threaded_roller_gives_each_tooth_flank():
+    """The PTRB prototype under F_r = 3 kN, F_a = 5 kN and M = 20 N·m loads both flanks of the teeth:
+    the sum over ``loads_N`` (every flank at +α) overstates the axial force; ``contacts`` (each tooth,
+    flank σ = ±1 at ±α) sums to the applied force."""
+    case = _case("ptrb_prototype.toml", {"F_x": "3 kN", "F_z": "5 kN", "M_y": "20 N*m"})
+    (row,) = case["rows"]
+    contacts = row["contacts"]
+    assert set(contacts["ring"]) == {"inner"} and contacts["names"][:2] == ["tooth_1_plus", "tooth_1_minus"]
+    q, a = np.asarray(contacts["loads_N"]), np.asarray(contacts["contact_angle_rad"])
+    assert np.allclose(q.sum(axis=1), row["loads_N"], rtol=1e-12)  # loads_N: a roller's teeth together
+    assert (q[:, 1::2] > 0).any() and np.allclose(a[:, 0::2], -a[:, 1::2])
+    psi = np.asarray(row["azimuth_rad"])[:, None]
+    total = [(q * np.cos(a) * np.cos(psi)).sum(), (q * np.cos(a) * np.sin(psi)).sum(), (q * np.sin(a)).sum()]
+    assert np.allclose(total, (3000.0, 0.0, 5000.0), rtol=0, atol=1e-9 * 5000.0), total
