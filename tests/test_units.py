@@ -7,7 +7,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from bearingkit.errors import InputError
-from bearingkit.units import COMMON_UNITS, parse
+from bearingkit.units import ABSOLUTE_ZERO_C, COMMON_UNITS, parse
 
 
 @pytest.mark.parametrize(
@@ -204,9 +204,19 @@ _NUMBERS = (0.0, 1.0, -1.0, 2.0, 0.5, 3.7, -12.25, 25.0, 60.0, 1e-6, 123456.789,
     [(dim, u) for dim, table in COMMON_UNITS.items() for u in table],
 )
 def test_common_units_are_pints_conversion_bit_for_bit(dimension, unit_text):
-    """Issue 42: the units parsed without pint give exactly what pint gives (same float, every number)."""
+    """Issue 42: the units parsed without pint give exactly what pint gives (same float, every number);
+    a temperature below absolute zero is refused on both paths (issue 41)."""
     for x in _NUMBERS:
-        assert parse(f"{x!r} {unit_text}", dimension, "f") == _through_pint(x, unit_text, dimension), x
+        _same_as_pint(x, unit_text, dimension)
+
+
+def _same_as_pint(x: float, unit_text: str, dimension: str) -> None:
+    expected = _through_pint(x, unit_text, dimension)
+    if dimension == "temperature" and expected < ABSOLUTE_ZERO_C:
+        with pytest.raises(InputError, match="below absolute zero"):
+            parse(f"{x!r} {unit_text}", dimension, "f")
+        return
+    assert parse(f"{x!r} {unit_text}", dimension, "f") == expected, x
 
 
 @given(st.floats(min_value=-1e6, max_value=1e6, allow_nan=False))
@@ -214,7 +224,7 @@ def test_common_units_agree_with_pint_for_any_number(x):
     pairs = (("force", "kN"), ("length", "mm"), ("angular_velocity", "rpm"), ("temperature", "K"),
              ("angle", "deg"), ("length", "in"))  # fmt: skip
     for dimension, unit_text in pairs:
-        assert parse(f"{x!r} {unit_text}", dimension, "f") == _through_pint(x, unit_text, dimension)
+        _same_as_pint(x, unit_text, dimension)
 
 
 def test_common_units_do_not_load_pint_and_the_rest_still_do():

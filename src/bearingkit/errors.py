@@ -177,3 +177,17 @@ class ConvergenceError(RuntimeError):
     def __init__(self, message: str, result=None):
         super().__init__(message)
         self.result = result
+
+
+class RunInterrupted(RuntimeError):
+    """A long run stopped by its environment, not by its input or a bug: a worker process killed (by
+    a person, or the system when out of memory) or a full disk. What was finished is kept; the
+    message (one line) says what happened and how to continue (``--resume``). The command line exits
+    with :data:`RUN_INTERRUPTED_EXIT`."""
+
+    def __init__(self, message: str = ""):
+        super().__init__(one_line(message))
+
+
+#: Exit code of a run that stopped part-way and can be resumed (sysexits.h EX_TEMPFAIL: try again).
+RUN_INTERRUPTED_EXIT = 75

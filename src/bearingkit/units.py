@@ -239,7 +239,8 @@ def parse(value, dimension: str, field: str) -> float:
         )
     common = COMMON_UNITS.get(dimension, {}).get(unit_text)
     if common is not None:  # pint's own conversion, without loading pint
-        return _remember(value, dimension, _finite(number * common[0] + common[1], field, value))
+        out = _finite(number * common[0] + common[1], field, value)
+        return _remember(value, dimension, _above_absolute_zero(out, dimension, field, value))
     unit = _unit(unit_text)
     if isinstance(unit, str):
         raise InputError(
@@ -261,12 +262,18 @@ def parse(value, dimension: str, field: str) -> float:
     except OverflowError:
         raise InputError(f"{field} ({quote(value)}) must be finite (it overflows in {target})") from None
     out = _finite(out, field, value)
+    return _remember(value, dimension, _above_absolute_zero(out, dimension, field, value))
+
+
+def _above_absolute_zero(out: float, dimension: str, field: str, value) -> float:
+    """``out`` [°C for a temperature], refused below absolute zero (both conversion paths: the common
+    units without pint, and pint's)."""
     if dimension == "temperature" and out < ABSOLUTE_ZERO_C:
         raise InputError(
             f"{field} ({quote(value)}) lies below absolute zero ({ABSOLUTE_ZERO_C} degC); expected an "
             "operating temperature such as '60 degC'"
         )
-    return _remember(value, dimension, out)
+    return out
 
 
 #: Absolute zero [°C]: the lowest temperature a ``temperature`` value may have (a value below it

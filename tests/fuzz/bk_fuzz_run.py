@@ -12,7 +12,7 @@ past ``--hang`` seconds (a hang), then starts a fresh one.
 Finding classes (:data:`FINDINGS`), each checked on every run:
 
 - ``traceback``: an exception escaped the command (or it printed a traceback, or exited 70, the code of
-  bearingkit's own "internal error" line), or an exit code other than 0, 1, 2;
+  bearingkit's own "internal error" line), or an exit code other than 0, 1, 2, 75 (:data:`EXIT_CODES`);
 - ``hang``: the mutant ran past ``--hang`` seconds (30 by default);
 - ``json``: ``--json`` given, exit code 0 or 1, and stdout is not strict JSON (NaN and Infinity refused);
 - ``message``: a failure (exit code ≠ 0) whose stderr is not exactly one line ``error: …`` of at most
@@ -53,6 +53,9 @@ import bk_fuzz_inputs as inputs  # noqa: E402
 FINDINGS = ("traceback", "hang", "json", "message", "stray", "warning", "server")
 #: Longest failure line [characters]: ``error: `` + a shortened file name + a 300-character message.
 MAX_MESSAGE = 2000
+#: Exit codes of a command that kept its promises: done, a doubtful result, refused input, and a run
+#: stopped part-way by its environment (a killed worker, a full disk; resumable: 75).
+EXIT_CODES = (0, 1, 2, 75)
 #: Seconds past which a mutant is a hang.
 HANG_SECONDS = 30.0
 #: Relative weights of the commands (others 1): those that compute a lot for any valid input are
@@ -322,7 +325,7 @@ def check_result(res, argv, caught=()) -> list:
     if exc is not None and not isinstance(exc, SystemExit):
         where = "".join(traceback.format_exception(exc)[-2:])[-400:]
         problems.append(("traceback", f"{type(exc).__name__}: {str(exc)[:200]} at {where}"))
-    elif res.exit_code not in (0, 1, 2):
+    elif res.exit_code not in EXIT_CODES:
         problems.append(("traceback", f"exit code {res.exit_code}: {res.stderr[-300:]!r}"))
     out, err = res.stdout, res.stderr
     if "Traceback (most recent call last)" in out + err:

@@ -95,7 +95,9 @@ def test_a_second_writer_is_refused_naming_the_holder(tmp_path, slow, capsys):
 def test_a_second_writer_in_the_same_process_is_refused_and_the_first_finishes(tmp_path, slow, monkeypatch):
     """Two runs side by side (threads of one process, as a web app would start them)."""
     out = tmp_path / "X"
-    (tmp_path / "a.toml").write_text(_toml("study_a", range(8)))
+    # 12 chunks of 0.3 s: a is still running when b has read, planned and probed its first cases
+    # (issue 41: three evaluator calls in b's own process before it asks for the lock)
+    (tmp_path / "a.toml").write_text(_toml("study_a", range(24)))
     (tmp_path / "b.toml").write_text(_toml("study_b", range(100, 108)))
     monkeypatch.setenv("BK_SLEEP", "0.3")
     done = {}
@@ -111,7 +113,7 @@ def test_a_second_writer_in_the_same_process_is_refused_and_the_first_finishes(t
     with pytest.raises(InputError, match=rf"is in use by study 'study_a' \(pid {os.getpid()} on host "):
         run_cli(tmp_path / "b.toml", out=out, progress=False, echo=lambda s: None)
     thread.join(60)
-    assert list(pd.read_csv(out / "results.csv")["y"]) == [x * x + 1.0 for x in range(8)]
+    assert list(pd.read_csv(out / "results.csv")["y"]) == [x * x + 1.0 for x in range(24)]
     assert json.loads((out / "summary.json").read_text())["study"] == "study_a"
     assert {s["fingerprint"] for s in _stamps(out)} == {_fingerprint(out)}
 

@@ -21,7 +21,14 @@ from rich.console import Console
 from typer import _click as click
 from typer.core import TyperGroup
 
-from bearingkit.errors import InputError, error_line, one_line, os_error_text
+from bearingkit.errors import (
+    RUN_INTERRUPTED_EXIT,
+    InputError,
+    RunInterrupted,
+    error_line,
+    one_line,
+    os_error_text,
+)
 
 # Piped output (CI logs, files) gets a wide console so table ids are not cut.
 console = Console() if sys.stdout.isatty() else Console(width=200)
@@ -68,7 +75,9 @@ def one_line_errors(fn):
     """Decorator for commands: every failure is one line ``error: FILE: …`` on stderr.
 
     An InputError exits with code 2; an operating-system error (a full disk, a path the system
-    refuses) names the path and the system's reason, exit code 2; anything else is a bug of
+    refuses) names the path and the system's reason, exit code 2; a run stopped part-way by its
+    environment (:class:`~bearingkit.errors.RunInterrupted`: a killed worker, a full disk during a
+    study) says what is kept and how to resume, exit code 75; anything else is a bug of
     bearingkit: one line naming the exception type, exit code :data:`INTERNAL_ERROR_EXIT` (the
     traceback only with ``BEARINGKIT_TRACEBACK=1``). A user never sees a traceback.
     """
@@ -84,6 +93,8 @@ def one_line_errors(fn):
             _fail(str(exc), source=file)
         except OSError as exc:
             _fail(os_error_text(exc), source=file)
+        except RunInterrupted as exc:  # a killed worker, a full disk mid-study: resumable, not a bug
+            _fail(str(exc), RUN_INTERRUPTED_EXIT, source=file)
         except Exception as exc:
             if os.environ.get(TRACEBACK_ENV):
                 raise

@@ -26,7 +26,16 @@ import re
 import sys
 from pathlib import Path
 
-from bearingkit.errors import InputError, error_line, quote
+from bearingkit.errors import (
+    RUN_INTERRUPTED_EXIT,
+    SHORT_SOURCE_CHARS,
+    InputError,
+    RunInterrupted,
+    error_line,
+    os_reason,
+    quote,
+    shown,
+)
 
 
 def run_cli(
@@ -68,6 +77,8 @@ def run_cli(
     checked before ``out`` is created: a refused study leaves no folder. The final files are published
     as one set (:func:`bearingkit.studies.run.publish.publish`).
     """
+    from concurrent.futures.process import BrokenProcessPool
+
     from bearingkit.studies import evaluators
     from bearingkit.studies.definition.load import load_study
     from bearingkit.studies.run.cases import plan_study
@@ -91,9 +102,11 @@ def run_cli(
         executor = make_executor(workers=workers, scheduler=scheduler)
         try:
             res = run_study(d, executor=executor, store=store, resume=resume, progress=progress, plan=plan)
+            publish(out, _writers(res, plan.fingerprint, echo))
+        except (BrokenProcessPool, OSError) as exc:
+            raise _interrupted(exc, store, out) from exc
         finally:
             executor.close()
-        publish(out, _writers(res, plan.fingerprint, echo))
     except BaseException:
         store.discard_if_unused()
         raise
@@ -107,6 +120,23 @@ def run_cli(
     if s.get("discarded"):
         echo(f"{s['discarded']} chunk file(s) in {out} were not this study's (or damaged): recomputed")
     return res
+
+
+def _interrupted(exc: BaseException, store, out: Path) -> RunInterrupted:
+    """A run stopped by a killed worker process or an operating-system error (a full disk) → one line
+    saying what happened, what is kept and how to continue (the finished chunks stay valid: each was
+    written whole, stamped with the study's fingerprint). The system's reason is given without the
+    path of the temporary file it names: the line must keep room for the folder and the remedy."""
+    if not isinstance(exc, OSError):  # a process pool broken by a worker's death
+        what = "a worker process ended before its chunk was done (killed, or out of memory)"
+    else:
+        what = os_reason(exc)
+    kept = len(store.finished_files())
+    return RunInterrupted(
+        f"the study stopped: {what}; {kept} finished chunk{'s' if kept != 1 else ''} "
+        f"{'are' if kept != 1 else 'is'} kept in {shown(out, SHORT_SOURCE_CHARS)}: run the same command "
+        "again with --resume"
+    )
 
 
 def check_workers(workers) -> None:
@@ -341,6 +371,9 @@ def main(argv=None) -> int:
     except InputError as exc:
         print(error_line(exc, a.file), file=sys.stderr)
         return 2
+    except RunInterrupted as exc:
+        print(error_line(exc, a.file), file=sys.stderr)
+        return RUN_INTERRUPTED_EXIT
     return 0
 
 

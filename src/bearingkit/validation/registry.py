@@ -267,7 +267,8 @@ def run_case(case: Case) -> CaseResult:
     if not math.isfinite(computed):
         return CaseResult(case, computed, math.nan, False, "non-finite result")
     err = relative_error(computed, case.published)
-    return CaseResult(case, computed, err, abs(err) <= case.tolerance)
+    # bool(): a numpy published value or tolerance makes a numpy bool, which `validate --json` cannot write
+    return CaseResult(case, computed, float(err), bool(abs(err) <= case.tolerance))
 
 
 def run_cases(cases: Iterable[Case]) -> list[CaseResult]:

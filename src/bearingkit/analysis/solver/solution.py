@@ -278,6 +278,9 @@ class QuasiStaticResult:
                 "axial_load_N": float(row_force[2]),
                 "radial_load_N": float(np.hypot(*row_force[:2])),
             }
+            contacts = _contacts(r, c)
+            if contacts is not None:
+                entry["contacts"] = contacts
             out["rows"].append(entry)
         out["references"] = list(self.references)
         return out
@@ -318,3 +321,39 @@ class QuasiStaticResult:
                 )
             )
         return pd.concat(frames, ignore_index=True)
+
+
+def _contacts(state: RowState, c: int) -> dict | None:
+    """Every contact of every element of a row whose elements touch the inner ring at more than one
+    point, else None: a four-point ball (``outer_upper``, ``outer_lower``, ``inner_lower``,
+    ``inner_upper``) and a threaded roller (each engaged tooth on both flanks, ``tooth_1_plus``,
+    ``tooth_1_minus`` …; the flank σ = +1 at +α, σ = −1 at −α).
+
+    ``loads_N`` and ``contact_angle_rad`` of the row entry give one value per element (a four-point
+    ball's most loaded contact, a threaded roller's sum over its teeth at +α); under a radial load or
+    a moment both diagonals or both flanks carry, so only the contacts here add up to the row's load:
+    the inner ring's contacts (``ring``) of element j push it along (cos α cos ψ_j, cos α sin ψ_j,
+    sin α) with load Q (docs/input-format.md, "Output").
+    """
+    extras = state.extras or {}
+    if "contact_load" in extras and "contact_angle_all" in extras:
+        from bearingkit.rows.ball.four_point import CONTACTS
+
+        return {
+            "names": list(CONTACTS),
+            "ring": [n.split("_")[0] for n in CONTACTS],
+            "loads_N": np.asarray(extras["contact_load"])[c].tolist(),
+            "contact_angle_rad": np.asarray(extras["contact_angle_all"])[c].tolist(),
+        }
+    if "tooth_load" in extras:
+        teeth = np.asarray(extras["tooth_load"])[c]  # (Z, n, 2): flank σ = +1, −1
+        z, n, _ = teeth.shape
+        alpha = np.broadcast_to(np.asarray(state.contact_angle), np.shape(state.load))[c][:, None, None]
+        angle = np.broadcast_to(alpha * np.array([1.0, -1.0]), teeth.shape)
+        return {
+            "names": [f"tooth_{i + 1}_{side}" for i in range(n) for side in ("plus", "minus")],
+            "ring": ["inner"] * (2 * n),
+            "loads_N": teeth.reshape(z, 2 * n).tolist(),
+            "contact_angle_rad": angle.reshape(z, 2 * n).tolist(),
+        }
+    return None
