@@ -267,7 +267,12 @@ def structure_html(case: dict, number: str) -> str:
     caption = (
         "Rigid rings (grey) against the rings and supports of [structure] (red): the rings' deflection, "
         "twist and bending moments come from the same coupled solution "
-        f"(Newton, {how['iterations']} iterations, {'converged' if flex['converged'] else 'NOT converged'})."
+        f"(Newton, {how['iterations']} iterations, {'converged' if flex['converged'] else 'NOT converged'}"
+        + (
+            f"; the element forces balance the load to {max(how['force_balance'], 1e-16):.0e} of it)."
+            if how.get("force_balance") is not None
+            else ")."
+        )
     )
     return (
         f'<section data-section="structure"><h4>{number}. In its structure: rigid → flexible rings</h4>'
