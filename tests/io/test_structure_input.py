@@ -48,6 +48,8 @@ def test_cli_shows_the_flexible_distribution_beside_the_rigid_one():
     ring = case["structure"]["rings"][0]
     assert len(ring["radial_deflection_m"]) == 72 and ring["max_fibre_stress_Pa"] > 0
     assert case["change"]["static_safety_flexible"] > case["change"]["static_safety_rigid"]
+    assert 0 <= case["coupling"]["force_balance"] <= 1e-9  # Σ element forces = the load
+    assert "equilibrium" in out.output
 
 
 def test_geometry_ring_on_another_bearing_points_to_structure(tmp_path):

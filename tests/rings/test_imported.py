@@ -109,3 +109,22 @@ def test_node_element_mapping():
         imp.compliance(PSI + 0.1, R_E, Z_E)  # a third of the element pitch off
     with pytest.raises(InputError, match="dofs"):
         ImportedStructure(k, nodes, ("ux", "uy", "uq"))
+
+
+def test_in_plane_dofs_count_the_plane_rigid_modes_only():
+    """u_x, u_y of nodes in a plane show three rigid motions (u_x, u_y, rot_z); u_z, rot_x and rot_y
+    vanish there and are no modes: grounded springs (a supported structure) are accepted, a free plane
+    truss has exactly three modes (refused unless free, then its compliance leaves them out)."""
+    nodes = np.stack([R_E * np.cos(PSI), R_E * np.sin(PSI), np.zeros(20)], -1)
+    springs = ImportedStructure(1e9 * np.eye(40), nodes, ("ux", "uy"))
+    assert springs.node_compliance() == pytest.approx(1e-9 * np.eye(40))
+    plane = _truss(nodes).reshape(20, 3, 20, 3)[:, :2, :, :2].reshape(40, 40)
+    with pytest.raises(InputError, match="3 rigid-body modes") as err:
+        ImportedStructure(plane, nodes, ("ux", "uy"))
+    assert "set free = true" in str(err.value)
+    imp = ImportedStructure(plane, nodes, ("ux", "uy"), free=True)
+    c = imp.node_compliance()
+    assert np.abs(c @ imp.rigid_motions()).max() <= 1e-8 * np.abs(c).max()
+    # one spring to the ground holds one of them: 2 modes, neither supported nor free
+    with pytest.raises(InputError, match=r"2 rigid-body modes: .* free \(3 with these DOFs"):
+        ImportedStructure(plane + np.diag(np.r_[1e8, np.zeros(39)]), nodes, ("ux", "uy"))

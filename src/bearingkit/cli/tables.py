@@ -235,6 +235,9 @@ def structure_table(f: dict) -> Table:
     ring's largest deflection and fibre stress."""
     how = f["coupling"]
     status = "converged" if f["converged"] else "NOT converged"
+    balance = how.get("force_balance")
+    if balance is not None:  # Σ element forces against the load: the coupled solution's equilibrium
+        status += f", equilibrium {max(balance, 1e-16):.0e}"
     title = (
         f"case {f['case']!r} in its structure: rigid → flexible rings "
         f"({how['iterations']} Newton its, {status})"

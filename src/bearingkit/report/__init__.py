@@ -170,11 +170,10 @@ def render_analysis(analysis, path, *, title=None, notes=()) -> Path:
     from bearingkit.report.ring_plots import structure_html
 
     extras = [
-        (
-            lambda number, c=c, i=i: (
-                operating_html(c, None if lub is None else lub.to_dict(i), number) + structure_html(c, number)
-            )
-        )
+        [
+            lambda number, c=c, i=i: operating_html(c, None if lub is None else lub.to_dict(i), number),
+            *([lambda number, c=c: structure_html(c, number)] if analysis.flexible is not None else []),
+        ]
         for i, c in enumerate(statics)
     ]
     html = build_report(

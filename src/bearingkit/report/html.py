@@ -266,8 +266,8 @@ def _case_html(
     if rating is not None:
         parts.append(_rating_html(rating, case, f"{num}.{k}"))
         k += 1
-    if extra:
-        parts.append(extra(f"{num}.{k}"))
+    for part in extra if isinstance(extra, list | tuple) else [extra] if extra else []:
+        parts.append(part(f"{num}.{k}"))  # each extra part its own number
         k += 1
     parts.append(f"<h4>{num}.{k}. Warnings</h4>")
     parts.append(_warning_list(warnings[case]))
@@ -379,8 +379,9 @@ def build_report(
     warnings : list of list of str, optional
         Per case, the warnings to show (those of :attr:`bearingkit.pipeline.Analysis.warnings`);
         default: non-convergence and the rating's warnings (:func:`case_warnings`).
-    case_extras : list of callables, optional
-        Per case, ``f(section_number) -> html`` of further sections (the operating conditions).
+    case_extras : list of callables (or of lists of them), optional
+        Per case, ``f(section_number) -> html`` of further sections, each numbered in turn (the operating
+        conditions, the bearing in its structure).
     duty_cycle : dict, optional
         The duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): a section with
         every bin's life and the combined life, after the load cases.

@@ -196,16 +196,17 @@ def structure_figure(case: dict) -> Figure:
         ax_ring.plot(theta, np.full_like(theta, radius), ":", color=colour, lw=0.8)
         ax_ring.plot(theta, radius + scale * w, "-", color=colour, label=f"{ring['side']} ring")
         deg, order = _unrolled(theta[:-1])
-        ax_axial.plot(deg, np.asarray(ring["axial_deflection_m"])[order] * 1e6, "-", color=colour,
-                      label=f"{ring['side']}: axial u [µm]")  # fmt: skip
-        ax_axial.plot(deg, np.asarray(ring["twist_rad"])[order] * 1e6, "--", color=colour,
+        # rounded to 1e-6 µm / µrad: a ring held in its plane moves by round-off only (1e-13), drawn as 0
+        ax_axial.plot(deg, np.round(np.asarray(ring["axial_deflection_m"])[order] * 1e6, 6), "-",
+                      color=colour, label=f"{ring['side']}: axial u [µm]")  # fmt: skip
+        ax_axial.plot(deg, np.round(np.asarray(ring["twist_rad"])[order] * 1e6, 6), "--", color=colour,
                       label=f"{ring['side']}: twist φ [µrad]")  # fmt: skip
         ax_moment.plot(deg, np.asarray(ring["bending_moment_Nm"])[order], "-", color=colour,
                        label=f"{ring['side']}: in plane")  # fmt: skip
         ax_moment.plot(deg, np.asarray(ring["out_of_plane_moment_Nm"])[order], "--", color=colour,
                        label=f"{ring['side']}: out of plane")  # fmt: skip
     ax_ring.set_yticklabels([])
-    ax_ring.set_title(f"rings deformed in their plane (largest radial deflection, {biggest * 1e6:.3g} µm, "
+    ax_ring.set_title(f"rings deformed in their plane\n(largest radial deflection {biggest * 1e6:.3g} µm "
                       "drawn as 10 % of the radius)", fontsize=9)  # fmt: skip
     ax_ring.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.1, -0.15))
     rigid_rows = {r["name"]: r for r in case["rows"]}
@@ -266,10 +267,15 @@ def structure_html(case: dict, number: str) -> str:
     caption = (
         "Rigid rings (grey) against the rings and supports of [structure] (red): the rings' deflection, "
         "twist and bending moments come from the same coupled solution "
-        f"(Newton, {how['iterations']} iterations, {'converged' if flex['converged'] else 'NOT converged'})."
+        f"(Newton, {how['iterations']} iterations, {'converged' if flex['converged'] else 'NOT converged'}"
+        + (
+            f"; the element forces balance the load to {max(how['force_balance'], 1e-16):.0e} of it)."
+            if how.get("force_balance") is not None
+            else ")."
+        )
     )
     return (
-        f'<section data-section="structure"><h3>{number} In its structure: rigid → flexible rings</h3>'
+        f'<section data-section="structure"><h4>{number}. In its structure: rigid → flexible rings</h4>'
         + _table(
             [
                 "row",

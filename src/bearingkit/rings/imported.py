@@ -17,8 +17,9 @@ see the translations only).
 
 - the matrix is square and its size is the number of nodes times the DOFs per node;
 - finite and symmetric (|K_ij − K_ji| ≤ :data:`SYMMETRY_TOLERANCE` of the largest entry);
-- rigid-body modes: the six rigid motions built from the node coordinates (K R ≈ 0 is a mode): a
-  stiffness of a supported structure has none, one of a free structure six (accepted only when
+- rigid-body modes: the six rigid motions built from the node coordinates, as far as the DOFs show
+  them (u_x, u_y of nodes in a plane show three: u_x, u_y, rot_z), K R ≈ 0 being a mode: a
+  stiffness of a supported structure has none, one of a free structure all of them (accepted only when
   ``free`` says so; the structure's rigid motion then merges with the bearing's, the loads' rigid
   part being reacted in proportion to the modes: the pseudo-inverse); any other count is refused;
 - positive definiteness on the complement of those modes (a mechanism or a negative eigenvalue is
@@ -74,7 +75,8 @@ class ImportedStructure:
     rows : tuple of str or None
         Rows whose elements the nodes carry (None: every row).
     free : bool
-        A stiffness with six rigid-body modes (a free structure) is accepted (module docstring).
+        A stiffness with every rigid-body mode its DOFs show (a free structure) is accepted (module
+        docstring).
     stiffness_scale : float
         Multiplies the stiffness (a study factor; np.inf: rigid).
     source : str
@@ -166,9 +168,13 @@ class ImportedStructure:
                     src, f"compliance is singular ({int(zero.sum())} zero eigenvalues): it must be invertible"
                 )
             return
-        r = self.rigid_motions()
-        norm = np.linalg.norm(k) * np.linalg.norm(r, axis=0)
-        rigid = int(np.count_nonzero(np.linalg.norm(k @ r, axis=0) <= RIGID_TOLERANCE * norm))
+        # The rigid motions the DOFs can show: with u_x, u_y of nodes in a plane only the plane's three
+        # (u_x, u_y, rot_z) are there — u_z, rot_x, rot_y vanish on these DOFs and are no modes of K.
+        u, sv, _ = np.linalg.svd(self.rigid_motions(), full_matrices=False)
+        basis = u[:, sv > RIGID_TOLERANCE * sv.max()]
+        possible = basis.shape[1]
+        kq = np.linalg.svd(k @ basis, compute_uv=False)
+        rigid = int(np.count_nonzero(kq <= RIGID_TOLERANCE * np.linalg.norm(k, 2)))
         n_zero = int(zero.sum())
         if n_zero > rigid:
             _fail(
@@ -176,17 +182,17 @@ class ImportedStructure:
                 f"stiffness is singular: {n_zero} zero eigenvalues, {rigid} of them rigid-body modes — the "
                 "rest are mechanisms (an unconnected or unsupported node?)",
             )
-        if rigid not in (0, 6):
+        if rigid not in (0, possible):
             _fail(
                 src,
-                f"stiffness has {rigid} rigid-body modes: a structure is either supported (0) or free (6); "
-                "check its boundary conditions",
+                f"stiffness has {rigid} rigid-body modes: a structure is either supported (0) or free "
+                f"({possible} with these DOFs and nodes); check its boundary conditions",
             )
-        if rigid == 6 and not self.free:
+        if rigid and not self.free:
             _fail(
                 src,
-                "stiffness has 6 rigid-body modes (a free structure): export it with its supports, or set "
-                "free = true to let the bearing's displacement take the rigid motion",
+                f"stiffness has {rigid} rigid-body modes (a free structure): export it with its supports, or "
+                "set free = true to let the bearing's displacement take the rigid motion",
             )
 
     # -- compliance ----------------------------------------------------------------------------------

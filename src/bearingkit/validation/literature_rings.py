@@ -17,6 +17,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from bearingkit.physics.structure import curved_ring as cr
@@ -73,7 +75,7 @@ register(
         source=_ROARK + ", case 2: M_A = −(WR/π)[(π − θ)(1 − c) − s(k₂ − c)], thin ring k₂ = 1",
         quantity="bending moment at the top, chord forces W = 1 kN at ±60°, R = 0.2 m",
         unit="N*m",
-        published=-_W * _R / np.pi * ((np.pi - _T) * (1 - np.cos(_T)) - np.sin(_T) * (1 - np.cos(_T))),
+        published=float(-_W * _R / np.pi * ((np.pi - _T) * (1 - np.cos(_T)) - np.sin(_T) * (1 - np.cos(_T)))),
         compute=lambda: _case2_moment(_T),
         tolerance=1e-6,
     )
@@ -96,6 +98,91 @@ register(
         published=((_K / (4 * _EI)) ** 0.25) / (2 * _K),
         compute=_hetenyi,
         tolerance=1e-4,  # the ring's curvature: −3e-5 at λR = 60
+    )
+)
+
+
+# -- distributed loads and moments -----------------------------------------------------------------
+_WEIGHT = 50.0  # case 15's own weight per unit length [N/m]
+_LOADS = 1440  # point loads standing for a distributed load (midpoint rule: its error falls as 1/n²)
+
+
+@functools.cache
+def _case15() -> tuple[float, float, float]:
+    """Roark's M (tension inside positive) at the top, at the support and at the side of a free thin ring
+    under its own weight w per unit length, held by a point support at the bottom: the weight as
+    :data:`_LOADS` point loads (midpoint rule: 1.6e-6 of M_A at 1,440, 6.4e-6 at 720), the support one."""
+    phi = (np.arange(_LOADS) + 0.5) * 2 * np.pi / _LOADS
+    dl = _WEIGHT * _R * 2 * np.pi / _LOADS
+    at = np.array([np.pi / 2, -np.pi / 2 + 1e-9, 0.0])  # top A, bottom B (on the support), side C
+    k = cr.resultants(np.subtract.outer(at, phi).ravel(), _THIN, 1024).reshape(at.size, _LOADS, 4, 4)
+    m = k[:, :, 1, 0] @ (-dl * np.sin(phi)) + k[:, :, 1, 1] @ (-dl * np.cos(phi))  # gravity along −y
+    support = cr.resultants(at + np.pi / 2, _THIN, 1024)[:, 1, 0]  # the support pushes inward at −π/2
+    m = m + support * (-2 * np.pi * _R * _WEIGHT)
+    return tuple(float(v) for v in -m)
+
+
+_CASE15 = _ROARK + ", case 15 (ring under its own weight, supported at the base; thin ring)"
+for _name, _i, _factor in (("M_A", 0, 0.5), ("M_B", 1, 1.5), ("M_C", 2, -(np.pi / 2 - 1))):
+    register(
+        Case(
+            id=f"roark/table9.2/case15/{_name}",
+            source=_CASE15,
+            quantity=f"bending moment {_name[-1]} (A top, B on the support, C side), w = 50 N/m, R = 0.2 m",
+            unit="N*m",
+            published=float(_factor * _WEIGHT * _R**2),
+            compute=lambda i=_i: _case15()[i],
+            tolerance=1e-5,  # the distributed load as 1,440 point loads: 1.6e-6 measured
+        )
+    )
+
+
+def _pressure() -> float:
+    """Radial growth of a ring under a uniform outward line load q [N/m], as :data:`_LOADS` point loads
+    (equally spaced: only the n = 0 harmonic sees them, to the series' aliases)."""
+    ring = cr.RingRigidities(_R, 4e8, _EI, np.inf, np.inf)
+    phi = np.arange(_LOADS) * 2 * np.pi / _LOADS
+    g = cr.influence(-phi, ring, 512)[:, 0, 0]
+    return float(2e5 * _R * 2 * np.pi / _LOADS * g.sum())
+
+
+register(
+    Case(
+        id="roark/table13.1/case1a/thin-ring-pressure",
+        source="Roark & Young (2012) Table 13.1 case 1a (thin ring, uniform radial pressure): Δr = qR²/(EA)",
+        quantity="radial growth under q = 200 kN/m outward, EA = 400 MN, R = 0.2 m",
+        unit="m",
+        published=2e5 * _R**2 / 4e8,
+        compute=_pressure,
+        tolerance=1e-6,
+    )
+)
+
+
+def _eversion() -> float:
+    """Rotation of the sections of a ring under a uniform twisting moment m [N·m/m] (about the tangent),
+    as 4,096 point moments (the series' tails alias at multiples of the count: 5.9e-7 at 4,096, 4.8e-6
+    at 1,440); an axial foundation holds the ring's axial translation (n = 0, decoupled from the twist)."""
+    ei_o, gj, m, n = 900.0, 300.0, 40.0, 4096
+    ring = cr.RingRigidities(_R, 1e9 * _EI / _R**2, _EI, ei_o, gj, (0.0, 0.0, 1e12, 0.0))
+    phi = np.arange(n) * 2 * np.pi / n
+    g = cr.influence(-phi, ring, 512)[:, 3, 3]
+    return float(m * _R * 2 * np.pi / n * g.sum())
+
+
+register(
+    Case(
+        id="ring-eversion/uniform-twisting-moment",
+        source=(
+            "Closed form of the everted ring (Timoshenko 1956, Strength of Materials II, twisting of a "
+            "ring by couples uniformly distributed along its centre line; from memory): φ = mR²/EI_out, "
+            "the energy πEI_out φ²/R against the work 2πR m φ"
+        ),
+        quantity="section rotation under m = 40 N·m/m about the tangent, EI_out = 900 N·m², R = 0.2 m",
+        unit="rad",
+        published=40.0 * _R**2 / 900.0,
+        compute=_eversion,
+        tolerance=1e-6,
     )
 )
 

@@ -84,6 +84,20 @@ class StructureResult:
         """(C, N, 3) (radial, axial, tilt) of the outer raceway relative to the inner one."""
         return self._c.x.reshape(self.n_cases, -1, 3)
 
+    @functools.cached_property
+    def force_balance(self) -> np.ndarray:
+        """(C,) largest miss of Σ (F_r e_r + F_z e_z) of the elements on the outer raceway against the load's
+        forces (free DOFs), as a share of the largest load force: the equilibrium of the coupled solution."""
+        f = self.element_loads
+        p = self.points
+        c, s = np.cos(p.azimuth), np.sin(p.azimuth)
+        total = np.stack([(f[..., 0] * c).sum(-1), (f[..., 0] * s).sum(-1), f[..., 1].sum(-1)], -1)
+        load = np.asarray(self.result.load, dtype=float)[:, :3]
+        free = np.asarray(self.result.free, dtype=bool).reshape(-1)[:3]
+        scale = np.maximum(np.abs(load).max(-1), 1e-300)
+        miss = np.abs(total - load)[:, free]
+        return miss.max(-1) / scale if miss.size else np.zeros(self.n_cases)
+
     # -- the rings ---------------------------------------------------------------------------------
     @functools.cached_property
     def rings(self) -> list[dict]:
@@ -158,6 +172,7 @@ class StructureResult:
             "method": self.method,
             "iterations": int(self.iterations[case]),
             "offset_change_m": _finite(self.offset_change[case]),
+            "force_balance": _finite(self.force_balance[case]),
         }
         out["rigid_vs_flexible"] = comp
         out["structure"] = {"rings": [self._ring_dict(r, case) for r in self.rings]}

@@ -58,7 +58,10 @@ def probe_study(plan, workers: int = 1) -> None:
     t_k = time.process_time() - started
     per_case = max(t_k - t_one, 0.0) / (k - 1) if k > 1 else t_one
     per_chunk = max(t_one - per_case, 0.0)
-    chunks = math.ceil(n_total / d.chunk_size)
+    # chunk_size "auto" is chosen later from a measured per-chunk cost (run/chunking.py): estimate with
+    # one chunk per worker, the least overhead it can choose (the budget check refuses only clear excess)
+    size = d.chunk_size if d.chunk_size != "auto" else -(-n_total // max(1, int(workers or 1)))
+    chunks = math.ceil(n_total / max(1, int(size)))
     seconds = (chunks * per_chunk + n_total * per_case) / max(1, int(workers or 1))
     check_work(
         seconds,
