@@ -211,8 +211,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     "io": (
         ("loader", "rexs"),
         ("build", "load_cases", "export"),
-        ("schema_cycle", "schema_operating"),
-        ("schema_structure",),
+        ("optional_sections",),
         ("messages",),
         ("schema",),
         ("sections",),

@@ -154,7 +154,7 @@ def analyze(
 def schema():
     """Print the JSON Schema of the input file."""
     from bearingkit.io import loader  # noqa: F401 - registers every bearing type (bearingkit.io.build.kinds)
-    from bearingkit.io.schema_cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
+    from bearingkit.io.optional_sections.cycle import json_schema  # with [[duty_cycle]], [[tolerances]]
 
     sys.stdout.write(json.dumps(json_schema(), indent=1) + "\n")
 

@@ -26,7 +26,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError, did_you_mean, quote
-from bearingkit.io import schema, schema_cycle
+from bearingkit.io import schema
 from bearingkit.io.build.builders import BUILDERS, register_bearing_type
 from bearingkit.io.build.designation import from_designation
 from bearingkit.io.build.envelope import check_envelope, check_shoulders
@@ -44,6 +44,7 @@ from bearingkit.io.load_cases import (
     parse_load_options,
 )
 from bearingkit.io.messages import one_line, prefix_field, section_models
+from bearingkit.io.optional_sections import cycle as schema_cycle
 from bearingkit.io.reading import parse_toml, read_text
 
 __all__ = [
@@ -103,13 +104,13 @@ class BearingInput:
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
     options : bearingkit.analysis.solver.quasistatic.SolverOptions
-    sections : bearingkit.io.schema_operating.OperatingSections
+    sections : bearingkit.io.optional_sections.operating.OperatingSections
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
-    duty_cycle : bearingkit.io.schema_cycle.DutyCycle or None
+    duty_cycle : bearingkit.io.optional_sections.cycle.DutyCycle or None
         The ``[[duty_cycle]]`` bins (load spectrum), when the file has them.
     hardness : bearingkit.hardness.HardnessProfile
         The raceways' hardness against depth (``[hardness]``, else the material's).
-    tolerances : tuple of bearingkit.io.schema_cycle.ToleranceSpec
+    tolerances : tuple of bearingkit.io.optional_sections.cycle.ToleranceSpec
         The ``[[tolerances]]`` a tolerance study samples (values keep their units).
     structure : bearingkit.analysis.structure.Structure or None
         Flexible rings or an imported FE matrix from ``[structure]`` (docs/structure.md).
@@ -298,7 +299,7 @@ def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     opts = {
         k: v for k, v in (("rtol", spec.solver.rtol), ("max_iterations", spec.solver.max_iterations)) if v
     }
-    from bearingkit.io.schema_operating import validate_sections
+    from bearingkit.io.optional_sections.operating import validate_sections
 
     sections = validate_sections(spec, source, one_line)
     from bearingkit.io.build.structure import structure_of

@@ -91,7 +91,7 @@ from bearingkit.io.sections import (
 )
 
 #: The names these classes had before the split, for modules written against them (io.build.kinds,
-#: io.schema_operating and branches in flight); new code uses the public names.
+#: io.optional_sections.operating and branches in flight); new code uses the public names.
 _Strict, _Envelope, _BallBase, _RollerBase = Strict, Envelope, BallBase, RollerBase
 
 __all__ = [

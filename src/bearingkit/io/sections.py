@@ -276,21 +276,25 @@ class BearingFile(Strict):
     )
     solver: SolverSpec = Field(default_factory=SolverSpec)
     operating: dict[str, Any] | None = Field(
-        None, description="Speed effects, tilt, preload, temperatures (io.schema_operating.OperatingSpec)."
+        None,
+        description="Speed effects, tilt, preload, temperatures "
+        "(io.optional_sections.operating.OperatingSpec).",
     )
     fits: dict[str, Any] | None = Field(
-        None, description="Shaft/housing fits (io.schema_operating.FitsSpec)."
+        None, description="Shaft/housing fits (io.optional_sections.operating.FitsSpec)."
     )
     lubrication: dict[str, Any] | None = Field(
-        None, description="Contamination, roughness, grease (io.schema_operating.LubricationSpec)."
+        None, description="Contamination, roughness, grease (io.optional_sections.operating.LubricationSpec)."
     )
     thermal: dict[str, Any] | None = Field(
-        None, description="Heat balance: the operating temperature found (io.schema_operating.ThermalSpec)."
+        None,
+        description="Heat balance: the operating temperature found "
+        "(io.optional_sections.operating.ThermalSpec).",
     )
     structure: dict[str, Any] | None = Field(
         None,
         description="Flexible rings, housings, flanges or an imported FE matrix for any bearing "
-        "(io.schema_structure.StructureSpec; docs/structure.md).",
+        "(io.optional_sections.structure.StructureSpec; docs/structure.md).",
     )
 
     @field_validator("load_cases", mode="before")

@@ -169,7 +169,7 @@ def preload_for_force(model, force: float, options=None, base_offsets=None) -> f
 
 def _sections(bearing):
     """The input's parsed [operating]/[fits]/[lubrication] sections (empty for an input built in code)."""
-    from bearingkit.io.schema_operating import OperatingSections
+    from bearingkit.io.optional_sections.operating import OperatingSections
 
     return bearing.sections if bearing.sections is not None else OperatingSections()
 

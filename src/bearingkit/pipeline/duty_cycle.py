@@ -2,7 +2,7 @@
 
 SI units: lives in revolutions (``*_rev``) and hours (``*_h``), speeds in rad/s, temperatures in °C.
 
-A bearing file's ``[[duty_cycle]]`` (:mod:`bearingkit.io.schema_cycle`) lists bins: load, speed,
+A bearing file's ``[[duty_cycle]]`` (:mod:`bearingkit.io.optional_sections.cycle`) lists bins: load, speed,
 temperature and a time or revolution fraction each. :attr:`bearingkit.pipeline.Analysis.duty_cycle`
 solves and rates every bin as a load case of ONE batched Analysis (same bearing, operating settings
 of the parent analysis) and combines the bins' system lives by linear damage summation
@@ -209,8 +209,8 @@ def at_rest(cycle) -> np.ndarray:
 
 
 def summarise(cycle, sub, turning=None) -> DutyCycleResult:
-    """Combine the bins of ``cycle`` (a :class:`~bearingkit.io.schema_cycle.DutyCycle`) rated in ``sub``
-    (the Analysis of :func:`bins_input`) into a :class:`DutyCycleResult`.
+    """Combine the bins of ``cycle`` (a :class:`~bearingkit.io.optional_sections.cycle.DutyCycle`)
+    rated in ``sub`` (the Analysis of :func:`bins_input`) into a :class:`DutyCycleResult`.
 
     ``turning``: when some bins are at rest (:func:`at_rest`), the Analysis of the other bins alone,
     whose ratings give the lives (the bins at rest keep their statics and static safety from ``sub``).

@@ -83,7 +83,8 @@ def test_seed001_deviation_batch_and_pairs_agree():
 
 def test_without_numba_the_numpy_reference_runs_with_one_warning():
     """Small jobs never ask for numba (issue 42: they run on the numpy core anyway); the first job large
-    enough to want the compiled core warns once that it is unavailable, and runs on numpy (the numpy path counts no coarse-model evaluations)."""
+    enough to want the compiled core warns once that it is unavailable, and runs on numpy (the numpy
+    path counts no coarse-model evaluations)."""
     code = (
         "import sys, warnings; sys.modules['numba'] = None\n"
         "import numpy as np\n"

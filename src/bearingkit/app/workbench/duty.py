@@ -19,7 +19,8 @@ from bearingkit.errors import InputError
 
 __all__ = ["MAX_BINS", "DutyBin", "DutyRequest", "duty_document", "duty_field"]
 
-#: Bins the page edits at most (a file may hold more: :data:`bearingkit.io.schema_cycle.MAX_DUTY_BINS`).
+#: Bins the page edits at most (a file may hold more:
+#: :data:`bearingkit.io.optional_sections.cycle.MAX_DUTY_BINS`).
 MAX_BINS = 50
 
 

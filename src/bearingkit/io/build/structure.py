@@ -1,6 +1,6 @@
 """``[structure]`` of an input file → a :class:`~bearingkit.analysis.structure.Structure` (SI).
 
-Each ring of :class:`~bearingkit.io.schema_structure.StructureSpec` becomes a
+Each ring of :class:`~bearingkit.io.optional_sections.structure.StructureSpec` becomes a
 :class:`~bearingkit.rings.curved_beam.FlexibleRing`: its section from the shape named (defaults from the
 bearing: an outer ring from its raceway, pitch + D, to ``[geometry] outer_diameter``; an inner ring from
 ``[geometry] bore`` to pitch − D; a groove's bottom on the raceway and its radius the row's conformity

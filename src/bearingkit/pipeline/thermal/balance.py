@@ -126,7 +126,7 @@ def thermal_settings(analysis, given=None) -> ThermalSettings:
     """The heat sinks from ``given`` (fields of ``[thermal]``, text with units or SI), else the file's
     ``[thermal]``, else the legacy ``[operating] temperature_ambient / heat_dissipation``, else the ISO
     15312 reference (20 °C ambient, H = q_r A_r / 50 K)."""
-    from bearingkit.io.schema_operating import ThermalSpec
+    from bearingkit.io.optional_sections.operating import ThermalSpec
     from bearingkit.pipeline.conditions import _sections
 
     sections = _sections(analysis.input)

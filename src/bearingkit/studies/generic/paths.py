@@ -24,7 +24,7 @@ A path names a field of the input file (docs/input-format.md):
   (ISO 281 e_C, a number or a level name such as ``"normal_cleanliness"``),
   ``operating.friction_model`` (auto | components | skf | palmgren) — the analysis's settings;
 - any field of the further sections a bearing file may have (their models in
-  ``bearingkit.io.schema_operating.SECTION_MODELS`` when that module exists).
+  ``bearingkit.io.optional_sections.operating.SECTION_MODELS`` when that module exists).
 
 Each path has a **kind**: ``file`` paths edit the input (cases that differ in one are solved as
 separate groups), ``case`` paths are per load case (batched: cases that differ only in them share ONE
@@ -167,7 +167,7 @@ def _submodel(annotation, ref: str):
 def _extra_sections() -> dict:
     """Section name → model of sections validated outside the schema module (operating conditions)."""
     try:
-        from bearingkit.io import schema_operating
+        from bearingkit.io.optional_sections import operating as schema_operating
     except ImportError:
         return {}
     return dict(getattr(schema_operating, "SECTION_MODELS", {}))

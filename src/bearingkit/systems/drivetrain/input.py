@@ -34,8 +34,8 @@ from pydantic import Field, ValidationError
 from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.messages import one_line
+from bearingkit.io.optional_sections.operating import LubricationSpec
 from bearingkit.io.reading import load_toml
-from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.drivetrain import model as dtm
 from bearingkit.systems.drivetrain.gearing import GearGeometry, GearPair
 from bearingkit.systems.drivetrain.model import (

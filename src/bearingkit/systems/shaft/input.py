@@ -33,8 +33,8 @@ from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
+from bearingkit.io.optional_sections.operating import LubricationSpec
 from bearingkit.io.reading import confined_path, load_toml
-from bearingkit.io.schema_operating import LubricationSpec
 from bearingkit.systems.shaft.loads import (
     AXES,
     STANDARD_GRAVITY,

@@ -106,7 +106,7 @@ class SeatInput(ModelInput):
     def sections(self):
         """No fits or preload (the shaft solver models none), no speed setup of the pipeline (the
         statics take the shaft's model at speed, :meth:`solve`); the ``[lubrication]``."""
-        from bearingkit.io.schema_operating import OperatingSections, OperatingSpec
+        from bearingkit.io.optional_sections.operating import OperatingSections, OperatingSpec
 
         own = getattr(self.bearing_input, "sections", None)
         lub = own.lubrication if own is not None and own.lubrication is not None else self.lubrication

@@ -1,5 +1,5 @@
 """Input sections of the operating conditions: ``[operating]``, ``[fits]``, ``[lubrication]``, ``[thermal]``;
-and ``[structure]`` (its model in :mod:`bearingkit.io.schema_structure`), validated the same way.
+and ``[structure]`` (its model in :mod:`bearingkit.io.optional_sections.structure`), validated the same way.
 
 SI after validation (m, N, rad, rad/s, W/K; temperatures in °C), as the rest of the schema
 (:mod:`bearingkit.io.schema`, whose unit-carrying types these models use). The sections are kept as
@@ -14,6 +14,7 @@ from typing import Literal
 
 from pydantic import Field, ValidationError
 
+from bearingkit.io.optional_sections.structure import StructureSpec
 from bearingkit.io.schema import (
     Angle,
     AngularVelocity,
@@ -25,7 +26,6 @@ from bearingkit.io.schema import (
     Temperature,
     quantity,
 )
-from bearingkit.io.schema_structure import StructureSpec
 
 
 class OperatingSpec(Strict):

@@ -2,7 +2,7 @@
 
 SI after validation (m, m², m⁴, N/m, N/m², Pa, rad), as the rest of the schema. The section is kept as a
 table in :class:`~bearingkit.io.schema.BearingFile` and validated here, the way ``[operating]`` is
-(:data:`bearingkit.io.schema_operating.SECTION_MODELS` lists it, so its numbers are study factors:
+(:data:`bearingkit.io.optional_sections.operating.SECTION_MODELS` lists it, so its numbers are study factors:
 ``structure.outer.seat_stiffness``, ``structure.outer.flange.bolt_stiffness``,
 ``structure.outer.stiffness_scale`` …). :mod:`bearingkit.io.build.structure` turns it into a
 :class:`~bearingkit.analysis.structure.Structure` (docs/structure.md)::
