@@ -103,3 +103,43 @@ def test_in_process_pool_and_dask_agree_bit_for_bit():
     assert ref["converged"].all() and np.isfinite(ref["ball_axial_share"]).all()
     pd.testing.assert_frame_equal(pool, ref, check_exact=True)
     pd.testing.assert_frame_equal(dask, ref, check_exact=True)
+
+
+def test_a_chunk_runs_on_one_core_whatever_the_process_solved_before():
+    """``auto`` runs a small job on the numpy core and switches to the compiled one after 0.5 s of numpy
+    solves (issue 42); the cores agree to 1e-12, not bit for bit. A chunk therefore loads the compiled
+    core first, in a fresh process as after many small solves, and gives the same bits either way."""
+    import os
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, numpy as np\n"
+        "from bearingkit.analysis.solver import backend\n"
+        "from bearingkit.analysis.solver.quasistatic import solve, load_vector\n"
+        "from bearingkit.bearings.turntable import composite_turntable\n"
+        f"sys.path.insert(0, {os.path.dirname(__file__)!r})\n"
+        "from test_determinism import _chunk\n"
+        "from bearingkit.studies.run import executors\n"
+        "_, chunk = _chunk(6)\n"
+        "if sys.argv[1] == 'after':  # many small numpy solves first, as a notebook or the app does\n"
+        "    m = composite_turntable()\n"
+        "    for f in np.linspace(1e3, 4e3, 8): solve(m, load_vector(F_z=f))\n"
+        "first = backend.loaded()\n"
+        "out = executors.evaluate_chunk('seed000_statics', chunk)\n"
+        "print(first, backend.loaded())\n"
+        "np.save(sys.argv[2], out.select_dtypes('number').to_numpy(float))\n"
+    )
+    env = {**os.environ, "BEARINGKIT_BACKGROUND_COMPILE": "0"}
+    env.pop("BEARINGKIT_BACKEND", None)
+    results = {}
+    for when in ("fresh", "after"):
+        path = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"bk_chunk_{os.getpid()}_{when}.npy")
+        run = subprocess.run(
+            [sys.executable, "-c", code, when, path], capture_output=True, text=True, env=env
+        )
+        assert run.returncode == 0, run.stderr
+        assert run.stdout.split() == ["False", "True"], run.stdout  # numpy before, compiled for the chunk
+        results[when] = np.load(path)
+        os.remove(path)
+    np.testing.assert_array_equal(results["fresh"], results["after"])

@@ -93,6 +93,20 @@ def wants_compiled(n_cases: int) -> bool:
     return False
 
 
+def for_batches() -> None:
+    """Run every later ``auto`` solve of this process on the compiled core where it applies (a study's
+    chunks: :mod:`bearingkit.studies.run.workers`); loads the core now, compiling it if it is not built.
+
+    ``auto`` chooses the core by the job's size and by the numpy time the process has spent
+    (:func:`wants_compiled`), and the two cores agree to 1e-12, not bit for bit. A study's results must
+    not depend on what its process solved before, on its chunk size or on its executor (resume, workers
+    and Dask give the same bits), so every chunk of a study runs on the one core. Does nothing when
+    another backend is asked for or numba is not installed.
+    """
+    if requested(None) == "auto" and numba_cache.numba_installed():
+        compiled_module()
+
+
 def spent_numpy(seconds: float) -> None:
     """Add the time of a numpy solve that ``auto`` chose (the budget of :data:`LOAD_BUDGET_S`)."""
     _STATE["numpy_seconds"] += seconds

@@ -23,6 +23,7 @@ from contextlib import contextmanager
 
 import numpy as np
 
+from bearingkit.analysis.solver import backend
 from bearingkit.analysis.solver.threads import THREADS_ENV
 from bearingkit.errors import InputError
 from bearingkit.studies import evaluators
@@ -247,6 +248,7 @@ def evaluate_chunk(evaluator, cases, with_ids: bool = True):
     Returns the cases' ``case`` ids (0… when ``cases`` has no ``case`` column) joined with the outputs;
     ``with_ids`` False: the outputs alone, row for row (a caller that keeps the order itself).
     """
+    backend.for_batches()  # one solver core for every chunk, whatever ran before in this process
     ev = evaluator if isinstance(evaluator, evaluators.Evaluator) else evaluators.get(evaluator)
     ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))
     if len(cases.columns) and cases.columns[0] == "case":
@@ -270,6 +272,7 @@ def evaluate_columns(evaluator, cases, outputs=None) -> dict[str, np.ndarray]:
     of arrays, no DataFrame to pickle, select and insert into on the study's side. Runs with one BLAS
     thread, as :func:`evaluate_chunk`.
     """
+    backend.for_batches()  # one solver core for every chunk, whatever ran before in this process
     ev = evaluator if isinstance(evaluator, evaluators.Evaluator) else evaluators.get(evaluator)
     ids = cases["case"].to_numpy() if "case" in cases.columns else np.arange(len(cases))
     if len(cases.columns) and cases.columns[0] == "case":
