@@ -13,6 +13,7 @@ folder; these tests catch the same faults in seconds, without a build:
 from __future__ import annotations
 
 import re
+import subprocess
 from pathlib import Path
 
 from bearingkit import paths
@@ -57,3 +58,16 @@ def test_validate_quick_takes_one_case_of_every_source():
     assert len(sources) == len(set(sources))
     assert set(sources) == {c.id.partition("/")[0] for c in cases}
     assert len(quick) < len(cases) / 5  # a few seconds, not the full run
+
+
+def test_no_source_file_is_git_ignored():
+    """A module the ignore rules hide is in the developer's tree but in no clone and no wheel (``build/``
+    once hid ``io/build/``: its ``structure.py`` reached the integrated branch only by a later commit)."""
+    out = subprocess.run(
+        ["git", "ls-files", "--others", "--ignored", "--exclude-standard", "src/bearingkit"],
+        cwd=SRC.parents[1],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
+    assert [f for f in out if "__pycache__" not in f] == []
