@@ -85,8 +85,10 @@ def main() -> int:
             "print(round(life['L10h_h']))\n"
         )
         hours = run([py, "-c", api], elsewhere, env).stdout.strip()
-        out = run([bk, "validate", "--quick"], elsewhere, env).stdout
-        quick = out.strip().splitlines()[-1]
+        # exit 1 on an unexplained failure, as validate without --json
+        cases = json.loads(run([bk, "validate", "--quick", "--json"], elsewhere, env).stdout)
+        known = sum(1 for c in cases if not c["passed"] and c["known_deviation"])
+        quick = f"{len(cases)} cases, {sum(c['passed'] for c in cases)} pass, {known} known deviations"
         static = (
             "from importlib.resources import files\n"
             "static = files('bearingkit') / 'app' / 'static'\n"

@@ -212,14 +212,11 @@ def _seed002(row: str) -> float:
 
 
 def _example(name: str) -> str:
-    from pathlib import Path
+    """An example file: the repository's ``examples/`` or the copy a wheel installs
+    (:func:`bearingkit.paths.examples_dir`; a search upwards from this file missed the installed one)."""
+    from bearingkit.paths import examples_dir
 
-    here = Path(__file__).resolve()
-    for parent in here.parents:
-        candidate = parent / "examples" / name
-        if candidate.exists():
-            return str(candidate)
-    raise FileNotFoundError(name)
+    return str(examples_dir() / name)
 
 
 _LI = (
