@@ -147,3 +147,26 @@ def test_json_output_of_an_analysis_is_strict():
     res = runner.invoke(app, ["analyze", DGBB, "--json"])
     assert res.exit_code == 0
     json.loads(res.stdout, parse_constant=lambda c: pytest.fail(f"{c} in JSON"))
+
+
+def test_an_aborted_command_is_one_line(capsys):
+    """Ctrl-C at a prompt, or a command that aborts: one line and exit 1 (the handler once named
+    ``click.Abort``, which typer's bundled click does not have, and ended in an AttributeError)."""
+    import typer
+
+    from bearingkit.cli.common import OneLineGroup
+
+    demo = typer.Typer(cls=OneLineGroup)
+
+    @demo.command()
+    def boom():
+        raise typer.Abort()
+
+    @demo.command()
+    def other():
+        pass
+
+    with pytest.raises(SystemExit) as stop:
+        demo(["boom"])
+    assert stop.value.code == 1
+    assert capsys.readouterr().err == "error: aborted\n"

@@ -52,7 +52,7 @@ class OneLineGroup(TyperGroup):
             where = exc.ctx.command_path if getattr(exc, "ctx", None) is not None else "bearingkit"
             sys.stderr.write(error_line(f"{exc.format_message()} (see {where} --help)", where) + "\n")
             sys.exit(exc.exit_code)
-        except click.Abort:
+        except typer.Abort:  # typer bundles its own click, which has no click.Abort
             sys.stderr.write("error: aborted\n")
             sys.exit(1)
         sys.exit(code if isinstance(code, int) else 0)
