@@ -190,6 +190,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     ),
     "analysis.solver": (
         ("quasistatic",),
+        ("options",),
         ("backend",),
         ("compiled_newton",),
         ("compiled_linalg",),
