@@ -190,6 +190,7 @@ SUBLAYERS: dict[str, tuple[tuple[str, ...], ...]] = {
     ),
     "analysis.solver": (
         ("quasistatic",),
+        ("options",),
         ("backend",),
         ("compiled_newton",),
         ("compiled_linalg",),
@@ -286,6 +287,6 @@ def test_folders_stay_small():
 
 
 def test_modules_stay_small():
-    """A module past ~600 lines holds two ideas (design rule); 700 is the hard limit here."""
-    long = {p.name: n for p in PACKAGE.rglob("*.py") if (n := len(p.read_text().splitlines())) > 700}
+    """A module past 600 lines holds two ideas (design rule, the hard limit here since issue 31): split it."""
+    long = {p.name: n for p in PACKAGE.rglob("*.py") if (n := len(p.read_text().splitlines())) > 600}
     assert long == {}

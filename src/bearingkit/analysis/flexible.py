@@ -53,7 +53,8 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from bearingkit import checks, references
-from bearingkit.analysis.solver.quasistatic import QuasiStaticResult, SolverOptions, solve
+from bearingkit.analysis.solver.options import SolverOptions
+from bearingkit.analysis.solver.quasistatic import QuasiStaticResult, solve
 from bearingkit.rows.base import RacewayOffset
 
 references.add(

@@ -103,7 +103,7 @@ class BearingInput:
     lubricant : bearingkit.lubricants.Lubricant or None
     cases : tuple of LoadCase
     free : ndarray (5,) of bool
-    options : bearingkit.analysis.solver.quasistatic.SolverOptions
+    options : bearingkit.analysis.solver.options.SolverOptions
     sections : bearingkit.io.optional_sections.operating.OperatingSections
         The parsed ``[operating]``, ``[fits]`` and ``[lubrication]`` sections.
     duty_cycle : bearingkit.io.optional_sections.cycle.DutyCycle or None
@@ -258,7 +258,7 @@ def loads(text: str, source: str = "<string>") -> BearingInput:
 
 def from_dict(data: dict, source: str = "<dict>") -> BearingInput:
     """Validate an already-parsed file (a dict as ``tomllib`` returns it)."""
-    from bearingkit.analysis.solver.quasistatic import SolverOptions
+    from bearingkit.analysis.solver.options import SolverOptions
 
     if not isinstance(data, dict):
         raise InputError(f"{source}: the file must be a table of sections, got {type(data).__name__}")

@@ -171,7 +171,7 @@ class ModelInput:
     hardness: object = None
 
     def __post_init__(self):
-        from bearingkit.analysis.solver.quasistatic import SolverOptions
+        from bearingkit.analysis.solver.options import SolverOptions
         from bearingkit.lubricants import as_lubricant
 
         load = np.atleast_2d(np.asarray(self.load, dtype=float))

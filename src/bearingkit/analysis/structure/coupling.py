@@ -34,7 +34,8 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from bearingkit import checks
-from bearingkit.analysis.solver.quasistatic import SolverOptions, solve
+from bearingkit.analysis.solver.options import SolverOptions
+from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.rows.base import RacewayOffset
 
 #: Central-difference steps: offsets and translations [m], rotations [rad] per metre of arm.

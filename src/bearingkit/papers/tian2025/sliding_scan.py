@@ -8,8 +8,9 @@ grease viscosity factor identified on Table 3 run 1 instead), behind docs/seed00
   and the rms error of runs 1–9: which E2 Table 3 would need if the pitch-line differential sliding
   carried the load-proportional loss. The effective coefficient μ_eff = E2_k / Σ(q |v|)/ω is the μ a
   Coulomb reading of E2 would need (≈ 0.3, beyond lubricated steel).
-* :func:`reading_table` — the documented readings of μ_ij (:data:`~bearingkit.papers.tian2025.friction.
-  SLIDING_READINGS`, each re-identified on run 1): their E2 relative to the default's and their error.
+* :func:`reading_table` — the documented readings of μ_ij
+  (:data:`~bearingkit.papers.tian2025.friction_variants.SLIDING_READINGS`, each re-identified on run 1):
+  their E2 relative to the default's and their error.
 
 Nothing here is used by a validation case.
 """
@@ -24,6 +25,7 @@ from bearingkit.analysis.friction.components import friction_torque
 from bearingkit.analysis.solver.quasistatic import solve
 from bearingkit.bearings.turntable import composite_turntable
 from bearingkit.papers.tian2025 import friction as f
+from bearingkit.papers.tian2025 import friction_variants as fv
 from bearingkit.papers.tian2025 import validation as v000
 
 __all__ = ["multiplier_scan", "reading_table"]
@@ -60,7 +62,7 @@ def multiplier_scan(multipliers=(1.0, 2.0, 3.0, 4.0, 4.5)):
     from scipy.optimize import brentq
 
     res, pub = _solved()
-    unit = _components(res, f.calibrated_factor(f.VARIANTS[BASE]), mu_boundary=1.0, mu_ehl=1.0)[
+    unit = _components(res, f.calibrated_factor(fv.VARIANTS[BASE]), mu_boundary=1.0, mu_ehl=1.0)[
         "differential_sliding"
     ]
 
@@ -97,7 +99,7 @@ def reading_table(readings=None):
     Parameters
     ----------
     readings : sequence of str or None
-        Keys of :data:`~bearingkit.papers.tian2025.friction.SLIDING_READINGS` (None: all).
+        Keys of :data:`~bearingkit.papers.tian2025.friction_variants.SLIDING_READINGS` (None: all).
 
     Returns
     -------
@@ -109,8 +111,8 @@ def reading_table(readings=None):
 
     rows = []
     base_e2 = None
-    for name in readings or f.SLIDING_READINGS:
-        variant = f.FrictionVariant(f"scan_{name}", sliding=name, viscosity_factor=None, roller_sliding=0.0)
+    for name in readings or fv.SLIDING_READINGS:
+        variant = fv.FrictionVariant(f"scan_{name}", sliding=name, viscosity_factor=None, roller_sliding=0.0)
         t = f.table3(variant)
         e2 = float(t["differential_sliding_Nm"].iloc[0])
         base_e2 = e2 if base_e2 is None and name == "mixed" else base_e2

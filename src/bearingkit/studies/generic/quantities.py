@@ -406,91 +406,6 @@ def _ratings(rows: Sequence[str]) -> list[Quantity]:
     return out
 
 
-def _friction_of(c: _Context, attr: str) -> np.ndarray:
-    outcome = c.analysis.friction
-    if outcome is None:
-        return np.full(c.n, np.nan)
-    return np.asarray(getattr(outcome, attr), dtype=float)[: c.n]
-
-
-def _friction() -> list[Quantity]:
-    return [
-        Quantity(
-            "friction_torque_Nm",
-            "N·m",
-            "friction torque (the analysis's friction model)",
-            "friction",
-            lambda c: _friction_of(c, "total"),
-        ),
-        Quantity(
-            "power_loss_W",
-            "W",
-            "friction power loss M |ω|",
-            "friction",
-            lambda c: _friction_of(c, "power_loss"),
-        ),
-    ]
-
-
-def _lubrication_of(c: _Context):
-    outcome = c.analysis.lubrication
-    return None if outcome is None else outcome.result
-
-
-def _kappa(c: _Context, rows: Sequence[str]) -> np.ndarray:
-    res = _lubrication_of(c)
-    if res is None:
-        return np.full(c.n, np.nan)
-    values = [np.asarray(res.kappa[r], float)[: c.n] for r in rows if r in res.kappa]
-    return np.min(values, axis=0) if values else np.full(c.n, np.nan)
-
-
-def _film(c: _Context, row: str) -> np.ndarray:
-    res = _lubrication_of(c)
-    if res is None:
-        return np.full(c.n, np.nan)
-    for f in res.films:
-        if f.row == row:
-            hi = np.where(f.loaded_inner, f.film_minimum_inner, np.inf).min(-1)
-            ho = np.where(f.loaded_outer, f.film_minimum_outer, np.inf).min(-1)
-            h = np.minimum(hi, ho)[: c.n]
-            return np.where(np.isfinite(h), h, np.nan)
-    return np.full(c.n, np.nan)
-
-
-def _lubrication(rows: Sequence[str]) -> list[Quantity]:
-    out = [
-        Quantity(
-            "kappa",
-            "-",
-            "viscosity ratio κ = ν/ν1 (ISO 281 9.3.3; the smallest over the rows; NaN at rest)",
-            "lubrication",
-            lambda c: _kappa(c, rows),
-        )
-    ]
-    for name in rows:
-        if len(rows) > 1:
-            out.append(
-                Quantity(
-                    f"{name}_kappa",
-                    "-",
-                    f"viscosity ratio κ of row {name!r}",
-                    "lubrication",
-                    lambda c, r=name: _kappa(c, (r,)),
-                )
-            )
-        out.append(
-            Quantity(
-                f"{name}_film_min_m",
-                "m",
-                f"smallest minimum film thickness over the loaded contacts of row {name!r} (EHL)",
-                "lubrication",
-                lambda c, r=name: _film(c, r),
-            )
-        )
-    return out
-
-
 def _duty(bins: Sequence[str]) -> list[Quantity]:
     out = [
         Quantity(
@@ -628,9 +543,10 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items += _subsurface(bearing.model.rows)
     items += _warnings()
     from bearingkit.studies.generic.limits import limit_quantities
+    from bearingkit.studies.generic.lubricated import lubricated_quantities
 
     items += limit_quantities(Quantity)  # speed and load limits (NaN where no catalogue rule covers it)
-    items += _lubrication(rows) + _friction()  # NaN without a lubricant (a study may set lubricant.name)
+    items += lubricated_quantities(Quantity, rows)  # NaN without a lubricant (a study may set lubricant.name)
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
         items += _duty(cycle.names)
