@@ -144,3 +144,19 @@ def test_preload_force_of_a_db_pair_is_carried_by_each_row(tmp_path):
         assert force == pytest.approx(800.0, rel=1e-6)
     rows = a.statics_dict()["cases"][0]["rows"]
     assert all(r["preload_N"] == pytest.approx(800.0, rel=1e-6) for r in rows)
+
+
+def test_contamination_level_names_on_a_threaded_roller_bearing():
+    """A level name needs the bearing's d_m (ISO 281 Table 13); a threaded roller row keeps it in its
+    geometry (the fuzz's `study --list-outputs` on the PTRB ended in an internal error)."""
+    from pathlib import Path
+
+    from bearingkit.io.loader import load_file
+    from bearingkit.physics.life.iso281_contamination import contamination_factor
+    from bearingkit.pipeline.operating_output import contamination_values
+
+    bearing = load_file(Path(__file__).resolve().parents[2] / "examples" / "ptrb_prototype.toml")
+    dm = float(bearing.model.rows[0].geometry.pitch_diameter)
+    values = contamination_values(bearing)
+    assert values["normal_cleanliness"] == contamination_factor("normal_cleanliness", dm)
+    assert 0 < values["severe_contamination"] < values["normal_cleanliness"] < 1

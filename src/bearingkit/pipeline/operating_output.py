@@ -36,6 +36,15 @@ SKID_RATIO = 1.0
 HOUR = 3600.0
 
 
+
+def _pitch_diameter(row) -> float:
+    """d_m of a row [m] (ISO 281 Table 13 reads it): its ``pitch_diameter``, or its geometry's (a
+    threaded roller row keeps it in its ``PTRBGeometry``)."""
+    dm = getattr(row, "pitch_diameter", None)
+    if dm is None:
+        dm = getattr(getattr(row, "geometry", None), "pitch_diameter", 0.0)
+    return float(np.max(dm))
+
 def resolve_contamination(bearing, value):
     """(e_C, level name or None) from a number, an ISO 281 level name, or the file's ``[lubrication]``."""
     from bearingkit.physics.life.iso281_contamination import contamination_factor, contamination_levels
@@ -47,7 +56,7 @@ def resolve_contamination(bearing, value):
     if value is None:
         return None, None
     if isinstance(value, str) and value.strip() in contamination_levels():
-        dm = max(float(np.max(r.pitch_diameter)) for r in bearing.model.rows)
+        dm = max(_pitch_diameter(r) for r in bearing.model.rows)
         return contamination_factor(value.strip(), dm), value.strip()
     if isinstance(value, str):
         from bearingkit.units import parse
