@@ -55,3 +55,32 @@ def test_the_report_command_takes_a_drivetrain_file(tmp_path):
     assert 'data-section="layout"' in out_file.read_text(encoding="utf-8")
     out = CliRunner().invoke(app, ["report", str(EXAMPLES / "planetary_stage.toml"), "--speed", "5rpm"])
     assert out.exit_code == 2 and "apply to a bearing file" in out.output
+
+
+def test_output_paths_are_checked_before_any_work_and_nothing_is_half_written(tmp_path, monkeypatch):
+    """The 10^4-mutant fuzz found `system` writing its report, then failing on a later output path
+    (`--rexs .`, a 300-character name, `--stiffness x.html`, the same file twice): every output path is
+    now checked before the drivetrain is solved, and a refusal leaves the folder empty."""
+    from bearingkit.systems.drivetrain import analysis as drivetrain_analysis
+
+    def never(*args, **kwargs):
+        raise AssertionError("the drivetrain was solved before the outputs were checked")
+
+    monkeypatch.setattr(drivetrain_analysis, "DrivetrainAnalysis", never)
+    monkeypatch.chdir(tmp_path)
+    runner = CliRunner()
+    model = str(EXAMPLES / "planetary_stage.toml")
+    bad = [
+        (["--report", "o", "--rexs", "."], "--rexs ('.') must name a file"),
+        (["--report", "s.csv", "--rexs", "a" * 300], "longer than 255 bytes"),
+        (["--report", "o", "--stiffness", "o/report.html"], "must end in .csv or .json"),
+        (["--report", "x.csv", "--stiffness", "x.csv"], "name the same file"),
+    ]
+    for options, fragment in bad:
+        out = runner.invoke(app, ["system", model, *options])
+        assert out.exit_code == 2, (options, out.output)
+        assert out.stderr.count("\n") == 1 and fragment in out.stderr, out.stderr
+        assert list(tmp_path.iterdir()) == [], options
+    # the guard is live: good outputs reach the solve (the stand-in's error, as an internal one)
+    out = runner.invoke(app, ["system", model, "--report", "r.html"])
+    assert out.exit_code == 70 and "solved before the outputs were checked" in out.stderr

@@ -38,6 +38,7 @@ from bearingkit.cli.common import (
     _header,
     _load_ratings,
     _print_json,
+    check_outputs,
     console,
     one_line_errors,
 )
@@ -488,21 +489,22 @@ def shaft(
     from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
-    if stiffness is not None and stiffness.suffix not in (".csv", ".json"):  # refused before any work
-        raise InputError(f"--stiffness ({quote(str(stiffness))}) must end in .csv or .json")
+    check_outputs(report=report, stiffness=stiffness, plot=plot)  # refused before any work
     inp = load_shaft_file(file)
     inp.check_work(report=report is not None or plot is not None)  # before anything is solved
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
     result = analysis.result
     data = analysis.to_dict()
-    if stiffness is not None:
+    # Files only from a solution that converged: a failed case prints its tables, writes nothing.
+    converged = bool(result.converged.all())
+    if converged and stiffness is not None:
         write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
-    if plot is not None:
+    if converged and plot is not None:
         from bearingkit.report.systems.shaft_plots import write_shaft_figure
 
         for c, name in enumerate(result.loads.names):
             write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
-    if report is not None:
+    if converged and report is not None:
         written = analysis.report(report)
     if as_json:
         _print_json(file, data)
@@ -513,9 +515,9 @@ def shaft(
                 console.print(part)
         for note in data["notes"]:
             console.print(f"  note: {note}", markup=False, highlight=False)
-        if report is not None:
+        if converged and report is not None:
             console.print(f"wrote {written}", markup=False, highlight=False)
-    if not result.converged.all():
+    if not converged:
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         what = f"load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}"
         _fail(what, 1, source=file)

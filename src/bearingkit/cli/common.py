@@ -291,3 +291,39 @@ def _load_ratings(items: list[str] | None) -> dict:
             )
         out[row.strip()] = parse(value.strip(), "force", f"--load-rating {row.strip()}")
     return out
+
+
+#: Longest file name (bytes) an output option may give: the common file-system limit (NAME_MAX).
+MAX_OUTPUT_NAME_BYTES = 255
+
+
+def check_outputs(**paths) -> None:
+    """Refuse, before any work, output paths that could only fail after something is written.
+
+    ``paths`` maps an option's name (``report`` for ``--report``) to its path or None. Each must name a
+    file (not ``.``, ``..`` or an existing folder) of at most :data:`MAX_OUTPUT_NAME_BYTES` bytes, and no
+    two options may name the same file; ``stiffness`` must end in ``.csv`` or ``.json``. A command that
+    writes several files checks them all first, so a refusal leaves nothing half-written.
+    """
+    from bearingkit.errors import quote
+
+    seen: dict = {}
+    for option, path in paths.items():
+        if path is None:
+            continue
+        flag = f"--{option.replace('_', '-')}"
+        path = Path(path)
+        if len(os.fsencode(path.name)) > MAX_OUTPUT_NAME_BYTES:  # before any stat, which would fail
+            raise InputError(
+                f"{flag}: the file name is longer than {MAX_OUTPUT_NAME_BYTES} bytes; give a shorter one"
+            )
+        if path.name in ("", ".", "..") or path.is_dir():
+            raise InputError(f"{flag} ({quote(str(path))}) must name a file, not a folder")
+        if option == "stiffness" and path.suffix not in (".csv", ".json"):
+            raise InputError(f"{flag} ({quote(str(path))}) must end in .csv or .json")
+        key = os.path.abspath(path)
+        if key in seen:
+            raise InputError(
+                f"{flag} and {seen[key]} name the same file ({quote(str(path))}); give two names"
+            )
+        seen[key] = flag

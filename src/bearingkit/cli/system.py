@@ -16,6 +16,7 @@ from bearingkit.cli.common import (
     _JSON_OPTION,
     _fail,
     _print_json,
+    check_outputs,
     console,
     one_line_errors,
 )
@@ -156,18 +157,21 @@ def register(app: typer.Typer) -> None:
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
+        check_outputs(report=report, rexs=rexs, stiffness=stiffness)  # before any work
         inp = load_drivetrain_file(file)
         analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
         data = analysis.to_dict()
+        res = analysis.result
+        # Files only from a solution that converged: a failed case prints its tables, writes nothing.
         written = []
-        if report is not None:
+        if res.converged.all() and report is not None:
             written.append(analysis.report(report))
-        if stiffness is not None:
+        if res.converged.all() and stiffness is not None:
             from bearingkit.systems.drivetrain.output import stiffness_tables
             from bearingkit.systems.shaft.stiffness import write_tables
 
             written.append(write_tables(stiffness_tables(analysis), stiffness))
-        if rexs is not None:
+        if res.converged.all() and rexs is not None:
             from bearingkit.io.rexs.export import write_rexs_results
 
             written.append(write_rexs_results(data, rexs))
@@ -193,7 +197,6 @@ def register(app: typer.Typer) -> None:
                 console.print(f"  note: {note}", markup=False, highlight=False)
             for w in written:
                 console.print(f"wrote {w}", markup=False, highlight=False)
-        res = analysis.result
         if not res.converged.all():
             bad = int(next(i for i, ok in enumerate(res.converged) if not ok))
             _fail(
