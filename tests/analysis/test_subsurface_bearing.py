@@ -242,3 +242,27 @@ def test_roller_edge_peak_is_the_picked_slice(tmp_path):
     assert any("end slice (edge peak)" in n for n in a.notes)
     flat = analyze(str(straight), load={"F_x": "20 kN"}).subsurface.rows[0]
     assert not flat.edge_slice[0]
+
+
+def test_threaded_rows_at_their_most_loaded_tooth_flank():
+    """A threaded roller row (PTRB) is checked at its most loaded flank contact, a Hertz ellipse: the
+    profile is the closed form at that contact's p, a, b, and the element/tooth/flank it names carries
+    that pressure in the row's own per-flank results."""
+    a = analyze(str(EXAMPLES / "ptrb_prototype.toml"))
+    row = a.input.model.rows[0]
+    r = a.subsurface.row(row.name)
+    state = a.statics.rows[0]
+    assert any("threaded rows at the most loaded tooth flank" in n for n in a.subsurface.notes)
+    for c in range(a.n_cases):
+        if not r.loaded[c]:
+            continue
+        side = r.raceway[c]
+        flanks = np.broadcast_to(state.extras[f"max_pressure_{side}"], state.extras["tooth_load"].shape)
+        both = np.maximum(state.extras["max_pressure_inner"], state.extras["max_pressure_outer"])
+        assert r.max_pressure[c] == pytest.approx(both[c].max(), rel=1e-12)  # the most loaded of all
+        tooth, flank = divmod(int(r.slice_index[c]), 2)
+        assert flanks[c, int(r.element[c]), tooth, flank] == pytest.approx(r.max_pressure[c], rel=1e-12)
+        nu = a.subsurface.poisson_ratio
+        axis = point.axis_stresses(r.depth[c], r.semi_major[c], r.semi_minor[c], r.max_pressure[c], nu)
+        np.testing.assert_allclose(r.von_mises[c], point.von_mises(*axis), rtol=1e-12)
+        assert 0.5 < r.max_von_mises[0][c] / r.max_pressure[c] < 0.65  # frictionless Hertz ellipse

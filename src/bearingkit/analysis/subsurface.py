@@ -190,7 +190,7 @@ class SubsurfaceResult:
     Attributes
     ----------
     rows : list of RowSubsurface
-        One per row the check covers (threaded rows are left out, see ``notes``).
+        One per row (threaded rows at their most loaded tooth flank, see ``notes``).
     profile : HardnessProfile
         The raceways' hardness profile checked.
     traction : float
@@ -239,25 +239,34 @@ class SubsurfaceResult:
 
 # ------------------------------------------------------------------------------------------ contacts
 def _point_candidates(state):
-    """p, a, b (C, M) and labels of a ball row's contacts (both raceways; a four-point ball's four)."""
+    """p, a, b (C, M), labels and slice indices of a row's point contacts: both raceways of a ball (a
+    four-point ball's four); every tooth flank of a threaded roller (slice index = 2 tooth + flank).
+
+    A flank contact is a Hertz ellipse like a ball's: its field below the flank surface is the same
+    half-space solution, with the depth measured normal to the flank."""
     ex = state.extras
     if "max_pressure_contact" in ex:  # four-point: every contact
         p, a, b = ex["max_pressure_contact"], ex["semi_major"], ex["semi_minor"]
         c, z, k = p.shape
         sides = np.tile(np.array(_FOUR_POINT_SIDES), z)
-        return p.reshape(c, -1), a.reshape(c, -1), b.reshape(c, -1), sides, np.repeat(np.arange(z), k)
-    ps, as_, bs, sides, elems = [], [], [], [], []
+        elems = np.repeat(np.arange(z), k)
+        return p.reshape(c, -1), a.reshape(c, -1), b.reshape(c, -1), sides, elems, np.full(sides.shape, -1)
+    ps, as_, bs, sides, elems, slices = [], [], [], [], [], []
     for side in ("inner", "outer"):
         if f"max_pressure_{side}" not in ex:
             continue
         p = np.asarray(ex[f"max_pressure_{side}"], float)
-        ps.append(p)
-        as_.append(np.broadcast_to(ex[f"semi_major_{side}"], p.shape))
-        bs.append(np.broadcast_to(ex[f"semi_minor_{side}"], p.shape))
-        sides += [side] * p.shape[1]
-        elems.append(np.arange(p.shape[1]))
+        a = np.broadcast_to(ex[f"semi_major_{side}"], p.shape)
+        b = np.broadcast_to(ex[f"semi_minor_{side}"], p.shape)
+        per = int(np.prod(p.shape[2:]))  # 1 for a ball row; teeth × flanks for a threaded one
+        ps.append(p.reshape(p.shape[0], -1))
+        as_.append(a.reshape(p.shape[0], -1))
+        bs.append(b.reshape(p.shape[0], -1))
+        sides += [side] * (p.shape[1] * per)
+        elems.append(np.repeat(np.arange(p.shape[1]), per))
+        slices.append(np.tile(np.arange(per), p.shape[1]) if per > 1 else np.full(p.shape[1], -1))
     cat = lambda arrays: np.concatenate(arrays, axis=1)  # noqa: E731
-    return cat(ps), cat(as_), cat(bs), np.array(sides), np.concatenate(elems)
+    return cat(ps), cat(as_), cat(bs), np.array(sides), np.concatenate(elems), np.concatenate(slices)
 
 
 def _line_candidates(row, state):
@@ -324,8 +333,8 @@ def _profiles(contact, p, a, b, nu, traction, depth):
 def _row(row, state, profile, nu, traction, target, converged, every_contact):
     kind = "line" if any(k.startswith("slice_pressure_") for k in state.extras) else "point"
     if kind == "point":
-        p, a, b, sides, elems = _point_candidates(state)
-        slices, edge = np.full(sides.shape, -1), np.zeros(p.shape, bool)
+        p, a, b, sides, elems, slices = _point_candidates(state)
+        edge = np.zeros(p.shape, bool)
     else:
         p, b, sides, elems, slices, edge = _line_candidates(row, state)
         a = np.full(p.shape, np.nan)
@@ -449,9 +458,11 @@ def subsurface(
     converged = np.asarray(result.converged, bool)
     rows, notes = [], []
     for row, state in zip(result.model.rows, result.rows, strict=True):
-        if row.kind == "threaded":
-            notes.append(f"subsurface: row {row.name!r} (threaded) not covered: its contacts are flanks")
-            continue
+        if row.kind == "threaded" and not any(n.startswith("subsurface: threaded") for n in notes):
+            notes.append(
+                "subsurface: threaded rows at the most loaded tooth flank (slice index = 2 tooth + flank): "
+                "the Hertz half-space field below the flank, without the tooth's own bending"
+            )
         rows.append(
             _row(row, state, profile, poisson_ratio, traction, target_safety, converged, every_contact)
         )
