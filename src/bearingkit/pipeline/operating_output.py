@@ -36,7 +36,6 @@ SKID_RATIO = 1.0
 HOUR = 3600.0
 
 
-
 def _pitch_diameter(row) -> float:
     """d_m of a row [m] (ISO 281 Table 13 reads it): its ``pitch_diameter``, or its geometry's (a
     threaded roller row keeps it in its ``PTRBGeometry``)."""
@@ -44,6 +43,7 @@ def _pitch_diameter(row) -> float:
     if dm is None:
         dm = getattr(getattr(row, "geometry", None), "pitch_diameter", 0.0)
     return float(np.max(dm))
+
 
 def resolve_contamination(bearing, value):
     """(e_C, level name or None) from a number, an ISO 281 level name, or the file's ``[lubrication]``."""
