@@ -33,7 +33,9 @@ from bearingkit.rows.base import N_DOF
 from bearingkit.systems.drivetrain.model import HOUSING, Drivetrain
 from bearingkit.systems.shaft.beam import NODE_DOF
 from bearingkit.systems.shaft.shaft import nodal_loads
-from bearingkit.systems.shaft.solver import SystemOptions
+
+# The shaft's linearised start takes a stiffness per case (K (C, n, n): the meshes' loaded flanks) too.
+from bearingkit.systems.shaft.solver import SystemOptions, _starting_point
 from bearingkit.systems.shaft.supports import BearingLaw
 
 #: Stiffness of the bearings in the flank pre-pass, relative to the stiffest mesh [-] (only the sign
@@ -350,33 +352,6 @@ def loaded_flanks(dt: Drivetrain, asm: DrivetrainAssembly) -> list[np.ndarray]:
     return out
 
 
-def _start(problem: _Problem, load: np.ndarray) -> np.ndarray:
-    """Linearised start with every contact closed (as
-    :func:`bearingkit.systems.shaft.solver._starting_point`)."""
-    n_cases, n = load.shape
-    delta = [np.full(n_cases, 1e-4 * law.deflection_scale) for law in problem.laws]
-    x = np.zeros_like(load)
-    for _ in range(6):
-        k = problem.K.copy()
-        for law, P, d in zip(problem.laws, problem.P, delta, strict=True):
-            kb = sum(e * d[:, None, None] ** (e - 1) * m for m, e in law.start_terms)
-            k += np.einsum("ai,cab,bj->cij", P, kb, P)
-        s = problem.scale
-        ks = k * s[None, :, None] * s[None, None, :]
-        ks += 1e-12 * np.abs(ks).max(axis=(1, 2))[:, None, None] * np.eye(n)
-        try:
-            x = np.linalg.solve(ks, (load * s)[..., None])[..., 0] * s
-        except np.linalg.LinAlgError:
-            return np.zeros_like(load)
-        for i, (P, c) in enumerate(zip(problem.P, problem.c, strict=True)):
-            q = x @ P.T + c
-            approach = np.abs(q[:, :3]).max(axis=1)
-            delta[i] = np.sqrt(delta[i] * np.maximum(approach, 1e-3 * delta[i]))
-    x = np.where(np.isfinite(x).all(axis=1, keepdims=True), x, 0.0)
-    better = problem.state(x, load)["potential"] < problem.state(np.zeros_like(x), load)["potential"]
-    return np.where(better[:, None], x, 0.0)
-
-
 def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None = None):
     """Solve the drivetrain for a batch of load cases (one Newton); returns a DrivetrainResult.
 
@@ -409,7 +384,7 @@ def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None
     n_cases = load.shape[0]
     iterations = np.zeros(n_cases, int)
     everyone = np.ones(n_cases, bool)
-    x, converged, st, diverged = _newton(problem, _start(problem, load), load, everyone, iterations)
+    x, converged, st, diverged = _newton(problem, _starting_point(problem, load), load, everyone, iterations)
     if options.continuation_steps and not converged.all():
         retry = ~converged
         n_struct = asm.extras["n_struct"]
