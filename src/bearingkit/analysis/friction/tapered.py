@@ -401,6 +401,7 @@ def solve_rollers(
     model = BearingModel((row,), name="tapered row", references=("liu2022",))
     res = solve(model, load_vector(F_z=fz), free=list(free))
     kernel = model.kernels[0]
+    res.seed_rollers()  # the per-roller loads start where the compiled solve left them
     return SolvedRollers(kernel, kernel.roller_state(res.displacement), np.asarray(res.converged))
 
 

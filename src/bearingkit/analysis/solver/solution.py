@@ -175,9 +175,24 @@ class QuasiStaticResult:
     #: unknown), the warm start of the per-roller loads; None otherwise.
     _roller_x: np.ndarray | None = field(default=None, repr=False)
 
+    def seed_rollers(self) -> None:
+        """Give each tapered row's kernel the rollers' positions the compiled solve left at the
+        solution (its warm start), so that per-roller outputs start converged (see
+        :meth:`bearingkit.rows.tapered.kernel.TaperedKernel.warm_start`). A no-op without them."""
+        x = self._roller_x
+        if x is None or x.shape[1] == 0:
+            return
+        at = 0
+        for k, o in zip(self.model.kernels, self.offsets or [None] * len(self.model.kernels), strict=True):
+            if hasattr(k, "warm_start"):
+                z = k.row.n_elements
+                k.warm_start(self.displacement, x[:, at : at + z], o)
+                at += z
+
     @property
     def rows(self) -> list[RowState]:
         if self._rows is None:
+            self.seed_rollers()
             offs = self.offsets or [None] * len(self.model.kernels)
             small = self.n_cases <= STATE_CHUNK
             self._rows = [
@@ -199,6 +214,7 @@ class QuasiStaticResult:
                 st.name, st.kind, st.max_load, st.max_pressure.max(axis=-1), st.loaded_count,
                 st.deflection.max(axis=-1),
             )  # fmt: skip
+        self.seed_rollers()
         kernel = self.model.kernels[i]
         offset = self.offsets[i] if self.offsets else None
         n = self.n_cases
@@ -222,6 +238,7 @@ class QuasiStaticResult:
         """Row states of one case (from ``rows`` if computed, else computed for that case only)."""
         if self._rows is not None or self.n_cases <= STATE_CHUNK:
             return self.rows
+        self.seed_rollers()
         offs = self.offsets or [None] * len(self.model.kernels)
         one = slice(case, case + 1)
         n = self.n_cases

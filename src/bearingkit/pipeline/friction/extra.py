@@ -72,6 +72,7 @@ def tapered(analysis) -> FrictionOutcome:
     for speed, temp in sorted(keys):
         mask = (op.abs_speed == speed) & (op.temperature == temp)
         top = TRBOperatingPoint(speed=speed, lubricant=op.lubricant, temperature_C=temp)
+        res.seed_rollers()  # the per-roller loads start where the compiled solve left them
         for row, kernel in rows:
             fr = friction_from_state(kernel, kernel.roller_state(res.displacement), top, res.converged)
             geo = kernel.geo

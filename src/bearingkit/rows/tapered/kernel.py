@@ -398,6 +398,24 @@ class TaperedKernel(KernelBase):
         energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c * xr[..., 0].sum(-1)
         return RowResponse(force, -schur, energy)
 
+    def warm_start(self, q: np.ndarray, x: np.ndarray | None, offset: RacewayOffset | None = None) -> None:
+        """Start the next roller sub-problem at q (C, 5) from the rollers' positions x (C, Z, 2).
+
+        The compiled core solves the rollers inside its own Newton and leaves their positions
+        (``QuasiStaticResult._roller_x``); the per-roller outputs must start there. From the
+        closed-form guess, a lightly loaded roller may need more than :data:`ROLLER_MAX_ITER` steps
+        and its reported loads would then not balance the ring (a 32008 under 0.49 N reported 7.5 N).
+        NaN entries of x, or a shape that does not match, fall back to the guess (:meth:`_start`).
+        """
+        if x is None:
+            return
+        x = np.asarray(x, dtype=float)
+        q = np.asarray(q, dtype=float)
+        if x.shape != (q.shape[0], self.row.n_elements, 2):
+            return
+        # One assignment, as in :meth:`response`: a concurrent call replaces it whole or not at all.
+        self._cache = (relative_displacement(q, offset), x, None)
+
     def roller_state(self, q: np.ndarray, offset: RacewayOffset | None = None) -> dict:
         """Per-roller contact loads and approaches at displacements q (C, 5) (SI arrays)."""
         q = np.asarray(q, dtype=float)
