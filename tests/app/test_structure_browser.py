@@ -87,9 +87,9 @@ def _assert_structure_equals_cli(browser, case: dict) -> None:
             expected = max(abs(v) for v in ring[key])
             assert _value(browser, f"st-{element}-{side}") == pytest.approx(expected, rel=REL, abs=1e-300)
         assert _value(browser, f"st-sigma-{side}") == pytest.approx(ring["max_fibre_stress_Pa"], rel=REL)
-    # one load chart per row, two per ring (deflection, moments)
+    # one load chart per row, three per ring (deflection, twist, moments)
     charts = browser.find_elements("css selector", "#structure-plots svg")
-    assert len(charts) == len(f["rows"]) + 2 * len(rings)
+    assert len(charts) == len(f["rows"]) + 3 * len(rings)
     status = browser.find_element("id", "structure-status").text
     assert f"{f['coupling']['iterations']} iterations" in status
     assert ("NOT converged" in status) == (not f["converged"])

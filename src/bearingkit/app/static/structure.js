@@ -40,7 +40,7 @@ function renderStructure(c) {
   const shown = Boolean(f && f.rigid_vs_flexible);
   card.hidden = !shown;
   if (!shown) {
-    for (const id of ["structure-status", "structure-rows", "structure-change", "structure-rings", "structure-plots"]) $(id).replaceChildren();
+    for (const id of ["structure-status", "structure-rows", "structure-change", "structure-rings", "structure-rings-note", "structure-plots"]) $(id).replaceChildren();
     return;
   }
   const status = $("structure-status");
@@ -90,8 +90,10 @@ function renderStructure(c) {
       num(r.max_fibre_stress_Pa ?? null, 1e-6, 4, { id: `st-sigma-${side}` }),
     ];
   });
-  table("structure-rings", ["ring", "model", "|w| radial [µm]", "|v| tangential [µm]", "|u| axial [µm]", "|φ| twist [µrad]",
-    "|M| in plane [N·m]", "|M| out of plane [N·m]", "largest hoop fibre stress [MPa]"], ringRows);
+  table("structure-rings", ["ring", "model", "|w| [µm]", "|v| [µm]", "|u| [µm]", "|φ| [µrad]", "|M_in| [N·m]", "|M_out| [N·m]", "σ max [MPa]"], ringRows);
+  $("structure-rings-note").textContent = "Largest over the circumference: radial w (outward +), tangential v and axial u " +
+    "deflection and twist φ of the ring's centroid, its in-plane and out-of-plane bending moments, and the largest hoop " +
+    "fibre stress over the section's outline (N/A + M_in Δr/I_in + M_out Δz/I_out).";
 
   // against azimuth: element loads rigid and flexible per row; each ring's deflection and moments
   const plots = [];
@@ -109,9 +111,13 @@ function renderStructure(c) {
     const { x, order } = unrolled(r.shape_azimuth_rad);
     const at = (k, s) => order.map((i) => r[k][i] * s);
     plots.push(chart({
-      width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "µm, µrad", title: `${r.side} ring: deflection around the circumference`,
-      series: [{ x, y: at("radial_deflection_m", 1e6), label: "w radial" }, { x, y: at("tangential_deflection_m", 1e6), label: "v" },
-        { x, y: at("axial_deflection_m", 1e6), label: "u axial" }, { x, y: at("twist_rad", 1e6), label: "φ twist" }],
+      width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "deflection [µm]", title: `${r.side} ring: deflection around the circumference`,
+      series: [{ x, y: at("radial_deflection_m", 1e6), label: "w radial" }, { x, y: at("tangential_deflection_m", 1e6), label: "v tangential" },
+        { x, y: at("axial_deflection_m", 1e6), label: "u axial" }],
+    }));
+    plots.push(chart({
+      width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "twist φ [µrad]", title: `${r.side} ring: twist of the section`,
+      series: [{ x, y: at("twist_rad", 1e6), label: "φ" }],
     }));
     plots.push(chart({
       width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "bending moment [N·m]", title: `${r.side} ring: bending moments`,
