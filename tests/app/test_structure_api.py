@@ -106,3 +106,23 @@ def test_the_page_has_the_structure_card_and_its_script(client):
     script = client.get("/static/structure.js")
     assert script.status_code == 200 and "function renderStructure" in script.text
     assert "renderStructure(c)" in client.get("/static/app.js").text
+
+
+@pytest.mark.parametrize("matrix", ["/etc/passwd", "/no/such/file.mtx", "k.mtx"])
+def test_an_upload_naming_an_fe_export_is_refused_before_any_path_is_looked_at(client, matrix):
+    """A file sent to the server cannot make it read another: [structure.imported] in an upload is one
+    line under the file's field, the same line whether the path exists, is readable or not (no oracle of
+    the server's files); opening it is refused the same way."""
+    text = (EXAMPLES / "dgbb_6209.toml").read_text()
+    text += f'\n[structure.imported]\nmatrix = "{matrix}"\nnodes = "nodes.csv"\n'
+    source = {"kind": "upload", "name": "fe.toml", "text": text}
+    for route in ("/api/analyze", "/api/open"):
+        r = client.post(route, json={"source": source})
+        assert r.status_code == 400, r.text
+        body = r.json()
+        assert body["field"] == "source" and "\n" not in body["error"]
+        assert body["error"] == (
+            "fe.toml: structure.imported names files (its matrix and nodes), which the web app does not "
+            "open: a file sent to the server cannot make it read another; analyse it with "
+            "`bearingkit analyze FILE` (the files beside it)"
+        )
