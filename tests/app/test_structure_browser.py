@@ -139,3 +139,33 @@ def test_structure_card_shows_the_cli_numbers(server, browser, page, tmp_path):
     assert not browser.find_element("id", "structure-card").is_displayed()
     assert browser.find_elements("css selector", "#structure-plots *") == []
     assert page.console_errors(browser) == []
+
+
+def test_the_seed_002_flexible_ring_shows_as_the_cli_prints_it(server, browser, page):
+    """The ball–column bearing's own flexible outer ring ([geometry.ring], no [structure]): the card shows
+    the case's rigid rows beside the flexible solve of ``analyze --json`` and the ring's bending."""
+    from selenium.webdriver.support.ui import Select
+
+    browser.get(server)
+    _wait(browser, page, lambda d: len(Select(d.find_element("id", "example")).options) > 1)
+    _open_example(browser, page, "ball_column_condition1.toml")
+    case = page.cli_json("analyze", str(EXAMPLES / "ball_column_condition1.toml"))["cases"][0]
+    f = case["flexible"]
+    assert "rigid_vs_flexible" not in f  # not a [structure]: the seed's own ring
+    assert browser.find_element("id", "structure-card").is_displayed()
+    rigid = {r["name"]: r for r in case["rows"]}
+    for row in f["rows"]:
+        name = row["name"]
+        assert _value(browser, f"st-qmax-flex-{name}") == pytest.approx(row["max_load_N"], rel=REL)
+        assert _value(browser, f"st-qmax-rigid-{name}") == pytest.approx(rigid[name]["max_load_N"], rel=REL)
+        assert _value(browser, f"st-pmax-flex-{name}") == pytest.approx(row["max_pressure_Pa"], rel=REL)
+        loaded = browser.find_element("id", f"st-loaded-{name}").text
+        assert loaded == f"{rigid[name]['loaded_count']} → {row['loaded_count']}"
+    ring = f["ring"]
+    w = max(abs(v) for v in ring["bending_deflection_m"])
+    assert _value(browser, "st-w-outer") == pytest.approx(w, rel=REL)
+    assert _value(browser, "st-sigma-outer") == pytest.approx(ring["max_fibre_stress_Pa"], rel=REL)
+    assert len(browser.find_elements("css selector", "#structure-plots svg")) == len(f["rows"]) + 2
+    status = browser.find_element("id", "structure-status").text
+    assert f"{f['coupling']['iterations']} iterations" in status and "[geometry.ring]" in status
+    assert page.console_errors(browser) == []

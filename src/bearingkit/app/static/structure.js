@@ -3,7 +3,8 @@
 // it: per row the loaded elements, Q_max and p_max on rigid and on flexible rings and their change; s0 and
 // the basic rating life each way; each ring's deflection, twist, bending moments and largest fibre stress;
 // the element loads and the ring's deflection and moments against azimuth. Every number is the server's
-// (the case's `flexible` dict of Analysis.to_dict(), SI); this file only converts units and draws.
+// (the case's `flexible` dict of Analysis.to_dict(), SI); this file only converts units and draws. The
+// seed-002 ball–column bearing's own flexible ring (no [structure]) shows in the same card (renderSeedRing).
 // The warnings the structure carries are in the case's warnings, shown by app.js with every other one.
 "use strict";
 
@@ -37,10 +38,11 @@ function structureStatus(f) {
 function renderStructure(c) {
   const f = c.flexible;
   const card = $("structure-card");
-  const shown = Boolean(f && f.rigid_vs_flexible);
-  card.hidden = !shown;
-  if (!shown) {
-    for (const id of ["structure-status", "structure-rows", "structure-change", "structure-rings", "structure-rings-note", "structure-plots"]) $(id).replaceChildren();
+  card.hidden = !f;
+  for (const id of ["structure-status", "structure-rows", "structure-change", "structure-rings", "structure-rings-note", "structure-plots"]) $(id).replaceChildren();
+  if (!f) return;
+  if (!f.rigid_vs_flexible) {
+    renderSeedRing(c, f);
     return;
   }
   const status = $("structure-status");
@@ -123,6 +125,57 @@ function renderStructure(c) {
       width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "bending moment [N·m]", title: `${r.side} ring: bending moments`,
       series: [{ x, y: at("bending_moment_Nm", 1), label: "in plane" }, { x, y: at("out_of_plane_moment_Nm", 1), label: "out of plane" }],
     }));
+  }
+  $("structure-plots").replaceChildren(...plots);
+}
+
+// The seed-002 ball–column bearing's own flexible outer ring ([geometry.ring], not [structure]): what
+// `bearingkit analyze` prints for it — the coupling, per row the loaded elements, Q_max and p_max of the
+// rigid solve (the case's rows) beside the flexible one — and the ring's bending deflection and moment.
+function renderSeedRing(c, f) {
+  const how = f.coupling || {};
+  const status = $("structure-status");
+  status.textContent = `Flexible outer ring of the ball–column bearing ([geometry.ring]: beam between housing supports + ` +
+    `ovalisation; ${how.method}, ${how.iterations} iterations, ${f.converged ? "converged" : "NOT converged"}). ` +
+    "Rigid: the case's own solve above.";
+  status.className = f.converged ? "small" : "small bad";
+  const rigidRows = Object.fromEntries(c.rows.map((r) => [r.name, r]));
+  const rows = f.rows.map((r) => {
+    const rigid = rigidRows[r.name] || {};
+    return [
+      r.name,
+      { text: `${rigid.loaded_count} → ${r.loaded_count}`, id: `st-loaded-${r.name}`, value: r.loaded_count },
+      num(rigid.max_load_N, 1, 6, { id: `st-qmax-rigid-${r.name}` }),
+      num(r.max_load_N, 1, 6, { id: `st-qmax-flex-${r.name}` }),
+      num(rigid.max_pressure_Pa, 1e-6, 5, { id: `st-pmax-rigid-${r.name}` }),
+      num(r.max_pressure_Pa, 1e-6, 5, { id: `st-pmax-flex-${r.name}` }),
+    ];
+  });
+  table("structure-rows", ["row", "loaded", "Q_max rigid [N]", "Q_max flexible [N]", "p_max rigid [MPa]", "p_max flexible [MPa]"], rows);
+  const ring = f.ring;
+  const plots = [];
+  for (const row of f.rows) {
+    const { x, order } = unrolled(row.azimuth_rad);
+    const rigid = rigidRows[row.name];
+    const series = [];
+    if (rigid) series.push({ x, y: order.map((i) => rigid.loads_N[i] / 1e3), label: "rigid" });
+    series.push({ x, y: order.map((i) => row.loads_N[i] / 1e3), label: "flexible" });
+    plots.push(chart({ width: 460, height: 240, series, xlabel: "azimuth ψ [°]", ylabel: "element load Q [kN]", title: `${row.name}: element loads, rigid → flexible ring` }));
+  }
+  if (ring && ring.bending_deflection_m) {
+    table("structure-rings", ["ring", "model", "|w| bending [µm]", "|M| [N·m]", "σ max [MPa]"], [[
+      "outer", { text: `beam + ovalisation (${ring.beam_mode})`, cls: "wrap" },
+      num(maxAbs(ring.bending_deflection_m), 1e6, 4, { id: "st-w-outer" }),
+      num(maxAbs(ring.bending_moment_Nm), 1, 4, { id: "st-m-in-outer" }),
+      num(ring.max_fibre_stress_Pa ?? null, 1e-6, 4, { id: "st-sigma-outer" }),
+    ]]);
+    $("structure-rings-note").textContent = "Largest over the circumference: the ring's bending deflection (outward +), its bending moment and hoop fibre stress.";
+    const { x, order } = unrolled(ring.shape_azimuth_rad);
+    const at = (k, sc) => order.map((i) => ring[k][i] * sc);
+    plots.push(chart({ width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "deflection [µm]", title: "outer ring: bending deflection",
+      series: [{ x, y: at("bending_deflection_m", 1e6), label: "w" }] }));
+    plots.push(chart({ width: 460, height: 240, xlabel: "azimuth θ [°]", ylabel: "bending moment [N·m]", title: "outer ring: bending moment",
+      series: [{ x, y: at("bending_moment_Nm", 1), label: "M" }] }));
   }
   $("structure-plots").replaceChildren(...plots);
 }
