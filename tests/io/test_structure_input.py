@@ -142,3 +142,42 @@ def test_a_study_over_the_housing_wall(tmp_path):
     assert d["converged"].all() and np.all(np.diff(q) > 0)
     assert q[-1] == pytest.approx(2084.46, rel=0.02) and q[0] < 0.9 * 2084.46
     assert np.all(np.diff(d["s0"].to_numpy()) < 0) and np.all(np.diff(d["L10r_h"].to_numpy()) < 0)
+
+
+@pytest.mark.parametrize(
+    "name,message",
+    [
+        ("/etc/passwd", "lies outside this file's folder"),
+        ("../../k.mtx", "lies outside this file's folder"),
+        ("~/k.mtx", "'~' is not expanded"),
+        (".hidden/k.mtx", "names a hidden file or folder"),
+    ],
+    ids=["absolute", "two-folders-up", "home", "hidden"],
+)
+def test_imported_files_are_confined_to_the_input_files_folder(tmp_path, name, message):
+    """A data file may come from someone else: the FE export it names is confined as a study's bearing
+    path is (docs/security.md) — refused in one line before it is opened, even where the file exists
+    and holds a good matrix (``../../k.mtx`` here)."""
+    nodes = _ring_nodes()
+    scipy.io.mmwrite(str(tmp_path / "k.mtx"), np.eye(27) * 1e9, precision=17)
+    folder = tmp_path / "a" / "b"
+    (folder / ".hidden").mkdir(parents=True)
+    scipy.io.mmwrite(str(folder / ".hidden" / "k.mtx"), np.eye(27) * 1e9, precision=17)
+    np.savetxt(folder / "nodes.csv", nodes, delimiter=",")
+    data = _data()
+    data["structure"] = {"imported": {"matrix": name, "nodes": "nodes.csv"}}
+    import tomli_w
+
+    path = folder / "imported.toml"
+    path.write_bytes(tomli_w.dumps(data).encode())
+    out = runner.invoke(app, ["analyze", str(path)])
+    assert out.exit_code == 2
+    text = " ".join(out.output.split())
+    assert text.startswith(f"error: {path}: structure.imported.matrix ({name!r})")
+    assert message in text and "--allow-path" not in text
+    # the same export beside the input file is read (the confinement refuses only what lies outside)
+    scipy.io.mmwrite(str(folder / "k.mtx"), np.eye(27) * 1e9, precision=17)
+    data["structure"]["imported"]["matrix"] = "k.mtx"
+    path.write_bytes(tomli_w.dumps(data).encode())
+    out = runner.invoke(app, ["analyze", str(path)])
+    assert out.exit_code == 0 and "rigid → flexible rings" in out.output

@@ -157,7 +157,7 @@ def _source_document(source: Source) -> tuple[dict, str]:
         path = EXAMPLES_DIR / source.name
         if path.stat().st_size > MAX_TOML_BYTES:
             raise TooLarge(f"{source.name}: file too large; at most {MAX_TOML_BYTES} bytes")
-        return _parse_toml(read_text(path), source.name), source.name
+        return _no_named_files(_parse_toml(read_text(path), source.name), source.name), source.name
     if source.kind == "designation":
         name = " ".join(source.name.split())
         if not name or len(name) > MAX_DESIGNATION or not name.isprintable():
@@ -169,7 +169,22 @@ def _source_document(source: Source) -> tuple[dict, str]:
     name = Path(source.name).name or "upload.toml"  # only the base name, for messages and downloads
     if source.text is None:
         raise InputError(f"{name}: no file content received")
-    return _parse_toml(source.text, name), name
+    return _no_named_files(_parse_toml(source.text, name), name), name
+
+
+def _no_named_files(document: dict, name: str) -> dict:
+    """``document``, refused when it names other files: a ``[structure.imported]`` FE export (its matrix
+    and nodes). A file sent to the server cannot make it open another (as the shaft page's bearing files,
+    looked up among the examples by name): the refusal comes before any path is looked at, so it says
+    nothing about the server's files."""
+    structure = document.get("structure")
+    if isinstance(structure, dict) and "imported" in structure:
+        raise InputError(
+            f"{name}: structure.imported names files (its matrix and nodes), which the web app does not "
+            "open: a file sent to the server cannot make it read another; analyse it with "
+            "`bearingkit analyze FILE` (the files beside it)"
+        )
+    return document
 
 
 def _case_of(document: dict, name: str | None, source: str) -> dict:

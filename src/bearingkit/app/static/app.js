@@ -160,6 +160,7 @@ function clearBearing(source) {
     $(id).replaceChildren();
   }
   $("subsurface-card").hidden = true;
+  renderStructure({}); // hides and empties the structure card
   $("references").textContent = "";
   $("sweep-plot").replaceChildren();
   $("sweep-status").textContent = "";
@@ -279,6 +280,7 @@ function render(data) {
   warn.replaceChildren(...c.warnings.map((w) => el("li", {}, w)));
   renderPolar(c);
   renderAngles(c);
+  renderStructure(c); // structure.js: a [structure]'s rigid → flexible rings
   renderFriction(c);
   renderPressure(data, c);
   renderStiffness(c.stiffness_SI);

@@ -7,7 +7,8 @@ bearing: an outer ring from its raceway, pitch + D, to ``[geometry] outer_diamet
 × D), its material from ``[material]``, its seat from ``seat_stiffness`` or a wall thickness (thin wall,
 :func:`~bearingkit.physics.structure.thin_ring.housing_wall_stiffness`), its flange and split housing.
 ``[structure.imported]`` reads a Matrix Market or CSV matrix and a CSV of node coordinates (paths
-relative to the input file; regular files of at most :data:`MAX_MATRIX_BYTES`) into an
+relative to the input file and confined to its folder, :func:`bearingkit.io.reading.confined_path`;
+regular files of at most :data:`MAX_MATRIX_BYTES`) into an
 :class:`~bearingkit.rings.imported.ImportedStructure`, whose checks refuse a bad matrix in one line.
 """
 
@@ -198,12 +199,24 @@ def _groove_centre(box, face, depth, radius, z):
 
 
 # -- imported matrices -------------------------------------------------------------------------------
-def _path(source: str, name: str) -> Path:
-    p = Path(name)
-    if not p.is_absolute():
-        base = Path(source).parent if source and not source.startswith("<") else Path.cwd()
-        p = base / p
-    return p
+def _path(source: str, name: str, field: str) -> Path:
+    """The file ``name`` that ``[structure.imported]`` gives as ``field``, confined as every path a data
+    file names (:func:`bearingkit.io.reading.confined_path`, docs/security.md): relative to the input
+    file's folder and inside it (or its project's folder above it); no ``~``, no hidden names, an absolute
+    path only there too. Nothing is opened here."""
+    from bearingkit.io.reading import confined_path
+
+    base = Path(source).parent if source and not source.startswith("<") else Path.cwd()
+    try:
+        return confined_path(name, base, f"structure.imported.{field}")
+    except InputError as exc:  # analyze has no --allow-path: say where the file must be instead
+        text = str(exc)
+        if " lies outside " in text:
+            text = text.split(" lies outside ")[0] + (
+                " lies outside this file's folder (and its project's folder above it): put the FE "
+                "export beside the input file or below it"
+            )
+        raise InputError(text) from None
 
 
 def _read_matrix(path: Path) -> np.ndarray:
@@ -246,13 +259,14 @@ def _csv(path: Path, text: str) -> np.ndarray:
 def _imported(spec, source, model):
     from bearingkit.rings.imported import ImportedStructure
 
-    matrix = _read_matrix(_path(source, spec.matrix))
+    matrix_path, nodes_path = _path(source, spec.matrix, "matrix"), _path(source, spec.nodes, "nodes")
+    matrix = _read_matrix(matrix_path)
     if matrix.shape[0] > MAX_MATRIX_SIZE:
         raise InputError(f"matrix ({matrix.shape[0]} DOFs) must have at most {MAX_MATRIX_SIZE}")
     nodes = (
-        _read_matrix(_path(source, spec.nodes))
+        _read_matrix(nodes_path)
         if spec.nodes.lower().endswith(".mtx")
-        else _csv(_path(source, spec.nodes), _read_nodes(_path(source, spec.nodes)))
+        else _csv(nodes_path, _read_nodes(nodes_path))
     )
     if nodes.ndim != 2 or nodes.shape[1] != 3:
         raise InputError(f"nodes ({spec.nodes}) must hold three coordinates x, y, z per line")
