@@ -184,14 +184,15 @@ def test_tapered_df_pair_is_the_sum_of_single_bearings_at_their_row_loads():
     np.testing.assert_allclose(a.friction.total, total, rtol=1e-9)
 
 
-@pytest.mark.parametrize(
-    "example", ["seed000_composite.toml", "ball_column_condition1.toml", "ptrb_prototype.toml", "yrt_120.toml"]
-)
+SEED_FILES = ["seed000_composite.toml", "ball_column_condition1.toml", "ptrb_prototype.toml", "yrt_120.toml"]
+
+
+@pytest.mark.parametrize("example", SEED_FILES)
 def test_seed_files_keep_the_component_model(example):
     a = bk.analyze(EXAMPLES / example, speed="5 rpm", lubricant="ISO_VG68", temperature="40 degC")
     model, why = choose(a)
     assert model == "components" and "not a catalogue bearing" in why
-    if a.friction is not None:  # the threaded rows of the PTRB have no component friction yet (a note says so)
+    if a.friction is not None:  # the PTRB's threaded rows have no component friction yet (a note says so)
         assert a.friction.model == "components" and a.friction.why == why
 
 
