@@ -112,6 +112,11 @@ def test_preloaded_pair_without_external_load_has_the_friction_of_its_preload():
     assert a.friction.model == "skf"
     one = 0.15 * 1.82e-2 * 65.0**0.26 * 0.71 * 480.0 ** (4 / 3) * 1e-3
     assert a.friction.total[0] == pytest.approx(2 * one, rel=1e-9)
+    cli = ["friction", "7209 B DB", "--preload", "480N", "--load", "Fr=0kN", "--speed", "0rpm"]
+    data = _json([*cli, "--lubricant", "ISO_VG68", "--json"])
+    assert data["cases"][0]["friction"]["total_Nm"] == pytest.approx(2 * one, rel=1e-9)
+    loads = data["cases"][0]["friction"]["row_loads_N"]
+    assert all(v["axial"] == pytest.approx(480.0, rel=1e-9) for v in loads.values())
     # at speed the preload of a set held by its setting rises (ball centrifugal force): each row's own load
     b = bk.analyze(inp, speed="3000 rpm", lubricant="ISO_VG68", temperature="70 degC")
     nu = as_lubricant("ISO_VG68").kinematic_viscosity(70.0) * 1e6
