@@ -269,8 +269,9 @@ def friction(
         "auto",
         "--model",
         help="auto (default: skf for standard bearings, per bearing for DB/DF/DT sets, slewing for slewing "
-        "rings, components for the seed composites; the output says which and why) | components (physics, per contact) | skf | palmgren "
-        "(standard and self-aligning bearings) | trb (tapered rows) | slewing (slewing rings).",
+        "rings, components for the seed composites; the output says which and why) | components (physics, "
+        "per contact) | skf | palmgren (standard and self-aligning bearings) | trb (tapered rows) | slewing "
+        "(slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
