@@ -133,10 +133,7 @@ def _engineering(model: str) -> Callable:
     def run(analysis) -> FrictionOutcome:
         from bearingkit.analysis.friction.engineering import engineering_friction_torque
         from bearingkit.io.export import engineering_friction_case_dict
-        from bearingkit.pipeline.friction.paired import is_set, per_bearing
 
-        if is_set(analysis):  # a DB/DF/DT set: each bearing at its own loads, summed
-            return per_bearing(analysis, model)
         bearing, op = analysis.input, analysis.operating
         if op.lubricant is None:
             raise InputError(

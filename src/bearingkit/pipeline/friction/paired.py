@@ -26,7 +26,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.pipeline.friction.models import FrictionOutcome
+from bearingkit.pipeline.friction.models import FRICTION_MODELS, FrictionOutcome, register_friction_model
 
 __all__ = ["SetFriction", "is_set", "per_bearing", "row_forces", "skf_per_bearing"]
 
@@ -163,3 +163,16 @@ def per_bearing(analysis, model: str = "skf") -> FrictionOutcome:
     return FrictionOutcome(
         model, total, comps, total * op.abs_speed, dicts, native, notes, tuple(first.references)
     )
+
+
+def _per_set(model: str, run_single):
+    def run(analysis) -> FrictionOutcome:
+        if is_set(analysis):  # a DB/DF/DT set: each bearing at its own loads, summed
+            return per_bearing(analysis, model)
+        return run_single(analysis)
+
+    return run
+
+
+for _name in ("skf", "palmgren"):
+    register_friction_model(_name, _per_set(_name, FRICTION_MODELS[_name]))
