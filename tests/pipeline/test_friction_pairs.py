@@ -206,3 +206,35 @@ def test_double_row_designation_is_one_bearing_not_a_set():
     a = bk.analyze("3209", load={"F_x": "3 kN"}, speed="3000 rpm", lubricant="ISO_VG68")
     assert a.friction.model == "skf" and "standard angular contact ball double" in a.friction.why
     assert not hasattr(a.friction.native, "by_row")
+
+
+def test_a_shaft_seat_holding_a_db_pair_gets_skf_per_bearing():
+    """examples/shaft_spindle.toml: the front DB pair of 7209 B is a seat of the shaft; its friction is the
+    sum of its two bearings at the row loads of the shaft's solution (as a pair analysed alone)."""
+    from bearingkit.systems.shaft.input import load_shaft_file
+    from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
+
+    sa = ShaftAnalysis(load_shaft_file(EXAMPLES / "shaft_spindle.toml"))
+    a = sa.bearings["front_pair"]
+    assert a.friction.model == "skf" and "matched set (DB)" in a.friction.why
+    op = a.operating
+    nu = op.lubricant.kinematic_viscosity(op.temperature)
+    total = 0.0
+    for row in a.input.model.rows:
+        fr, fa = _row_loads(a, row.name)
+        one = skf.skf_friction_moment(
+            "angular_contact_ball",
+            bore_diameter=0.045,
+            outside_diameter=0.085,
+            speed=op.abs_speed,
+            kinematic_viscosity=nu,
+            load_radial=fr,
+            load_axial=fa,
+            series="72_BECBP",
+            lubrication="grease" if op.lubricant.base == "grease" else "oil_bath",
+        )["total_Nm"]
+        np.testing.assert_allclose(a.friction.native.by_row[row.name], one, rtol=1e-9)
+        total = total + one
+    np.testing.assert_allclose(a.friction.total, total, rtol=1e-9)
+    d = sa.bearing_dict("front_pair", 0)["analysis"]["friction"]
+    assert d["model"] == "skf" and set(d["rows_Nm"]) == {"balls_A", "balls_B"} and d["power_loss_W"] > 0

@@ -59,11 +59,8 @@ class SetFriction:
 def is_set(analysis) -> bool:
     """Whether the analysed bearing is a matched set of single SKF-covered bearings (one bearing per row)."""
     from bearingkit.pipeline.bearing_facts import bearing_facts
-    from bearingkit.pipeline.inputs import ModelInput
 
-    if isinstance(analysis.input, ModelInput):
-        return False
-    return bearing_facts(analysis.input).arrangement is not None
+    return bearing_facts(analysis.input).arrangement is not None  # a shaft's seat: its bearing file's
 
 
 def row_forces(statics, name: str) -> tuple[np.ndarray, np.ndarray]:
