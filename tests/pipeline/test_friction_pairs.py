@@ -238,3 +238,30 @@ def test_a_shaft_seat_holding_a_db_pair_gets_skf_per_bearing():
     np.testing.assert_allclose(a.friction.total, total, rtol=1e-9)
     d = sa.bearing_dict("front_pair", 0)["analysis"]["friction"]
     assert d["model"] == "skf" and set(d["rows_Nm"]) == {"balls_A", "balls_B"} and d["power_loss_W"] > 0
+
+
+def test_drag_of_a_pair_in_an_oil_bath_is_that_of_each_bearing(tmp_path):
+    """Both bearings sit in the same bath: each gets the single bearing's drag term at the oil level (with
+    the 7209 B's width), and the set's drag is twice it (drag does not depend on the load)."""
+    text = (EXAMPLES / "acbb_7209_DB.toml").read_text()
+    path = tmp_path / "pair.toml"
+    path.write_text(text.replace("[[load_cases]]", '[lubrication]\noil_level = "20 mm"\n\n[[load_cases]]', 1))
+    a = bk.analyze(path, speed="3000 rpm", lubricant="ISO_VG68", temperature="60 degC")
+    assert a.friction.model == "skf"
+    nu = as_lubricant("ISO_VG68").kinematic_viscosity(60.0)
+    one = skf.skf_friction_moment(
+        "angular_contact_ball",
+        bore_diameter=0.045,
+        outside_diameter=0.085,
+        speed=3000 * RPM,
+        kinematic_viscosity=nu,
+        load_radial=0.0,
+        series="72_BECBP",
+        lubrication="oil_bath",
+        oil_level=0.020,
+        width=0.019,
+    )["drag_Nm"]
+    assert float(one) > 0
+    np.testing.assert_allclose(a.friction.components["drag"], 2 * float(one), rtol=1e-12)
+    for res in a.friction.native.per_bearing.values():
+        np.testing.assert_allclose(res.components["drag"], float(one), rtol=1e-12)
