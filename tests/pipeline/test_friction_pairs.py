@@ -265,3 +265,12 @@ def test_drag_of_a_pair_in_an_oil_bath_is_that_of_each_bearing(tmp_path):
     np.testing.assert_allclose(a.friction.components["drag"], 2 * float(one), rtol=1e-12)
     for res in a.friction.native.per_bearing.values():
         np.testing.assert_allclose(res.components["drag"], float(one), rtol=1e-12)
+
+
+def test_rating_at_the_found_temperature_names_the_pair_model_and_why():
+    args = ["rating", "7209 B DB", "--load", "Fr=3kN", "--load", "Fa=2kN", "--speed", "3000rpm"]
+    data = _json([*args, "--lubricant", "ISO_VG68", "--heat", "--json"])
+    f = data["cases"][0]["friction"]
+    assert f["model"] == "skf" and "matched set (DB)" in f["model_why"] and f["power_loss_W"] > 0
+    text = runner.invoke(app, [*args, "--lubricant", "ISO_VG68", "--heat"]).stdout
+    assert "friction at the found temperature (skf: matched set (DB)" in " ".join(text.split())

@@ -230,8 +230,8 @@ def rating(
             if "friction" in c:
                 f = c["friction"]
                 console.print(
-                    f"  friction at the found temperature ({f['model']}): M = {f['torque_Nm']:.4g} N·m, "
-                    f"P = {f['power_loss_W']:.4g} W",
+                    f"  friction at the found temperature ({f['model']}: {f['model_why']}): "
+                    f"M = {f['torque_Nm']:.4g} N·m, P = {f['power_loss_W']:.4g} W",
                     markup=False,
                     highlight=False,
                 )
