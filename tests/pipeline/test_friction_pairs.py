@@ -10,6 +10,7 @@ K_Z 4.4), independent of bearingkit's code.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -274,3 +275,15 @@ def test_rating_at_the_found_temperature_names_the_pair_model_and_why():
     assert f["model"] == "skf" and "matched set (DB)" in f["model_why"] and f["power_loss_W"] > 0
     text = runner.invoke(app, [*args, "--lubricant", "ISO_VG68", "--heat"]).stdout
     assert "friction at the found temperature (skf: matched set (DB)" in " ".join(text.split())
+
+
+def test_report_shows_the_pair_per_bearing_with_power_and_why(tmp_path):
+    out = tmp_path / "r.html"
+    res = runner.invoke(app, ["report", *PAIR_CASE, "-o", str(out)])
+    assert res.exit_code == 0, res.stderr
+    text = " ".join(out.read_text(encoding="utf-8").split())
+    assert "skf catalogue model per bearing of the set" in text
+    assert "Friction model: skf — matched set (DB) of 2 standard angular contact ball bearings" in text
+    power = _json(["friction", *PAIR_CASE, "--json"])["cases"][0]["friction"]["power_loss_W"]
+    shown = re.search(r"power loss P = <b>([\d.]+) W</b>", text)
+    assert shown and float(shown.group(1)) == pytest.approx(power, rel=1e-3)  # 157.1 W
