@@ -100,7 +100,7 @@ def test_seed000_keeps_the_component_model():
     [
         ("slewing_four_point.toml", "slewing"),
         ("needle_na4910.toml", "palmgren"),
-        ("acbb_7209_DB.toml", "components"),
+        ("acbb_7209_DB.toml", "skf"),
         ("srb_22220.toml", "skf"),
         ("thrust_ball_51209.toml", "skf"),
     ],

@@ -230,8 +230,8 @@ def rating(
             if "friction" in c:
                 f = c["friction"]
                 console.print(
-                    f"  friction at the found temperature ({f['model']}): M = {f['torque_Nm']:.4g} N·m, "
-                    f"P = {f['power_loss_W']:.4g} W",
+                    f"  friction at the found temperature ({f['model']}: {f['model_why']}): "
+                    f"M = {f['torque_Nm']:.4g} N·m, P = {f['power_loss_W']:.4g} W",
                     markup=False,
                     highlight=False,
                 )
@@ -268,9 +268,10 @@ def friction(
     model: str = typer.Option(
         "auto",
         "--model",
-        help="auto (default: skf for standard bearings, slewing for slewing rings, components for the seed "
-        "composites; the output says which and why) | components (physics, per contact) | skf | palmgren "
-        "(standard and self-aligning bearings) | trb (tapered rows) | slewing (slewing rings).",
+        help="auto (default: skf for standard bearings, per bearing for DB/DF/DT sets, slewing for slewing "
+        "rings, components for the seed composites; the output says which and why) | components (physics, "
+        "per contact) | skf | palmgren (standard and self-aligning bearings) | trb (tapered rows) | slewing "
+        "(slewing rings).",
     ),
     compare: bool = typer.Option(
         False, "--compare", help="Every model that applies side by side, with when each applies."
@@ -281,6 +282,7 @@ def friction(
         help="Find the operating temperature by the heat balance (friction heat = heat carried away), give "
         "the friction at it, with the thermal reference speed (ISO 15312 method).",
     ),
+    preload: str = _PRELOAD_OPTION,
     as_json: bool = _JSON_OPTION,
 ):
     """Friction torque and power loss of every load case, broken down by component and by row."""
@@ -299,14 +301,17 @@ def friction(
         lubricant_file=lubricant_file,
         heat=heat,
         friction_model=model,
+        preload=preload,
     )
     if not (a.operating.speed != 0).any() and speed is None:
         raise InputError(
             f"{file}: every load case has no speed; give --speed 3000rpm or speed in the [[load_cases]]"
         )
     from bearingkit.pipeline.friction.choice import AUTO, choose
+    from bearingkit.pipeline.friction.paired import is_set
 
-    if (choose(a)[0] if model == AUTO else model) == "components":
+    used = choose(a)[0] if model == AUTO else model
+    if used == "components" or (used in ("skf", "palmgren") and is_set(a)):  # loads from the solve
         _fail_unconverged(file, a)
     from bearingkit.cli.operating_tables import comparison_text, heat_text, thermal_text
     from bearingkit.cli.tables import friction_table, warnings_text

@@ -103,6 +103,7 @@ class AnalysisOutput:
                 if friction is not None:
                     d["friction"] = {
                         "model": friction.model,
+                        "model_why": friction.why,
                         "torque_Nm": float(friction.total[i]),
                         "power_loss_W": float(friction.power_loss[i]),
                     }

@@ -25,7 +25,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 
-__all__ = ["ENGINEERING_TYPES", "SEAL_DIAMETER_SHARE", "BearingFacts", "bearing_facts"]
+__all__ = ["ENGINEERING_TYPES", "SEAL_DIAMETER_SHARE", "SET_TYPES", "BearingFacts", "bearing_facts"]
 
 #: Input bearing type → bearing type of the catalogue models (SKF friction, speed and load limits).
 #: A pair of single bearings (``angular_contact_pair`` from a file, a tapered DB/DF pair) keeps the type
@@ -48,6 +48,10 @@ ENGINEERING_TYPES = {
 #: inner-ring shoulder d1 where SKF's contact seals run lies about a quarter of the section above the
 #: bore for deep groove ball bearings [M] (an estimate; give ``[bearing] seal_counterface_diameter``).
 SEAL_DIAMETER_SHARE = 0.25
+#: Input type of a matched set of single bearings → type of the single bearing (its catalogue families).
+_SET_TYPES = {"angular_contact_pair": "angular_contact_ball"}
+#: Catalogue model types whose bearings come in matched sets (DB/DF/DT), each row one bearing.
+SET_TYPES = ("angular_contact_ball", "tapered_roller")
 #: Bore and outer diameter of a file equal a catalogue row's when within this [m].
 _DIMENSION_TOL = 1.0e-6
 
@@ -63,6 +67,10 @@ class BearingFacts:
         slewing rings, models built in code).
     single : bool
         One bearing (one row, or the two rows of one spherical roller / self-aligning ball bearing).
+    arrangement : str or None
+        ``"DB"``, ``"DF"`` or ``"DT"`` for a matched set of single angular contact ball or tapered roller
+        bearings (a designation such as ``7209 B DB``, or a file pairing two single rows): each row is one
+        bearing of the catalogue row; None otherwise.
     entry : catalogue Entry or None
     series, series_source : str or None
     seal : catalogue.seals.Seal or None
@@ -102,6 +110,7 @@ class BearingFacts:
     C0: float | None = None
     suffixes: tuple = ()
     notes: list = field(default_factory=list)
+    arrangement: str | None = None
 
 
 def _entry_by_designation(header):
@@ -178,7 +187,8 @@ def bearing_facts(bearing, lubricant=None) -> BearingFacts:
     bore, outer = geometry.get("bore"), geometry.get("outer_diameter")
     width = geometry.get("width")
     if entry is None and etype is not None and bore is not None and outer is not None:
-        found = _entry_by_dimensions(bearing.bearing_type, float(bore), float(outer), width)
+        lookup = _SET_TYPES.get(bearing.bearing_type, bearing.bearing_type)
+        found = _entry_by_dimensions(lookup, float(bore), float(outer), width)
         given = getattr(header, "series", None)
         same = [e for e in found if given is None or e.series == str(given)]
         if len({e.series for e in same}) == 1:
@@ -244,4 +254,14 @@ def bearing_facts(bearing, lubricant=None) -> BearingFacts:
         C0=c0,
         suffixes=() if des is None else tuple(des.suffixes),
         notes=notes,
+        arrangement=_arrangement(etype, single, model, geometry),
     )
+
+
+def _arrangement(etype, single: bool, model, geometry: dict) -> str | None:
+    """DB/DF/DT of a matched set of single bearings (each row one bearing of the same kind), else None."""
+    arrangement = geometry.get("arrangement")
+    kinds = {r.kind for r in model.rows}
+    if single or etype not in SET_TYPES or arrangement not in ("DB", "DF", "DT") or len(kinds) != 1:
+        return None
+    return str(arrangement)

@@ -115,7 +115,12 @@ def _friction_html(friction, case: int, n: int) -> str:
     model = _e(getattr(friction, "model", "") or "components")
     power = getattr(friction, "power_loss", None)
     shown_power = "" if power is None else f", power loss P = <b>{fmt(float(power[case]), 4)} W</b>"
-    if friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
+    if friction.torque_inner is None and len(friction.by_row) > 1:  # a matched set: per bearing, summed
+        split = (
+            f" ({model} catalogue model per bearing of the set, each row one bearing at its own loads, "
+            "summed; no split between the rings)."
+        )
+    elif friction.torque_inner is None:  # a catalogue model: the whole bearing, no split between the rings
         split = f" ({model} catalogue model of the whole bearing; no split between the rings)."
     else:
         split = (

@@ -3,14 +3,19 @@
 SI units (m, N, rad/s). The default friction model (``"auto"``, :data:`AUTO`) depends on the bearing:
 
 - a standard bearing the SKF model covers (deep groove, angular contact, four-point, self-aligning ball,
-  cylindrical, tapered, spherical roller, thrust ball and cylindrical roller thrust — one bearing, not a
-  pair) → ``"skf"``: the four-component model (rolling, sliding, seals, drag) with the constants of the
-  bearing's own series, fitted to measured torque of such bearings; it is what SKF's calculators and the
-  commercial tools print;
+  cylindrical, tapered, spherical roller, thrust ball and cylindrical roller thrust) → ``"skf"``: the
+  four-component model (rolling, sliding, seals, drag) with the constants of the bearing's own series,
+  fitted to measured torque of such bearings; it is what SKF's calculators and the commercial tools print;
+- a matched set (DB, DF, DT) of single angular contact ball or tapered roller bearings — a designation
+  such as ``7209 B DB`` or ``32008 X DF``, or a file pairing two single rows — → ``"skf"`` per bearing:
+  each row is one bearing, computed at the radial and axial load it carries in the paired solve (preload
+  included) with the single bearing's constants, the set's torque the sum
+  (:mod:`bearingkit.pipeline.friction.paired`); SKF's model describes one bearing under its own loads;
 - a slewing ring → ``"slewing"`` (the makers' formula, built for them);
 - a needle roller bearing → ``"palmgren"`` (SKF gives no constants for it, the component model has no
   needle rows);
-- everything else — the seed composites, pairs of bearings and models built in code → ``"components"``
+- everything else — the seed composites, bearings of several rows that are not a matched set of single
+  bearings (a double row cylindrical roller bearing) and models built in code → ``"components"``
   (the physical model per contact, built for the seed composites; tapered rows by the seed-001 model
   behind the same name).
 
@@ -69,6 +74,13 @@ def choose(analysis) -> tuple[str, str]:
             f"standard {etype.replace('_', ' ')} bearing: the SKF four-component model (rolling, sliding, "
             "seals, drag) with its series' constants, fitted to measured torque of such bearings"
         )
+    if etype in SKF_TYPES and facts.arrangement is not None:
+        n = len(b.model.rows)
+        return "skf", (
+            f"matched set ({facts.arrangement}) of {n} standard {etype.replace('_', ' ')} bearings: the SKF "
+            "four-component model per bearing (rolling, sliding, seals, drag; the single bearing's series "
+            "constants), each at the loads its row carries in the paired solve, the set's torque their sum"
+        )
     if etype == "needle_roller":
         return "palmgren", (
             "needle roller bearing: the SKF model gives no constants for it and the component model has no "
@@ -76,7 +88,8 @@ def choose(analysis) -> tuple[str, str]:
         )
     if etype is not None:
         return "components", (
-            "a pair of bearings: the SKF model is per bearing; the component model sums every contact"
+            f"{len(b.model.rows)} rows of {etype.replace('_', ' ')} that are not one bearing nor a matched "
+            "set of single bearings: SKF gives no constants for them; the component model sums every contact"
         )
     return "components", (
         "not a catalogue bearing (seed composite or a model built in code): the physical component model, "

@@ -10,7 +10,8 @@ SI units: torques in N·m, speeds in rad/s, power in W, temperatures in °C. Eac
   contact loads: per row and per element, for ball and cylindrical rows;
 - ``"skf"`` — the SKF four-component catalogue model from F_r, F_a (single standard bearings), with the
   seals, the drag and the series constants of the bearing
-  (:func:`bearingkit.pipeline.friction.choice.skf_inputs`);
+  (:func:`bearingkit.pipeline.friction.choice.skf_inputs`); a matched set (DB/DF/DT) per bearing, each
+  at the loads its row carries in the paired solve, summed (:mod:`bearingkit.pipeline.friction.paired`);
 - ``"palmgren"`` — Palmgren's M0 + M1 (single-row standard bearings);
 - ``"auto"`` — the default: the model :func:`bearingkit.pipeline.friction.choice.choose` picks for the
   bearing (SKF for standard bearings, the makers' formula for slewing rings, the component model for the
