@@ -190,9 +190,9 @@ def solve(
         q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
         converged, iterations = out.flags[0], out.counts[0]
         evaluations, coarse_evaluations = out.counts[1], out.counts[2]
-        effort = None  # the compiled core's effort is bounded by its iteration caps
         roller_x = out.roller_x if plan.tapered else None
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
+        effort = _compiled_effort(out, options) if bad else None
     else:
         started = time.perf_counter()
         coarse_evaluations = roller_x = None
@@ -286,6 +286,14 @@ def _solve_numpy(
             converged = np.where(retry, conv_c, converged)
             diverged = np.where(retry, div_c, diverged)
     return q, converged, st, diverged, effort
+
+
+def _compiled_effort(out, options: SolverOptions) -> Effort:
+    """The compiled core's spending in the numpy reference's terms (evaluations, stopped by them)."""
+    effort = Effort(out.q.shape[0], options.max_evaluations, np.inf)
+    effort.evaluations = out.counts[1]
+    effort.stopped = out.flags[4].astype(np.int8)
+    return effort
 
 
 def _out_of_budget(effort: Effort, c: int, options: SolverOptions, why: str) -> str:
