@@ -299,9 +299,11 @@ def _compiled_effort(out, options: SolverOptions) -> Effort:
 def _out_of_budget(effort: Effort, c: int, options: SolverOptions, why: str) -> str:
     """The reason of a case stopped by its budget: what it spent, what it had reached, the remedy."""
     if effort.stopped[c] == 1:
-        spent = (
-            f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case "
+        default = options.max_evaluations == EVALUATIONS_PER_ITERATION * options.max_iterations
+        spent = f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case " + (
             f"([solver] max_iterations {options.max_iterations} x {EVALUATIONS_PER_ITERATION})"
+            if default  # the message named 60 x 50 for any SolverOptions.max_evaluations before
+            else f"(SolverOptions.max_evaluations = {options.max_evaluations})"
         )
     elif effort.stopped[c] == 2:
         spent = (
