@@ -35,7 +35,7 @@ _spec.loader.exec_module(audit)
 #: Cases drawn per example bearing file (26 files: 520 cases).
 PER_FILE = 20
 #: Cases per file of the fast subset (run by default).
-FAST_PER_FILE = 3
+FAST_PER_FILE = 2
 FORCES, MOMENTS = ("F_x", "F_y", "F_z"), ("M_x", "M_y")
 #: The equilibrium audit's tolerance: |Σ element forces − applied| ≤ this × the load scale (the larger of
 #: the applied force and the largest row force, at least 1 N), plus a tapered row's roller floor.
