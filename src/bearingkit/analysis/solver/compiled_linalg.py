@@ -1,4 +1,5 @@
-"""The compiled core's small dense linear algebra: 5×5 solves, the idle-mechanism test, the cone NNLS.
+"""The compiled core's small dense linear algebra: 5×5 solves, the idle-mechanism test, the cone NNLS,
+the starting point.
 
 Written out in numba because the systems are at most 5×5: a LAPACK call from numba (argument
 copies, finiteness checks, workspace queries) costs ~1–2 µs where these cost ~0.1 µs, several
@@ -213,4 +214,72 @@ def nnls_misfit(a, b):
     return np.sqrt(np.sum(r * r))
 
 
-__all__ = ["REGULAR_SAFETY", "lu_solve", "nnls_misfit", "surely_regular", "without_idle"]
+@njit(cache=True, error_model="numpy")
+def start_point(q, load, start_mats, start_exps, scale, idx, max_step):
+    """As :func:`bearingkit.analysis.solver.newton.starting_point` for one case; returns the start (5,).
+
+    ``start_mats`` (G, 5, 5) the rows' start matrices summed per start exponent, ``start_exps`` (G,).
+    """
+    n = idx.shape[0]
+    out = q.copy()
+    if n == 0:
+        return out
+    f = np.empty(n)
+    fmax = 0.0
+    for a in range(n):
+        f[a] = load[idx[a]] * scale[idx[a]]
+        fmax = max(fmax, abs(f[a]))
+    delta = 1e-4 * max_step / 0.02
+    k = np.zeros((n, n))
+    qt = np.zeros(n)
+    n_g = start_mats.shape[0]
+    sm = np.empty((n_g, n, n))  # the scaled start matrices on the free DOFs
+    for r in range(n_g):
+        for a in range(n):
+            for b in range(n):
+                i, j = idx[a], idx[b]
+                sm[r, a, b] = start_mats[r, i, j] * scale[i] * scale[j]
+    for _ in range(6):
+        k[:, :] = 0.0
+        for r in range(n_g):
+            ex = start_exps[r]
+            fac = ex * delta ** (ex - 1.0)
+            for a in range(n):
+                for b in range(n):
+                    k[a, b] += fac * sm[r, a, b]
+        kmax = 0.0
+        for a in range(n):
+            for b in range(n):
+                kmax = max(kmax, abs(k[a, b]))
+        for a in range(n):
+            k[a, a] += 1e-12 * kmax
+        for a in range(n):
+            for b in range(n):
+                if not np.isfinite(k[a, b]):
+                    k[a, b] = 0.0
+            k[a, a] += 1e-300
+        try:
+            qt = lu_solve(k, f)
+        except Exception:  # degenerate stiffness: start from the given point
+            return out
+        approach = 0.0
+        for a in range(n):
+            approach = max(approach, abs(qt[a]))
+        delta = np.sqrt(delta * max(approach, 1e-3 * delta))
+    without_idle(k, -f, qt, 1e-10 * fmax)
+    big = 0.0
+    for a in range(n):
+        big = max(big, abs(qt[a]))
+    if np.isfinite(big):
+        fac = min(1.0, max_step / max(big, 1e-300))
+        for a in range(n):
+            qt[a] *= fac
+    for a in range(n):
+        out[idx[a]] = q[idx[a]] + qt[a] * scale[idx[a]]
+    for i in range(5):
+        if not np.isfinite(out[i]):
+            return q.copy()
+    return out
+
+
+__all__ = ["REGULAR_SAFETY", "lu_solve", "nnls_misfit", "start_point", "surely_regular", "without_idle"]

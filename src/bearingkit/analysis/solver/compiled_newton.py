@@ -21,7 +21,13 @@ from collections import namedtuple
 
 import numpy as np
 
-from bearingkit.analysis.solver.compiled_linalg import lu_solve, mirror_upper, nnls_misfit, without_idle
+from bearingkit.analysis.solver.compiled_linalg import (
+    lu_solve,
+    mirror_upper,
+    nnls_misfit,
+    start_point,
+    without_idle,
+)
 from bearingkit.analysis.solver.cone import CONE_MISS_RTOL
 from bearingkit.analysis.solver.newton import CONE_CHECK_ITERATION, MAX_HALVINGS
 from bearingkit.rows.ball.compiled import BallPack, ball_response, pack_balls
@@ -146,81 +152,34 @@ def _state(c, q, load, balls, rollers, points, tapered, tws, fbuf, ibuf, inner, 
     return pot, norm / lscale if idx.shape[0] > 0 else 0.0
 
 
-# -- the starting point --------------------------------------------------------------------------------
-@njit(cache=True, error_model="numpy")
-def _start(q, load, mp, scale, idx, max_step):
-    """As :func:`bearingkit.analysis.solver.newton.starting_point` for one case; returns the start (5,)."""
-    n = idx.shape[0]
-    out = q.copy()
-    if n == 0:
-        return out
-    f = np.empty(n)
-    fmax = 0.0
-    for a in range(n):
-        f[a] = load[idx[a]] * scale[idx[a]]
-        fmax = max(fmax, abs(f[a]))
-    delta = 1e-4 * max_step / 0.02
-    k = np.zeros((n, n))
-    qt = np.zeros(n)
-    n_g = mp.start_mats.shape[0]
-    sm = np.empty((n_g, n, n))  # the scaled start matrices on the free DOFs
-    for r in range(n_g):
-        for a in range(n):
-            for b in range(n):
-                i, j = idx[a], idx[b]
-                sm[r, a, b] = mp.start_mats[r, i, j] * scale[i] * scale[j]
-    for _ in range(6):
-        k[:, :] = 0.0
-        for r in range(n_g):
-            ex = mp.start_exps[r]
-            fac = ex * delta ** (ex - 1.0)
-            for a in range(n):
-                for b in range(n):
-                    k[a, b] += fac * sm[r, a, b]
-        kmax = 0.0
-        for a in range(n):
-            for b in range(n):
-                kmax = max(kmax, abs(k[a, b]))
-        for a in range(n):
-            k[a, a] += 1e-12 * kmax
-        for a in range(n):
-            for b in range(n):
-                if not np.isfinite(k[a, b]):
-                    k[a, b] = 0.0
-            k[a, a] += 1e-300
-        try:
-            qt = lu_solve(k, f)
-        except Exception:  # degenerate stiffness: start from the given point
-            return out
-        approach = 0.0
-        for a in range(n):
-            approach = max(approach, abs(qt[a]))
-        delta = np.sqrt(delta * max(approach, 1e-3 * delta))
-    without_idle(k, -f, qt, 1e-10 * fmax)
-    big = 0.0
-    for a in range(n):
-        big = max(big, abs(qt[a]))
-    if np.isfinite(big):
-        fac = min(1.0, max_step / max(big, 1e-300))
-        for a in range(n):
-            qt[a] *= fac
-    for a in range(n):
-        out[idx[a]] = q[idx[a]] + qt[a] * scale[idx[a]]
-    for i in range(5):
-        if not np.isfinite(out[i]):
-            return q.copy()
-    return out
-
-
 # -- Newton for one case -----------------------------------------------------------------------------
 @njit(cache=True, error_model="numpy")
+def _outside(cone, load, scale, idx):
+    """Whether ``load`` lies outside the contact cone (as :func:`~bearingkit.analysis.solver.cone.
+    outside_cone`)."""
+    n = idx.shape[0]
+    f = np.empty(n)
+    size = 0.0
+    for a in range(n):
+        f[a] = load[idx[a]] * scale[idx[a]]
+        size += f[a] * f[a]
+    size = np.sqrt(size)
+    return size > 0.0 and nnls_misfit(cone, f) > CONE_MISS_RTOL * size
+
+
+@njit(cache=True, error_model="numpy")
 def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
-    """Damped Newton from q (updated in place) under ``load``; returns (converged, diverged, refused).
+    """Damped Newton from q (updated in place) under ``load``; returns (converged, diverged, refused,
+    stopped).
 
     ``p`` = (rtol, max_iterations, max_step, limit, cone check on, coarse iterations, last step
-    unevaluated), ``cone`` the scaled contact directions (n, M) on the free DOFs; ``stats``
-    (iterations, evaluations) are accumulated. The last state is left in ws[4:] (force, jac,
-    residual) and ws[8] (norm).
+    unevaluated, evaluation budget of the case), ``cone`` the scaled contact directions (n, M) on the
+    free DOFs; ``stats`` (iterations, evaluations) are accumulated. As the numpy reference's
+    :func:`~bearingkit.analysis.solver.newton.newton` with its ``Effort``: a case that has spent its
+    budget of row evaluations (stats[1] ≥ p[7], every attempt and continuation step together) stops
+    at the start of an iteration (``stopped``); a case whose line search finds no decrease stops its
+    attempt (its next step would be the same one), refused first if its load is outside the cone.
+    The last state is left in ws[4:] (force, jac, residual) and ws[8] (norm).
     """
     force, jac, rowf, residual, tmp = ws[4], ws[5], ws[6], ws[7], ws[8]
     rtol, max_it, max_step, limit, cone_on, blind = p[0], int(p[1]), p[2], p[3], p[4], p[6] > 0.0
@@ -235,6 +194,7 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
     converged = norm <= rtol
     diverged = False
     refused = False
+    stopped = False
     g = np.empty(n)
     mg = np.empty(n)
     h = np.empty((n, n))
@@ -247,17 +207,13 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
     for it in range(max_it):
         if converged or diverged:
             break
-        if it == CONE_CHECK_ITERATION and cone_on > 0.0:
-            f = np.empty(n)
-            size = 0.0
-            for a in range(n):
-                f[a] = load[idx[a]] * scale[idx[a]]
-                size += f[a] * f[a]
-            size = np.sqrt(size)
-            if size > 0.0 and nnls_misfit(cone, f) > CONE_MISS_RTOL * size:
-                refused = True
-                diverged = True
-                break
+        if stats[1] >= p[7]:  # the case's budget of row evaluations is spent
+            stopped = True
+            break
+        if it == CONE_CHECK_ITERATION and cone_on > 0.0 and _outside(cone, load, scale, idx):
+            refused = True
+            diverged = True
+            break
         stats[0] += 1.0
         gmax = 0.0
         diag = 0.0
@@ -293,6 +249,7 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
             diverged = qmax > limit
             break
         t = 1.0
+        moved = False
         for _ls in range(MAX_HALVINGS):
             cand[:] = q
             for a in range(n):
@@ -310,6 +267,7 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
                 jac[:, :] = t_jac
                 rowf[:, :] = t_rowf
                 residual[:] = t_res
+                moved = True
                 break
             t *= 0.5
         converged = norm <= rtol
@@ -317,8 +275,13 @@ def _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
         for i in range(5):
             qmax = max(qmax, abs(q[i] / scale[i]))
         diverged = qmax > limit
+        if not (moved or converged or diverged):  # stalled: the same step would fail again
+            if it < CONE_CHECK_ITERATION and cone_on > 0.0 and _outside(cone, load, scale, idx):
+                refused = True
+                diverged = True
+            break
     tmp[0] = norm
-    return converged, diverged, refused
+    return converged, diverged, refused, stopped
 
 
 @njit(cache=True, error_model="numpy")
@@ -339,9 +302,10 @@ def _coarse_stage(c, q, load, mp, ws, inner, scale, idx, p, cone, stats):
     pc[1] = p[5]
     pc[4] = 0.0  # the cone check belongs to the full model's iterations
     pc[6] = 1.0  # the last coarse step is evaluated by the full model
+    pc[7] = np.inf  # the coarse stage is not charged to the case's budget (as numpy's _coarse_start)
     qc = q.copy()
     own = np.zeros(2)
-    _, div, _ = _newton_case(c, qc, load, cm, ws, inner, scale, idx, pc, cone, own)
+    _, div, _, _ = _newton_case(c, qc, load, cm, ws, inner, scale, idx, pc, cone, own)
     stats[2] += own[1]
     if div or not np.isfinite(ws[8][0]):
         return q
@@ -379,25 +343,27 @@ def _solve_case(
     """Whole solve of case c: start, attempt, continuation, non-finite check. Fills the outputs.
 
     ``ws``: the thread's workspace (:func:`_workspace`). out_k[c] the stiffness (−Jacobian);
-    out_b[:, c] = (converged, diverged, refused, broken), out_n[:, c] = (iterations, evaluations,
-    coarse evaluations), out_r[c] the residual norm. Returns 1 if the case did not converge, else 0.
+    out_b[:, c] = (converged, diverged, refused, broken, stopped by its budget), out_n[:, c] =
+    (iterations, evaluations, coarse evaluations), out_r[c] the residual norm. Returns 1 if the case
+    did not converge, else 0.
     """
     ws[0][:, :] = 0.0  # the tapered warm start never crosses from one case to the next
     ws[1][:, :, :] = 0.0
     ws[2][:] = 0.0
     ws[3][:] = 0.0
     stats = np.zeros(3)
-    q = q0.copy() if given else _start(q0, load, mp, scale, idx, p[2])
+    q = q0.copy() if given else start_point(q0, load, mp.start_mats, mp.start_exps, scale, idx, p[2])
     if mp.has_coarse > 0 and p[5] > 0.0 and not given:
         q = _coarse_stage(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
-    conv, div, ref = _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
-    if fracs.shape[0] > 0 and not conv and not ref:
+    conv, div, ref, stop = _newton_case(c, q, load, mp, ws, inner, scale, idx, p, cone, stats)
+    if fracs.shape[0] > 0 and not conv and not ref and not stop:  # a case out of budget is not retried
         qc = q0.copy()
         ramp = np.empty(5)
         for frac in fracs:
             for i in range(5):
                 ramp[i] = load[i] * frac if free[i] else load[i]
-            conv, div, _ = _newton_case(c, qc, ramp, mp, ws, inner, scale, idx, p, cone, stats)
+            conv, div, _, out = _newton_case(c, qc, ramp, mp, ws, inner, scale, idx, p, cone, stats)
+            stop = stop or out
         q[:] = qc
     norm = ws[8][0]
     broken = not (np.all(np.isfinite(q)) and np.isfinite(norm))
@@ -414,6 +380,7 @@ def _solve_case(
     out_b[1, c] = div
     out_b[2, c] = ref
     out_b[3, c] = broken
+    out_b[4, c] = stop
     out_n[0, c] = np.int64(stats[0])
     out_n[1, c] = np.int64(stats[1])
     out_n[2, c] = np.int64(stats[2])
@@ -494,7 +461,16 @@ def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
     return {
         "idx": idx,
         "p": np.array(
-            [options.rtol, options.max_iterations, max_step, limit, cone_on, options.coarse_iterations, 0.0],
+            [
+                options.rtol,
+                options.max_iterations,
+                max_step,
+                limit,
+                cone_on,
+                options.coarse_iterations,
+                0.0,
+                options.max_evaluations,
+            ],
             dtype=np.float64,
         ),
         "fracs": np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0),
@@ -532,7 +508,8 @@ def solve_packed(
     block solved with one workspace.
 
     Returns a :data:`PackedSolution`: ``q``, ``force`` (C, 5), ``stiffness`` (C, 5, 5), ``flags``
-    (4, C) bool (converged, diverged, refused, broken), ``counts`` (3, C) int (Newton iterations,
+    (5, C) bool (converged, diverged, refused, broken, stopped by the case's evaluation budget),
+    ``counts`` (3, C) int (Newton iterations,
     evaluations, coarse evaluations), ``norm`` (C,), ``bad`` the number of unconverged cases,
     ``inner`` (C, 3): roller solves, most roller Newton steps, unconverged rollers; ``roller_x``
     (C, T, 2): the tapered rollers' positions at q (NaN where unknown; T = 0 without tapered rows).
@@ -554,7 +531,7 @@ def solve_packed(
         if n_t == 0 and n == 1:
             cache["untouched"] = (inner, out_x)
     q, force, stiffness = np.empty((n, 5)), np.empty((n, 5)), np.empty((n, 5, 5))
-    flags, counts, norm = np.empty((4, n), np.bool_), np.empty((3, n), np.int64), np.empty(n)
+    flags, counts, norm = np.empty((5, n), np.bool_), np.empty((3, n), np.int64), np.empty(n)
     # The serial entry point skips numba's type checks: its arguments must keep their exact types.
     if load.dtype is not _F64 or not load.flags.c_contiguous:
         load = np.ascontiguousarray(load, dtype=np.float64)

@@ -56,14 +56,15 @@ class SolverOptions:
         ``"auto"``, ``"compiled"`` or ``"numpy"`` (:mod:`bearingkit.analysis.solver.backend`); None reads
         ``$BEARINGKIT_BACKEND`` (default ``"auto"``: the compiled core where it applies).
     max_evaluations : int
-        Row evaluations one case may use in one solve of the numpy reference (every attempt, trial
-        step and continuation step together; :class:`~bearingkit.analysis.solver.newton.Effort`): a
-        case past it is stopped, not converged, and the rest of its batch goes on. The compiled core's
-        effort per case is bounded by its iteration caps instead (and costs microseconds per
-        evaluation).
+        Row evaluations one case may use in one solve (every attempt, trial step and continuation
+        step together; the coarse stage is not counted; :class:`~bearingkit.analysis.solver.newton.
+        Effort`): a case past it is stopped, not converged, and the rest of its batch goes on. Both
+        cores count alike and stop the same cases (the compiled core in
+        :func:`~bearingkit.analysis.solver.compiled_newton.solve_packed`).
     case_seconds : float or None [s]
         Processor time one case may use in one solve of the numpy reference (its share of each
-        batched evaluation); None reads ``$BEARINGKIT_CASE_SECONDS`` (default :data:`CASE_SECONDS`).
+        batched evaluation; the compiled core, microseconds per evaluation, has the evaluation
+        budget alone); None reads ``$BEARINGKIT_CASE_SECONDS`` (default :data:`CASE_SECONDS`).
     coarse_iterations : int
         Newton iterations on the coarse model (sliced rollers at a few slices) before the full model's,
         when no start is given (:mod:`bearingkit.analysis.solver.coarse`); 0 starts the full model directly.

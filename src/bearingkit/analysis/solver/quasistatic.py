@@ -190,9 +190,9 @@ def solve(
         q, norm, force, stiffness, bad = out.q, out.norm, out.force, out.stiffness, out.bad
         converged, iterations = out.flags[0], out.counts[0]
         evaluations, coarse_evaluations = out.counts[1], out.counts[2]
-        effort = None  # the compiled core's effort is bounded by its iteration caps
         roller_x = out.roller_x if plan.tapered else None
         diverged, broken = (out.flags[1], out.flags[3]) if bad else (None, None)
+        effort = _compiled_effort(out, options) if bad else None
     else:
         started = time.perf_counter()
         coarse_evaluations = roller_x = None
@@ -288,12 +288,22 @@ def _solve_numpy(
     return q, converged, st, diverged, effort
 
 
+def _compiled_effort(out, options: SolverOptions) -> Effort:
+    """The compiled core's spending in the numpy reference's terms (evaluations, stopped by them)."""
+    effort = Effort(out.q.shape[0], options.max_evaluations, np.inf)
+    effort.evaluations = out.counts[1]
+    effort.stopped = out.flags[4].astype(np.int8)
+    return effort
+
+
 def _out_of_budget(effort: Effort, c: int, options: SolverOptions, why: str) -> str:
     """The reason of a case stopped by its budget: what it spent, what it had reached, the remedy."""
     if effort.stopped[c] == 1:
-        spent = (
-            f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case "
+        default = options.max_evaluations == EVALUATIONS_PER_ITERATION * options.max_iterations
+        spent = f"stopped after {int(effort.evaluations[c])} row evaluations, the budget of one case " + (
             f"([solver] max_iterations {options.max_iterations} x {EVALUATIONS_PER_ITERATION})"
+            if default  # the message named 60 x 50 for any SolverOptions.max_evaluations before
+            else f"(SolverOptions.max_evaluations = {options.max_evaluations})"
         )
     elif effort.stopped[c] == 2:
         spent = (
