@@ -26,14 +26,13 @@ run: compile
 
 # ruff; the wheel built, installed in a fresh venv and used from outside the tree; the compiled core
 # built once before the parallel tests (their processes then load it); the tests (the ROSS export
-# among them) on every core (--dist loadgroup: tests marked xdist_group share one process, e.g. the
-# ROSS tests pay ROSS's start-up once); every published number.
+# among them) on every core; every published number.
 test: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/python scripts/check_wheel.py
 	$(BIN)/bearingkit compile
 	bash scripts/ensure_chromium.sh
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m "not slow or ross"
+	$(BIN)/python -m pytest -n $(JOBS) -m "not slow or ross"
 	$(BIN)/bearingkit validate
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --n $(CI_FUZZ_N)
 
@@ -47,7 +46,7 @@ fuzz: $(STAMP)
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --seed $(SEED) --n $(N)
 
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m slow
+	$(BIN)/python -m pytest -n $(JOBS) -m slow
 
 wheel: $(STAMP)
 	$(BIN)/python scripts/check_wheel.py

@@ -22,9 +22,7 @@ from bearingkit.systems.shaft.solver import solve
 from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
-# One xdist worker for both tests (make test runs --dist loadgroup): ROSS's start-up, ~25 s of processor
-# time in the first test of a process, is then paid once.
-pytestmark = [pytest.mark.slow, pytest.mark.ross, pytest.mark.xdist_group("ross")]
+pytestmark = [pytest.mark.slow, pytest.mark.ross]
 
 
 def _ross():
