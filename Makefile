@@ -3,23 +3,19 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
-ROSS   := $(VENV)/.installed-ross
 #: Test processes (pytest-xdist): one per core.
 JOBS   ?= auto
 
 .PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz
 
+# One pip run installs everything `make run` and `make test` need: the tests, the docs site and the
+# optional rotordynamics extra (ross-rotordynamics; the ROSS export test, tests/systems/test_ross_export.py,
+# must run in CI). One resolver pass instead of two saves the second dependency resolution and re-check.
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[dev,docs]'
+	$(BIN)/python -m pip install -q -e '.[dev,docs,ross]'
 	touch $(STAMP)
-
-# The tests also need the optional rotordynamics extra (ross-rotordynamics, ~2 min to install).
-$(ROSS): $(STAMP)
-	@echo "installing the [ross] extra: the ROSS export test (tests/systems/test_ross_export.py) must run in CI"
-	$(BIN)/python -m pip install -q -e '.[dev,ross]'
-	touch $(ROSS)
 
 # The compiled solver core, once per machine and version (about a minute; then cached).
 compile: $(STAMP)
@@ -31,7 +27,7 @@ run: compile
 # ruff; the wheel built, installed in a fresh venv and used from outside the tree; the compiled core
 # built once before the parallel tests (their processes then load it); the tests (the ROSS export
 # among them) on every core; every published number.
-test: $(ROSS)
+test: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/python scripts/check_wheel.py
 	$(BIN)/bearingkit compile

@@ -3,13 +3,15 @@ answered, and any string at all answered in one line (hypothesis)."""
 
 from __future__ import annotations
 
+import difflib
 import string
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from bearingkit.catalogue import parse
+from bearingkit.catalogue import parse, tables
+from bearingkit.catalogue.designation import close_matches, nearest
 from bearingkit.errors import InputError
 
 
@@ -139,3 +141,22 @@ def test_designation_like_text_parses_or_is_one_line_error(head, tail):
         parse(head + tail)
     except InputError as exc:
         assert _one_line(exc)
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    st.text(alphabet="AB12 ", max_size=6),
+    st.lists(st.text(alphabet="AB12", max_size=5), max_size=12),
+    st.integers(1, 4),
+)
+def test_close_matches_are_difflibs_ties_included(word, names, n):
+    """The pruned search answers what difflib.get_close_matches(cutoff=0) answers (a small alphabet makes
+    many equal ratios and repeated names)."""
+    assert close_matches(word, names, n) == difflib.get_close_matches(word, names, n=n, cutoff=0.0)
+
+
+def test_nearest_designations_are_difflibs():
+    names = [e.designation for e in tables.all_entries()]
+    for text in ("6205-2RSX", "NU2", "62", "7205 BECBP", "QJ3ZZ", "", "ZZZZ", "32210J", "23"):
+        key = text.replace(" ", "").replace("-", "")
+        assert nearest(text) == difflib.get_close_matches(key, names, n=3, cutoff=0.0), text

@@ -21,6 +21,7 @@ that is not in the tables (with the nearest designations of the table).
 from __future__ import annotations
 
 import difflib
+import heapq
 import re
 from dataclasses import dataclass, field
 
@@ -178,7 +179,31 @@ def nearest(text: str, n: int = 3) -> list[str]:
     """The ``n`` table designations closest to ``text`` (difflib ratio)."""
     names = [e.designation for e in tables.all_entries()]
     key = re.sub(r"[\s\-]", "", str(text).upper())[:_SHOWN]
-    return difflib.get_close_matches(key, names, n=n, cutoff=0.0)
+    return close_matches(key, names, n)
+
+
+def close_matches(word: str, names, n: int = 3) -> list[str]:
+    """``difflib.get_close_matches(word, names, n, cutoff=0.0)``, the same list, faster.
+
+    difflib scores every name with ``SequenceMatcher.ratio`` (a refused designation was ~10 ms against
+    the ~2,800 table rows). Here a name is scored only when difflib's own upper bounds of the ratio
+    (``real_quick_ratio`` ≥ ``quick_ratio`` ≥ ``ratio``, the same 2·matches/length with more matches)
+    reach the ``n``-th best (score, name) so far; any name they skip ranks below all ``n`` kept ones,
+    so the answer, ties included, is the one of difflib.
+    """
+    s = difflib.SequenceMatcher()
+    s.set_seq2(word)
+    best: list[tuple[float, str]] = []  # a min-heap of the n best (ratio, name)
+    for x in names:
+        s.set_seq1(x)
+        if len(best) == n and (s.real_quick_ratio() < best[0][0] or s.quick_ratio() < best[0][0]):
+            continue
+        item = (s.ratio(), x)
+        if len(best) < n:
+            heapq.heappush(best, item)
+        elif item > best[0]:
+            heapq.heapreplace(best, item)
+    return [x for _, x in sorted(best, reverse=True)]
 
 
 def _prefix(up: str) -> tuple[str | None, str]:
