@@ -393,6 +393,7 @@ def caption(system: dict) -> str | None:
     if system.get("C0_iso76_N") is not None:
         text += (
             f"; ISO 76: P0 = {_fmt(system.get('P0_iso76_N'), 1e-3)} kN, C0 = "
-            f"{_fmt(system['C0_iso76_N'], 1e-3)} kN ({system['C0_source']}), s0 = {_fmt(system.get('s0_iso76'))}"
+            f"{_fmt(system['C0_iso76_N'], 1e-3)} kN ({system['C0_source']}), "
+            f"s0 = {_fmt(system.get('s0_iso76'))}"
         )
     return text
