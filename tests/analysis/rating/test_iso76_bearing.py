@@ -81,3 +81,16 @@ def test_qj_from_its_geometry_is_rated_with_two_rows():
     assert b.static_rating == pytest.approx(c02, rel=1e-9)
     assert float(b.load[0]) == pytest.approx(3e3 + 0.66 * 1e3, rel=1e-9)
     assert float(b.static_load[0]) == pytest.approx(3e3 + 0.58 * 1e3, rel=1e-9)
+
+
+def test_select_screen_rates_qj_on_the_radial_basis():
+    """The catalogue method of `select` uses the same radial C_r = 1.07 C_a, C_0r = 0.58 C_0a as the
+    analysis: its L10 and s0 for QJ 206 equal the analysis's ISO 281 L10 and ISO 76 s0."""
+    from bearingkit.catalogue.search import screen, search
+
+    row = next(r for r in search("QJ206"))
+    s = screen(row, 5000.0, 2000.0)
+    sysd = _system("QJ206", "F_x=5000N", "F_z=2000N")["system"]
+    assert s.P == pytest.approx(sysd["P_iso281_N"], rel=1e-9)
+    assert s.life == pytest.approx(sysd["L10_iso281_rev"], rel=1e-9)
+    assert s.static_safety == pytest.approx(sysd["s0_iso76"], rel=1e-9)
