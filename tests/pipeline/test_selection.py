@@ -30,6 +30,9 @@ def test_select_example_gives_three_candidates_with_both_lives():
         p = 3.0 if c["family"].endswith("ball") else 10.0 / 3.0
         hours = (c["C_iso281_N"] / c["P_iso281_N"]) ** p * 1e6 / (3000 * 60)
         assert c["L10h_iso281_h"] == pytest.approx(hours, rel=1e-9)
+        # C0 shown beside C, and ISO 76's s0 = C0/P0 equals the catalogue method's screen
+        assert c["C0_iso76_N"] > 0 and c["C0_source"] in ("catalogue", "computed")
+        assert c["s0_iso76"] == pytest.approx(c["s0_catalogue_method"], rel=1e-9)
     masses = [c["mass_estimate_kg"] for c in cands]
     assert masses == sorted(masses)
     assert any("ESTIMATED" in n for n in data["notes"])

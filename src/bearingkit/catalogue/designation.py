@@ -35,11 +35,11 @@ MAX_LENGTH = 60
 _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("four_point_contact_ball", re.compile(r"^(QJ\s?[23])(\d\d)(.*)$")),
     ("needle_roller", re.compile(r"^(R?NA\s?4[89])(\d\d|/\d\d)(.*)$")),
-    ("double_row_cylindrical_roller", re.compile(r"^(NN\s?30)(\d\d)(.*)$")),
+    ("double_row_cylindrical_roller", re.compile(r"^(NN\s?(?:30|49))(\d\d)(.*)$")),
     ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|19|22|23|2|3)(\d\d)(.*)$")),
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
-    ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[01])(\d\d|/\d\d)(.*)$")),
+    ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[012])(\d\d|/\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d)(.*)$")),
     ("angular_contact_ball", re.compile(r"^(71[89]|7[023])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
@@ -260,8 +260,8 @@ def parse(text: str) -> Designation:
     raise InputError(
         f"designation ({_shown(raw)}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, "
         "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 240, "
-        "241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, 322, 323, "
-        "329, 330, 331, 511, 512, 513, 811, 812) and no file of that "
+        "241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NN49, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, 322, "
+        "323, 329, 330, 331, 332, 511, 512, 513, 811, 812) and no file of that "
         f"name exists; nearest: {', '.join(nearest(raw))}"
     )
 

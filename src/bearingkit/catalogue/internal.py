@@ -160,6 +160,11 @@ SERIES_RULES: dict[tuple[str, str], Rule] = {
     # heavy series 64: the section is deep for its width (B ≈ 0.38 (D - d)), so the width cap decides;
     # 0.80 B is the angular contact rule's cap (chosen over the 64 table: C -3 % median, see the docs)
     ("deep_groove_ball", "64"): Rule(k_w=0.31, k_b=0.80),
+    # thin section 618 (B = 5, 7, 10 mm steps): the ball is set by the width, not the section; the ball
+    # size and count NSK's C and C0 imply (ISO 281 and ISO 76 solved for D_w, Z) give D_w = 0.48-0.56 B
+    # (stock balls: 3/32 in = 2.381 mm at B = 5, 3.5 mm at B = 7); 0.55 B chosen by C over the 618 table
+    # (median C -1 %, it was +14 % with the 0.70 B cap), C0 follows (docs/catalogue.md)
+    ("deep_groove_ball", "618"): Rule(k_w=0.31, k_b=0.55),
 }
 
 

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearingkit.catalogue.internal import Estimate
+from bearingkit.catalogue.internal import FOUR_POINT_ANGLE, Estimate
 from bearingkit.physics.life import iso76, iso281
 from bearingkit.physics.life import kinds as life_kinds
 
@@ -69,6 +69,21 @@ def axial_factors(contact_angle: float) -> tuple[float, float]:
     """(Y, Y0) of a four-point bearing under pure axial load: P = Y F_a, P0 = Y0 F_a (F_r = 0)."""
     p, p0 = life_kinds.equivalent_loads("four_point", 0.0, 1.0, contact_angle)
     return float(p), float(p0)
+
+
+def radial_basis(family: str, c, c0) -> tuple[float | None, float | None]:
+    """(C, C0) [N] of a catalogue row on the basis the whole-bearing ISO 281 / ISO 76 rating uses with
+    P = X F_r + Y F_a, P0 = X0 F_r + Y0 F_a.
+
+    Four-point (QJ) rows print the pure-axial capacities C_a = C_r / Y, C_0a = C_0r / Y0 (module
+    docstring), so C_r = Y C_a and C_0r = Y0 C_0a with the double-row factors at 35° (Y = 1.07,
+    Y0 = 0.58: ISO 281 Table 3, ISO 76 Table 2; SKF 6000 p. 455); every other family is returned as is
+    (thrust families are rated on their axial basis by P_a = F_a).
+    """
+    if family != "four_point_contact_ball":
+        return c, c0
+    y, y0 = axial_factors(FOUR_POINT_ANGLE)
+    return (None if c is None else float(c) * y), (None if c0 is None else float(c0) * y0)
 
 
 def ratings(est: Estimate) -> tuple[float | None, float | None]:

@@ -99,9 +99,16 @@ def resolve(text: str, C: float | None = None, clearance_position: float = 0.5, 
         notes.append(f"suffixes {' '.join(plain)} noted (no effect on the mechanics)")
     notes.extend(des.notes)
     if entry.C is not None:
-        notes.append(
-            f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
-        )
+        text = f"catalogue ratings C = {entry.C / 1e3:g} kN, C0 = {entry.C0 / 1e3:g} kN ({entry.source})"
+        if entry.family == "four_point_contact_ball":
+            from bearingkit.catalogue.iso_ratings import radial_basis
+
+            c_r, c0_r = radial_basis(entry.family, entry.C, entry.C0)
+            text += (
+                f"; axial ratings: the ISO 281 / ISO 76 rating uses the double-row radial C_r = 1.07 C_a = "
+                f"{c_r / 1e3:.4g} kN, C_0r = 0.58 C_0a = {c0_r / 1e3:.4g} kN"
+            )
+        notes.append(text)
     force = None
     if des.is_pair:
         bearing_type, force = _pair(des, est, geometry, notes, preload, entry.C or c)

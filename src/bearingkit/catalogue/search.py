@@ -25,7 +25,7 @@ import numpy as np
 
 from bearingkit.catalogue import tables
 from bearingkit.catalogue.internal import estimate
-from bearingkit.catalogue.iso_ratings import basis, ratings
+from bearingkit.catalogue.iso_ratings import basis, radial_basis, ratings
 from bearingkit.errors import InputError
 from bearingkit.materials import get_material
 from bearingkit.physics.life import iso76, iso281_load
@@ -270,4 +270,5 @@ def screen(row: Row, load_radial: float, load_axial: float) -> Screen:
             row, reason="alone it cannot carry F_a < F_r tan(alpha): pair it with an opposing bearing"
         )
     exponent = 3.0 if tables.FAMILIES[e.family][2] == "ball" else 10.0 / 3.0
-    return Screen(row, p, (row.C / p) ** exponent * 1e6, p0, row.C0 / p0 if p0 > 0 else np.inf)
+    c, c0 = radial_basis(e.family, row.C, row.C0)  # QJ: the axial C_a, C_0a as C_r, C_0r (P = X F_r + Y F_a)
+    return Screen(row, p, (c / p) ** exponent * 1e6, p0, c0 / p0 if p0 > 0 else np.inf)

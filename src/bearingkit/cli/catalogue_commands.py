@@ -171,8 +171,8 @@ def select(
         from rich.table import Table
 
         table = Table(title=f"bearingkit select: {len(data['candidates'])} candidates (lightest first)")
-        cols = ("designation", "d mm", "D mm", "B mm", "kg est.", "C kN", "C from", "P kN", "L10h ISO 281",
-                "L10h ISO/TS 16281", "s0")  # fmt: skip
+        cols = ("designation", "d mm", "D mm", "B mm", "kg est.", "C kN", "C0 kN", "C from", "P kN",
+                "L10h ISO 281", "L10h ISO/TS 16281", "s0 ISO 76", "s0 p_max")  # fmt: skip
         for col in cols:
             table.add_column(
                 col, justify="left" if col in ("designation", "C from") else "right", no_wrap=True
@@ -185,10 +185,12 @@ def select(
                 f"{c['B_m'] * 1e3:g}",
                 _num(c["mass_estimate_kg"], 1.0, ".2g"),
                 _num(c["C_iso281_N"], 1e-3),
+                _num(c.get("C0_iso76_N"), 1e-3),
                 c["C_source"],
                 _num(c["P_iso281_N"], 1e-3),
                 _hours(c["L10h_iso281_h"]),
                 _hours(c["L10h_iso16281_h"]),
+                _num(c.get("s0_iso76"), 1.0),
                 _num(c["static_safety"], 1.0),
             )
         console.print(table)

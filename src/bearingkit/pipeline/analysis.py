@@ -312,6 +312,10 @@ class Analysis(AnalysisOutput):
             return None
         else:
             c, c0 = entry.C, entry.C0
+        if given is None:  # QJ rows print axial ratings: the radial C_r, C_0r ISO 281's X, Y go with
+            from bearingkit.catalogue.iso_ratings import radial_basis
+
+            c, c0 = radial_basis(des.family, c, c0)
         if des.is_pair:  # the catalogue rates one bearing: ISO 281's paired unit (C 2^0.7, 2^(7/9); C0 2)
             from bearingkit.physics.life.iso281 import paired_unit_ratings
 

@@ -233,12 +233,14 @@ class AnalysisOutput:
                         number(max(float(np.max(r.max_pressure[i])) for r in res.rows), 1e-6),
                         number(system.get("L10h_iso281_h"), digits=4),
                         number(system.get("L10h_h"), digits=4),
+                        number(system.get("s0_iso76"), digits=3),
                         number(system.get("static_safety"), digits=3),
                     ]
                 )
                 warnings += [f"{name}: {w}" for w in self.warnings[i]]
             columns = ["case", "converged", "n [r/min]", "F_r [kN]", "F_a [kN]", "M [N·m]", "Q_max [N]",
-                       "p_max [MPa]", "L10h ISO 281 [h]", "L10h ISO/TS 16281 [h]", "s0"]  # fmt: skip
+                       "p_max [MPa]", "L10h ISO 281 [h]", "L10h ISO/TS 16281 [h]", "s0 ISO 76",
+                       "s0"]  # fmt: skip
             notes = list(self.notes)
             if rating is None:
                 notes.insert(0, f"no ratings: {self._rating[1]}")

@@ -34,7 +34,12 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.rating.compare import compare, headline
-from bearingkit.analysis.rating.iso281 import Iso281Life, bearing_life, catalogue_row_ratings
+from bearingkit.analysis.rating.iso281 import (
+    Iso281Life,
+    bearing_life,
+    catalogue_row_ratings,
+    catalogue_row_static_ratings,
+)
 from bearingkit.analysis.rating.options import (
     DEFAULT_EDGE_PRESSURE_RATIO,
     DEFAULT_SHOULDER_HEIGHT,
@@ -317,6 +322,10 @@ class RatingResult:
             "Lnm_iso281_rev": val(b.modified_life),
             "Lnm_iso281_h": val(self.hours(b.modified_life)),
             "iso281_note": b.note,
+            "P0_iso76_N": None if b.static_load is None else val(b.static_load),
+            "C0_iso76_N": b.static_rating,
+            "C0_source": b.static_rating_source,
+            "s0_iso76": None if b.static_safety is None else val(b.static_safety),
         }
 
     def to_pandas(self):
@@ -468,6 +477,7 @@ def rate(
             f"{computed or 'unavailable'}"
         )
 
+    geometry_c0 = _catalogue_static(result.model, rows, catalogue_rating, rating_notes)
     a1 = float(iso281.reliability_factor(opts.reliability))
     life, sys_notes = _combine(rows, "life", n_cases)
     if opts.modified:
@@ -502,7 +512,7 @@ def rate(
             )
         warnings.append(notes)
     refs = tuple(dict.fromkeys(_REFERENCES + tuple(k for r in rows for k in r.references)))
-    iso = bearing_life(result, rows, opts, catalogue_rating)
+    iso = bearing_life(result, rows, opts, catalogue_rating, geometry_c0)
     free = np.asarray(getattr(result, "free", np.ones(5, bool)), bool)
     return RatingResult(
         bearing=result.model.name,
@@ -522,6 +532,31 @@ def rate(
         notes=rating_notes,
         comparison=compare(result, rows, life, iso, free),
     )
+
+
+def _catalogue_static(model, rows, catalogue_rating, notes) -> float | None:
+    """Replace the rows' C0 by the catalogue's (ISO 76: C0_row = C0 / i) where it prints one; the first
+    row's geometry C0 [N] before (the C0 C_u is estimated from), None when nothing was replaced."""
+    per_row = catalogue_row_static_ratings(model, rows, catalogue_rating)
+    if not per_row:
+        return None
+    first = rows[0].static_rating
+    geometry = None if np.ma.getmaskarray(first)[0] else float(np.ma.getdata(first)[0])
+    computed = ", ".join(
+        f"{r.name} {np.ma.getdata(r.static_rating)[0] / 1e3:.4g} kN"
+        for r in rows
+        if not np.ma.getmaskarray(r.static_rating)[0]
+    )
+    for r in rows:
+        if r.name in per_row:
+            n = np.ma.getdata(r.static_rating).shape[0]
+            r.static_rating = np.ma.masked_array(np.full(n, per_row[r.name]), mask=np.zeros(n, bool))
+    text = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in per_row.items())
+    notes.append(
+        f"C0 from the catalogue C0 = {float(catalogue_rating[1]) / 1e3:.4g} kN (per row: {text}; ISO 76 "
+        f"C0 is linear in the rows); the estimated geometry's ISO 76 C0 would be {computed or 'unavailable'}"
+    )
+    return geometry
 
 
 def _edge_factor_beyond_range(result, opts: RatingOptions) -> np.ndarray:

@@ -57,6 +57,12 @@ class Iso281Life:
         a_ISO at P.
     note : str or None
         Why nothing (or only part) is given.
+    static_load : MaskedArray [N] or None
+        ISO 76 P0 = X0 F_r + Y0 F_a of the applied load (clauses 6.2-9.2), masked where ISO 76 has none.
+    static_rating : float or None [N]
+        C0 of the bearing (the catalogue's where it prints one; ``static_rating_source`` says which).
+    static_safety : MaskedArray [-] or None
+        ISO 76 clause 10: s0 = C0 / P0 (the catalogue method, beside the s0 from p_max of the rows).
     """
 
     load: np.ma.MaskedArray
@@ -66,6 +72,10 @@ class Iso281Life:
     life_modification: np.ma.MaskedArray
     modified_life: np.ma.MaskedArray
     note: str | None = None
+    static_load: np.ma.MaskedArray | None = None
+    static_rating: float | None = None
+    static_rating_source: str | None = None
+    static_safety: np.ma.MaskedArray | None = None
 
 
 #: ISO rows per model row where one model row holds several (a four-point row: its two diagonals, each
@@ -95,10 +105,23 @@ def catalogue_row_ratings(model, ratings, catalogue) -> dict:
     law = _law(model, ratings)
     if isinstance(law, str):
         return {}
-    i = law[1] * ROWS_PER_MODEL_ROW.get(model.rows[0].kind, 1)
-    unit, _ = iso281.paired_unit_ratings(1.0, None, ratings[0].element, i)  # i^0.7 or i^(7/9)
+    unit, _ = iso281.paired_unit_ratings(1.0, None, ratings[0].element, law[1])  # i^0.7 or i^(7/9)
     c_row = float(catalogue[0]) / float(unit)
     return {row.name: c_row for row in model.rows}
+
+
+def catalogue_row_static_ratings(model, ratings, catalogue) -> dict:
+    """C0 [N] per row from the catalogue C0 of the whole bearing, {} when there is none.
+
+    ISO 76:2006 eq. (1), (3): C0 is linear in the number of rows i, so C0_row = C0 / i (the rows of
+    :func:`catalogue_row_ratings`).
+    """
+    if catalogue is None or len(catalogue) < 2 or catalogue[1] is None or not ratings:
+        return {}
+    law = _law(model, ratings)
+    if isinstance(law, str):
+        return {}
+    return {row.name: float(catalogue[1]) / law[1] for row in model.rows}
 
 
 def _none(n: int, note: str) -> Iso281Life:
@@ -161,6 +184,8 @@ def _law(model, ratings) -> tuple[str, int, float, int] | str:
             arrangement = "DB"  # DB or DF: one double-row bearing
     n_rows = len(rows)
     xy_rows = iso281.PAIRED_UNIT_XY_ROWS[arrangement] if n_rows == 2 else n_rows
+    if kind in ROWS_PER_MODEL_ROW:  # a four-point row: i = 2 rows and the double-row X, Y (ISO 281 Table 3)
+        return life_kinds.KIND_LOAD_LAWS[kind][0], ROWS_PER_MODEL_ROW[kind], alpha, ROWS_PER_MODEL_ROW[kind]
     if kind in life_kinds.KIND_LOAD_LAWS:
         return life_kinds.KIND_LOAD_LAWS[kind][0], n_rows, alpha, xy_rows
     btype = ratings[0].bearing_type
@@ -206,7 +231,9 @@ def _equivalent_load(fr, fa, p_law, alpha, n_rows, c0, f0, notes):
     return p, failed
 
 
-def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281Life:
+def bearing_life(
+    result, ratings, opts: RatingOptions, catalogue=None, geometry_static_rating=None
+) -> Iso281Life:
     """ISO 281 P, C, L10 and L_nm of the whole bearing (module docstring).
 
     Parameters
@@ -218,6 +245,9 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
     opts : RatingOptions
     catalogue : (float, float or None), optional
         The designation's published (C, C0) [N]; replaces the computed ones.
+    geometry_static_rating : float, optional
+        C0 [N] of the first row from its geometry, when the rows' C0 were replaced by the catalogue's:
+        the C0 the fatigue load limit C_u is estimated from (as without a catalogue C0).
 
     Returns
     -------
@@ -241,10 +271,12 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
         )
     elif c0_row is not None:
         c0 = float(c0_row) * n_rows
-    c0_cu = c0
+    c0_cu = c0 if geometry_static_rating is None else float(geometry_static_rating) * n_rows
+    c0_source = None if c0 is None else "computed"
     if catalogue is not None and catalogue[0] is not None:
         c, source = float(catalogue[0]), "catalogue"
-        c0 = float(catalogue[1]) if catalogue[1] is not None else c0
+        if catalogue[1] is not None:
+            c0, c0_source = float(catalogue[1]), "catalogue"
     if c is None:
         return _none(
             n, "ISO 281 basic rating life not computed: the bearing has no ISO 281 C (see the row notes)"
@@ -290,6 +322,7 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
         a_iso = np.ma.masked_array(a, mask=mask | low)
     a1 = float(iso281.reliability_factor(opts.reliability))
     life_m = np.ma.masked_array(life, mask=mask)
+    p0, s0 = _static(fr, fa, p_law, alpha, xy_rows, c0, ~np.asarray(result.converged, bool), notes)
     return Iso281Life(
         load=np.ma.masked_array(np.where(mask, 0.0, p), mask=mask),
         load_rating=c,
@@ -298,7 +331,37 @@ def bearing_life(result, ratings, opts: RatingOptions, catalogue=None) -> Iso281
         life_modification=a_iso,
         modified_life=a1 * a_iso * life_m,
         note="; ".join(notes) or None,
+        static_load=p0,
+        static_rating=c0,
+        static_rating_source=c0_source,
+        static_safety=s0,
     )
+
+
+def _static(fr, fa, law, alpha, rows, c0, unsolved, notes):
+    """ISO 76 P0 (C,) [N] and s0 = C0/P0 (C,) [-], masked where ISO 76 gives no P0, P0 = 0 or no C0.
+
+    P0 by :func:`bearingkit.physics.life.iso76.equivalent_static_load` with the law and rows of the ISO
+    281 P (ISO 76:2006 6.2-9.2; the double-row X0, Y0 for two rows, a four-point bearing, a DB/DF pair).
+    """
+    n = fr.shape[0]
+    p0 = np.zeros(n)
+    failed = np.array(unsolved, bool)
+    try:
+        p0 = np.asarray(iso76.equivalent_static_load(fr, fa, law, alpha, n_rows=rows), float) * np.ones(n)
+    except InputError:
+        for c in range(n):
+            try:
+                p0[c] = float(iso76.equivalent_static_load(fr[c], fa[c], law, alpha, n_rows=rows))
+            except InputError as exc:
+                failed[c] = True
+                notes.append(f"case {c}: no ISO 76 static safety: {exc}")
+    mask = failed | ~(p0 > 0)
+    p0_m = np.ma.masked_array(np.where(mask, 0.0, p0), mask=mask)
+    if c0 is None:
+        return p0_m, np.ma.masked_array(np.zeros(n), mask=np.ones(n, bool))
+    s0 = np.ma.masked_array(c0 / np.where(mask, 1.0, p0), mask=mask)
+    return p0_m, s0
 
 
 def _fmt(x, scale: float = 1.0) -> str:
@@ -326,4 +389,11 @@ def caption(system: dict) -> str | None:
         )
         if system.get("Lnm_iso281_h") is not None:
             text += f", L_nmh = {_fmt(system['Lnm_iso281_h'])} h"
-    return text + (f" ({note})" if note else "")
+    text += f" ({note})" if note else ""
+    if system.get("C0_iso76_N") is not None:
+        text += (
+            f"; ISO 76: P0 = {_fmt(system.get('P0_iso76_N'), 1e-3)} kN, C0 = "
+            f"{_fmt(system['C0_iso76_N'], 1e-3)} kN ({system['C0_source']}), "
+            f"s0 = {_fmt(system.get('s0_iso76'))}"
+        )
+    return text

@@ -352,6 +352,12 @@ function renderSummary(c) {
     metric("l10h", "L10rh (ISO/TS 16281)", sys.L10h_h ?? null, 1, "h"),
     metric("lnm", "Lnmr (ISO/TS 16281, a_ISO)", sys.Lnmr_h ?? null, 1, "h"),
     metric("s0", "static safety s0", s0 ?? null, 1, "", 3, s0 !== undefined && s0 !== null && s0 < 1),
+    // ISO 76's s0 = C0/P0 with the bearing's C0 (the catalogue's for a designation), where ISO 76 gives P0
+    ...(sys.C0_iso76_N !== undefined && sys.C0_iso76_N !== null
+      ? [metric("c0-iso76", `C0 (ISO 76, ${sys.C0_source})`, sys.C0_iso76_N, 1e-3, "kN"),
+         metric("s0-iso76", "s0 = C0/P0 (ISO 76)", sys.s0_iso76 ?? null, 1, "", 3,
+           sys.s0_iso76 !== undefined && sys.s0_iso76 !== null && sys.s0_iso76 < 1)]
+      : []),
     metric("kappa", "viscosity ratio κ", kappa ?? null, 1, "", 3),
     metric("torque", "friction torque", fr.total_Nm ?? null, 1e3, "N·mm"),
     metric("power", "power loss", fr.power_loss_W ?? null, 1, "W"),

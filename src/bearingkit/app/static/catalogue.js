@@ -46,11 +46,12 @@ async function catalogueSelect() {
     const rows = [...out.candidates, ...out.rejected].map((c) => [
       el("button", { type: "button", class: "open", "data-designation": c.designation }, "Open"),
       c.designation, num(c.d_m, 1e3, 4), num(c.D_m, 1e3, 4), num(c.mass_estimate_kg, 1, 3),
-      num(c.L10h_iso281_h, 1, 4), num(c.L10h_iso16281_h, 1, 4), num(c.static_safety, 1, 3),
+      num(c.C_iso281_N, 1e-3, 4), num(c.C0_iso76_N, 1e-3, 4),
+      num(c.L10h_iso281_h, 1, 4), num(c.L10h_iso16281_h, 1, 4), num(c.s0_iso76, 1, 3), num(c.static_safety, 1, 3),
       c.reason ? { text: c.reason, cls: "bad" } : "meets both lives and s0",
       el("button", { type: "button", class: "add-compare", "data-designation": c.designation }, "Compare"),
     ]);
-    table("sel-table", ["", "designation", "d [mm]", "D [mm]", "mass [kg]", "L10h ISO 281 [h]", "L10h ISO/TS 16281 [h]", "s0", "verdict", ""], rows);
+    table("sel-table", ["", "designation", "d [mm]", "D [mm]", "mass [kg]", "C [kN]", "C0 [kN]", "L10h ISO 281 [h]", "L10h ISO/TS 16281 [h]", "s0 ISO 76 (C0/P0)", "s0 (p_max)", "verdict", ""], rows);
     $("sel-status").textContent = `${out.candidates.length} candidate(s), lightest first. ${out.notes.join(" · ")}`;
   } catch (err) {
     $("sel-status").textContent = "";
