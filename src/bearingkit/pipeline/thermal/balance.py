@@ -118,7 +118,7 @@ def reference_surface_of(analysis) -> float:
     if width is None:
         raise InputError(
             "heat: the bearing width B is needed for the ISO 15312 reference surface (give a designation, "
-            "or [operating] heat_dissipation directly)"
+            "[geometry] width, or [thermal] heat_dissipation directly)"
         )
     return iso15312.reference_surface(d, big_d, width, "radial")
 
@@ -318,7 +318,10 @@ def with_thermal_equilibrium(analysis, given=None):
 
 def _checked(analysis, given, label):
     """(settings, lubricant) of one analysis of the balance; one line where the balance cannot start."""
-    settings = thermal_settings(analysis, given)
+    try:
+        settings = thermal_settings(analysis, given)
+    except InputError as exc:
+        raise InputError(f"{label}{exc}") from None
     lube = analysis.operating.lubricant
     if lube is None:
         raise InputError(

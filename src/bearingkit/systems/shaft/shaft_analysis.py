@@ -19,6 +19,13 @@ Speed: the inner rings turn with the shaft; a bearing turned end for end (``orie
 sees the shaft's speed with the opposite sign about its own axis (the inertia terms depend on its
 square; the sign orients friction torques). Lubricant and ``[lubrication]`` (contamination,
 roughness): the bearing file's, else the shaft file's.
+
+Temperature: the load cases', or with ``--heat`` / the shaft file's ``[thermal]`` each bearing's own,
+found by its heat balance (friction heat = heat through its seats and housing + oil;
+:func:`bearingkit.pipeline.thermal.balance.with_thermal_equilibria`, all bearings and cases in one batched
+iteration; the sinks of the bearing file's ``[thermal]``, else of the shaft file's, else the ISO 15312
+reference housing of that bearing). The shaft solve does not depend on the temperature (it models no
+fits or thermal growth), so each bearing balances at the reaction the shaft gives it.
 """
 
 from __future__ import annotations
@@ -63,6 +70,8 @@ class SeatInput(ModelInput):
     solved_model : BearingModel or None
         The model the shaft solved the bearing with (rows at speed); the statics evaluate it at q.
         None: ``model``.
+    thermal : ThermalSpec or None
+        ``[thermal]`` (the heat sinks of the balance) when the bearing file has none.
     """
 
     displacement: np.ndarray = None
@@ -73,6 +82,7 @@ class SeatInput(ModelInput):
     bearing_input: object = None
     lubrication: object = None
     solved_model: object = None
+    thermal: object = None
 
     def __post_init__(self):
         super().__post_init__()
@@ -110,7 +120,8 @@ class SeatInput(ModelInput):
 
         own = getattr(self.bearing_input, "sections", None)
         lub = own.lubrication if own is not None and own.lubrication is not None else self.lubrication
-        return OperatingSections(operating=OperatingSpec(speed_effects=False), lubrication=lub)
+        heat = own.thermal if own is not None and own.thermal is not None else self.thermal
+        return OperatingSections(operating=OperatingSpec(speed_effects=False), lubrication=lub, thermal=heat)
 
     @property
     def spec(self):
@@ -174,16 +185,34 @@ class ShaftAnalysis:
         ISO 281 e_C (or a level name) for every bearing, replacing the files' ``[lubrication]``.
     reliability : float
         Reliability of L_nm (0.9 … 0.9995).
+    thermal : bool or dict, optional
+        Find each bearing's temperature by its heat balance: True, or ``[thermal]`` fields for every
+        bearing (overriding the files'); None (default): when the shaft file has ``[thermal]``.
     """
 
     def __init__(
-        self, shaft_input, result=None, *, friction_model="auto", contamination=None, reliability=0.9
+        self,
+        shaft_input,
+        result=None,
+        *,
+        friction_model="auto",
+        contamination=None,
+        reliability=0.9,
+        thermal=None,
     ):
         self.input = shaft_input
         self._result = result
         self.friction_model = friction_model
         self.contamination = contamination
         self.reliability = reliability
+        self.thermal = thermal
+
+    @property
+    def heat_balance(self) -> bool:
+        """True when each bearing's temperature is found by its heat balance (module docstring)."""
+        if self.thermal is None:
+            return getattr(self.input, "thermal", None) is not None
+        return bool(self.thermal) or isinstance(self.thermal, dict)
 
     @functools.cached_property
     def result(self):
@@ -222,6 +251,7 @@ class ShaftAnalysis:
             bearing_input=source,
             lubrication=getattr(self.input, "lubrication", None),
             solved_model=res.model(seat.name),
+            thermal=getattr(self.input, "thermal", None),
         )
 
     @functools.cached_property
@@ -244,7 +274,19 @@ class ShaftAnalysis:
                 raise InputError(
                     text if text.startswith(seat_input.source) else f"{seat_input.source}: {text}"
                 ) from None
-        return out
+        return self._at_heat_balance(out) if self.heat_balance and out else out
+
+    def _at_heat_balance(self, analyses: dict) -> dict:
+        """Every bearing at the temperature of its own heat balance, all solved in one batch."""
+        from bearingkit.pipeline.thermal.balance import with_thermal_equilibria
+
+        given = self.thermal if isinstance(self.thermal, dict) else None
+        names = list(analyses)
+        try:
+            found = with_thermal_equilibria(analyses.values(), [given] * len(names), names)
+        except InputError as exc:
+            raise type(exc)(f"{self.input.source}: {exc}") from None
+        return dict(zip(names, found, strict=True))
 
     @functools.cached_property
     def rating(self):
@@ -286,6 +328,14 @@ class ShaftAnalysis:
         for seat in self.system.bearings:
             if seat.name not in self.bearings:
                 out.append(f"{seat.name}: a linear stiffness: no rows, so no pressures, lives or friction")
+        if self.heat_balance:
+            replaced = "; the load cases' temperatures are replaced by them"
+            out.append(
+                "heat balance: each bearing's temperature is found by its own balance at the reaction the "
+                "shaft gives it (the shaft models no fits or thermal growth, so its solution and the "
+                "clearances do not depend on the temperature)"
+                + (replaced if self.input.loads.temperature is not None else "")
+            )
         out.append(
             "bearings: each is analysed at the state the shaft solution gives it (all five DOFs imposed), "
             "with the speed effects of the shaft solve; no fits or [operating] preload of the bearing "
@@ -320,6 +370,8 @@ class ShaftAnalysis:
             "kappa_min": None,
             "friction_torque_Nm": None,
             "power_loss_W": None,
+            "temperature_C": None,
+            "temperature_found": False,
             "warnings": len([w for w in self.warnings[case] if w.startswith(f"{name}: ")]),
         }
         a = self.bearings.get(name)
@@ -334,6 +386,10 @@ class ShaftAnalysis:
             kappas = [r.get("kappa") for r in films]
             vals = [k for k in kappas if k is not None]
             out["kappa_min"] = min(vals) if vals else None
+        temperature = a.operating.temperature
+        if temperature is not None:
+            out["temperature_C"] = float(np.broadcast_to(temperature, (self.n_cases,))[case])
+        out["temperature_found"] = a.thermal is not None
         f = a.friction
         if f is not None:
             out["friction_torque_Nm"] = float(f.total[case])
@@ -351,6 +407,8 @@ class ShaftAnalysis:
                 part["rating"] = a.rating.to_dict(case)
             if a.lubrication is not None:
                 part["lubrication"] = a.lubrication.to_dict(case)
+            if a.thermal is not None:
+                part["thermal"] = a.thermal.to_dict(case)
             if a.friction is not None:
                 part["friction"] = {
                     **a.friction.case_dicts[case]["friction"],
@@ -381,6 +439,7 @@ class ShaftAnalysis:
             "file": self.input.source,
             "shaft": self.system.name,
             "friction_model": self.friction_model,
+            "heat_balance": self.heat_balance,
             "inputs": inputs_dict(self.input),
             "bearings": [
                 {
@@ -524,6 +583,7 @@ def inputs_dict(inp) -> dict:
         ],
         "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
         "lubricant": None if inp.lubricant is None else inp.lubricant.name,
+        "thermal": None if getattr(inp, "thermal", None) is None else inp.thermal.model_dump(exclude_none=True),
         "load_cases": [per_case(c) for c in range(n)],
     }
 
