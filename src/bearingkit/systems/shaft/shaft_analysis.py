@@ -583,7 +583,7 @@ def inputs_dict(inp) -> dict:
         ],
         "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
         "lubricant": None if inp.lubricant is None else inp.lubricant.name,
-        "thermal": None if getattr(inp, "thermal", None) is None else inp.thermal.model_dump(exclude_none=True),
+        "thermal": None if inp.thermal is None else inp.thermal.model_dump(exclude_none=True),
         "load_cases": [per_case(c) for c in range(n)],
     }
 
