@@ -268,6 +268,7 @@ class ShaftAnalysis:
                     friction_model=self.friction_model,
                     contamination=self.contamination,
                     reliability=self.reliability,
+                    thermal=False,  # the balance of every bearing at once, below
                 )
             except InputError as exc:  # one line naming the shaft file and the bearing
                 text = str(exc)
