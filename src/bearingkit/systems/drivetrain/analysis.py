@@ -165,7 +165,7 @@ class DrivetrainAnalysis:
                     contamination=self.contamination,
                     reliability=self.reliability,
                     rotating=self.rotating_ring(b.name),
-                    thermal=False,  # temperatures from the load cases (a bearing file's [thermal] is not used)
+                    thermal=False,  # the load cases' temperatures (a bearing file's [thermal] is not used)
                 )
             except InputError as exc:
                 text = str(exc)
