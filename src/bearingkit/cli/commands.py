@@ -29,6 +29,7 @@ from bearingkit.cli.common import (
     _LUBRICANT_OPTION,
     _PRELOAD_OPTION,
     _ROTATING_OPTION,
+    _SHAFT_HEAT_OPTION,
     _SPEED_OPTION,
     _TEMPERATURE_OPTION,
     OneLineGroup,
@@ -481,13 +482,7 @@ def shaft(
         help="Friction model of every bearing: auto (the model of each bearing's kind) | components | skf | "
         "palmgren.",
     ),
-    heat: bool = typer.Option(
-        False,
-        "--heat",
-        help="Find each bearing's operating temperature by its own heat balance (friction heat = heat "
-        "carried away; the shaft file's [thermal], else each bearing's ISO 15312 reference housing) and "
-        "give everything at it.",
-    ),
+    heat: bool = _SHAFT_HEAT_OPTION,
 ):
     """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and
     friction, system life; exit 1 if a case fails. With --heat (or [thermal]) each bearing's temperature
