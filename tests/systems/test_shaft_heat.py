@@ -99,12 +99,31 @@ def test_a_bearing_finds_the_single_bearing_temperature_at_its_reaction(analysis
     assert t_shaft == pytest.approx(t_hand, abs=1e-4)
     single = bk.analyze(file, thermal={"heat_dissipation": H}, **kw)
     assert single.thermal.model == a.thermal.model
-    assert t_shaft == pytest.approx(float(single.thermal.temperature[0]), rel=1e-6)
+    assert t_shaft == pytest.approx(float(single.thermal.temperature[0]), rel=1e-9)
     assert float(a.friction.power_loss[c]) == pytest.approx(float(single.friction.power_loss[0]), rel=1e-5)
     # κ at the found temperature, as for the single bearing
     k_shaft = a.lubrication.to_dict(c)["rows"][0]["kappa"]
     k_single = single.lubrication.to_dict(0)["rows"][0]["kappa"]
     assert k_shaft == pytest.approx(k_single, rel=1e-5)
+
+
+def test_the_roller_bearing_too_finds_its_single_bearing_temperature(analysis):
+    # the NU 209 alone (its own file) at the shaft's load on it, every case, the same sinks
+    b = analysis.bearings["B"]
+    for c in range(analysis.n_cases):
+        load = analysis.result.bearing_load("B")[c]
+        given = {k: f"{float(v)!r} N" for k, v in zip(("F_x", "F_y", "F_z"), load[:3], strict=True)}
+        single = bk.analyze(
+            str(EXAMPLES / "crb_nu209.toml"),
+            load=given,
+            speed="1000 rpm",
+            lubricant="ISO_VG100",
+            friction_model=b.friction_model,
+            thermal={"heat_dissipation": H},
+        )
+        assert single.thermal.model == b.thermal.model
+        found = float(single.thermal.temperature[0])
+        assert float(b.thermal.temperature[c]) == pytest.approx(found, rel=1e-9)
 
 
 def test_the_batched_balance_is_each_bearing_alone(analysis, shaft_path):
