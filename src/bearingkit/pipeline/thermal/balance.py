@@ -41,6 +41,8 @@ __all__ = [
     "ThermalEquilibrium",
     "ThermalRunaway",
     "ThermalSettings",
+    "at_heat_balance",
+    "heat_balance_wanted",
     "reference_surface_of",
     "thermal_settings",
     "with_thermal_equilibria",
@@ -447,3 +449,25 @@ def with_thermal_equilibria(analyses, given=None, names=None):
         )
         found.append(final)
     return found
+
+
+def heat_balance_wanted(thermal, system_input) -> bool:
+    """Whether the bearings of a system (a shaft, a drivetrain) find their temperatures: ``thermal``
+    (True, False or a dict of ``[thermal]`` fields), else (None) whether the system file has a
+    ``[thermal]`` section."""
+    if thermal is None:
+        return getattr(system_input, "thermal", None) is not None
+    return bool(thermal) or isinstance(thermal, dict)
+
+
+def at_heat_balance(analyses: dict, source: str, thermal=None) -> dict:
+    """Every bearing's Analysis (name → Analysis) at the temperature of its own heat balance, all solved in
+    one batch (:func:`bearingkit.pipeline.thermal.balance.with_thermal_equilibria`); ``thermal`` a dict of
+    ``[thermal]`` fields for every bearing, or not. A refusal is one line naming the file and bearing."""
+    given = thermal if isinstance(thermal, dict) else None
+    names = list(analyses)
+    try:
+        found = with_thermal_equilibria(analyses.values(), [given] * len(names), names)
+    except InputError as exc:
+        raise type(exc)(f"{source}: {exc}") from None
+    return dict(zip(names, found, strict=True))

@@ -40,9 +40,15 @@ import numpy as np
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import ModelInput, analyze
+from bearingkit.pipeline.thermal.balance import at_heat_balance, heat_balance_wanted
 from bearingkit.systems.shaft.life import combine_ratings
 
-__all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis", "inputs_dict"]
+__all__ = [
+    "SHAFT_RENDERERS",
+    "SeatInput",
+    "ShaftAnalysis",
+    "inputs_dict",
+]
 
 #: Renderers of a ShaftAnalysis by format, registered by the report layer on import
 #: (:mod:`bearingkit.report.systems.shaft_html`); :meth:`ShaftAnalysis.report` loads it by name.
@@ -210,9 +216,7 @@ class ShaftAnalysis:
     @property
     def heat_balance(self) -> bool:
         """True when each bearing's temperature is found by its heat balance (module docstring)."""
-        if self.thermal is None:
-            return getattr(self.input, "thermal", None) is not None
-        return bool(self.thermal) or isinstance(self.thermal, dict)
+        return heat_balance_wanted(self.thermal, self.input)
 
     @functools.cached_property
     def result(self):
@@ -275,19 +279,7 @@ class ShaftAnalysis:
                 raise InputError(
                     text if text.startswith(seat_input.source) else f"{seat_input.source}: {text}"
                 ) from None
-        return self._at_heat_balance(out) if self.heat_balance and out else out
-
-    def _at_heat_balance(self, analyses: dict) -> dict:
-        """Every bearing at the temperature of its own heat balance, all solved in one batch."""
-        from bearingkit.pipeline.thermal.balance import with_thermal_equilibria
-
-        given = self.thermal if isinstance(self.thermal, dict) else None
-        names = list(analyses)
-        try:
-            found = with_thermal_equilibria(analyses.values(), [given] * len(names), names)
-        except InputError as exc:
-            raise type(exc)(f"{self.input.source}: {exc}") from None
-        return dict(zip(names, found, strict=True))
+        return at_heat_balance(out, self.input.source, self.thermal) if self.heat_balance and out else out
 
     @functools.cached_property
     def rating(self):
