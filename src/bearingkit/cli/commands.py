@@ -446,7 +446,8 @@ def report(
         return
     from bearingkit.cli.system import report_drivetrain
 
-    if report_drivetrain(file, output, contamination, load or case or speed or temperature or lubricant):
+    bearing_options = load or case or speed or temperature or lubricant
+    if report_drivetrain(file, output, contamination, bearing_options, heat):
         return
     a = _analysis(
         file,

@@ -170,8 +170,8 @@ _SHAFT_HEAT_OPTION = typer.Option(
     False,
     "--heat",
     help="Find each bearing's operating temperature by its own heat balance (friction heat = heat carried "
-    "away; the shaft file's [thermal], else each bearing's ISO 15312 reference housing) and give everything "
-    "at it.",
+    "away; the system file's [thermal], else each bearing's ISO 15312 reference housing) and give "
+    "everything at it.",
 )
 _CONTAMINATION_OPTION = typer.Option(
     None,

@@ -103,7 +103,9 @@ def shaft_case_tables(c: dict) -> list:
 def heat_balance_table(c: dict):
     """The per-bearing heat balance of one case (None when the temperatures were inputs)."""
     rows = [
-        (b["name"], b["analysis"]["thermal"]) for b in c["bearings"] if "thermal" in b.get("analysis", {})
+        (b["summary"]["name"], b["analysis"]["thermal"])
+        for b in c["bearings"]
+        if "thermal" in b.get("analysis", {})
     ]
     if not rows:
         return None

@@ -262,7 +262,7 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
             ["bearing"] + [h for _, h, _, _ in RESULT_COLUMNS] + ["warnings"], rows, left=1, cls="bearings"
         )
     )
-    parts.append(_heat_balance_html(c))
+    parts.append(heat_balance_html(c))
     sysd = c["rating"]["system"]
     parts.append(f"<h4>{number}.3. System life</h4>")
     parts.append(
@@ -292,10 +292,12 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
     return "".join(parts)
 
 
-def _heat_balance_html(c: dict) -> str:
+def heat_balance_html(c: dict) -> str:
     """Each bearing's found temperature and its heat balance in one case ("" when they were inputs)."""
     found = [
-        (b["name"], b["analysis"]["thermal"]) for b in c["bearings"] if "thermal" in b.get("analysis", {})
+        (b["summary"]["name"], b["analysis"]["thermal"])
+        for b in c["bearings"]
+        if "thermal" in b.get("analysis", {})
     ]
     if not found:
         return ""
@@ -320,8 +322,8 @@ def _heat_balance_html(c: dict) -> str:
              "T_amb [°C]", "residual [W]", "residual / P", "iterations", "friction model"]  # fmt: skip
     return (
         '<p class="thermal"><b>Operating temperatures FOUND by each bearing\'s heat balance</b> '
-        f"({_e(found[0][1]['method'])}): the friction heat P(T) of the bearing at the reaction the shaft "
-        "gives it equals the heat through its seats and housing H (T − T_amb) plus that carried away by a "
+        f"({_e(found[0][1]['method'])}): the friction heat P(T) of the bearing at the load the system "
+        "puts on it equals the heat through its seats and housing H (T − T_amb) plus that carried away by a "
         "circulating oil; viscosity, κ, a_ISO, L_nm and friction above are at T.</p>"
         + _table(heads, rows, left=1, cls="thermal")
     )
