@@ -180,40 +180,51 @@ def test_every_face_shows_the_found_temperatures(shaft_path, cli_data, tmp_path)
         assert f"<td>{t:.4g}</td>" in html or f">{t:.4g}<" in html
 
 
-def test_the_app_shows_the_cli_temperatures(cli_data):
+def _app_post(body: dict) -> dict:
+    import tempfile
+
     from fastapi.testclient import TestClient
 
     from bearingkit.app import create_app
     from bearingkit.app.store import Store
 
-    text = (EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8")
-    body = {
-        "system": "shaft",
-        "source": {
-            "kind": "upload",
-            "name": "shaft.toml",
-            "text": text + f'\n[thermal]\nheat_dissipation = "{H} W/K"\n',
-        },
-    }
-    import tempfile
-
     with tempfile.TemporaryDirectory() as folder:
         store = Store(Path(folder))
         with TestClient(create_app(store, allowed_hosts=("testserver",))) as client:
             r = client.post("/api/system/analyze", json=body)
-            assert r.status_code == 200, r.text
-            cases = r.json()["analysis"]["cases"]
-            refused = client.post(
-                "/api/system/analyze",
-                json={
-                    "system": "drivetrain",
-                    "source": {"kind": "example", "name": "planetary_stage.toml"},
-                    "heat": True,
-                },
-            )
         store.close()
-    for case, ref in zip(cases, cli_data["cases"], strict=True):
+    assert r.status_code == 200, r.text
+    return r.json()["analysis"]
+
+
+def _same_temperatures(cases: list, ref_cases: list) -> None:
+    for case, ref in zip(cases, ref_cases, strict=True):
         for b, rb in zip(case["bearings"], ref["bearings"], strict=True):
             assert b["analysis"]["thermal"]["temperature_C"] == rb["analysis"]["thermal"]["temperature_C"]
             assert b["summary"]["temperature_C"] == rb["summary"]["temperature_C"]
-    assert refused.status_code == 400 and "runs on shaft files" in refused.json()["error"]
+            assert b["summary"]["temperature_found"] is True
+
+
+def test_the_app_shows_the_cli_temperatures(cli_data):
+    text = (EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8")
+    text += f'\n[thermal]\nheat_dissipation = "{H} W/K"\n'
+    got = _app_post({"system": "shaft", "source": {"kind": "upload", "name": "shaft.toml", "text": text}})
+    _same_temperatures(got["cases"], cli_data["cases"])
+
+
+def test_a_drivetrain_balances_every_bearing_on_every_face(tmp_path):
+    # the two-stage gearbox (bearings by designation: each its ISO 15312 reference housing), --heat
+    res = runner.invoke(app, ["system", str(EXAMPLES / "gearbox_two_stage.toml"), "--heat", "--json"])
+    assert res.exit_code == 0, res.output
+    data = json.loads(res.output)
+    assert data["heat_balance"] is True
+    for case in data["cases"]:
+        for b in case["bearings"]:
+            t = b["analysis"]["thermal"]
+            p = t["friction_heat_W"]
+            assert abs(p - t["conducted_heat_W"] - t["oil_heat_W"]) <= 1e-6 * p
+            assert t["heat_dissipation_from"].startswith("ISO 15312 reference housing")
+            assert b["summary"]["power_loss_W"] == pytest.approx(p, rel=1e-12)
+    example = {"kind": "example", "name": "gearbox_two_stage.toml"}
+    got = _app_post({"system": "drivetrain", "source": example, "friction_model": "components", "heat": True})
+    _same_temperatures(got["cases"], data["cases"])

@@ -74,7 +74,7 @@ class SystemRequest(StrictModel):
     source: SystemSource
     friction_model: Literal[FRICTION_CHOICES] = "auto"
     contamination: FormText = ""
-    heat: bool = Field(False, description="Each bearing's temperature by its heat balance (shaft only).")
+    heat: bool = Field(False, description="Each bearing's temperature by its heat balance (else the file's).")
 
 
 def _kind_of(path: Path) -> str | None:
@@ -185,17 +185,14 @@ def analyse_system(request: SystemRequest):
             thermal=True if request.heat else None,  # off: the file's [thermal] decides
         )
     else:
-        if request.heat:
-            raise InputError(
-                f"{name}: heat: the heat balance of each bearing runs on shaft files (bearingkit shaft "
-                "--heat); a drivetrain takes its temperatures from its load cases"
-            )
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import drivetrain_from_dict
 
         inp = drivetrain_from_dict(copy.deepcopy(document), name, base=EXAMPLES_DIR)
         model = "components" if request.friction_model == "auto" else request.friction_model
-        analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
+        analysis = DrivetrainAnalysis(
+            inp, friction_model=model, contamination=contamination, thermal=True if request.heat else None
+        )
     analysis.result  # noqa: B018 - solve now, under the caller's lock
     return analysis, text, name
 
