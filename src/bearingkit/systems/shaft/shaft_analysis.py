@@ -465,14 +465,15 @@ class ShaftAnalysis:
                         number(s["axial_load_N"], 1e-3), number(s["misalignment_rad"], 1e3),
                         number(s["max_pressure_Pa"], 1e-6), number(s["static_safety"], digits=3),
                         number(s["L10h_h"]), number(s["Lnmr_h"]), number(s["friction_torque_Nm"]),
+                        number(s["temperature_C"]) + (" found" if s["temperature_found"] else ""),
                     ])  # fmt: skip
                 system = self.rating.to_dict(c)["system"]
                 rows.append(
-                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—"]
+                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—", "—"]
                 )
                 warnings += [f"{case}: {w}" for w in self.warnings[c]]
             columns = ["case", "bearing", "z [mm]", "F_r [kN]", "F_a [kN]", "tilt [mrad]", "p_max [MPa]",
-                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]"]  # fmt: skip
+                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]", "T [°C]"]  # fmt: skip
             title = f"{self.system.name} ({self.input.source})"
             return html_table(title, columns, rows, warnings=warnings, notes=self.notes)
         except Exception as exc:  # a notebook cell must show something, and say what went wrong
