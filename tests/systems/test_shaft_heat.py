@@ -163,6 +163,13 @@ def test_heat_switches_the_balance_on_and_a_runaway_names_bearing_and_remedy(tmp
     assert res.exit_code != 0
     assert "bearing 'B': heat: the bearing width B is needed" in res.output
     assert "[thermal] heat_dissipation" in res.output
+    # no speed: nothing to balance, one line naming the bearing and the case
+    still = (tmp_path / "shaft.toml").read_text(encoding="utf-8").replace('speed = "1000 rpm"\n', "")
+    (tmp_path / "still.toml").write_text(still, encoding="utf-8")
+    res = runner.invoke(app, ["shaft", str(tmp_path / "still.toml")])
+    assert res.exit_code != 0
+    assert "bearing 'A': heat balance: load case 'rated' has no speed" in res.output
+    assert "give each load case a speed" in res.output
 
 
 def test_every_face_shows_the_found_temperatures(shaft_path, cli_data, tmp_path):

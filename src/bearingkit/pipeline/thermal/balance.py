@@ -332,9 +332,10 @@ def _checked(analysis, given, label):
         )
     if not np.all(analysis.operating.abs_speed > 0):
         i = int(np.flatnonzero(analysis.operating.abs_speed == 0)[0])
+        remedy = "give each load case a speed" if label else "give --speed 3000rpm or each case's speed"
         raise InputError(
             f"{label}heat balance: load case {analysis.case_names[i]!r} has no speed; a bearing at rest "
-            "makes no friction heat (give --speed 3000rpm or each case's speed)"
+            f"makes no friction heat ({remedy})"
         )
     return settings, lube
 
