@@ -237,6 +237,30 @@ def test_shaft_example_reactions_equal_the_cli_and_edits_are_solved(opened, page
     assert page.console_errors(browser) == []
 
 
+def test_shaft_heat_balance_shows_the_cli_temperatures(opened, page, tmp_path):
+    # the countershaft with [thermal]: every bearing's found temperature on the page = bearingkit shaft's
+    browser = opened
+    _tab(browser, "shaft")
+    text = browser.find_element("id", "shaft-text")
+    edited = (EXAMPLES / "shaft_countershaft.toml").read_text(encoding="utf-8")
+    edited += '\n[thermal]\nheat_dissipation = "1.5 W/K"\n'
+    browser.execute_script("arguments[0].value = arguments[1]", text, edited)
+    browser.find_element("id", "shaft-analyze").click()
+    _wait(browser, page, lambda d: d.find_element("id", "shaft-heat-card").get_attribute("hidden") is None)
+    folder = tmp_path / "heat"
+    folder.mkdir()
+    for name in ("dgbb_6209.toml", "crb_nu209.toml"):
+        (folder / name).write_text((EXAMPLES / name).read_text(encoding="utf-8"), encoding="utf-8")
+    (folder / "shaft.toml").write_text(edited, encoding="utf-8")
+    ref = page.cli_json("shaft", str(folder / "shaft.toml"))["cases"][0]["bearings"]
+    for j, b in enumerate(ref):
+        found = b["analysis"]["thermal"]["temperature_C"]
+        assert _value(browser, f"shaft-heat-{j}-T") == found
+        assert _value(browser, f"shaft-temperature-{j}") == found
+    assert "FOUND by each bearing's heat balance" in _text(browser, "shaft-heat-note")
+    assert page.console_errors(browser) == []
+
+
 def test_drivetrain_example_efficiency_equals_the_cli(opened, page, tmp_path):
     browser = opened
     _tab(browser, "drivetrain")

@@ -29,6 +29,7 @@ from bearingkit.cli.common import (
     _LUBRICANT_OPTION,
     _PRELOAD_OPTION,
     _ROTATING_OPTION,
+    _SHAFT_HEAT_OPTION,
     _SPEED_OPTION,
     _TEMPERATURE_OPTION,
     OneLineGroup,
@@ -434,7 +435,7 @@ def report(
     if is_shaft_file(file):
         given = [f for f, v in (("--load", load), ("--case", case), ("--speed", speed)) if v]
         given += [f for f, v in (("--temperature", temperature), ("--lubricant", lubricant)) if v]
-        given += [f for f, v in (("--lubricant-file", lubricant_file), ("--heat", heat)) if v]
+        given += [f for f, v in (("--lubricant-file", lubricant_file),) if v]
         if given:
             raise InputError(
                 f"{file}: {', '.join(given)} apply to a bearing file; a shaft file's [[load_cases]] and "
@@ -445,12 +446,13 @@ def report(
 
         inp = load_shaft_file(file)
         inp.check_work(report=True)  # before anything is solved
-        path = ShaftAnalysis(inp, contamination=contamination).report(output)
+        path = ShaftAnalysis(inp, contamination=contamination, thermal=heat or None).report(output)
         console.print(f"wrote {path}")
         return
     from bearingkit.cli.system import report_drivetrain
 
-    if report_drivetrain(file, output, contamination, load or case or speed or temperature or lubricant):
+    bearing_options = load or case or speed or temperature or lubricant
+    if report_drivetrain(file, output, contamination, bearing_options, heat):
         return
     a = _analysis(
         file,
@@ -486,9 +488,11 @@ def shaft(
         help="Friction model of every bearing: auto (the model of each bearing's kind) | components | skf | "
         "palmgren.",
     ),
+    heat: bool = _SHAFT_HEAT_OPTION,
 ):
     """A shaft on several bearings: reactions, seat tilts, shaft lines, every bearing's pressures, lives and
-    friction, system life; exit 1 if a case fails."""
+    friction, system life; exit 1 if a case fails. With --heat (or [thermal]) each bearing's temperature
+    is found by its heat balance."""
     from bearingkit.cli.shaft_tables import shaft_case_tables
     from bearingkit.systems.shaft.input import load_shaft_file
     from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
@@ -497,7 +501,7 @@ def shaft(
     check_outputs(report=report, stiffness=stiffness, plot=plot)  # refused before any work
     inp = load_shaft_file(file)
     inp.check_work(report=report is not None or plot is not None)  # before anything is solved
-    analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination)
+    analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination, thermal=heat or None)
     result = analysis.result
     data = analysis.to_dict()
     # Files only from a solution that converged: a failed case prints its tables, writes nothing.

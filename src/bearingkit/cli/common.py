@@ -166,6 +166,13 @@ _HEAT_OPTION = typer.Option(
     help="Find the operating temperature by the heat balance (friction heat = heat carried away; the file's "
     "[thermal] or the ISO 15312 reference housing) and give everything at it.",
 )
+_SHAFT_HEAT_OPTION = typer.Option(
+    False,
+    "--heat",
+    help="Find each bearing's operating temperature by its own heat balance (friction heat = heat carried "
+    "away; the system file's [thermal], else each bearing's ISO 15312 reference housing) and give "
+    "everything at it.",
+)
 _CONTAMINATION_OPTION = typer.Option(
     None,
     "--contamination",

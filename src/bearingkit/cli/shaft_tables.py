@@ -51,7 +51,19 @@ def shaft_case_tables(c: dict) -> list:
     for col in (*cols, "θ_x mrad", "θ_y mrad", "tilt mrad"):
         seat.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
     results = Table(title=escape(f"case {c['case']!r}: bearing results"), caption=escape(caption))
-    cols = ("bearing", "F_r N", "F_a N", "p_max MPa", "s0", "L10h h", "L_nm h", "κ", "M_fr N·m", "P_loss W")
+    cols = (
+        "bearing",
+        "F_r N",
+        "F_a N",
+        "p_max MPa",
+        "s0",
+        "L10h h",
+        "L_nm h",
+        "κ",
+        "M_fr N·m",
+        "P_loss W",
+        "T °C",
+    )
     for col in (*cols, "warnings"):
         results.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
     for b in c["bearings"]:
@@ -77,8 +89,46 @@ def shaft_case_tables(c: dict) -> list:
             _num(sm["kappa_min"], fmt=".3g"),
             _num(sm["friction_torque_Nm"], fmt=".3g"),
             _num(sm["power_loss_W"], fmt=".3g"),
+            _num(sm["temperature_C"], fmt=".4g") + (" found" if sm["temperature_found"] else ""),
             str(sm["warnings"]),
         )
     out = [seat, results]
+    heat = heat_balance_table(c)
+    if heat is not None:
+        out.append(heat)
     out += [Text(f"  warning: {w}") for w in c["warnings"]]
     return out
+
+
+def heat_balance_table(c: dict):
+    """The per-bearing heat balance of one case (None when the temperatures were inputs)."""
+    rows = [
+        (b["summary"]["name"], b["analysis"]["thermal"])
+        for b in c["bearings"]
+        if "thermal" in b.get("analysis", {})
+    ]
+    if not rows:
+        return None
+    table = Table(
+        title=escape(f"case {c['case']!r}: operating temperature FOUND by each bearing's heat balance"),
+        caption="friction heat P(T) = seats/housing H (T − T_amb) + circulating oil",
+    )
+    cols = ("bearing", "T °C", "P(T) W", "seats/housing W", "oil W", "H W/K", "T_amb °C", "residual W")
+    for col in (*cols, "iterations", "friction model"):
+        table.add_column(
+            col, justify="left" if col in ("bearing", "friction model") else "right", no_wrap=True
+        )
+    for name, t in rows:
+        table.add_row(
+            name,
+            f"{t['temperature_C']:.4g}",
+            f"{t['friction_heat_W']:.4g}",
+            f"{t['conducted_heat_W']:.4g}",
+            f"{t['oil_heat_W']:.4g}",
+            f"{t['heat_dissipation_W_K']:.4g}",
+            f"{t['ambient_C']:g}",
+            f"{t['balance_residual_W']:.2g}",
+            str(t["iterations"]),
+            t["friction_model"],
+        )
+    return table

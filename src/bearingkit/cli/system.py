@@ -14,6 +14,7 @@ import typer
 from bearingkit.cli.common import (
     _CONTAMINATION_OPTION,
     _JSON_OPTION,
+    _SHAFT_HEAT_OPTION,
     _fail,
     _print_json,
     check_outputs,
@@ -29,6 +30,7 @@ def case_tables(c: dict) -> list:
     """Renderables of one case: meshes, bearings, power flow, warnings."""
     from rich.table import Table
 
+    from bearingkit.cli.shaft_tables import heat_balance_table
     from bearingkit.cli.tables import _num
 
     out = []
@@ -70,6 +72,7 @@ def case_tables(c: dict) -> list:
         "L10h ISO/TS 16281 [h]",
         "L10h ISO 281 [h]",
         "P_loss [W]",
+        "T [°C]",
         "warn",
     ):
         bearings.add_column(col, justify="left" if col in ("bearing", "on") else "right")
@@ -85,9 +88,13 @@ def case_tables(c: dict) -> list:
             _num(s["L10h_h"], 1.0, ".4g"),
             _num(s["L10h_iso281_h"], 1.0, ".4g"),
             _num(s["power_loss_W"], 1.0, ".3g"),
+            _num(s["temperature_C"], 1.0, ".4g") + (" found" if s["temperature_found"] else ""),
             str(s["warnings"]),
         )
     out.append(bearings)
+    heat = heat_balance_table(c)
+    if heat is not None:
+        out.append(heat)
     life = c["system"]
     out.append(
         f"  system L10h: {_num(life['L10h_h'], 1.0, '.4g')} h (ISO/TS 16281), "
@@ -109,7 +116,7 @@ def case_tables(c: dict) -> list:
     return out
 
 
-def report_drivetrain(file: Path, output: Path, contamination, bearing_options) -> bool:
+def report_drivetrain(file: Path, output: Path, contamination, bearing_options, heat=False) -> bool:
     """``bearingkit report FILE`` for a drivetrain file or REXS model: write its report, True; False
     for any other file (the bearing report's)."""
     from bearingkit.errors import InputError
@@ -126,7 +133,9 @@ def report_drivetrain(file: Path, output: Path, contamination, bearing_options) 
     from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
     from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
-    path = DrivetrainAnalysis(load_drivetrain_file(file), contamination=contamination).report(output)
+    inp = load_drivetrain_file(file)
+    analysis = DrivetrainAnalysis(inp, contamination=contamination, thermal=heat or None)
+    path = analysis.report(output)
     console.print(f"wrote {path}", markup=False, highlight=False)
     return True
 
@@ -150,16 +159,20 @@ def register(app: typer.Typer) -> None:
         ),
         contamination: str = _CONTAMINATION_OPTION,
         model: str = typer.Option("components", "--friction-model", help="components | skf | palmgren."),
+        heat: bool = _SHAFT_HEAT_OPTION,
     ):
         """A drivetrain: shafts joined by gear meshes and planetary stages, every bearing's lives and
-        friction, the system life, the power flow; exit 1 if a case fails."""
+        friction, the system life, the power flow; exit 1 if a case fails. With --heat (or [thermal]) each
+        bearing's temperature is found by its heat balance."""
         from bearingkit.cli.tables import _num
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
         check_outputs(report=report, rexs=rexs, stiffness=stiffness)  # before any work
         inp = load_drivetrain_file(file)
-        analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
+        analysis = DrivetrainAnalysis(
+            inp, friction_model=model, contamination=contamination, thermal=heat or None
+        )
         data = analysis.to_dict()
         res = analysis.result
         # Files only from a solution that converged: a failed case prints its tables, writes nothing.

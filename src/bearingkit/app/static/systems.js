@@ -18,6 +18,7 @@ function systemPageHtml(kind) {
     el("div", { class: "grid2" },
       el("div", { class: "field" }, el("label", { for: k("friction") }, "Friction model"), el("select", { id: k("friction") })),
       el("div", { class: "field" }, el("label", { for: k("contamination") }, "e_C (all bearings)"), el("input", { id: k("contamination"), placeholder: "the file's" }))),
+    el("div", { class: "field" }, el("label", { for: k("heat") }, el("input", { type: "checkbox", id: k("heat") }), " find each bearing's temperature (heat balance; on when the file has [thermal])")),
     el("p", {}, el("button", { id: k("analyze"), type: "button", class: "primary" }, "Analyse")),
     el("p", { class: "muted small" }, "Bearing files named in the file are read from the example bearings by name; give your own bearings by designation (designation = \"6209\") or stiffness."));
   const right = el("section", {},
@@ -28,6 +29,7 @@ function systemPageHtml(kind) {
       el("ul", { id: k("warnings"), class: "warnings" })),
     el("div", { class: "card" }, el("h2", {}, kind === "shaft" ? "Layout" : "Layout (end and side view)"), el("div", { id: k("layout"), class: "plots" })),
     el("div", { class: "card" }, el("h2", {}, "Bearings"), el("div", { class: "table-wrap" }, el("table", { id: k("bearings") }))),
+    el("div", { class: "card", id: k("heat-card"), hidden: true }, el("h2", {}, "Heat balance of each bearing"), el("p", { class: "thermal", id: k("heat-note") }), el("div", { class: "table-wrap" }, el("table", { id: k("heat-table") }))),
     kind === "drivetrain" ? el("div", { class: "card" }, el("h2", {}, "Meshes"), el("div", { class: "table-wrap" }, el("table", { id: k("meshes") }))) : "",
     kind === "drivetrain" ? el("div", { class: "card" }, el("h2", {}, "Power flow"), el("div", { id: k("power") })) : "",
     el("div", { class: "card" }, el("h2", {}, "Deflection and bending moment"), el("div", { id: k("lines"), class: "plots" })),
@@ -43,6 +45,7 @@ function systemRequest(kind) {
     source: { kind: "upload", name: s.source ? s.source.name : `${kind}.toml`, text: $(`${kind}-text`).value },
     friction_model: $(`${kind}-friction`).value,
     contamination: $(`${kind}-contamination`).value.trim(),
+    heat: $(`${kind}-heat`).checked,
   };
 }
 
@@ -179,11 +182,27 @@ function renderShaft(a, c) {
     return [b.name, b.bearing, num(b.position_m, 1e3, 4),
       num(r.F_x_N, 1, 5, { id: `shaft-reaction-${j}-Fx` }), num(r.F_y_N, 1, 5, { id: `shaft-reaction-${j}-Fy` }), num(r.F_z_N, 1, 4, { id: `shaft-reaction-${j}-Fz` }),
       num(r.M_x_Nm, 1, 3), num(r.M_y_Nm, 1, 3), num(s.misalignment_rad, 1e3, 3), num(s.max_pressure_Pa, 1e-6, 4), num(s.static_safety, 1, 3, { cls: s.static_safety !== null && s.static_safety < 1 ? "bad" : null }),
-      num(s.L10h_h, 1, 4), num(iso.L10h_iso281_h ?? null, 1, 4), num(s.Lnmr_h, 1, 4), num(s.kappa_min, 1, 3), num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3), s.warnings];
+      num(s.L10h_h, 1, 4), num(iso.L10h_iso281_h ?? null, 1, 4), num(s.Lnmr_h, 1, 4), num(s.kappa_min, 1, 3), num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3),
+      num(s.temperature_C, 1, 4, { id: `shaft-temperature-${j}`, title: s.temperature_found ? "found by the heat balance" : "input" }), s.warnings];
   });
-  table("shaft-bearings", ["bearing", "", "z [mm]", "F_x [N]", "F_y [N]", "F_z [N]", "M_x [N·m]", "M_y [N·m]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "κ", "M_f [N·mm]", "P [W]", "warn."], rows);
+  table("shaft-bearings", ["bearing", "", "z [mm]", "F_x [N]", "F_y [N]", "F_z [N]", "M_x [N·m]", "M_y [N·m]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "κ", "M_f [N·mm]", "P [W]", "T [°C]", "warn."], rows);
+  renderSystemHeat("shaft", c);
   const d = c.shaft.deflection, bm = c.shaft.bending_moment;
   $("shaft-lines").replaceChildren(...lineCharts(d.z_m, { x: d.u_x_m, y: d.u_y_m }, bm.z_m, { x: bm.M_x_Nm, y: bm.M_y_Nm }, ""));
+}
+
+// Each bearing's found temperature and its balance (the `thermal` block of each bearing's analysis).
+function renderSystemHeat(kind, c) {
+  const found = c.bearings.filter((b) => b.analysis && b.analysis.thermal);
+  $(`${kind}-heat-card`).hidden = found.length === 0;
+  if (!found.length) { $(`${kind}-heat-table`).replaceChildren(); $(`${kind}-heat-note`).textContent = ""; return; }
+  $(`${kind}-heat-note`).textContent = "Operating temperatures FOUND by each bearing's heat balance (friction heat P(T) at the load the system puts on it = seats/housing H (T − T_amb) + circulating oil); κ, a_ISO, L_nm and friction above are at T.";
+  const rows = found.map((b, j) => {
+    const t = b.analysis.thermal;
+    return [b.summary.name, num(t.temperature_C, 1, 4, { id: `${kind}-heat-${j}-T` }), num(t.friction_heat_W, 1, 5), num(t.conducted_heat_W, 1, 5), num(t.oil_heat_W, 1, 5),
+      num(t.heat_dissipation_W_K, 1, 4), t.heat_dissipation_from, num(t.ambient_C, 1, 4), t.balance_residual_W.toExponential(1), t.balance_relative.toExponential(1), t.iterations, t.friction_model];
+  });
+  table(`${kind}-heat-table`, ["bearing", "T [°C]", "P(T) [W]", "seats/housing [W]", "oil [W]", "H [W/K]", "H from", "T_amb [°C]", "residual [W]", "residual / P", "iterations", "friction model"], rows);
 }
 
 function renderDrivetrain(out, a, c) {
@@ -195,13 +214,14 @@ function renderDrivetrain(out, a, c) {
     metric("dt-loss", "power loss", p ? p.loss_W : null, 1, "W"),
     metric("dt-held", "held torque", c.held_torque_Nm, 1, "N·m"));
   $("drivetrain-layout").replaceChildren(el("img", { src: out.layout, alt: "drivetrain layout", id: "drivetrain-layout-img" }));
-  table("drivetrain-bearings", ["bearing", "on", "F_r [N]", "F_a [N]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "M_f [N·mm]", "P [W]", "warn."],
+  table("drivetrain-bearings", ["bearing", "on", "F_r [N]", "F_a [N]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "M_f [N·mm]", "P [W]", "T [°C]", "warn."],
     c.bearings.map((b, j) => {
       const s = b.summary;
       return [s.name, `${s.inner}/${s.outer}`, num(s.radial_load_N, 1, 5, { id: `dt-bearing-${j}-Fr` }), num(s.axial_load_N, 1, 4), num(s.misalignment_rad, 1e3, 3),
         num(s.max_pressure_Pa, 1e-6, 4), num(s.static_safety, 1, 3), num(s.L10h_h, 1, 4), num(s.L10h_iso281_h, 1, 4), num(s.Lnmr_h, 1, 4),
-        num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3), s.warnings];
+        num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3), num(s.temperature_C, 1, 4, { title: s.temperature_found ? "found by the heat balance" : "input" }), s.warnings];
     }));
+  renderSystemHeat("drivetrain", c);
   table("drivetrain-meshes", ["mesh", "gears", "F_n [N]", "F_t [N]", "F_r [N]", "F_a [N]", "T_a [N·m]", "T_b [N·m]", "k [N/µm]", "ε_α", "ratio"],
     c.meshes.map((m) => [m.name, m.gears.map((g) => g.join(".")).join(" – "), num(m.normal_force_N, 1, 5), num(m.on_a.tangential_N, 1, 5), num(m.on_a.radial_N, 1, 5),
       num(m.on_a.axial_N, 1, 5), num(m.on_a.torque_Nm, 1, 5), num(m.on_b.torque_Nm, 1, 5), num(m.stiffness_N_per_m, 1e-6, 4), num(m.contact_ratio, 1, 4), num(m.ratio, 1, 5)]));

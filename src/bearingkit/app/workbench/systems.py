@@ -74,6 +74,7 @@ class SystemRequest(StrictModel):
     source: SystemSource
     friction_model: Literal[FRICTION_CHOICES] = "auto"
     contamination: FormText = ""
+    heat: bool = Field(False, description="Each bearing's temperature by its heat balance (else the file's).")
 
 
 def _kind_of(path: Path) -> str | None:
@@ -177,21 +178,28 @@ def analyse_system(request: SystemRequest):
         from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
 
         inp = shaft_from_dict(copy.deepcopy(document), name, base=EXAMPLES_DIR)
-        analysis = ShaftAnalysis(inp, friction_model=request.friction_model, contamination=contamination)
+        analysis = ShaftAnalysis(
+            inp,
+            friction_model=request.friction_model,
+            contamination=contamination,
+            thermal=True if request.heat else None,  # off: the file's [thermal] decides
+        )
     else:
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import drivetrain_from_dict
 
         inp = drivetrain_from_dict(copy.deepcopy(document), name, base=EXAMPLES_DIR)
         model = "components" if request.friction_model == "auto" else request.friction_model
-        analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
+        analysis = DrivetrainAnalysis(
+            inp, friction_model=model, contamination=contamination, thermal=True if request.heat else None
+        )
     analysis.result  # noqa: B018 - solve now, under the caller's lock
     return analysis, text, name
 
 
 def system_id(request: SystemRequest, text: str) -> str:
     """16 hex digits naming a solved system (same kind, text and settings: same id)."""
-    key = "\0".join((request.system, text, request.friction_model, request.contamination))
+    key = "\0".join((request.system, text, request.friction_model, request.contamination, str(request.heat)))
     return hashlib.sha256(key.encode("utf-8")).hexdigest()[:16]
 
 

@@ -41,8 +41,11 @@ __all__ = [
     "ThermalEquilibrium",
     "ThermalRunaway",
     "ThermalSettings",
+    "at_heat_balance",
+    "heat_balance_wanted",
     "reference_surface_of",
     "thermal_settings",
+    "with_thermal_equilibria",
     "with_thermal_equilibrium",
 ]
 
@@ -117,7 +120,7 @@ def reference_surface_of(analysis) -> float:
     if width is None:
         raise InputError(
             "heat: the bearing width B is needed for the ISO 15312 reference surface (give a designation, "
-            "or [operating] heat_dissipation directly)"
+            "[geometry] width, or [thermal] heat_dissipation directly)"
         )
     return iso15312.reference_surface(d, big_d, width, "radial")
 
@@ -312,80 +315,160 @@ def with_thermal_equilibrium(analysis, given=None):
     Analysis
         At the found temperatures, with :attr:`~bearingkit.pipeline.Analysis.thermal` set.
     """
-    settings = thermal_settings(analysis, given)
-    model = analysis.friction_model
+    return with_thermal_equilibria([analysis], [given])[0]
+
+
+def _checked(analysis, given, label):
+    """(settings, lubricant) of one analysis of the balance; one line where the balance cannot start."""
+    try:
+        settings = thermal_settings(analysis, given)
+    except InputError as exc:
+        raise InputError(f"{label}{exc}") from None
     lube = analysis.operating.lubricant
     if lube is None:
         raise InputError(
-            'heat balance: no lubricant; the friction heat needs one ([lubricant] name = "ISO_VG68" or '
-            "its data)"
+            f'{label}heat balance: no lubricant; the friction heat needs one ([lubricant] name = "ISO_VG68" '
+            "or its data)"
         )
     if not np.all(analysis.operating.abs_speed > 0):
         i = int(np.flatnonzero(analysis.operating.abs_speed == 0)[0])
+        remedy = "give each load case a speed" if label else "give --speed 3000rpm or each case's speed"
         raise InputError(
-            f"heat balance: load case {analysis.case_names[i]!r} has no speed; a bearing at rest makes no "
-            "friction heat (give --speed 3000rpm or each case's speed)"
+            f"{label}heat balance: load case {analysis.case_names[i]!r} has no speed; a bearing at rest "
+            f"makes no friction heat ({remedy})"
         )
-    n = analysis.n_cases
-    last = {}
+    return settings, lube
+
+
+def with_thermal_equilibria(analyses, given=None, names=None):
+    """Each Analysis of ``analyses`` at the temperature of its own heat balance, all solved at once.
+
+    The bearings of a shaft (or a single bearing: :func:`with_thermal_equilibrium`) each balance their
+    own friction heat against their own seats/housing and oil, P_b(T_b) = Φ_b(T_b) per bearing b and
+    case (module docstring). The root is found by one batched secant over every (bearing, case) pair
+    (:func:`bearingkit.physics.heat.root.solve_decreasing`): every iteration evaluates each bearing's
+    friction once, vectorised over its cases at their temperatures. Each pair's iterates depend on that
+    pair alone, so a bearing's found temperature is the one its single-bearing balance finds.
+
+    Parameters
+    ----------
+    analyses : sequence of Analysis
+        Bearings at any start temperature (replaced).
+    given : sequence of (dict or None), optional
+        ``[thermal]`` fields per analysis overriding its file's (None: the file's).
+    names : sequence of str, optional
+        Bearing names for the messages (a refusal names its bearing).
+
+    Returns
+    -------
+    list of Analysis
+        At the found temperatures, each with its :attr:`~bearingkit.pipeline.Analysis.thermal`.
+    """
+    analyses = list(analyses)
+    given = [None] * len(analyses) if given is None else list(given)
+    labels = [""] * len(analyses) if names is None else [f"bearing {n!r}: " for n in names]
+    prepared = [_checked(a, g, label) for a, g, label in zip(analyses, given, labels, strict=True)]
+    sizes = [a.n_cases for a in analyses]
+    cuts = np.cumsum([0, *sizes])
+    parts = [slice(int(cuts[b]), int(cuts[b + 1])) for b in range(len(analyses))]
+    last = [{} for _ in analyses]
 
     def balance(temperature):
-        sib = _at_temperature(analysis, temperature)
-        try:
-            outcome = sib.friction_by(model)
-        except InputError as exc:
-            raise InputError(f"heat balance: friction ({model}) not computed: {exc}") from None
-        p = np.asarray(outcome.power_loss, dtype=float)
-        last["model"] = outcome.model  # "auto" resolves to the model of the bearing's kind
-        out = dissipation.conducted_heat(settings.conductance, temperature, settings.ambient)
-        oil = dissipation.oil_heat(
-            settings.oil_flow, lube.density(temperature), lube.specific_heat, temperature, settings.oil_inlet
-        )
-        last.update(analysis=sib, power=p, conducted=out, oil=oil)
-        return p - out - oil, p
+        gap, heat = np.empty(cuts[-1]), np.empty(cuts[-1])
+        for b, (a, (settings, lube)) in enumerate(zip(analyses, prepared, strict=True)):
+            t = temperature[parts[b]]
+            sib = _at_temperature(a, t)
+            try:
+                outcome = sib.friction_by(a.friction_model)
+            except InputError as exc:
+                raise InputError(
+                    f"{labels[b]}heat balance: friction ({a.friction_model}) not computed: {exc}"
+                ) from None
+            p = np.asarray(outcome.power_loss, dtype=float)
+            out = dissipation.conducted_heat(settings.conductance, t, settings.ambient)
+            oil = dissipation.oil_heat(
+                settings.oil_flow, lube.density(t), lube.specific_heat, t, settings.oil_inlet
+            )
+            # "auto" resolves to the model of the bearing's kind
+            last[b].update(analysis=sib, power=p, conducted=out, oil=oil, model=outcome.model)
+            gap[parts[b]], heat[parts[b]] = p - out - oil, p
+        return gap, heat
 
-    sink = min(settings.ambient, settings.oil_inlet) if settings.oil_flow > 0 else settings.ambient
-    slope = settings.conductance + settings.oil_flow * float(lube.density(sink)) * lube.specific_heat
+    lower, slope = [], []
+    for (settings, lube), n in zip(prepared, sizes, strict=True):
+        sink = min(settings.ambient, settings.oil_inlet) if settings.oil_flow > 0 else settings.ambient
+        lower.append(np.full(n, sink))
+        dphi = settings.conductance + settings.oil_flow * float(lube.density(sink)) * lube.specific_heat
+        slope.append(np.full(n, dphi))
     res = root.solve_decreasing(
         balance,
-        np.full(n, sink),
-        np.full(n, MAX_TEMPERATURE),
-        np.full(n, slope),
+        np.concatenate(lower),
+        np.full(int(cuts[-1]), MAX_TEMPERATURE),
+        np.concatenate(slope),
         rtol=BALANCE_RTOL,
         max_iterations=MAX_ITERATIONS,
     )
     if not res.converged.all():
-        i = int(np.flatnonzero(~res.converged)[0])
-        if res.no_root[i]:
-            carried = res.scale[i] - res.value[i]
+        k = int(np.flatnonzero(~res.converged)[0])
+        b = int(np.searchsorted(cuts, k, side="right") - 1)
+        i = k - int(cuts[b])
+        if res.no_root[k]:
+            carried = res.scale[k] - res.value[k]
             why = (
-                f"no thermal equilibrium below {MAX_TEMPERATURE:g} °C (last temperature {res.x[i]:.4g} °C: "
-                f"friction heat {res.scale[i]:.3g} W > {carried:.3g} W carried away)"
+                f"no thermal equilibrium below {MAX_TEMPERATURE:g} °C (last temperature {res.x[k]:.4g} °C: "
+                f"friction heat {res.scale[k]:.3g} W > {carried:.3g} W carried away)"
             )
         else:
             why = (
                 f"the heat balance did not close in {MAX_ITERATIONS} iterations (last temperature "
-                f"{res.x[i]:.4g} °C, residual {res.value[i]:.3g} W)"
+                f"{res.x[k]:.4g} °C, residual {res.value[k]:.3g} W)"
             )
         raise ThermalRunaway(
-            f"case {analysis.case_names[i]!r}: {why}; remedy: more [thermal] heat_dissipation or oil_flow, "
-            "a thinner oil, less speed or load"
+            f"{labels[b]}case {analyses[b].case_names[i]!r}: {why}; remedy: more [thermal] heat_dissipation "
+            "or oil_flow, a thinner oil, less speed or load"
         )
-    final = last["analysis"]
-    notes = [
-        f"ambient {settings.ambient:g} °C; heat dissipation {settings.conductance:.4g} W/K "
-        f"({settings.conductance_from})"
-    ]
-    if analysis.setup.clearance is not None:
-        notes.append("the operating clearance (fits and thermal growth) was re-solved at every temperature")
-    final.thermal = ThermalEquilibrium(
-        temperature=np.asarray(res.x, float),
-        friction_heat=last["power"],
-        conducted=np.asarray(last["conducted"], float),
-        oil=np.broadcast_to(np.asarray(last["oil"], float), (n,)).copy(),
-        iterations=res.iterations,
-        settings=settings,
-        model=last["model"],
-        notes=notes,
-    )
-    return final
+    found = []
+    for b, (a, (settings, _)) in enumerate(zip(analyses, prepared, strict=True)):
+        final, n = last[b]["analysis"], sizes[b]
+        notes = [
+            f"ambient {settings.ambient:g} °C; heat dissipation {settings.conductance:.4g} W/K "
+            f"({settings.conductance_from})"
+        ]
+        if a.setup.clearance is not None:
+            notes.append(
+                "the operating clearance (fits and thermal growth) was re-solved at every temperature"
+            )
+        final.thermal = ThermalEquilibrium(
+            temperature=np.asarray(res.x[parts[b]], float),
+            friction_heat=last[b]["power"],
+            conducted=np.asarray(last[b]["conducted"], float),
+            oil=np.broadcast_to(np.asarray(last[b]["oil"], float), (n,)).copy(),
+            iterations=res.iterations[parts[b]],
+            settings=settings,
+            model=last[b]["model"],
+            notes=notes,
+        )
+        found.append(final)
+    return found
+
+
+def heat_balance_wanted(thermal, system_input) -> bool:
+    """Whether the bearings of a system (a shaft, a drivetrain) find their temperatures: ``thermal``
+    (True, False or a dict of ``[thermal]`` fields), else (None) whether the system file has a
+    ``[thermal]`` section."""
+    if thermal is None:
+        return getattr(system_input, "thermal", None) is not None
+    return bool(thermal) or isinstance(thermal, dict)
+
+
+def at_heat_balance(analyses: dict, source: str, thermal=None) -> dict:
+    """Every bearing's Analysis (name → Analysis) at the temperature of its own heat balance, all solved in
+    one batch (:func:`bearingkit.pipeline.thermal.balance.with_thermal_equilibria`); ``thermal`` a dict of
+    ``[thermal]`` fields for every bearing, or not. A refusal is one line naming the file and bearing."""
+    given = thermal if isinstance(thermal, dict) else None
+    names = list(analyses)
+    try:
+        found = with_thermal_equilibria(analyses.values(), [given] * len(names), names)
+    except InputError as exc:
+        raise type(exc)(f"{source}: {exc}") from None
+    return dict(zip(names, found, strict=True))

@@ -10,6 +10,7 @@ from bearingkit.report import write_report
 from bearingkit.report.html import _CSS, _case_html, _references_html
 from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _warning_list, fmt
 from bearingkit.report.systems.drivetrain_plots import layout_figure, shaft_lines_figure
+from bearingkit.report.systems.shaft_html import heat_balance_html
 from bearingkit.systems.drivetrain.analysis import DRIVETRAIN_RENDERERS
 
 RPM = 30.0 / 3.141592653589793
@@ -68,6 +69,7 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 fmt(s["L10h_h"], 4),
                 fmt(s["L10h_iso281_h"], 4),
                 fmt(s["power_loss_W"], 3),
+                fmt(s["temperature_C"], 4) + (" found" if s["temperature_found"] else ""),
             ]
         )
     parts.append(
@@ -82,11 +84,13 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 "L10h ISO/TS 16281 [h]",
                 "L10h ISO 281 [h]",
                 "P_loss [W]",
+                "T [°C]",
             ],
             rows,
             left=2,
         )
     )
+    parts.append(heat_balance_html(c))
     sysd = c["system"]
     parts.append(
         f"<p>System L10h: {fmt(sysd['L10h_h'], 4)} h (ISO/TS 16281 rows), {fmt(sysd['L10h_iso281_h'], 4)} h "

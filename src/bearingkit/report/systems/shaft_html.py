@@ -56,6 +56,7 @@ RESULT_COLUMNS = (
     ("kappa_min", "κ min [-]", 1.0, 3),
     ("friction_torque_Nm", "M_fr [N·m]", 1.0, 4),
     ("power_loss_W", "P_loss [W]", 1.0, 4),
+    ("temperature_C", "T [°C]", 1.0, 4),
 )
 #: Forces [N] at or below this print as 0 (solver round-off of an unloaded direction).
 FORCE_NOISE = 1e-6
@@ -261,6 +262,7 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
             ["bearing"] + [h for _, h, _, _ in RESULT_COLUMNS] + ["warnings"], rows, left=1, cls="bearings"
         )
     )
+    parts.append(heat_balance_html(c))
     sysd = c["rating"]["system"]
     parts.append(f"<h4>{number}.3. System life</h4>")
     parts.append(
@@ -288,6 +290,43 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
     parts.append(_warning_list(c["warnings"]))
     parts.append("</section>")
     return "".join(parts)
+
+
+def heat_balance_html(c: dict) -> str:
+    """Each bearing's found temperature and its heat balance in one case ("" when they were inputs)."""
+    found = [
+        (b["summary"]["name"], b["analysis"]["thermal"])
+        for b in c["bearings"]
+        if "thermal" in b.get("analysis", {})
+    ]
+    if not found:
+        return ""
+    rows = [
+        [
+            _e(name),
+            fmt(t["temperature_C"], 4),
+            fmt(t["friction_heat_W"], 5),
+            fmt(t["conducted_heat_W"], 5),
+            fmt(t["oil_heat_W"], 5),
+            fmt(t["heat_dissipation_W_K"], 4),
+            _e(t["heat_dissipation_from"]),
+            fmt(t["ambient_C"], 4),
+            f"{t['balance_residual_W']:.2g}",
+            f"{t['balance_relative']:.1e}",
+            str(t["iterations"]),
+            _e(t["friction_model"]),
+        ]
+        for name, t in found
+    ]
+    heads = ["bearing", "T [°C]", "P(T) [W]", "seats/housing [W]", "oil [W]", "H [W/K]", "H from",
+             "T_amb [°C]", "residual [W]", "residual / P", "iterations", "friction model"]  # fmt: skip
+    return (
+        '<p class="thermal"><b>Operating temperatures FOUND by each bearing\'s heat balance</b> '
+        f"({_e(found[0][1]['method'])}): the friction heat P(T) of the bearing at the load the system "
+        "puts on it equals the heat through its seats and housing H (T − T_amb) plus that carried away by a "
+        "circulating oil; viscosity, κ, a_ISO, L_nm and friction above are at T.</p>"
+        + _table(heads, rows, left=1, cls="thermal")
+    )
 
 
 def _bearing_section(data: dict, analysis, name: str, number: int) -> str:

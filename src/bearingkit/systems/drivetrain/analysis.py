@@ -35,6 +35,7 @@ from bearingkit.analysis.rating.assembly import HOUR, system_life
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import analyze
+from bearingkit.pipeline.thermal.balance import at_heat_balance, heat_balance_wanted
 from bearingkit.systems.drivetrain import power_flow
 from bearingkit.systems.drivetrain.model import HOUSING
 from bearingkit.systems.drivetrain.solver import law_for, solve
@@ -60,15 +61,30 @@ class DrivetrainAnalysis:
     Parameters
     ----------
     drivetrain_input : DrivetrainInput
-    friction_model, contamination, reliability
-        As :class:`~bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis`.
+    friction_model, contamination, reliability, thermal
+        As :class:`~bearingkit.systems.shaft.shaft_analysis.ShaftAnalysis` (``thermal``: each bearing's
+        temperature by its own heat balance; the meshes keep the load cases' temperature).
     """
 
-    def __init__(self, drivetrain_input, *, friction_model="components", contamination=None, reliability=0.9):
+    def __init__(
+        self,
+        drivetrain_input,
+        *,
+        friction_model="components",
+        contamination=None,
+        reliability=0.9,
+        thermal=None,
+    ):
         self.input = drivetrain_input
         self.friction_model = friction_model
         self.contamination = contamination
         self.reliability = reliability
+        self.thermal = thermal
+
+    @property
+    def heat_balance(self) -> bool:
+        """True when each bearing's temperature is found by its heat balance (``--heat``, ``[thermal]``)."""
+        return heat_balance_wanted(self.thermal, self.input)
 
     @property
     def drivetrain(self):
@@ -148,6 +164,7 @@ class DrivetrainAnalysis:
             bearing_input=source,
             lubrication=self.input.lubrication,
             solved_model=res.model(b.name),
+            thermal=getattr(self.input, "thermal", None),
         )
 
     @functools.cached_property
@@ -165,13 +182,14 @@ class DrivetrainAnalysis:
                     contamination=self.contamination,
                     reliability=self.reliability,
                     rotating=self.rotating_ring(b.name),
+                    thermal=False,  # the balance of every bearing at once, below
                 )
             except InputError as exc:
                 text = str(exc)
                 raise InputError(
                     text if text.startswith(seat_input.source) else f"{seat_input.source}: {text}"
                 ) from None
-        return out
+        return at_heat_balance(out, self.input.source, self.thermal) if self.heat_balance and out else out
 
     # -- lives ------------------------------------------------------------------------------------
     def bearing_lives(self, name: str) -> dict:
@@ -299,6 +317,12 @@ class DrivetrainAnalysis:
             )
         if not any(m.friction is not None for m in self.drivetrain.meshes):
             out.append("meshes: no mesh friction given (friction = μ_mz): the losses are the bearings' only")
+        if self.heat_balance:
+            out.append(
+                "heat balance: each bearing's temperature is found by its own balance at the load the "
+                "drivetrain gives it (the solution does not depend on the temperature); the load cases' "
+                "temperatures, if any, are replaced for the bearings (the meshes keep them)"
+            )
         for name, a in self.bearings.items():
             out += [f"{name}: {n}" for n in a.notes]
         return list(dict.fromkeys(out))

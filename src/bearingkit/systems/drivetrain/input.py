@@ -16,7 +16,7 @@ Units at the edge (``"45 mm"``, ``"200 N*m"``, ``"1500 rpm"``), SI after validat
                           carrier_position, planets, planet = {...}, planet_bearings, pin_errors …
     [[load_cases]]        name, torques = {shaft = torque}, speed = {shaft = speed}, temperature,
                           time_fraction, forces = [{shaft, position, F_x …}], line_loads = [...]
-    [lubricant] [lubrication] [solver] [budget]
+    [lubricant] [lubrication] [thermal] [solver] [budget]
 
 The REXS reader (:mod:`bearingkit.io.rexs.reader`) writes the same dictionary, so both paths build one model.
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
@@ -34,7 +34,7 @@ from pydantic import Field, ValidationError
 from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.messages import one_line
-from bearingkit.io.optional_sections.operating import LubricationSpec
+from bearingkit.io.optional_sections.operating import LubricationSpec, ThermalSpec
 from bearingkit.io.reading import load_toml
 from bearingkit.systems.drivetrain import model as dtm
 from bearingkit.systems.drivetrain.gearing import GearGeometry, GearPair
@@ -167,6 +167,7 @@ class DrivetrainFile(schema.Strict):
     load_cases: list[DriveCaseSpec]
     lubricant: schema.LubricantSpec | None = None
     lubrication: LubricationSpec | None = None
+    thermal: ThermalSpec | None = None
     solver: ShaftSolverSpec | None = None
     budget: BudgetSpec | None = None
 
@@ -186,6 +187,7 @@ _MODELS = {
     "load_cases.line_loads": DriveLineLoadSpec,
     "lubricant": schema.LubricantSpec,
     "lubrication": LubricationSpec,
+    "thermal": ThermalSpec,
     "solver": ShaftSolverSpec,
     "budget": BudgetSpec,
 }
@@ -203,6 +205,7 @@ class DrivetrainInput:
     lubrication: LubricationSpec | None = None
     warnings: tuple = field(default_factory=tuple)
     data: dict | None = None  # the validated dictionary (REXS export, studies)
+    thermal: ThermalSpec | None = None  # [thermal]: every bearing's temperature by its heat balance
 
     @property
     def case_names(self) -> tuple:
@@ -466,6 +469,7 @@ def _build(spec: DrivetrainFile, source: str, base: Path, data: dict) -> Drivetr
         "shafts are rigid in torsion (one rotation per shaft); mesh forces follow the lossless torque "
         "balance, losses are taken from the output power"
     ]
+    options = SystemOptions(**opts)
     return DrivetrainInput(
-        source, dt, loads, SystemOptions(**opts), lubricant, spec.lubrication, tuple(notes), data
+        source, dt, loads, options, lubricant, spec.lubrication, tuple(notes), data, spec.thermal
     )

@@ -32,6 +32,8 @@ def bearing_summary(da, name: str, case: int) -> dict:
         "Lnmr_h": None,
         "friction_torque_Nm": None,
         "power_loss_W": None,
+        "temperature_C": None,
+        "temperature_found": False,
         "warnings": len([w for w in da.warnings[case] if w.startswith(f"{name}: ")]),
     }
     a = da.bearings.get(name)
@@ -48,6 +50,9 @@ def bearing_summary(da, name: str, case: int) -> dict:
     if a.friction is not None:
         out["friction_torque_Nm"] = float(a.friction.total[case])
         out["power_loss_W"] = float(a.friction.power_loss[case])
+    if a.operating.temperature is not None:
+        out["temperature_C"] = float(np.broadcast_to(a.operating.temperature, (da.n_cases,))[case])
+    out["temperature_found"] = a.thermal is not None
     return out
 
 
@@ -152,6 +157,8 @@ def analysis_dict(da) -> dict:
                         "torque_Nm": float(a.friction.total[c]),
                         "power_loss_W": float(a.friction.power_loss[c]),
                     }
+                if a.thermal is not None:
+                    part["thermal"] = a.thermal.to_dict(c)
                 d["analysis"] = part
             bearings.append(d)
         shafts = {}
@@ -193,6 +200,7 @@ def analysis_dict(da) -> dict:
         "file": da.input.source,
         "drivetrain": da.drivetrain.name,
         "friction_model": da.friction_model,
+        "heat_balance": da.heat_balance,
         "inputs": inputs_dict(da),
         "duty_cycle": da.duty_cycle(),
         "notes": da.notes,

@@ -15,6 +15,9 @@ for bearing files (:mod:`bearingkit.io.schema`). Layout (docs/systems.md)::
                          line_loads = [...]
     [lubricant]          name (friction of bearings whose file has none)
     [lubrication]        contamination, roughness_element, roughness_raceway (bearings whose file has none)
+    [thermal]            ambient, heat_dissipation, housing_area, heat_transfer_coefficient, oil_flow,
+                         oil_inlet_temperature: every bearing's temperature found by its own heat balance
+                         (a bearing file's own [thermal] replaces it for that bearing)
     [solver]             rtol, max_iterations
 
 Every malformed input is one :class:`~bearingkit.errors.InputError` line ``FILE: field (value) …``.
@@ -33,7 +36,7 @@ from bearingkit.errors import InputError
 from bearingkit.io import schema
 from bearingkit.io.loader import load_file
 from bearingkit.io.messages import one_line
-from bearingkit.io.optional_sections.operating import LubricationSpec
+from bearingkit.io.optional_sections.operating import LubricationSpec, ThermalSpec
 from bearingkit.io.reading import confined_path, load_toml
 from bearingkit.systems.shaft.loads import (
     AXES,
@@ -207,6 +210,7 @@ class ShaftFile(schema.Strict):
     load_cases: list[ShaftCaseSpec]
     lubricant: schema.LubricantSpec | None = None
     lubrication: LubricationSpec | None = None
+    thermal: ThermalSpec | None = None
     solver: ShaftSolverSpec | None = None
 
     @field_validator("load_cases", mode="before")
@@ -236,6 +240,7 @@ _MODELS = {
     "load_cases.line_loads": LineLoadSpec,
     "lubricant": schema.LubricantSpec,
     "lubrication": LubricationSpec,
+    "thermal": ThermalSpec,
     "solver": ShaftSolverSpec,
 }
 
@@ -255,6 +260,7 @@ class ShaftInput:
     lubricant: object | None = None
     warnings: tuple = field(default_factory=tuple)
     lubrication: LubricationSpec | None = None
+    thermal: ThermalSpec | None = None
 
     def check_work(self, report: bool = False) -> None:
         """Refuse (:func:`bearingkit.budget.check_work`) a solve, or a solve and report, estimated
@@ -471,7 +477,9 @@ def _build(spec: ShaftFile, source: str, base: Path, confine: bool = False) -> S
 
     lubricant = lubricant_of(source, spec.lubricant)  # the one lubricant builder (a name or the data)
     _check_contamination(spec.lubrication)
-    return ShaftInput(source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication)
+    return ShaftInput(
+        source, system, loads, SystemOptions(**opts), lubricant, tuple(notes), spec.lubrication, spec.thermal
+    )
 
 
 def _check_contamination(lubrication) -> None:

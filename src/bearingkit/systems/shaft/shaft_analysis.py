@@ -19,6 +19,13 @@ Speed: the inner rings turn with the shaft; a bearing turned end for end (``orie
 sees the shaft's speed with the opposite sign about its own axis (the inertia terms depend on its
 square; the sign orients friction torques). Lubricant and ``[lubrication]`` (contamination,
 roughness): the bearing file's, else the shaft file's.
+
+Temperature: the load cases', or with ``--heat`` / the shaft file's ``[thermal]`` each bearing's own,
+found by its heat balance (friction heat = heat through its seats and housing + oil;
+:func:`bearingkit.pipeline.thermal.balance.with_thermal_equilibria`, all bearings and cases in one batched
+iteration; the sinks of the bearing file's ``[thermal]``, else of the shaft file's, else the ISO 15312
+reference housing of that bearing). The shaft solve does not depend on the temperature (it models no
+fits or thermal growth), so each bearing balances at the reaction the shaft gives it.
 """
 
 from __future__ import annotations
@@ -33,9 +40,15 @@ import numpy as np
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.pipeline import ModelInput, analyze
+from bearingkit.pipeline.thermal.balance import at_heat_balance, heat_balance_wanted
 from bearingkit.systems.shaft.life import combine_ratings
 
-__all__ = ["SHAFT_RENDERERS", "SeatInput", "ShaftAnalysis", "inputs_dict"]
+__all__ = [
+    "SHAFT_RENDERERS",
+    "SeatInput",
+    "ShaftAnalysis",
+    "inputs_dict",
+]
 
 #: Renderers of a ShaftAnalysis by format, registered by the report layer on import
 #: (:mod:`bearingkit.report.systems.shaft_html`); :meth:`ShaftAnalysis.report` loads it by name.
@@ -63,6 +76,8 @@ class SeatInput(ModelInput):
     solved_model : BearingModel or None
         The model the shaft solved the bearing with (rows at speed); the statics evaluate it at q.
         None: ``model``.
+    thermal : ThermalSpec or None
+        ``[thermal]`` (the heat sinks of the balance) when the bearing file has none.
     """
 
     displacement: np.ndarray = None
@@ -73,6 +88,7 @@ class SeatInput(ModelInput):
     bearing_input: object = None
     lubrication: object = None
     solved_model: object = None
+    thermal: object = None
 
     def __post_init__(self):
         super().__post_init__()
@@ -110,7 +126,8 @@ class SeatInput(ModelInput):
 
         own = getattr(self.bearing_input, "sections", None)
         lub = own.lubrication if own is not None and own.lubrication is not None else self.lubrication
-        return OperatingSections(operating=OperatingSpec(speed_effects=False), lubrication=lub)
+        heat = own.thermal if own is not None and own.thermal is not None else self.thermal
+        return OperatingSections(operating=OperatingSpec(speed_effects=False), lubrication=lub, thermal=heat)
 
     @property
     def spec(self):
@@ -174,16 +191,32 @@ class ShaftAnalysis:
         ISO 281 e_C (or a level name) for every bearing, replacing the files' ``[lubrication]``.
     reliability : float
         Reliability of L_nm (0.9 … 0.9995).
+    thermal : bool or dict, optional
+        Find each bearing's temperature by its heat balance: True, or ``[thermal]`` fields for every
+        bearing (overriding the files'); None (default): when the shaft file has ``[thermal]``.
     """
 
     def __init__(
-        self, shaft_input, result=None, *, friction_model="auto", contamination=None, reliability=0.9
+        self,
+        shaft_input,
+        result=None,
+        *,
+        friction_model="auto",
+        contamination=None,
+        reliability=0.9,
+        thermal=None,
     ):
         self.input = shaft_input
         self._result = result
         self.friction_model = friction_model
         self.contamination = contamination
         self.reliability = reliability
+        self.thermal = thermal
+
+    @property
+    def heat_balance(self) -> bool:
+        """True when each bearing's temperature is found by its heat balance (module docstring)."""
+        return heat_balance_wanted(self.thermal, self.input)
 
     @functools.cached_property
     def result(self):
@@ -222,6 +255,7 @@ class ShaftAnalysis:
             bearing_input=source,
             lubrication=getattr(self.input, "lubrication", None),
             solved_model=res.model(seat.name),
+            thermal=getattr(self.input, "thermal", None),
         )
 
     @functools.cached_property
@@ -238,13 +272,14 @@ class ShaftAnalysis:
                     friction_model=self.friction_model,
                     contamination=self.contamination,
                     reliability=self.reliability,
+                    thermal=False,  # the balance of every bearing at once, below
                 )
             except InputError as exc:  # one line naming the shaft file and the bearing
                 text = str(exc)
                 raise InputError(
                     text if text.startswith(seat_input.source) else f"{seat_input.source}: {text}"
                 ) from None
-        return out
+        return at_heat_balance(out, self.input.source, self.thermal) if self.heat_balance and out else out
 
     @functools.cached_property
     def rating(self):
@@ -286,6 +321,14 @@ class ShaftAnalysis:
         for seat in self.system.bearings:
             if seat.name not in self.bearings:
                 out.append(f"{seat.name}: a linear stiffness: no rows, so no pressures, lives or friction")
+        if self.heat_balance:
+            replaced = "; the load cases' temperatures are replaced by them"
+            out.append(
+                "heat balance: each bearing's temperature is found by its own balance at the reaction the "
+                "shaft gives it (the shaft models no fits or thermal growth, so its solution and the "
+                "clearances do not depend on the temperature)"
+                + (replaced if self.input.loads.temperature is not None else "")
+            )
         out.append(
             "bearings: each is analysed at the state the shaft solution gives it (all five DOFs imposed), "
             "with the speed effects of the shaft solve; no fits or [operating] preload of the bearing "
@@ -320,6 +363,8 @@ class ShaftAnalysis:
             "kappa_min": None,
             "friction_torque_Nm": None,
             "power_loss_W": None,
+            "temperature_C": None,
+            "temperature_found": False,
             "warnings": len([w for w in self.warnings[case] if w.startswith(f"{name}: ")]),
         }
         a = self.bearings.get(name)
@@ -334,6 +379,10 @@ class ShaftAnalysis:
             kappas = [r.get("kappa") for r in films]
             vals = [k for k in kappas if k is not None]
             out["kappa_min"] = min(vals) if vals else None
+        temperature = a.operating.temperature
+        if temperature is not None:
+            out["temperature_C"] = float(np.broadcast_to(temperature, (self.n_cases,))[case])
+        out["temperature_found"] = a.thermal is not None
         f = a.friction
         if f is not None:
             out["friction_torque_Nm"] = float(f.total[case])
@@ -351,6 +400,8 @@ class ShaftAnalysis:
                 part["rating"] = a.rating.to_dict(case)
             if a.lubrication is not None:
                 part["lubrication"] = a.lubrication.to_dict(case)
+            if a.thermal is not None:
+                part["thermal"] = a.thermal.to_dict(case)
             if a.friction is not None:
                 part["friction"] = {
                     **a.friction.case_dicts[case]["friction"],
@@ -381,6 +432,7 @@ class ShaftAnalysis:
             "file": self.input.source,
             "shaft": self.system.name,
             "friction_model": self.friction_model,
+            "heat_balance": self.heat_balance,
             "inputs": inputs_dict(self.input),
             "bearings": [
                 {
@@ -413,14 +465,15 @@ class ShaftAnalysis:
                         number(s["axial_load_N"], 1e-3), number(s["misalignment_rad"], 1e3),
                         number(s["max_pressure_Pa"], 1e-6), number(s["static_safety"], digits=3),
                         number(s["L10h_h"]), number(s["Lnmr_h"]), number(s["friction_torque_Nm"]),
+                        number(s["temperature_C"]) + (" found" if s["temperature_found"] else ""),
                     ])  # fmt: skip
                 system = self.rating.to_dict(c)["system"]
                 rows.append(
-                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—"]
+                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—", "—"]
                 )
                 warnings += [f"{case}: {w}" for w in self.warnings[c]]
             columns = ["case", "bearing", "z [mm]", "F_r [kN]", "F_a [kN]", "tilt [mrad]", "p_max [MPa]",
-                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]"]  # fmt: skip
+                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]", "T [°C]"]  # fmt: skip
             title = f"{self.system.name} ({self.input.source})"
             return html_table(title, columns, rows, warnings=warnings, notes=self.notes)
         except Exception as exc:  # a notebook cell must show something, and say what went wrong
@@ -524,6 +577,7 @@ def inputs_dict(inp) -> dict:
         ],
         "masses": [{"name": m.name, "position_m": m.position, "mass_kg": m.mass} for m in system.masses],
         "lubricant": None if inp.lubricant is None else inp.lubricant.name,
+        "thermal": None if inp.thermal is None else inp.thermal.model_dump(exclude_none=True),
         "load_cases": [per_case(c) for c in range(n)],
     }
 
