@@ -345,6 +345,15 @@ def test_duty_cycle_bins_rated_as_the_cli_rates_them(opened, page, tmp_path):
     _wait(browser, page, lambda d: d.find_elements("id", "duty-l10"))
     ref = page.cli_json("rating", str(EXAMPLES / "dgbb_6209_duty_cycle.toml"))["duty_cycle"]
     assert _value(browser, "duty-l10") == ref["L10r_h"]
+    assert _value(browser, "duty-l10-iso") == ref["L10h_iso281_h"]
+    # ISO 281 is the first life of the summary, ISO/TS 16281 beside it
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#duty-summary [id]")]
+    assert ids.index("duty-l10-iso") < ids.index("duty-l10")
+    iso_shares = [
+        float(td.get_attribute("data-value"))
+        for td in browser.find_elements("css selector", "#duty-bins td.r-share-iso")
+    ]
+    assert iso_shares == [b["damage_share_iso281"] for b in ref["bins"]]
     shares = [
         float(td.get_attribute("data-value"))
         for td in browser.find_elements("css selector", "#duty-bins td.r-share")
