@@ -11,6 +11,7 @@ from bearingkit.report.html import _CSS, _case_html, _references_html
 from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _warning_list, fmt
 from bearingkit.report.systems.drivetrain_plots import layout_figure, shaft_lines_figure
 from bearingkit.systems.drivetrain.analysis import DRIVETRAIN_RENDERERS
+from bearingkit.systems.shaft.life import SYSTEM_LIFE_DIFFERENCE
 
 RPM = 30.0 / 3.141592653589793
 #: Most load cases a drivetrain report draws (figures and bearing sections grow with them).
@@ -65,8 +66,8 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 fmt(s["axial_load_N"], 5),
                 fmt(s["max_pressure_Pa"], 4, 1e-6),
                 fmt(s["static_safety"], 3),
-                fmt(s["L10h_h"], 4),
                 fmt(s["L10h_iso281_h"], 4),
+                fmt(s["L10h_h"], 4),
                 fmt(s["power_loss_W"], 3),
             ]
         )
@@ -79,8 +80,8 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 "F_a [N]",
                 "p_max [MPa]",
                 "s0",
-                "L10h ISO/TS 16281 [h]",
                 "L10h ISO 281 [h]",
+                "L10h ISO/TS 16281 [h]",
                 "P_loss [W]",
             ],
             rows,
@@ -89,8 +90,9 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
     )
     sysd = c["system"]
     parts.append(
-        f"<p>System L10h: {fmt(sysd['L10h_h'], 4)} h (ISO/TS 16281 rows), {fmt(sysd['L10h_iso281_h'], 4)} h "
-        "(ISO 281), combined in hours as independent Weibull members.</p>"
+        f"<p>System L10h: {fmt(sysd['L10h_iso281_h'], 4)} h (ISO 281), {fmt(sysd['L10h_h'], 4)} h "
+        "(ISO/TS 16281 rows), combined in hours as independent Weibull members. Why they differ: "
+        f"{_e(SYSTEM_LIFE_DIFFERENCE)}</p>"
     )
     p = c["power"]
     if p is not None:
@@ -159,8 +161,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
         [
             f'<a href="#case-{i}">{_e(c["case"])}</a>',
             _badge(c["converged"]),
-            fmt(c["system"]["L10h_h"], 4),
             fmt(c["system"]["L10h_iso281_h"], 4),
+            fmt(c["system"]["L10h_h"], 4),
             fmt(None if c["power"] is None else c["power"]["efficiency"], 5, 100.0),
             str(len(c["warnings"])),
         ]
@@ -175,8 +177,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
             [
                 "case",
                 "status",
-                "system L10h ISO/TS 16281 [h]",
                 "system L10h ISO 281 [h]",
+                "system L10h ISO/TS 16281 [h]",
                 "efficiency [%]",
                 "warnings",
             ],
@@ -189,8 +191,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
     if duty is not None:
         body.append(
             f"<p>Duty cycle (Palmgren–Miner over the time fractions): system L10h "
-            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281), "
-            f"{fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281).</p>"
+            f"{fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281), "
+            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281).</p>"
         )
     body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(x)}</li>" for x in data["notes"]) + "</ul>")
     body.append('<section id="layout" data-section="layout"><h2>1. Layout</h2>')
