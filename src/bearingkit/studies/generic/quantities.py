@@ -334,55 +334,6 @@ def _rated(c: _Context, get) -> np.ndarray:
     return get(rating)
 
 
-def _iso281_of(c: _Context, attr: str, hours: bool = False) -> np.ndarray:
-    """An ISO 281 life of the bearing (:class:`bearingkit.analysis.rating.iso281.Iso281Life`), NaN where
-    ISO 281 does not rate it."""
-
-    def get(r):
-        iso = getattr(r, "iso281", None)
-        if iso is None:
-            return np.full(c.n, np.nan)
-        value = getattr(iso, attr)
-        return _masked(r.hours(value) if hours else value, c.n)
-
-    return _rated(c, get)
-
-
-def _iso281() -> list[Quantity]:
-    """The ISO 281 lives, listed first (the life a single bearing's faces show first)."""
-    return [
-        Quantity(
-            "L10_iso281_rev",
-            "rev",
-            "basic rating life of the bearing (ISO 281: (C/P)^p from the equivalent load; NaN where ISO 281 "
-            "does not rate the bearing)",
-            "rating",
-            lambda c: _iso281_of(c, "life"),
-        ),
-        Quantity(
-            "L10h_iso281_h",
-            "h",
-            "ISO 281 L10 in hours at the case's speed",
-            "rating",
-            lambda c: _iso281_of(c, "life", hours=True),
-        ),
-        Quantity(
-            "Lnm_iso281_rev",
-            "rev",
-            "modified rating life a1 a_ISO L10 (ISO 281; needs a lubricant, e_C and a speed)",
-            "rating",
-            lambda c: _iso281_of(c, "modified_life"),
-        ),
-        Quantity(
-            "Lnm_iso281_h",
-            "h",
-            "ISO 281 L_nm in hours at the case's speed",
-            "rating",
-            lambda c: _iso281_of(c, "modified_life", hours=True),
-        ),
-    ]
-
-
 def _ratings(rows: Sequence[str]) -> list[Quantity]:
     out = [
         Quantity(
@@ -450,99 +401,6 @@ def _ratings(rows: Sequence[str]) -> list[Quantity]:
                 f"life modification factor a_ISO of row {name!r} (ISO 281 9.3)",
                 "rating",
                 lambda c, n=name: _rated(c, lambda r: _masked(r.row(n).life_modification, c.n)),
-            ),
-        ]
-    return out
-
-
-def _duty(bins: Sequence[str]) -> list[Quantity]:
-    out = [
-        Quantity(
-            "duty_L10_iso281_rev",
-            "rev",
-            "ISO 281 L10 over the duty cycle (Palmgren–Miner sum of the bins' ISO 281 lives)",
-            "duty",
-            lambda c: c.duty["L10_rev"],
-        ),
-        Quantity(
-            "duty_L10h_iso281_h",
-            "h",
-            "ISO 281 L10 over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["L10_h"],
-        ),
-        Quantity(
-            "duty_Lnm_iso281_rev",
-            "rev",
-            "ISO 281 L_nm over the duty cycle (Palmgren–Miner)",
-            "duty",
-            lambda c: c.duty["Lnm_rev"],
-        ),
-        Quantity(
-            "duty_Lnm_iso281_h",
-            "h",
-            "ISO 281 L_nm over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["Lnm_h"],
-        ),
-        Quantity(
-            "duty_L10r_rev",
-            "rev",
-            "L10r over the duty cycle (Palmgren–Miner sum of the bins' lives)",
-            "duty",
-            lambda c: c.duty["L10r_rev"],
-        ),
-        Quantity(
-            "duty_L10r_h",
-            "h",
-            "L10r over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["L10r_h"],
-        ),
-        Quantity(
-            "duty_Lnmr_rev",
-            "rev",
-            "L_nmr over the duty cycle (Palmgren–Miner)",
-            "duty",
-            lambda c: c.duty["Lnmr_rev"],
-        ),
-        Quantity(
-            "duty_Lnmr_h",
-            "h",
-            "L_nmr over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["Lnmr_h"],
-        ),
-    ]
-    for b, name in enumerate(bins):
-        out += [
-            Quantity(
-                f"duty_{name}_L10_iso281_rev",
-                "rev",
-                f"ISO 281 L10 of duty-cycle bin {name!r}",
-                "duty",
-                lambda c, b=b: c.duty["bin_L10"][:, b],
-            ),
-            Quantity(
-                f"duty_{name}_damage_share_iso281",
-                "-",
-                f"share of the ISO 281 duty-cycle damage bin {name!r} does",
-                "duty",
-                lambda c, b=b: c.duty["L10_damage_share"][:, b],
-            ),
-            Quantity(
-                f"duty_{name}_L10r_rev",
-                "rev",
-                f"L10r of duty-cycle bin {name!r}",
-                "duty",
-                lambda c, b=b: c.duty["bin_L10r"][:, b],
-            ),
-            Quantity(
-                f"duty_{name}_damage_share",
-                "-",
-                f"share of the duty-cycle damage bin {name!r} does",
-                "duty",
-                lambda c, b=b: c.duty["L10r_damage_share"][:, b],
             ),
         ]
     return out
@@ -629,7 +487,15 @@ def catalogue(bearing) -> dict[str, Quantity]:
         for r in bearing.model.rows
         if r.kind in ("cylindrical", "tapered") and int(getattr(r, "n_slices", 1)) > 1
     ]
-    items = _iso281() + _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced)
+    from bearingkit.studies.generic.lives import duty_quantities, iso281_quantities
+
+    items = (
+        iso281_quantities(Quantity, _rated, _masked)
+        + _statics(rows)
+        + _groups(bearing.model.rows)
+        + _rows(rows)
+        + _edges(sliced)
+    )
     items += _ratings(rows)
     items += _flags(bearing.model.rows)
     items += _subsurface(bearing.model.rows)
@@ -641,7 +507,7 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items += lubricated_quantities(Quantity, rows)  # NaN without a lubricant (a study may set lubricant.name)
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
-        items += _duty(cycle.names)
+        items += duty_quantities(Quantity, cycle.names)
     return {q.name: q for q in items}
 
 
