@@ -66,6 +66,28 @@ def test_iso281_damage_shares_and_combined_lives_are_the_hand_miner_sums(cycle):
     assert cycle["life_difference"] and "ISO/TS 16281" in cycle["life_difference"]
 
 
+def test_a_bearing_iso281_does_not_rate_leads_with_the_ts_life_and_says_why():
+    """A slewing ring (no ISO 281 X, Y under a tilting moment): no ISO 281 duty-cycle life, the TS's leads
+    in the JSON and the console, and a note names the reason."""
+    root = EXAMPLE.parent
+    data = tomllib.loads((root / "slewing_four_point.toml").read_text())
+    cases = data.pop("load_cases")
+    data["duty_cycle"] = [{**c, "time_fraction": f} for c, f in zip(cases, (0.5, 0.2, 0.3), strict=True)]
+    d = bk.analyze(from_dict(data, "slew.toml")).rating_dict()["duty_cycle"]
+    assert d["headline"]["method"] == "ISO/TS 16281" and d["L10_iso281_rev"] is None
+    assert d["L10r_rev"] is not None and d["life_difference"] is None
+    assert all(b["L10_iso281_rev"] is None and b["damage_share_iso281"] is None for b in d["bins"])
+    assert any("no combined ISO 281 life (ISO 281 gives no X, Y for slewing rings" in n for n in d["notes"])
+    from rich.console import Console
+
+    from bearingkit.cli.tables import duty_cycle_table
+
+    console = Console(width=400, record=True)
+    console.print(duty_cycle_table(d))
+    text = console.export_text()
+    assert text.index("ISO/TS 16281: L10r =") < text.index("ISO 281: L10 =")
+
+
 def test_each_bin_is_rated_as_its_own_load_case(cycle):
     """A bin's life is that of the same load, speed and temperature analysed as a plain load case."""
     for b in cycle["bins"]:

@@ -179,7 +179,7 @@ class DutyCycleResult:
             "Lnm_iso281_rev": num(iso["modified_life"]),
             "Lnm_iso281_h": num(iso["modified_life_hours"]),
             "iso281_note": iso["note"],
-            "life_difference": LIFE_DIFFERENCE,
+            "life_difference": LIFE_DIFFERENCE if np.isfinite(iso["life"]) else None,
             "L10r_rev": num(self.life),
             "L10r_h": num(self.life_hours),
             "Lnmr_rev": num(self.modified_life),

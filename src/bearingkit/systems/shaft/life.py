@@ -142,7 +142,7 @@ class SystemRating:
                 "headline": {"method": first, "why": SYSTEM_HEADLINE[first]},
                 **iso,
                 "weibull_rule": WEIBULL_RULE,
-                "life_difference": SYSTEM_LIFE_DIFFERENCE,
+                "life_difference": SYSTEM_LIFE_DIFFERENCE if first == "ISO 281" else None,
                 "L10r_rev": val(self.life),
                 "L10h_h": val(self.life_hours()),
                 "Lnmr_rev": None if self.modified_life is None else val(self.modified_life),
