@@ -205,6 +205,13 @@ def test_shaft_example_reactions_equal_the_cli_and_edits_are_solved(opened, page
         assert _value(browser, f"shaft-reaction-{j}-Fy") == b["reaction_on_shaft"]["F_y_N"]
     shown = browser.find_element("id", "shaft-reaction-0-Fx").text
     assert float(shown) == pytest.approx(ref[0]["reaction_on_shaft"]["F_x_N"], rel=5e-5)  # 5 digits shown
+    # the system lives: ISO 281 first (the CLI's numbers), ISO/TS 16281 beside it, the line on why
+    system = page.cli_json("shaft", str(EXAMPLES / "shaft_countershaft.toml"))["cases"][0]["rating"]["system"]
+    assert _value(browser, "shaft-system-l10-iso") == system["L10h_iso281_h"]
+    assert _value(browser, "shaft-system-l10") == system["L10h_h"]
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#shaft-summary [id]")]
+    assert ids.index("shaft-system-l10-iso") < ids.index("shaft-system-l10")
+    assert "why they differ" in _text(browser, "shaft-life-difference")
     assert len(browser.find_elements("css selector", "#shaft-layout-svg .bearing-mark")) == 2
     assert len(browser.find_elements("css selector", "#shaft-lines svg")) == 2
     page.keep(browser, tmp_path, "app_shaft.png")
