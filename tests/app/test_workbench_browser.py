@@ -336,7 +336,9 @@ def test_a_50_case_study_runs_to_the_end_and_equals_the_cli_study(opened, page, 
     k = 37  # any case: clearance level 4 (30 µm) × load level 8 (8 kN)
     assert theirs.loc[k, "geometry.clearance_radial"] == pytest.approx(30e-6, rel=1e-12)
     assert theirs.loc[k, "load_cases.page.F_x"] == pytest.approx(8000.0, rel=1e-12)
-    for col in ("L10r_rev", "max_load_N", "s0"):
+    columns = list(theirs.columns)
+    assert columns.index("L10_iso281_rev") < columns.index("L10r_rev")  # ISO 281 first
+    for col in ("L10_iso281_rev", "L10r_rev", "max_load_N", "s0"):
         assert _value(browser, f"study-cell-{k}-{col}") == theirs.loc[k, col], col
     assert page.console_errors(browser) == []
 
