@@ -256,6 +256,9 @@ def test_drivetrain_example_efficiency_equals_the_cli(opened, page, tmp_path):
     ref = page.cli_json("system", str(EXAMPLES / "planetary_stage.toml"))["cases"][0]
     assert _value(browser, "dt-efficiency-text") == ref["power"]["efficiency"]
     assert _value(browser, "dt-bearing-0-Fr") == ref["bearings"][0]["summary"]["radial_load_N"]
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#drivetrain-summary [id]")]
+    assert ids.index("dt-system-l10-iso") < ids.index("dt-system-l10")  # ISO 281 first
+    assert _text(browser, "dt-life-difference") == f"why they differ: {ref['system']['life_difference']}"
     _wait(
         browser,
         page,

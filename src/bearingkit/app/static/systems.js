@@ -201,7 +201,8 @@ function renderDrivetrain(out, a, c) {
     metric("dt-system-l10", "system L10h (ISO/TS 16281)", c.system.L10h_h ?? null, 1, "h"),
     metric("dt-efficiency", "efficiency", p ? p.efficiency : null, 100, "%", 5),
     metric("dt-loss", "power loss", p ? p.loss_W : null, 1, "W"),
-    metric("dt-held", "held torque", c.held_torque_Nm, 1, "N·m"));
+    metric("dt-held", "held torque", c.held_torque_Nm, 1, "N·m"),
+    ...(c.system.life_difference ? [el("p", { class: "muted", id: "dt-life-difference" }, `why they differ: ${c.system.life_difference}`)] : []));
   $("drivetrain-layout").replaceChildren(el("img", { src: out.layout, alt: "drivetrain layout", id: "drivetrain-layout-img" }));
   table("drivetrain-bearings", ["bearing", "on", "F_r [N]", "F_a [N]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h ISO 281 [h]", "L10rh TS [h]", "L_nmrh TS [h]", "M_f [N·mm]", "P [W]", "warn."],
     c.bearings.map((b, j) => {
