@@ -114,7 +114,8 @@ def test_a_shaft_shows_every_bearings_life_and_the_system_life():
     shaft = ShaftAnalysis(load_shaft_file(ROOT / "examples" / "shaft_countershaft.toml"))
     cells = _read(_notebook_html(shaft))
     head = cells.headers
-    assert head[:2] == ["case", "bearing"] and "L10h [h]" in head
+    assert head[:2] == ["case", "bearing"]
+    assert head.index("L10h ISO 281 [h]") < head.index("L10rh ISO/TS 16281 [h]")  # ISO 281 first
     data = shaft.to_dict()
     expected_rows = sum(len(c["bearings"]) + 1 for c in data["cases"])  # + the system line
     assert len(cells.rows) == expected_rows
@@ -122,10 +123,13 @@ def test_a_shaft_shows_every_bearings_life_and_the_system_life():
     line = dict(zip(head, cells.rows[0], strict=True))
     summary = first["bearings"][0]["summary"]
     assert line["bearing"] == summary["name"]
-    assert float(line["L10h [h]"]) == pytest.approx(summary["L10h_h"], rel=5e-4)
+    assert float(line["L10rh ISO/TS 16281 [h]"]) == pytest.approx(summary["L10h_h"], rel=5e-4)
+    assert float(line["L10h ISO 281 [h]"]) == pytest.approx(summary["L10h_iso281_h"], rel=5e-4)
     system = dict(zip(head, cells.rows[len(first["bearings"])], strict=True))
     assert system["bearing"] == "system"
-    assert float(system["L10h [h]"]) == pytest.approx(first["rating"]["system"]["L10h_h"], rel=5e-4)
+    sysd = first["rating"]["system"]
+    assert float(system["L10rh ISO/TS 16281 [h]"]) == pytest.approx(sysd["L10h_h"], rel=5e-4)
+    assert float(system["L10h ISO 281 [h]"]) == pytest.approx(sysd["L10h_iso281_h"], rel=5e-4)
     warnings = [f"{c['case']}: {w}" for c in data["cases"] for w in c["warnings"]]
     assert [i for i in cells.items if i in warnings] == warnings
 

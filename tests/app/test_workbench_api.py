@@ -262,6 +262,12 @@ def test_duty_cycle_is_the_pipelines_and_miner_as_written(client):
     assert d["L10r_rev"] == pytest.approx(1.0 / np.sum(share / lives), rel=1e-12)
     damage = share / lives / np.sum(share / lives)
     assert [b["damage_share"] for b in d["bins"]] == pytest.approx(damage, rel=1e-12)
+    # ISO 281 (listed first) combined the same way from its own bin lives
+    iso = np.array([b["L10_iso281_rev"] for b in d["bins"]])
+    assert d["headline"]["method"] == "ISO 281"
+    assert d["L10_iso281_rev"] == pytest.approx(1.0 / np.sum(share / iso), rel=1e-12)
+    iso_damage = share / iso / np.sum(share / iso)
+    assert [b["damage_share_iso281"] for b in d["bins"]] == pytest.approx(iso_damage, rel=1e-12)
     # the same bins written into a file and rated by the pipeline
     text = (EXAMPLES / "dgbb_6209_duty_cycle.toml").read_text(encoding="utf-8")
     head = text[: text.index("[[duty_cycle]]")]

@@ -205,6 +205,13 @@ def test_shaft_example_reactions_equal_the_cli_and_edits_are_solved(opened, page
         assert _value(browser, f"shaft-reaction-{j}-Fy") == b["reaction_on_shaft"]["F_y_N"]
     shown = browser.find_element("id", "shaft-reaction-0-Fx").text
     assert float(shown) == pytest.approx(ref[0]["reaction_on_shaft"]["F_x_N"], rel=5e-5)  # 5 digits shown
+    # the system lives: ISO 281 first (the CLI's numbers), ISO/TS 16281 beside it, the line on why
+    system = page.cli_json("shaft", str(EXAMPLES / "shaft_countershaft.toml"))["cases"][0]["rating"]["system"]
+    assert _value(browser, "shaft-system-l10-iso") == system["L10h_iso281_h"]
+    assert _value(browser, "shaft-system-l10") == system["L10h_h"]
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#shaft-summary [id]")]
+    assert ids.index("shaft-system-l10-iso") < ids.index("shaft-system-l10")
+    assert "why they differ" in _text(browser, "shaft-life-difference")
     assert len(browser.find_elements("css selector", "#shaft-layout-svg .bearing-mark")) == 2
     assert len(browser.find_elements("css selector", "#shaft-lines svg")) == 2
     page.keep(browser, tmp_path, "app_shaft.png")
@@ -273,6 +280,9 @@ def test_drivetrain_example_efficiency_equals_the_cli(opened, page, tmp_path):
     ref = page.cli_json("system", str(EXAMPLES / "planetary_stage.toml"))["cases"][0]
     assert _value(browser, "dt-efficiency-text") == ref["power"]["efficiency"]
     assert _value(browser, "dt-bearing-0-Fr") == ref["bearings"][0]["summary"]["radial_load_N"]
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#drivetrain-summary [id]")]
+    assert ids.index("dt-system-l10-iso") < ids.index("dt-system-l10")  # ISO 281 first
+    assert _text(browser, "dt-life-difference") == f"why they differ: {ref['system']['life_difference']}"
     _wait(
         browser,
         page,
@@ -353,7 +363,9 @@ def test_a_50_case_study_runs_to_the_end_and_equals_the_cli_study(opened, page, 
     k = 37  # any case: clearance level 4 (30 µm) × load level 8 (8 kN)
     assert theirs.loc[k, "geometry.clearance_radial"] == pytest.approx(30e-6, rel=1e-12)
     assert theirs.loc[k, "load_cases.page.F_x"] == pytest.approx(8000.0, rel=1e-12)
-    for col in ("L10r_rev", "max_load_N", "s0"):
+    columns = list(theirs.columns)
+    assert columns.index("L10_iso281_rev") < columns.index("L10r_rev")  # ISO 281 first
+    for col in ("L10_iso281_rev", "L10r_rev", "max_load_N", "s0"):
         assert _value(browser, f"study-cell-{k}-{col}") == theirs.loc[k, col], col
     assert page.console_errors(browser) == []
 
@@ -369,6 +381,15 @@ def test_duty_cycle_bins_rated_as_the_cli_rates_them(opened, page, tmp_path):
     _wait(browser, page, lambda d: d.find_elements("id", "duty-l10"))
     ref = page.cli_json("rating", str(EXAMPLES / "dgbb_6209_duty_cycle.toml"))["duty_cycle"]
     assert _value(browser, "duty-l10") == ref["L10r_h"]
+    assert _value(browser, "duty-l10-iso") == ref["L10h_iso281_h"]
+    # ISO 281 is the first life of the summary, ISO/TS 16281 beside it
+    ids = [m.get_attribute("id") for m in browser.find_elements("css selector", "#duty-summary [id]")]
+    assert ids.index("duty-l10-iso") < ids.index("duty-l10")
+    iso_shares = [
+        float(td.get_attribute("data-value"))
+        for td in browser.find_elements("css selector", "#duty-bins td.r-share-iso")
+    ]
+    assert iso_shares == [b["damage_share_iso281"] for b in ref["bins"]]
     shares = [
         float(td.get_attribute("data-value"))
         for td in browser.find_elements("css selector", "#duty-bins td.r-share")

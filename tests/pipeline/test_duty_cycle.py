@@ -43,6 +43,51 @@ def test_combined_life_is_the_hand_miner_sum_of_the_bin_lives(cycle):
     assert shares.sum() == pytest.approx(1.0, rel=1e-14)
 
 
+def test_iso281_damage_shares_and_combined_lives_are_the_hand_miner_sums(cycle):
+    """ISO 281 first: per-bin L10 and L_nm, the ISO 281 damage shares n_i/L_i normalised, the Miner sum."""
+    bins = cycle["bins"]
+    assert cycle["headline"]["method"] == "ISO 281"
+    t = np.array([b["time_fraction"] for b in bins])
+    n = np.array([b["speed_rad_s"] for b in bins])
+    u = t * n / np.sum(t * n)
+    rate = np.sum(t * n) / (2 * math.pi)  # mean revolutions per second
+    for key in ("L10_iso281", "Lnm_iso281"):
+        lives = np.array([b[f"{key}_rev"] for b in bins])
+        assert np.all(np.isfinite(lives)) and np.all(lives > 0)
+        hand = 1.0 / np.sum(u / lives)
+        assert cycle[f"{key}_rev"] == pytest.approx(hand, rel=1e-12)
+        hours = cycle[key.replace("L10_", "L10h_") + "_h"]
+        assert hours == pytest.approx(hand / rate / 3600.0, rel=1e-12)
+    lives = np.array([b["L10_iso281_rev"] for b in bins])
+    hand_shares = (u / lives) / np.sum(u / lives)
+    np.testing.assert_allclose([b["damage_share_iso281"] for b in bins], hand_shares, rtol=1e-12, atol=0)
+    # the ISO 281 shares are their own, not the TS's
+    assert [b["damage_share_iso281"] for b in bins] != [b["damage_share"] for b in bins]
+    assert cycle["life_difference"] and "ISO/TS 16281" in cycle["life_difference"]
+
+
+def test_a_bearing_iso281_does_not_rate_leads_with_the_ts_life_and_says_why():
+    """A slewing ring (no ISO 281 X, Y under a tilting moment): no ISO 281 duty-cycle life, the TS's leads
+    in the JSON and the console, and a note names the reason."""
+    root = EXAMPLE.parent
+    data = tomllib.loads((root / "slewing_four_point.toml").read_text())
+    cases = data.pop("load_cases")
+    data["duty_cycle"] = [{**c, "time_fraction": f} for c, f in zip(cases, (0.5, 0.2, 0.3), strict=True)]
+    d = bk.analyze(from_dict(data, "slew.toml")).rating_dict()["duty_cycle"]
+    assert d["headline"]["method"] == "ISO/TS 16281" and d["L10_iso281_rev"] is None
+    assert d["L10r_rev"] is not None and d["life_difference"] is None
+    assert all(b["L10_iso281_rev"] is None and b["damage_share_iso281"] is None for b in d["bins"])
+    assert any("no combined ISO 281 life (ISO 281 gives no X, Y for slewing rings" in n for n in d["notes"])
+    from rich.console import Console
+
+    from bearingkit.cli.tables import duty_cycle_table
+
+    console = Console(width=400, record=True)
+    console.print(duty_cycle_table(d))
+    text = console.export_text()
+    assert text.index("ISO/TS 16281: L10r =") < text.index("ISO 281: L10 =")
+
+
 def test_each_bin_is_rated_as_its_own_load_case(cycle):
     """A bin's life is that of the same load, speed and temperature analysed as a plain load case."""
     for b in cycle["bins"]:
@@ -58,6 +103,8 @@ def test_each_bin_is_rated_as_its_own_load_case(cycle):
         assert b["L10r_rev"] == pytest.approx(single["L10r_rev"], rel=1e-9)
         assert b["Lnmr_rev"] == pytest.approx(single["Lnmr_rev"], rel=1e-9)
         assert b["static_safety"] == pytest.approx(single["static_safety"], rel=1e-9)
+        assert b["L10_iso281_rev"] == pytest.approx(single["L10_iso281_rev"], rel=1e-9)
+        assert b["Lnm_iso281_rev"] == pytest.approx(single["Lnm_iso281_rev"], rel=1e-9)
 
 
 def _data() -> dict:
@@ -142,7 +189,11 @@ def test_cli_rating_shows_the_duty_cycle_and_json_has_it(tmp_path):
     out = runner.invoke(app, ["rating", str(EXAMPLE), "--contamination", "0.5"])
     assert out.exit_code == 0, out.stderr
     assert "duty cycle: 4 bins, time fractions, Palmgren–Miner" in out.stdout
-    assert "over the cycle: L10r =" in out.stdout
+    text = " ".join(out.stdout[out.stdout.index("duty cycle: 4 bins") :].split())
+    assert "over the cycle: ISO 281: L10 =" in text
+    # ISO 281 before ISO/TS 16281: in the caption and in the bins' columns
+    assert text.index("ISO 281: L10 =") < text.index("ISO/TS 16281: L10r =")
+    assert text.index("L10 ISO 281") < text.index("L10r TS") and "why they differ:" in text
     data = json.loads(runner.invoke(app, ["rating", str(EXAMPLE), "--json"]).stdout)
     assert [b["bin"] for b in data["duty_cycle"]["bins"]] == ["cruise", "climb", "peak", "idle"]
 
@@ -152,6 +203,10 @@ def test_report_has_a_duty_cycle_section(tmp_path):
     html = path.read_text()
     assert 'id="duty-cycle"' in html and "Palmgren–Miner" in html
     assert "palmgren1924" in html and "miner1945" in html
+    section = html[html.index('id="duty-cycle"') :]
+    assert section.index("L10 ISO 281 [10⁶ rev]") < section.index("L10r ISO/TS 16281 [10⁶ rev]")
+    assert section.index("<td class=l>ISO 281</td>") < section.index("<td class=l>ISO/TS 16281</td>")
+    assert "Why they differ:" in section
 
 
 @pytest.mark.parametrize(

@@ -180,6 +180,36 @@ def test_duty_cycle_outputs_equal_the_files_duty_cycle(tmp_path):
     assert res["duty_L10r_h"].iloc[1] != res["duty_L10r_h"].iloc[0]
 
 
+def test_iso281_outputs_come_first_and_equal_the_analysis(tmp_path):
+    """ISO 281 lives lead ``--list-outputs`` and equal the bearing's and the duty cycle's ISO 281 lives."""
+    path = EXAMPLES / "dgbb_6209_duty_cycle.toml"
+    res = CliRunner().invoke(app, ["study", str(path), "--list-outputs"])
+    assert res.exit_code == 0, res.stderr
+    names = [ln.split()[0] for ln in res.stdout.splitlines()[1:] if ln.strip()]
+    assert names[:4] == ["L10_iso281_rev", "L10h_iso281_h", "Lnm_iso281_rev", "Lnm_iso281_h"]
+    assert names.index("duty_L10_iso281_rev") < names.index("duty_L10r_rev")
+    assert names.index("duty_peak_damage_share_iso281") < names.index("duty_peak_damage_share")
+    outputs = ["L10_iso281_rev", "duty_L10h_iso281_h", "duty_Lnm_iso281_rev", "duty_peak_damage_share_iso281"]
+    res = _run(
+        _study(
+            [{"name": "geometry.clearance_radial", "levels": ["15 um", "30 um"]}],
+            fixed={"operating.contamination": 0.5},
+            outputs=outputs,
+            bearing=path,
+        )
+    ).results
+    a = bk.analyze(path, contamination=0.5)  # the file has 15 um
+    d = a.duty_cycle
+    assert res["L10_iso281_rev"].iloc[0] == pytest.approx(float(a.rating.iso281.life[0]), rel=1e-12)
+    assert res["duty_L10h_iso281_h"].iloc[0] == pytest.approx(d.iso281["life_hours"], rel=1e-12)
+    assert res["duty_Lnm_iso281_rev"].iloc[0] == pytest.approx(d.iso281["modified_life"], rel=1e-12)
+    assert res["duty_peak_damage_share_iso281"].iloc[0] == pytest.approx(
+        d.iso281["damage_share"][2], rel=1e-12
+    )
+    # ISO 281's P does not see the clearance: the ISO 281 lives stay, the TS's would move
+    assert res["duty_L10h_iso281_h"].iloc[1] == pytest.approx(res["duty_L10h_iso281_h"].iloc[0], rel=1e-9)
+
+
 def test_designation_study_adds_a_load_case():
     res = _run(
         _study(

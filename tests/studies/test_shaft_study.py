@@ -56,6 +56,7 @@ def test_load_scale_and_spacing_follow_the_lever_rule(tmp_path):
     assert out["max_bearing_radial_load_N"].to_numpy() == pytest.approx(expected, rel=1e-9)
     # linear bearings have no rows: no lives or pressures (NaN), not a made-up number
     assert out[["system_L10h_h", "min_bearing_L10h_h", "max_pressure_Pa"]].isna().all().all()
+    assert out[["system_L10h_iso281_h", "system_Lnmh_iso281_h"]].isna().all().all()
 
 
 def test_heavier_load_shortens_and_a_bigger_bearing_lengthens_the_life():
@@ -72,6 +73,15 @@ def test_heavier_load_shortens_and_a_bigger_bearing_lengthens_the_life():
     assert heavy < base / 1.5**3 * 1.2  # ball life ∝ P^-3 (the gears' weight is not scaled: a bit above)
     assert heavy < base and bigger > base  # the 6309 (C 53 kN) for the 6209 (C 31.5 kN) at bearing A
     assert np.all(out["system_L10h_h"] <= out["min_bearing_L10h_h"] * (1 + 1e-12))  # a system of bearings
+    # ISO 281 first: its system life is the shaft analysis's, and shorter than its shortest bearing's
+    assert list(out.columns[:2]) == ["system_L10h_iso281_h", "system_Lnmh_iso281_h"]
+    assert np.all(out["system_L10h_iso281_h"] <= out["min_bearing_L10h_iso281_h"] * (1 + 1e-12))
+    from bearingkit.systems.shaft.input import load_shaft_file
+    from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
+
+    cases = ShaftAnalysis(load_shaft_file(COUNTERSHAFT)).to_dict()["cases"]
+    ref = min(c["rating"]["system"]["L10h_iso281_h"] for c in cases)
+    assert out["system_L10h_iso281_h"].iloc[0] == pytest.approx(ref, rel=1e-12)
 
 
 def test_edit_scales_every_load_and_refuses_an_unknown_bearing():

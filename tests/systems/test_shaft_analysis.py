@@ -113,6 +113,65 @@ def test_system_lives_solve_the_weibull_equation(countershaft):
     assert not np.ma.getmaskarray(r.modified_life).any()  # the example gives e_C: L_nm exists
 
 
+def _weibull_root(lives, slopes) -> float:
+    """L10 of independently failing members by brentq on the survival product: Π S_i(L) = 0.9 with
+    S_i(L) = 0.9^((L/L_i)^e_i) (written from the two-parameter Weibull law, not from the library)."""
+    from scipy.optimize import brentq
+
+    def gap(log_life):
+        survival = np.prod(
+            [0.9 ** ((np.exp(log_life) / li) ** e) for li, e in zip(lives, slopes, strict=True)]
+        )
+        return survival - 0.9
+
+    lo, hi = np.log(min(lives)) - 10.0, np.log(min(lives)) + 1e-9
+    return float(np.exp(brentq(gap, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)))
+
+
+def test_iso281_system_life_is_the_weibull_root_of_the_bearings_iso281_lives(countershaft):
+    """ISO 281 system L10 and L_nm (listed first) = the brentq root of the survival product over the
+    bearings' own ISO 281 lives (ball 10/9, roller 9/8), to 1e-12; hours at the cases' speed."""
+    r = countershaft.rating
+    data = countershaft.to_dict()
+    slopes = [a.rating.rows[0].weibull_slope for a in countershaft.bearings.values()]
+    for c, case in enumerate(data["cases"]):
+        system = case["rating"]["system"]
+        assert system["headline"]["method"] == "ISO 281"
+        assert list(system).index("L10_iso281_rev") < list(system).index("L10r_rev")
+        for key, attr in (("L10_iso281_rev", "life"), ("Lnm_iso281_rev", "modified_life")):
+            lives = [float(getattr(a.rating.iso281, attr)[c]) for a in countershaft.bearings.values()]
+            hand = _weibull_root(lives, slopes)
+            assert system[key] == pytest.approx(hand, rel=1e-12)
+            assert system[key] < min(lives)
+        # the per-bearing summaries carry the same ISO 281 lives, first among the lives
+        for b in case["bearings"]:
+            s = b["summary"]
+            own = countershaft.bearings[b["name"]].rating.to_dict(c)["system"]
+            assert s["L10h_iso281_h"] == own["L10h_iso281_h"] and s["Lnm_iso281_h"] == own["Lnm_iso281_h"]
+            assert list(s).index("L10h_iso281_h") < list(s).index("L10h_h")
+        speed = abs(float(countershaft.input.loads.speed[c]))
+        hours = system["L10_iso281_rev"] / (speed / (2 * np.pi)) / 3600.0
+        assert system["L10h_iso281_h"] == pytest.approx(hours, rel=1e-12)
+    assert not np.ma.getmaskarray(r.iso281_life).any()
+    # the example's 'rated' case: the ISO 281 system L10h printed first (6,577 h when this was built)
+    assert data["cases"][0]["case"] == "rated"
+    assert data["cases"][0]["rating"]["system"]["L10h_iso281_h"] == pytest.approx(6577.33, rel=1e-5)
+
+
+def test_cli_and_report_show_the_iso281_system_life_first(tmp_path):
+    out = _cli("shaft", COUNTERSHAFT, "--report", tmp_path / "s.html")
+    assert out.returncode == 0, out.stderr
+    text = " ".join(out.stdout.split())
+    assert text.index("system ISO 281: L10h =") < text.index("system ISO/TS 16281: L10rh =")
+    assert text.index("L10h ISO 281 h") < text.index("L10rh TS h")
+    assert "why they differ:" in text and "e = 10/9 ball, 9/8 roller" in text
+    html = (tmp_path / "s.html").read_text()
+    assert html.index("L10h ISO 281 [h]") < html.index("L10rh ISO/TS 16281 [h]")
+    section = html[html.index("System life</h4>") :]
+    assert section.index("<td class=l>ISO 281</td>") < section.index("<td class=l>ISO/TS 16281</td>")
+    assert "Why they differ:" in section
+
+
 def _low_film_file(tmp_path) -> Path:
     """The countershaft's first load case with a thin oil, hot and slow: κ < 1 in every bearing."""
     data = tomllib.loads(COUNTERSHAFT.read_text())
@@ -182,7 +241,8 @@ def test_report_shows_the_numbers_of_the_json(tmp_path):
     data = json.loads(json.dumps(analysis.to_dict()))
     reactions, results, systems = _cells(html, "reactions"), _cells(html, "bearings"), _cells(html, "system")
     n_b = len(data["bearings"])
-    assert len(reactions) == len(results) == n_b * len(data["cases"]) and len(systems) == len(data["cases"])
+    assert len(reactions) == len(results) == n_b * len(data["cases"])
+    assert len(systems) == 2 * len(data["cases"])  # per case: the ISO 281 row, then the ISO/TS 16281 row
     for c, case in enumerate(data["cases"]):
         for i, b in enumerate(case["bearings"]):
             s = b["summary"]
@@ -202,9 +262,15 @@ def test_report_shows_the_numbers_of_the_json(tmp_path):
             for cell, (key, _, factor, _) in zip(row[1:], RESULT_COLUMNS, strict=False):
                 _shown(cell, s[key] if key != "axial_load_N" or abs(s[key]) > 1e-6 else 0.0, factor)
         system = case["rating"]["system"]
-        for cell, key in zip(systems[c], ("L10r_rev", "L10h_h", "Lnmr_rev", "Lnmr_h"), strict=False):
+        iso, ts = systems[2 * c], systems[2 * c + 1]
+        assert iso[0] == "ISO 281" and ts[0] == "ISO/TS 16281"
+        iso_keys = ("L10_iso281_rev", "L10h_iso281_h", "Lnm_iso281_rev", "Lnm_iso281_h")
+        for cell, key in zip(iso[1:], iso_keys, strict=True):
             _shown(cell, system[key])
-        _shown(systems[c][4], case["power_loss_W"])
+        for cell, key in zip(ts[1:], ("L10r_rev", "L10h_h", "Lnmr_rev", "Lnmr_h"), strict=True):
+            _shown(cell, system[key])
+        shown_loss = re.findall(r"Power loss of the bearings: ([^ ]+) W", html)
+        _shown(shown_loss[c], case["power_loss_W"])
     # each bearing's own subsection, by the single-bearing renderer, once per load case
     for b in data["bearings"]:
         for c in range(len(data["cases"])):
@@ -299,8 +365,11 @@ def test_a_bearing_without_rating_leaves_the_system_without_life():
     sa = ShaftAnalysis(load_shaft_file(COUNTERSHAFT))
     sa.bearings["B"].__dict__["_rating"] = (None, "ratings not computed: stand-in failure")
     assert np.ma.getmaskarray(sa.rating.life).all() and np.ma.getmaskarray(sa.rating.modified_life).all()
+    assert np.ma.getmaskarray(sa.rating.iso281_life).all()
+    assert np.ma.getmaskarray(sa.rating.iso281_modified_life).all()
     assert all(any("no system life: bearing(s) ['B']" in w for w in case) for case in sa.warnings)
     assert "B: ratings not computed: stand-in failure" in sa.notes
     d = sa.to_dict()
     assert d["cases"][0]["rating"]["system"]["L10r_rev"] is None
+    assert d["cases"][0]["rating"]["system"]["L10_iso281_rev"] is None
     assert d["cases"][0]["bearings"][1]["summary"]["L10h_h"] is None

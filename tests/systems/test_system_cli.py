@@ -36,6 +36,27 @@ def test_system_json_tables_report_and_rexs(tmp_path):
     assert len(model["load_spectrum"]["load_cases"]) == 2
 
 
+def test_system_lives_lead_with_iso281_on_every_face(tmp_path):
+    """The drivetrain's ISO 281 system L10h comes before the ISO/TS 16281 one (CLI, JSON, report), with
+    the line on why they differ."""
+    runner = CliRunner()
+    path = EXAMPLES / "gearbox_two_stage.toml"
+    data = json.loads(runner.invoke(app, ["system", str(path), "--json"]).output)
+    system = data["cases"][0]["system"]
+    assert list(system)[:2] == ["L10h_iso281_h", "L10h_h"] and system["L10h_iso281_h"] > 0
+    assert "ISO/TS 16281" in system["life_difference"]
+    report = tmp_path / "r.html"
+    out = runner.invoke(app, ["system", str(path), "--report", str(report)])
+    assert out.exit_code == 0, out.output
+    text = " ".join(out.output.split())
+    first = text.index("system L10h:")
+    assert text.index("(ISO 281)", first) < text.index("(ISO/TS 16281)", first)
+    assert "why they differ:" in text
+    html = report.read_text(encoding="utf-8")
+    assert html.index("system L10h ISO 281 [h]") < html.index("system L10h ISO/TS 16281 [h]")
+    assert "Why they differ:" in html
+
+
 def test_bad_input_is_one_line_exit_2(tmp_path):
     text = (
         (EXAMPLES / "gearbox_two_stage.toml").read_text(encoding="utf-8").replace("teeth = 61", "teeth = 62")

@@ -35,6 +35,26 @@ def _round(value, digits: int = 1) -> str:
     return f"{round(value, digits) + 0.0:.{digits}f}"
 
 
+def system_life_line(life: dict) -> str:
+    """The shaft's system lives, the headline method first (ISO 281 where every bearing has one), the
+    ISO/TS 16281 ones beside them, the Weibull rule and why the two differ (``rating.system`` of a case)."""
+    iso = (
+        f"system ISO 281: L10h = {_num(life.get('L10h_iso281_h'), fmt='.4g')} h, "
+        f"L_nmh = {_num(life.get('Lnm_iso281_h'), fmt='.4g')} h"
+    )
+    ts = (
+        f"system ISO/TS 16281: L10rh = {_num(life['L10h_h'], fmt='.4g')} h, "
+        f"L_nmrh = {_num(life['Lnmr_h'], fmt='.4g')} h"
+    )
+    first = (life.get("headline") or {}).get("method", "ISO 281")
+    text = "; ".join([iso, ts] if first == "ISO 281" else [ts, iso])
+    if life.get("weibull_rule"):
+        text += f"\ncombined by {life['weibull_rule']}"
+    if life.get("life_difference"):
+        text += f"\nwhy they differ: {life['life_difference']}"
+    return text
+
+
 def shaft_case_tables(c: dict) -> list:
     """Renderables of one case of ``ShaftAnalysis.to_dict()["cases"]``: two tables and the warnings."""
     s, life = c["shaft"], c["rating"]["system"]
@@ -43,27 +63,15 @@ def shaft_case_tables(c: dict) -> list:
         f"shaft: max deflection {s['max_radial_deflection_m'] * 1e6:.4g} µm at "
         f"{s['max_radial_deflection_at_m'] * 1e3:.4g} mm, max bending moment "
         f"{s['max_bending_moment_Nm']:.4g} N·m at {s['max_bending_moment_at_m'] * 1e3:.4g} mm; "
-        f"system L10h = {_num(life['L10h_h'], fmt='.4g')} h, L_nm = {_num(life['Lnmr_h'], fmt='.4g')} h; "
-        f"power loss {_num(c['power_loss_W'], fmt='.4g')} W"
+        f"power loss {_num(c['power_loss_W'], fmt='.4g')} W\n{system_life_line(life)}"
     )
     seat = Table(title=escape(f"case {c['case']!r}: {status} — reactions on the shaft, seat state"))
     cols = ("bearing", "z mm", "F_x N", "F_y N", "F_z N", "M_x N·m", "M_y N·m", "u_x µm", "u_y µm", "u_z µm")
     for col in (*cols, "θ_x mrad", "θ_y mrad", "tilt mrad"):
         seat.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
     results = Table(title=escape(f"case {c['case']!r}: bearing results"), caption=escape(caption))
-    cols = (
-        "bearing",
-        "F_r N",
-        "F_a N",
-        "p_max MPa",
-        "s0",
-        "L10h h",
-        "L_nm h",
-        "κ",
-        "M_fr N·m",
-        "P_loss W",
-        "T °C",
-    )
+    cols = ("bearing", "F_r N", "F_a N", "p_max MPa", "s0", "L10h ISO 281 h", "L_nmh ISO 281 h", "L10rh TS h")
+    cols += ("L_nmrh TS h", "κ", "M_fr N·m", "P_loss W", "T °C")
     for col in (*cols, "warnings"):
         results.add_column(col, justify="left" if col == "bearing" else "right", no_wrap=True)
     for b in c["bearings"]:
@@ -84,6 +92,8 @@ def shaft_case_tables(c: dict) -> list:
             _round(sm["axial_load_N"]),
             _num(sm["max_pressure_Pa"], 1e-6, ".4g"),
             _num(sm["static_safety"], fmt=".3g"),
+            _num(sm.get("L10h_iso281_h"), fmt=".4g"),
+            _num(sm.get("Lnm_iso281_h"), fmt=".4g"),
             _num(sm["L10h_h"], fmt=".4g"),
             _num(sm["Lnmr_h"], fmt=".4g"),
             _num(sm["kappa_min"], fmt=".3g"),

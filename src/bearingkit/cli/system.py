@@ -32,6 +32,7 @@ def case_tables(c: dict) -> list:
 
     from bearingkit.cli.shaft_tables import heat_balance_table
     from bearingkit.cli.tables import _num
+    from bearingkit.systems.shaft.life import SYSTEM_LIFE_DIFFERENCE
 
     out = []
     meshes = Table(
@@ -69,8 +70,8 @@ def case_tables(c: dict) -> list:
         "F_a [N]",
         "p_max [MPa]",
         "s0",
-        "L10h ISO/TS 16281 [h]",
         "L10h ISO 281 [h]",
+        "L10h ISO/TS 16281 [h]",
         "P_loss [W]",
         "T [°C]",
         "warn",
@@ -85,8 +86,8 @@ def case_tables(c: dict) -> list:
             f"{s['axial_load_N']:.1f}",
             _num(s["max_pressure_Pa"], 1e-6, ".0f"),
             _num(s["static_safety"], 1.0, ".3g"),
-            _num(s["L10h_h"], 1.0, ".4g"),
             _num(s["L10h_iso281_h"], 1.0, ".4g"),
+            _num(s["L10h_h"], 1.0, ".4g"),
             _num(s["power_loss_W"], 1.0, ".3g"),
             _num(s["temperature_C"], 1.0, ".4g") + (" found" if s["temperature_found"] else ""),
             str(s["warnings"]),
@@ -97,9 +98,10 @@ def case_tables(c: dict) -> list:
         out.append(heat)
     life = c["system"]
     out.append(
-        f"  system L10h: {_num(life['L10h_h'], 1.0, '.4g')} h (ISO/TS 16281), "
-        f"{_num(life['L10h_iso281_h'], 1.0, '.4g')} h (ISO 281)"
+        f"  system L10h: {_num(life['L10h_iso281_h'], 1.0, '.4g')} h (ISO 281), "
+        f"{_num(life['L10h_h'], 1.0, '.4g')} h (ISO/TS 16281)"
     )
+    out.append(f"  why they differ: {SYSTEM_LIFE_DIFFERENCE}")
     p = c["power"]
     if p is not None:
         speeds = ", ".join(f"{k} {v * RPM:.5g}" for k, v in p["speeds_rad_s"].items())
@@ -201,8 +203,8 @@ def register(app: typer.Typer) -> None:
             if duty is not None:
                 console.print(
                     "duty cycle (Palmgren–Miner): system L10h "
-                    f"{_num(duty['system']['L10h_h'], 1.0, '.4g')} h "
-                    f"(ISO/TS 16281), {_num(duty['system']['L10h_iso281_h'], 1.0, '.4g')} h (ISO 281)",
+                    f"{_num(duty['system']['L10h_iso281_h'], 1.0, '.4g')} h "
+                    f"(ISO 281), {_num(duty['system']['L10h_h'], 1.0, '.4g')} h (ISO/TS 16281)",
                     markup=False,
                     highlight=False,
                 )

@@ -151,13 +151,24 @@ def rating_table(c: dict) -> Table:
 
 
 def duty_cycle_table(d: dict) -> Table:
-    """A rich table of a duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`)."""
+    """A rich table of a duty cycle (:meth:`bearingkit.pipeline.duty_cycle.DutyCycleResult.to_dict`): ISO 281
+    first (per-bin L10, L_nm and damage share, the Miner-combined L10 and L_nm), ISO/TS 16281 beside it."""
     kind = d["fraction_kind"]
     title = f"duty cycle: {len(d['bins'])} bins, {kind} fractions, Palmgren–Miner"
-    caption = (
-        f"over the cycle: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev = {_compact(d['L10r_h'])} h, "
+    iso = (
+        f"ISO 281: L10 = {_compact(d.get('L10_iso281_rev'), 1e-6)} 10⁶ rev = "
+        f"{_compact(d.get('L10h_iso281_h'))} h, "
+        f"L_nm = {_compact(d.get('Lnm_iso281_rev'), 1e-6)} 10⁶ rev = {_compact(d.get('Lnm_iso281_h'))} h"
+    )
+    ts = (
+        f"ISO/TS 16281: L10r = {_compact(d['L10r_rev'], 1e-6)} 10⁶ rev = {_compact(d['L10r_h'])} h, "
         f"L_nmr = {_compact(d['Lnmr_rev'], 1e-6)} 10⁶ rev = {_compact(d['Lnmr_h'])} h"
     )
+    first = (d.get("headline") or {}).get("method", "ISO 281")
+    lines = [iso, ts] if first == "ISO 281" else [ts, iso]
+    caption = "over the cycle: " + "; ".join(lines)
+    if d.get("life_difference"):
+        caption += f"\nwhy they differ: {d['life_difference']}"
     table = Table(title=escape(title), caption=escape(caption))
     for col in (
         "bin",
@@ -166,15 +177,18 @@ def duty_cycle_table(d: dict) -> Table:
         "speed r/min",
         "F_r kN",
         "F_a kN",
-        "L10r 10⁶rev",
-        "L_nmr 10⁶rev",
+        "L10 ISO 281 10⁶rev",
+        "L_nm ISO 281 10⁶rev",
+        "damage % ISO 281",
+        "L10r TS 10⁶rev",
+        "L_nmr TS 10⁶rev",
+        "damage % TS",
         "s0",
-        "damage %",
     ):
         table.add_column(col, justify="left" if col == "bin" else "right", no_wrap=True)
     for b in d["bins"]:
         load = b["load"]
-        life = "no load" if b["no_load"] else _compact(b["L10r_rev"], 1e-6)
+        no_load = "no load" if b["no_load"] else None
         table.add_row(
             escape(b["bin"]),
             _num(b[f"{kind}_fraction"], 100.0, ".3g"),
@@ -182,10 +196,13 @@ def duty_cycle_table(d: dict) -> Table:
             _num(b["speed_rad_s"], 30 / math.pi),
             _num(math.hypot(load["F_x_N"], load["F_y_N"]), 1e-3),
             _num(load["F_z_N"], 1e-3),
-            life,
+            no_load or _compact(b.get("L10_iso281_rev"), 1e-6),
+            _compact(b.get("Lnm_iso281_rev"), 1e-6),
+            _num(b.get("damage_share_iso281"), 100.0, ".3g"),
+            no_load or _compact(b["L10r_rev"], 1e-6),
             _compact(b["Lnmr_rev"], 1e-6),
-            _num(b["static_safety"], fmt=".3g"),
             _num(b["damage_share"], 100.0, ".3g"),
+            _num(b["static_safety"], fmt=".3g"),
         )
     return table
 

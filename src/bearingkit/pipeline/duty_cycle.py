@@ -7,8 +7,11 @@ temperature and a time or revolution fraction each. :attr:`bearingkit.pipeline.A
 solves and rates every bin as a load case of ONE batched Analysis (same bearing, operating settings
 of the parent analysis) and combines the bins' system lives by linear damage summation
 (:func:`bearingkit.physics.life.duty_cycle.miner_life`): L = (Σ U_i / L_i)^(−1) with U_i the
-revolution fractions, for the basic reference rating life L10r and, where every turning bin has one,
-the modified reference rating life L_nmr (ISO/TS 16281). :func:`combine` does the same for G designs at
+revolution fractions. ISO 281 first (as for a single case: the catalogue method, the life shown first
+where ISO 281 rates the bearing): the basic rating life L10 and, where every turning bin has a_ISO, the
+modified rating life L_nm (ISO 281:2007 with the variable-load Miner rule of ISO 281 / ISO/TS 16281);
+beside them the ISO/TS 16281 basic and modified reference rating lives L10r and L_nmr from the bins'
+load distributions. :func:`combine` does the same for G designs at
 once (a study: the (G, B) bins of G bearings in one analysis).
 """
 
@@ -27,13 +30,19 @@ __all__ = ["DutyCycleResult", "bin_lives", "bins_input", "combine", "summarise"]
 HOUR = 3600.0
 
 
-def bin_lives(rating, attr: str = "life") -> np.ndarray:
+def bin_lives(rating, attr: str = "life", iso281: bool = False) -> np.ndarray:
     """System lives (C,) [rev] of a rating for Miner's sum: NaN where unknown, +inf where no row is loaded.
 
-    A bin whose bearing carries no load does no fatigue damage (ISO 281 gives it no finite life); a bin
-    that did not converge, or whose life is masked for another reason, has no known life.
+    ``attr`` of the rating (ISO/TS 16281: ``life``, ``modified_life``) or, with ``iso281``, of its ISO 281
+    life (:class:`bearingkit.analysis.rating.iso281.Iso281Life`: ``life``, ``modified_life``; all NaN where
+    ISO 281 does not rate the bearing). A bin whose bearing carries no load does no fatigue damage (ISO 281
+    gives it no finite life); a bin that did not converge, or whose life is masked for another reason, has
+    no known life.
     """
-    life = getattr(rating, attr)
+    source = getattr(rating, "iso281", None) if iso281 else rating
+    if source is None:
+        return np.full(np.shape(rating.converged), np.nan)
+    life = getattr(source, attr)
     out = np.ma.filled(np.ma.asarray(life).astype(float), np.nan)
     unloaded = np.all([np.asarray(r.loaded_count) == 0 for r in rating.rows], axis=0)
     return np.where(unloaded & np.asarray(rating.converged, bool), np.inf, out)
@@ -90,7 +99,7 @@ class DutyCycleResult:
     analysis : Analysis
         The bins solved and rated as load cases (statics, rating, warnings per bin).
     bin_life, bin_modified_life : ndarray (B,) [rev]
-        L10r and L_nmr of each bin (NaN: not available, +inf: no load).
+        ISO/TS 16281 L10r and L_nmr of each bin (NaN: not available, +inf: no load).
     life, modified_life : float [rev]
         Combined L10r and L_nmr (NaN when a turning bin has none).
     life_hours, modified_life_hours : float [h]
@@ -98,6 +107,11 @@ class DutyCycleResult:
     damage_share : ndarray (B,) [-]
         Share of the L10r damage each bin does.
     notes : list of str
+    iso281 : dict
+        ISO 281 (listed first by every face where it rates the bearing): ``bin_life``, ``bin_modified_life``
+        (B,) [rev] (L10, L_nm per bin), ``life``, ``modified_life`` [rev], ``life_hours``,
+        ``modified_life_hours`` [h] (Miner-combined), ``damage_share`` (B,) [-] (share of the ISO 281 L10
+        damage) and ``note`` (why there is none, else None).
     """
 
     names: list
@@ -115,6 +129,7 @@ class DutyCycleResult:
     damage_share: np.ndarray
     notes: list = field(default_factory=list)
     references: tuple = ("palmgren1924", "miner1945", "iso281", "iso16281")
+    iso281: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
         """JSON-ready (units in keys; None where not available, ``"inf"`` lives written as None too)."""
@@ -124,6 +139,7 @@ class DutyCycleResult:
             return x if np.isfinite(x) else None
 
         rating = self.analysis.rating
+        iso = self.iso281 or _no_iso281(len(self.names), "ISO 281 was not computed")
         bins = []
         for i, name in enumerate(self.names):
             case = self.analysis.input.cases[i]
@@ -143,6 +159,9 @@ class DutyCycleResult:
                             strict=True,
                         )
                     },
+                    "L10_iso281_rev": num(iso["bin_life"][i]),
+                    "Lnm_iso281_rev": num(iso["bin_modified_life"][i]),
+                    "damage_share_iso281": num(iso["damage_share"][i]),
                     "L10r_rev": num(self.bin_life[i]),
                     "Lnmr_rev": num(self.bin_modified_life[i]),
                     "static_safety": None if rating is None else _masked(rating.static_safety, i),
@@ -154,6 +173,13 @@ class DutyCycleResult:
         return {
             "fraction_kind": self.kind,
             "rule": "Palmgren-Miner: L = 1 / sum(U_i / L_i), U_i = revolution fractions",
+            "headline": _headline(iso),
+            "L10_iso281_rev": num(iso["life"]),
+            "L10h_iso281_h": num(iso["life_hours"]),
+            "Lnm_iso281_rev": num(iso["modified_life"]),
+            "Lnm_iso281_h": num(iso["modified_life_hours"]),
+            "iso281_note": iso["note"],
+            "life_difference": LIFE_DIFFERENCE if np.isfinite(iso["life"]) else None,
             "L10r_rev": num(self.life),
             "L10r_h": num(self.life_hours),
             "Lnmr_rev": num(self.modified_life),
@@ -162,6 +188,38 @@ class DutyCycleResult:
             "notes": list(self.notes),
             "references": list(self.references),
         }
+
+
+#: Why the two combined lives differ (one line on every face that shows both).
+LIFE_DIFFERENCE = (
+    "ISO 281 rates each bin from its equivalent load P = X F_r + Y F_a and the bearing's C (nominal load "
+    "zone, no clearance or tilt); ISO/TS 16281 from the bin's solved load distribution (clearance, tilt, "
+    "contact angles, roller profile), so the two Miner sums differ as the bins' two lives do"
+)
+
+
+def _headline(iso: dict) -> dict:
+    """Which combined life the faces show first: ISO 281's where every bin has one, else ISO/TS 16281's."""
+    if np.isfinite(iso["life"]):
+        return {"method": "ISO 281", "why": "ISO 281 rating life, as catalogues and calculators give it"}
+    return {
+        "method": "ISO/TS 16281",
+        "why": f"ISO/TS 16281 reference rating life from the load distribution ({iso['note']})",
+    }
+
+
+def _no_iso281(n: int, note: str) -> dict:
+    nan = np.full(n, np.nan)
+    return {
+        "bin_life": nan,
+        "bin_modified_life": nan,
+        "life": np.nan,
+        "modified_life": np.nan,
+        "life_hours": np.nan,
+        "modified_life_hours": np.nan,
+        "damage_share": nan,
+        "note": note,
+    }
 
 
 def _masked(a, i):
@@ -221,6 +279,9 @@ def summarise(cycle, sub, turning=None) -> DutyCycleResult:
     n = len(names)
     life = np.full(n, np.nan)
     modified = np.full(n, np.nan)
+    iso_life = np.full(n, np.nan)
+    iso_modified = np.full(n, np.nan)
+    iso_note = None
     rest = at_rest(cycle)
     rated = turning if turning is not None else sub
     idx = np.flatnonzero(~rest) if turning is not None else np.arange(n)
@@ -229,8 +290,16 @@ def summarise(cycle, sub, turning=None) -> DutyCycleResult:
     else:
         life[idx] = bin_lives(rated.rating, "life")
         modified[idx] = bin_lives(rated.rating, "modified_life")
+        iso_life[idx] = bin_lives(rated.rating, "life", iso281=True)
+        iso_modified[idx] = bin_lives(rated.rating, "modified_life", iso281=True)
+        iso = getattr(rated.rating, "iso281", None)
+        iso_note = "ISO 281 was not computed" if iso is None else iso.note
+    lives = {"L10r": life, "Lnmr": modified, "L10": iso_life, "Lnm": iso_modified}
     combined = combine(
-        {"L10r": life[None, :], "Lnmr": modified[None, :]}, cycle.fractions, cycle.kind, speeds[None, :]
+        {k: v[None, :] for k, v in lives.items()},
+        cycle.fractions,
+        cycle.kind,
+        speeds[None, :],
     )
     u = combined["U"][0]
     for i in np.flatnonzero((u == 0) & (np.abs(speeds) == 0)):
@@ -240,6 +309,9 @@ def summarise(cycle, sub, turning=None) -> DutyCycleResult:
             "no combined L_nmr: a turning bin has no a_ISO (it needs a lubricant, e_C, a temperature and a "
             "speed in every bin)"
         )
+    if np.isnan(combined["L10_rev"][0]):
+        iso_note = iso_note or "a turning bin has no ISO 281 life"
+        notes.append(f"no combined ISO 281 life ({iso_note}): the ISO/TS 16281 life is shown first")
     if np.isnan(combined["L10r_h"][0]) and not np.isnan(combined["L10r_rev"][0]):
         notes.append("no life in hours: the bins give no speed (revolution fractions without speeds)")
     return DutyCycleResult(
@@ -257,4 +329,14 @@ def summarise(cycle, sub, turning=None) -> DutyCycleResult:
         modified_life_hours=float(combined["Lnmr_h"][0]),
         damage_share=combined["L10r_damage_share"][0],
         notes=notes,
+        iso281={
+            "bin_life": iso_life,
+            "bin_modified_life": iso_modified,
+            "life": float(combined["L10_rev"][0]),
+            "modified_life": float(combined["Lnm_rev"][0]),
+            "life_hours": float(combined["L10_h"][0]),
+            "modified_life_hours": float(combined["Lnm_h"][0]),
+            "damage_share": combined["L10_damage_share"][0],
+            "note": iso_note,
+        },
     )

@@ -10,11 +10,11 @@ function dutyRow(b = {}) {
   const cell = (key, cls) => el("td", {}, el("input", { class: cls || "", "data-key": key, value: key === "name" ? b.name || "" : key === "fraction" ? b.fraction || "" : b[key] || "" }));
   const remove = el("button", { type: "button", class: "remove-bin", title: "remove the bin" }, "×");
   return el("tr", { class: "bin" }, cell("name", "name"), ...DUTY_FIELDS.map((k) => cell(k)), cell("fraction"),
-    el("td", { class: "r-rev" }), el("td", { class: "r-l10" }), el("td", { class: "r-lnm" }), el("td", { class: "r-s0" }), el("td", { class: "r-share" }), el("td", {}, remove));
+    el("td", { class: "r-rev" }), el("td", { class: "r-l10-iso" }), el("td", { class: "r-lnm-iso" }), el("td", { class: "r-share-iso" }), el("td", { class: "r-l10" }), el("td", { class: "r-lnm" }), el("td", { class: "r-s0" }), el("td", { class: "r-share" }), el("td", {}, remove));
 }
 
 function dutyTable(bins) {
-  const head = el("tr", {}, ...["bin", "F_x", "F_y", "F_z", "M_x", "M_y", "speed", "temperature", "share", "rev. share", "L10r [h]", "L_nmr [h]", "s0", "damage share", ""].map((h) => el("th", {}, h)));
+  const head = el("tr", {}, ...["bin", "F_x", "F_y", "F_z", "M_x", "M_y", "speed", "temperature", "share", "rev. share", "L10 ISO 281 [h]", "L_nm ISO 281 [h]", "damage share ISO 281", "L10r ISO/TS 16281 [h]", "L_nmr ISO/TS 16281 [h]", "s0", "damage share ISO/TS 16281", ""].map((h) => el("th", {}, h)));
   const t = $("duty-table");
   t.className = "data edit";
   t.replaceChildren(el("thead", {}, head), el("tbody", { id: "duty-bins" }, ...bins.map((b) => dutyRow(b))));
@@ -78,6 +78,9 @@ async function dutyRun() {
         td.className = `${cls}${bad ? " bad" : ""}`;
       };
       put("r-rev", b.revolution_fraction, fmt(b.revolution_fraction, 4));
+      put("r-l10-iso", b.L10_iso281_rev, fmt(hours(b.L10_iso281_rev), 4));
+      put("r-lnm-iso", b.Lnm_iso281_rev, fmt(hours(b.Lnm_iso281_rev), 4));
+      put("r-share-iso", b.damage_share_iso281, b.damage_share_iso281 === null ? "—" : `${fmt(b.damage_share_iso281 * 100, 3)} %`);
       put("r-l10", b.L10r_rev, fmt(hours(b.L10r_rev), 4));
       put("r-lnm", b.Lnmr_rev, fmt(hours(b.Lnmr_rev), 4));
       put("r-s0", b.static_safety, fmt(b.static_safety, 3), b.static_safety !== null && b.static_safety < 1);
@@ -87,12 +90,19 @@ async function dutyRun() {
       td.replaceChildren(el("span", { class: "bar", style: null }), share === null ? "—" : `${fmt(share * 100, 3)} %`);
       td.firstChild.style.width = `${share === null ? 0 : Math.round((60 * share) / top)}px`;
     });
-    $("duty-summary").replaceChildren(
-      metric("duty-l10", "L10r, Palmgren–Miner", d.L10r_h, 1, "h"),
-      metric("duty-l10-rev", "L10r", d.L10r_rev, 1e-6, "10⁶ rev"),
-      metric("duty-lnm", "L_nmr, Palmgren–Miner", d.Lnmr_h, 1, "h"));
+    // ISO 281 first (the catalogue method), ISO/TS 16281 beside it; headline.method says which leads
+    const iso = [
+      metric("duty-l10-iso", "L10 ISO 281, Palmgren–Miner", d.L10h_iso281_h, 1, "h"),
+      metric("duty-lnm-iso", "L_nm ISO 281, Palmgren–Miner", d.Lnm_iso281_h, 1, "h")];
+    const ts = [
+      metric("duty-l10", "L10r ISO/TS 16281, Palmgren–Miner", d.L10r_h, 1, "h"),
+      metric("duty-l10-rev", "L10r ISO/TS 16281", d.L10r_rev, 1e-6, "10⁶ rev"),
+      metric("duty-lnm", "L_nmr ISO/TS 16281, Palmgren–Miner", d.Lnmr_h, 1, "h")];
+    const isoFirst = !d.headline || d.headline.method === "ISO 281";
+    $("duty-summary").replaceChildren(...(isoFirst ? [...iso, ...ts] : [...ts, ...iso]));
     const warnings = d.bins.flatMap((b) => b.warnings.map((w) => el("li", { class: "bad" }, `${b.bin}: ${w}`)));
-    $("duty-notes").replaceChildren(el("li", {}, d.rule), ...d.notes.map((n) => el("li", {}, n)), ...warnings);
+    const why = d.life_difference ? [el("li", {}, `why they differ: ${d.life_difference}`)] : [];
+    $("duty-notes").replaceChildren(el("li", {}, d.rule), ...why, ...d.notes.map((n) => el("li", {}, n)), ...warnings);
     $("duty-status").textContent = `${d.bins.length} bins rated in one batch, ${fmt(out.elapsed_ms, 3)} ms; shares of the ${d.fraction_kind}`;
   } catch (err) {
     $("duty-status").textContent = "";

@@ -54,10 +54,11 @@ function studyDefaults(subject) {
     const clearance = STUDY.paths.find((p) => p.path.startsWith("geometry.clearance"));
     if (clearance) rows.push({ path: clearance.path, start: "0 um", stop: "40 um", n: 5 });
     if (has("load_cases.page.F_x")) rows.push({ path: "load_cases.page.F_x", start: "1 kN", stop: "10 kN", n: 10 });
-    outputs = ["L10r_rev", "max_load_N", "s0"]; // L10r in hours needs a speed, the page may have none
+    outputs = ["L10_iso281_rev", "L10r_rev", "max_load_N", "s0"]; // lives in hours need a speed, the page may have none
   } else {
     rows.push({ path: "load_scale", start: "0.5", stop: "1.5", n: 5 });
-    outputs = subject === "shaft" ? ["system_L10h_h", "max_pressure_Pa", "max_radial_deflection_m"] : ["system_L10h_h", "efficiency", "max_pressure_Pa"];
+    // ISO 281 first (the life the single bearing shows first), ISO/TS 16281 beside it
+    outputs = subject === "shaft" ? ["system_L10h_iso281_h", "system_L10h_h", "max_pressure_Pa", "max_radial_deflection_m"] : ["system_L10h_iso281_h", "system_L10h_h", "efficiency", "max_pressure_Pa"];
     if (subject === "drivetrain") rows[0].path = "torque_scale";
   }
   studyFactorRows(rows);

@@ -168,13 +168,21 @@ function shaftLayout(inputs, c) {
 
 function renderShaft(a, c) {
   const rating = c.rating.system;
-  const summary = [
+  // ISO 281 first (the bearings' catalogue lives, Weibull-combined), ISO/TS 16281 beside it
+  const iso = [
+    metric("shaft-system-l10-iso", "system L10h (ISO 281)", rating.L10h_iso281_h ?? null, 1, "h"),
+    metric("shaft-system-lnm-iso", "system L_nmh (ISO 281)", rating.Lnm_iso281_h ?? null, 1, "h")];
+  const ts = [
     metric("shaft-system-l10", "system L10h (ISO/TS 16281)", rating.L10h_h ?? null, 1, "h"),
-    metric("shaft-system-lnm", "system L_nmh", rating.Lnmr_h ?? null, 1, "h"),
+    metric("shaft-system-lnm", "system L_nmh (ISO/TS 16281)", rating.Lnmr_h ?? null, 1, "h")];
+  const isoFirst = !rating.headline || rating.headline.method === "ISO 281";
+  const summary = [
+    ...(isoFirst ? [...iso, ...ts] : [...ts, ...iso]),
     metric("shaft-deflection", "max radial deflection", c.shaft.max_radial_deflection_m, 1e6, "µm"),
     metric("shaft-moment", "max bending moment", c.shaft.max_bending_moment_Nm, 1, "N·m"),
     metric("shaft-power", "power loss (bearings)", c.power_loss_W ?? null, 1, "W"),
   ];
+  if (rating.life_difference) summary.push(el("p", { class: "muted", id: "shaft-life-difference" }, `why they differ: ${rating.life_difference}`));
   $("shaft-summary").replaceChildren(...summary);
   $("shaft-layout").replaceChildren(shaftLayout(a.inputs, { index: parseInt($("shaft-case").value || "0", 10) }));
   const rows = c.bearings.map((b, j) => {
@@ -182,10 +190,10 @@ function renderShaft(a, c) {
     return [b.name, b.bearing, num(b.position_m, 1e3, 4),
       num(r.F_x_N, 1, 5, { id: `shaft-reaction-${j}-Fx` }), num(r.F_y_N, 1, 5, { id: `shaft-reaction-${j}-Fy` }), num(r.F_z_N, 1, 4, { id: `shaft-reaction-${j}-Fz` }),
       num(r.M_x_Nm, 1, 3), num(r.M_y_Nm, 1, 3), num(s.misalignment_rad, 1e3, 3), num(s.max_pressure_Pa, 1e-6, 4), num(s.static_safety, 1, 3, { cls: s.static_safety !== null && s.static_safety < 1 ? "bad" : null }),
-      num(s.L10h_h, 1, 4), num(iso.L10h_iso281_h ?? null, 1, 4), num(s.Lnmr_h, 1, 4), num(s.kappa_min, 1, 3), num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3),
+      num(s.L10h_iso281_h ?? iso.L10h_iso281_h ?? null, 1, 4), num(s.Lnm_iso281_h ?? iso.Lnm_iso281_h ?? null, 1, 4), num(s.L10h_h, 1, 4), num(s.Lnmr_h, 1, 4), num(s.kappa_min, 1, 3), num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3),
       num(s.temperature_C, 1, 4, { id: `shaft-temperature-${j}`, title: s.temperature_found ? "found by the heat balance" : "input" }), s.warnings];
   });
-  table("shaft-bearings", ["bearing", "", "z [mm]", "F_x [N]", "F_y [N]", "F_z [N]", "M_x [N·m]", "M_y [N·m]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "κ", "M_f [N·mm]", "P [W]", "T [°C]", "warn."], rows);
+  table("shaft-bearings", ["bearing", "", "z [mm]", "F_x [N]", "F_y [N]", "F_z [N]", "M_x [N·m]", "M_y [N·m]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h ISO 281 [h]", "L_nmh ISO 281 [h]", "L10rh TS [h]", "L_nmrh TS [h]", "κ", "M_f [N·mm]", "P [W]", "T [°C]", "warn."], rows);
   renderSystemHeat("shaft", c);
   const d = c.shaft.deflection, bm = c.shaft.bending_moment;
   $("shaft-lines").replaceChildren(...lineCharts(d.z_m, { x: d.u_x_m, y: d.u_y_m }, bm.z_m, { x: bm.M_x_Nm, y: bm.M_y_Nm }, ""));
@@ -208,17 +216,18 @@ function renderSystemHeat(kind, c) {
 function renderDrivetrain(out, a, c) {
   const p = c.power;
   $("drivetrain-summary").replaceChildren(
-    metric("dt-system-l10", "system L10h (ISO/TS 16281)", c.system.L10h_h ?? null, 1, "h"),
     metric("dt-system-l10-iso", "system L10h (ISO 281)", c.system.L10h_iso281_h ?? null, 1, "h"),
+    metric("dt-system-l10", "system L10h (ISO/TS 16281)", c.system.L10h_h ?? null, 1, "h"),
     metric("dt-efficiency", "efficiency", p ? p.efficiency : null, 100, "%", 5),
     metric("dt-loss", "power loss", p ? p.loss_W : null, 1, "W"),
-    metric("dt-held", "held torque", c.held_torque_Nm, 1, "N·m"));
+    metric("dt-held", "held torque", c.held_torque_Nm, 1, "N·m"),
+    ...(c.system.life_difference ? [el("p", { class: "muted", id: "dt-life-difference" }, `why they differ: ${c.system.life_difference}`)] : []));
   $("drivetrain-layout").replaceChildren(el("img", { src: out.layout, alt: "drivetrain layout", id: "drivetrain-layout-img" }));
-  table("drivetrain-bearings", ["bearing", "on", "F_r [N]", "F_a [N]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h TS [h]", "L10h ISO 281 [h]", "L_nmrh [h]", "M_f [N·mm]", "P [W]", "T [°C]", "warn."],
+  table("drivetrain-bearings", ["bearing", "on", "F_r [N]", "F_a [N]", "tilt [mrad]", "p_max [MPa]", "s0", "L10h ISO 281 [h]", "L10rh TS [h]", "L_nmrh TS [h]", "M_f [N·mm]", "P [W]", "T [°C]", "warn."],
     c.bearings.map((b, j) => {
       const s = b.summary;
       return [s.name, `${s.inner}/${s.outer}`, num(s.radial_load_N, 1, 5, { id: `dt-bearing-${j}-Fr` }), num(s.axial_load_N, 1, 4), num(s.misalignment_rad, 1e3, 3),
-        num(s.max_pressure_Pa, 1e-6, 4), num(s.static_safety, 1, 3), num(s.L10h_h, 1, 4), num(s.L10h_iso281_h, 1, 4), num(s.Lnmr_h, 1, 4),
+        num(s.max_pressure_Pa, 1e-6, 4), num(s.static_safety, 1, 3), num(s.L10h_iso281_h, 1, 4), num(s.L10h_h, 1, 4), num(s.Lnmr_h, 1, 4),
         num(s.friction_torque_Nm, 1e3, 4), num(s.power_loss_W, 1, 3), num(s.temperature_C, 1, 4, { title: s.temperature_found ? "found by the heat balance" : "input" }), s.warnings];
     }));
   renderSystemHeat("drivetrain", c);

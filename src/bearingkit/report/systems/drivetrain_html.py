@@ -12,6 +12,7 @@ from bearingkit.report.html_format import _badge, _e, _figure_html, _table, _war
 from bearingkit.report.systems.drivetrain_plots import layout_figure, shaft_lines_figure
 from bearingkit.report.systems.shaft_html import heat_balance_html
 from bearingkit.systems.drivetrain.analysis import DRIVETRAIN_RENDERERS
+from bearingkit.systems.shaft.life import SYSTEM_LIFE_DIFFERENCE
 
 RPM = 30.0 / 3.141592653589793
 #: Most load cases a drivetrain report draws (figures and bearing sections grow with them).
@@ -66,8 +67,8 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 fmt(s["axial_load_N"], 5),
                 fmt(s["max_pressure_Pa"], 4, 1e-6),
                 fmt(s["static_safety"], 3),
-                fmt(s["L10h_h"], 4),
                 fmt(s["L10h_iso281_h"], 4),
+                fmt(s["L10h_h"], 4),
                 fmt(s["power_loss_W"], 3),
                 fmt(s["temperature_C"], 4) + (" found" if s["temperature_found"] else ""),
             ]
@@ -81,8 +82,8 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
                 "F_a [N]",
                 "p_max [MPa]",
                 "s0",
-                "L10h ISO/TS 16281 [h]",
                 "L10h ISO 281 [h]",
+                "L10h ISO/TS 16281 [h]",
                 "P_loss [W]",
                 "T [°C]",
             ],
@@ -93,8 +94,9 @@ def _case_section(da, c: dict, i: int, number: int) -> str:
     parts.append(heat_balance_html(c))
     sysd = c["system"]
     parts.append(
-        f"<p>System L10h: {fmt(sysd['L10h_h'], 4)} h (ISO/TS 16281 rows), {fmt(sysd['L10h_iso281_h'], 4)} h "
-        "(ISO 281), combined in hours as independent Weibull members.</p>"
+        f"<p>System L10h: {fmt(sysd['L10h_iso281_h'], 4)} h (ISO 281), {fmt(sysd['L10h_h'], 4)} h "
+        "(ISO/TS 16281 rows), combined in hours as independent Weibull members. Why they differ: "
+        f"{_e(SYSTEM_LIFE_DIFFERENCE)}</p>"
     )
     p = c["power"]
     if p is not None:
@@ -163,8 +165,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
         [
             f'<a href="#case-{i}">{_e(c["case"])}</a>',
             _badge(c["converged"]),
-            fmt(c["system"]["L10h_h"], 4),
             fmt(c["system"]["L10h_iso281_h"], 4),
+            fmt(c["system"]["L10h_h"], 4),
             fmt(None if c["power"] is None else c["power"]["efficiency"], 5, 100.0),
             str(len(c["warnings"])),
         ]
@@ -179,8 +181,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
             [
                 "case",
                 "status",
-                "system L10h ISO/TS 16281 [h]",
                 "system L10h ISO 281 [h]",
+                "system L10h ISO/TS 16281 [h]",
                 "efficiency [%]",
                 "warnings",
             ],
@@ -193,8 +195,8 @@ def build_drivetrain_report(da, *, title=None) -> str:
     if duty is not None:
         body.append(
             f"<p>Duty cycle (Palmgren–Miner over the time fractions): system L10h "
-            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281), "
-            f"{fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281).</p>"
+            f"{fmt(duty['system']['L10h_iso281_h'], 4)} h (ISO 281), "
+            f"{fmt(duty['system']['L10h_h'], 4)} h (ISO/TS 16281).</p>"
         )
     body.append("<h3>Run notes</h3><ul>" + "".join(f"<li>{_e(x)}</li>" for x in data["notes"]) + "</ul>")
     body.append('<section id="layout" data-section="layout"><h2>1. Layout</h2>')

@@ -51,8 +51,10 @@ RESULT_COLUMNS = (
     ("axial_load_N", "F_a [N]", 1.0, 5),
     ("max_pressure_Pa", "p_max [MPa]", 1e-6, 5),
     ("static_safety", "s0 [-]", 1.0, 4),
-    ("L10h_h", "L10h [h]", 1.0, 4),
-    ("Lnmr_h", "L_nm [h]", 1.0, 4),
+    ("L10h_iso281_h", "L10h ISO 281 [h]", 1.0, 4),
+    ("Lnm_iso281_h", "L_nmh ISO 281 [h]", 1.0, 4),
+    ("L10h_h", "L10rh ISO/TS 16281 [h]", 1.0, 4),
+    ("Lnmr_h", "L_nmrh ISO/TS 16281 [h]", 1.0, 4),
     ("kappa_min", "κ min [-]", 1.0, 3),
     ("friction_torque_Nm", "M_fr [N·m]", 1.0, 4),
     ("power_loss_W", "P_loss [W]", 1.0, 4),
@@ -265,27 +267,38 @@ def _case_section(data: dict, analysis, case: int, number: int) -> str:
     parts.append(heat_balance_html(c))
     sysd = c["rating"]["system"]
     parts.append(f"<h4>{number}.3. System life</h4>")
+    iso = [
+        "ISO 281",
+        fmt(sysd.get("L10_iso281_rev"), 4),
+        fmt(sysd.get("L10h_iso281_h"), 4),
+        fmt(sysd.get("Lnm_iso281_rev"), 4),
+        fmt(sysd.get("Lnm_iso281_h"), 4),
+    ]
+    ts = [
+        "ISO/TS 16281",
+        fmt(sysd["L10r_rev"], 4),
+        fmt(sysd["L10h_h"], 4),
+        fmt(sysd["Lnmr_rev"], 4),
+        fmt(sysd["Lnmr_h"], 4),
+    ]
+    first = (sysd.get("headline") or {}).get("method", "ISO 281")
     parts.append(
         _table(
-            ["L10r [rev]", "L10h [h]", "L_nm [rev]", "L_nm [h]", "power loss [W]"],
-            [
-                [
-                    fmt(sysd["L10r_rev"], 4),
-                    fmt(sysd["L10h_h"], 4),
-                    fmt(sysd["Lnmr_rev"], 4),
-                    fmt(sysd["Lnmr_h"], 4),
-                    fmt(c["power_loss_W"], 4),
-                ]
-            ],
-            left=0,
+            ["method", "L10 [rev]", "L10h [h]", "L_nm [rev]", "L_nm [h]"],
+            [iso, ts] if first == "ISO 281" else [ts, iso],
+            left=1,
             cls="system",
         )
     )
+    parts.append(f"<p>Power loss of the bearings: {fmt(c['power_loss_W'], 4)} W.</p>")
     parts.append(
-        "<p>The bearings as independently failing Weibull members: L_sys = (Σ L_i^(−e))^(−1/e) over the "
-        "rows of every bearing (e = 10/9 balls, 9/8 rollers; mixed slopes solved exactly), from each "
-        "bearing's ISO/TS 16281 L10r; L_nm combines the rows' modified lives the same way.</p>"
+        "<p>The bearings as independently failing Weibull members: L_sys = (Σ L_i^(−e))^(−1/e) (e = 10/9 "
+        "balls, 9/8 rollers; mixed slopes solved exactly). ISO 281 (listed first): one member per bearing, "
+        "its ISO 281 L10 (L_nm: its a1 a_ISO L10); ISO/TS 16281: the rows of every bearing, their L10r "
+        "(L_nm: the rows' modified lives).</p>"
     )
+    if sysd.get("life_difference"):
+        parts.append(f'<p class="note">Why they differ: {_e(sysd["life_difference"])}</p>')
     parts.append(f"<h4>{number}.4. Warnings</h4>")
     parts.append(_warning_list(c["warnings"]))
     parts.append("</section>")
@@ -397,13 +410,16 @@ def _summary_html(data: dict) -> str:
                 _badge(c["converged"]),
                 fmt(s["max_radial_deflection_m"], 4, 1e6),
                 fmt(s["max_bending_moment_Nm"], 4),
+                fmt(sysd.get("L10h_iso281_h"), 4),
+                fmt(sysd.get("Lnm_iso281_h"), 4),
                 fmt(sysd["L10h_h"], 4),
                 fmt(sysd["Lnmr_h"], 4),
                 fmt(c["power_loss_W"], 4),
                 str(len(c["warnings"])),
             ]
         )
-    heads = ["case", "status", "max deflection [µm]", "max |M| [N·m]", "system L10h [h]", "system L_nm [h]"]
+    heads = ["case", "status", "max deflection [µm]", "max |M| [N·m]", "system L10h ISO 281 [h]"]
+    heads += ["system L_nmh ISO 281 [h]", "system L10rh ISO/TS 16281 [h]", "system L_nmrh ISO/TS 16281 [h]"]
     return _table([*heads, "power loss [W]", "warnings"], rows, left=2, cls="summary")
 
 

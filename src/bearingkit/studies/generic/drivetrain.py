@@ -29,8 +29,8 @@ from bearingkit.errors import InputError
 from bearingkit.studies.evaluators import Evaluator, Factor
 
 OUTPUTS = (
-    "system_L10h_h",
     "system_L10h_iso281_h",
+    "system_L10h_h",
     "min_bearing_L10h_h",
     "max_pressure_Pa",
     "efficiency",

@@ -298,18 +298,23 @@ class GenericModel:
         bins = self._bin_cases(bearing, sub, g)  # bin-major: bin j of case k at j·g + k
         speeds = np.array([c.speed or 0.0 for c in bins]).reshape(b, g).T
         turning = (speeds != 0.0).T.ravel() if cycle.kind == "time" else np.ones(g * b, bool)
-        life = np.full(g * b, np.inf)  # a bin at rest does no damage
-        modified = np.full(g * b, np.inf)
+        # a bin at rest does no damage; ISO 281 (listed first) beside the ISO/TS 16281 lives
+        lives = {k: np.full(g * b, np.inf) for k in ("L10", "Lnm", "L10r", "Lnmr")}
         if turning.any():
             run = analyze(bearing.with_cases([c for c, t in zip(bins, turning, strict=True) if t]), **options)
-            if run.rating is None:
-                life[turning] = modified[turning] = np.nan
-            else:
-                life[turning] = bin_lives(run.rating, "life")
-                modified[turning] = bin_lives(run.rating, "modified_life")
-        life, modified = life.reshape(b, g).T, modified.reshape(b, g).T
-        out = combine({"L10r": life, "Lnmr": modified}, cycle.fractions, cycle.kind, speeds)
-        out["bin_L10r"] = np.where(speeds == 0.0, np.nan, life) if cycle.kind == "time" else life
+            for key, attr, iso in (
+                ("L10", "life", True),
+                ("Lnm", "modified_life", True),
+                ("L10r", "life", False),
+                ("Lnmr", "modified_life", False),
+            ):
+                rated = np.nan if run.rating is None else bin_lives(run.rating, attr, iso281=iso)
+                lives[key][turning] = rated
+        lives = {k: v.reshape(b, g).T for k, v in lives.items()}
+        out = combine(lives, cycle.fractions, cycle.kind, speeds)
+        for key in ("L10", "L10r"):
+            life = lives[key]
+            out[f"bin_{key}"] = np.where(speeds == 0.0, np.nan, life) if cycle.kind == "time" else life
         return out
 
 

@@ -406,57 +406,6 @@ def _ratings(rows: Sequence[str]) -> list[Quantity]:
     return out
 
 
-def _duty(bins: Sequence[str]) -> list[Quantity]:
-    out = [
-        Quantity(
-            "duty_L10r_rev",
-            "rev",
-            "L10r over the duty cycle (Palmgren–Miner sum of the bins' lives)",
-            "duty",
-            lambda c: c.duty["L10r_rev"],
-        ),
-        Quantity(
-            "duty_L10r_h",
-            "h",
-            "L10r over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["L10r_h"],
-        ),
-        Quantity(
-            "duty_Lnmr_rev",
-            "rev",
-            "L_nmr over the duty cycle (Palmgren–Miner)",
-            "duty",
-            lambda c: c.duty["Lnmr_rev"],
-        ),
-        Quantity(
-            "duty_Lnmr_h",
-            "h",
-            "L_nmr over the duty cycle, in hours",
-            "duty",
-            lambda c: c.duty["Lnmr_h"],
-        ),
-    ]
-    for b, name in enumerate(bins):
-        out += [
-            Quantity(
-                f"duty_{name}_L10r_rev",
-                "rev",
-                f"L10r of duty-cycle bin {name!r}",
-                "duty",
-                lambda c, b=b: c.duty["bin_L10r"][:, b],
-            ),
-            Quantity(
-                f"duty_{name}_damage_share",
-                "-",
-                f"share of the duty-cycle damage bin {name!r} does",
-                "duty",
-                lambda c, b=b: c.duty["L10r_damage_share"][:, b],
-            ),
-        ]
-    return out
-
-
 def _warnings() -> list[Quantity]:
     return [
         Quantity(
@@ -538,7 +487,16 @@ def catalogue(bearing) -> dict[str, Quantity]:
         for r in bearing.model.rows
         if r.kind in ("cylindrical", "tapered") and int(getattr(r, "n_slices", 1)) > 1
     ]
-    items = _statics(rows) + _groups(bearing.model.rows) + _rows(rows) + _edges(sliced) + _ratings(rows)
+    from bearingkit.studies.generic.lives import duty_quantities, iso281_quantities
+
+    items = (
+        iso281_quantities(Quantity, _rated, _masked)
+        + _statics(rows)
+        + _groups(bearing.model.rows)
+        + _rows(rows)
+        + _edges(sliced)
+    )
+    items += _ratings(rows)
     items += _flags(bearing.model.rows)
     items += _subsurface(bearing.model.rows)
     items += _warnings()
@@ -549,7 +507,7 @@ def catalogue(bearing) -> dict[str, Quantity]:
     items += lubricated_quantities(Quantity, rows)  # NaN without a lubricant (a study may set lubricant.name)
     cycle = getattr(bearing, "duty_cycle", None)
     if cycle is not None:
-        items += _duty(cycle.names)
+        items += duty_quantities(Quantity, cycle.names)
     return {q.name: q for q in items}
 
 

@@ -12,7 +12,9 @@ Factors (SI; a study sets the ones it varies or fixes, the file gives the rest):
 
 Outputs per study case, over the file's load cases (each study case is one shaft solve: one batched
 Newton over its load cases, then every bearing's analysis, :class:`~bearingkit.systems.shaft.
-shaft_analysis.ShaftAnalysis`): the shortest system L10h (ISO/TS 16281; the bearings combined by
+shaft_analysis.ShaftAnalysis`): first the shortest ISO 281 system L10h and L_nmh (the bearings' ISO 281
+lives combined by the Weibull rule, :func:`~bearingkit.systems.shaft.life.iso281_system_life`), then the
+shortest system L10h (ISO/TS 16281; the bearings combined by
 :func:`~bearingkit.systems.shaft.life.combine_ratings`) and system L_nmh, the shortest bearing L10h by
 ISO/TS 16281 and by ISO 281, the smallest static safety, the largest contact pressure, radial bearing
 load, seat misalignment, shaft deflection and bending moment, the largest power loss, and whether
@@ -31,6 +33,8 @@ from bearingkit.errors import InputError
 from bearingkit.studies.evaluators import Evaluator, Factor
 
 OUTPUTS = (
+    "system_L10h_iso281_h",
+    "system_Lnmh_iso281_h",
     "system_L10h_h",
     "system_Lnmh_h",
     "min_bearing_L10h_h",
@@ -121,8 +125,11 @@ def _case_outputs(sa) -> dict:
     lives, modified, bearing_ts, bearing_iso, safety, pressure, radial, tilt, deflection, moment, loss = (
         [] for _ in range(11)
     )
+    iso_lives, iso_modified = [], []
     for c in cases:
         system = c["rating"]["system"]
+        iso_lives.append(system.get("L10h_iso281_h"))
+        iso_modified.append(system.get("Lnm_iso281_h"))
         lives.append(system.get("L10h_h"))
         modified.append(system.get("Lnmr_h"))
         deflection.append(c["shaft"]["max_radial_deflection_m"])
@@ -147,6 +154,8 @@ def _case_outputs(sa) -> dict:
         return max(v) if v else np.nan
 
     return {
+        "system_L10h_iso281_h": lowest(iso_lives),
+        "system_Lnmh_iso281_h": lowest(iso_modified),
         "system_L10h_h": lowest(lives),
         "system_Lnmh_h": lowest(modified),
         "min_bearing_L10h_h": lowest(bearing_ts),

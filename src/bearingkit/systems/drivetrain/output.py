@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.systems.drivetrain.model import HOUSING
+from bearingkit.systems.shaft.life import SYSTEM_LIFE_DIFFERENCE
 
 
 def _f(v):
@@ -27,8 +28,8 @@ def bearing_summary(da, name: str, case: int) -> dict:
         "misalignment_rad": float(res.misalignment(name)[case]),
         "max_pressure_Pa": None,
         "static_safety": None,
-        "L10h_h": None,
         "L10h_iso281_h": None,
+        "L10h_h": None,
         "Lnmr_h": None,
         "friction_torque_Nm": None,
         "power_loss_W": None,
@@ -191,7 +192,11 @@ def analysis_dict(da) -> dict:
                 "meshes": [res.mesh_dict(m.name, c) for m in da.drivetrain.meshes],
                 "bearings": bearings,
                 "shafts": shafts,
-                "system": {"L10h_h": _f(sys["L10h_h"][c]), "L10h_iso281_h": _f(sys["L10h_iso281_h"][c])},
+                "system": {
+                    "L10h_iso281_h": _f(sys["L10h_iso281_h"][c]),
+                    "L10h_h": _f(sys["L10h_h"][c]),
+                    "life_difference": SYSTEM_LIFE_DIFFERENCE,
+                },
                 "power": power_dict(da, c),
                 "warnings": list(da.warnings[c]),
             }

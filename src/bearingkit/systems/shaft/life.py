@@ -14,6 +14,12 @@ equation Σ (L_sys/L_i)^e_i = 1 when ball and roller bearings are mixed. :func:`
 the combination for bearings already rated (the shaft's pipeline analyses,
 :mod:`bearingkit.systems.shaft.shaft_analysis`), also for the modified lives L_nm (at 90 % reliability, then
 times a1: the practice of system calculations, an assumption, as ISO 281 defines L_nm per bearing).
+
+The ISO 281 system life (shown first, as the single bearing's ISO 281 life is) combines the bearings' ISO 281
+L10 and L_nm (:class:`bearingkit.analysis.rating.iso281.Iso281Life`) by the same Weibull rule, one member
+per bearing with the slope of its rows (10/9 ball, 9/8 roller: the slopes of the ISO/TS 16281 system life
+above), :func:`iso281_system_life`. It is masked where a loaded bearing has no ISO 281 life (a bearing ISO
+281 does not rate: slewing rings, composites, threaded rows).
 """
 
 from __future__ import annotations
@@ -26,6 +32,50 @@ from bearingkit.analysis.rating.assembly import HOUR, system_life
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
 from bearingkit.physics.life import iso281
+
+#: How the system lives are combined (every face that shows them can say so).
+WEIBULL_RULE = (
+    "Weibull: sum (L_sys/L_i)^e_i = 1 over the bearings (ISO 281) or their rows (ISO/TS 16281), "
+    "e = 10/9 ball, 9/8 roller; for one slope 1/L_sys^e = sum 1/L_i^e (Lundberg-Palmgren; Harris & Kotzalas)"
+)
+#: Why the ISO 281 and the ISO/TS 16281 system lives differ (one line on every face).
+SYSTEM_LIFE_DIFFERENCE = (
+    "ISO 281 rates each bearing from its equivalent load P = X F_r + Y F_a (nominal load zone, no tilt or "
+    "clearance); ISO/TS 16281 from the load distribution the shaft imposes (clearance, seat tilt, load "
+    "zone, roller profile), so the two system lives differ as the bearings' lives do"
+)
+#: Why each system life is shown first.
+SYSTEM_HEADLINE = {
+    "ISO 281": "the bearings' ISO 281 lives (as catalogues and calculators give them), combined",
+    "ISO/TS 16281": "a bearing has no ISO 281 life, so the ISO/TS 16281 system life leads",
+}
+
+
+def iso281_system_life(ratings: dict, attr: str, mask: np.ndarray, a1: float = 1.0):
+    """System life (C,) [rev] and its mask from the bearings' ISO 281 ``attr`` lives (``life``: L10,
+    ``modified_life``: L_nm, divided by a1 before and multiplied after, as :func:`combine_ratings` does).
+
+    One Weibull member per bearing, slope e of its rows (10/9 ball, 9/8 roller;
+    :func:`bearingkit.analysis.rating.assembly.system_life`): Σ (L_sys/L_i)^e_i = 1, i.e.
+    L_sys = (Σ L_i^(−e))^(−1/e) for one slope (ISO 281:2007 eq. (7), (12) slopes; Lundberg & Palmgren
+    1947, 1952; Harris & Kotzalas 2007 vol. 2 ch. 8). An unloaded bearing (no loaded row) does no damage;
+    a loaded one without an ISO 281 life masks the case.
+    """
+    lives, slopes, mask = [], [], np.asarray(mask, bool).copy()
+    for r in ratings.values():
+        unloaded = np.all([np.asarray(row.loaded_count) == 0 for row in r.rows], axis=0)
+        iso = getattr(r, "iso281", None)
+        if iso is None:
+            value = np.ma.masked_all(mask.shape)
+        else:
+            value = np.ma.asarray(getattr(iso, attr)).astype(float) / a1
+        missing = np.ma.getmaskarray(value) & ~unloaded
+        mask |= missing
+        lives.append(np.where(unloaded | missing, np.inf, np.ma.getdata(value)))
+        slopes.append(r.rows[0].weibull_slope)
+    life = system_life(np.array(lives), np.array(slopes))
+    mask |= ~np.isfinite(life)
+    return np.where(mask, 0.0, life * a1), mask
 
 
 @dataclass
@@ -44,6 +94,8 @@ class SystemRating:
     modified_life : numpy.ma.MaskedArray (C,) [rev]
         System modified life L_nm at the ratings' reliability (:func:`combine_ratings`); masked where
         a loaded row has no L_nm.
+    iso281_life, iso281_modified_life : numpy.ma.MaskedArray (C,) [rev]
+        System L10 and L_nm from the bearings' ISO 281 lives (:func:`iso281_system_life`).
     """
 
     bearings: dict
@@ -51,6 +103,8 @@ class SystemRating:
     speed: np.ndarray | None
     warnings: list
     modified_life: np.ma.MaskedArray | None = None
+    iso281_life: np.ma.MaskedArray | None = None
+    iso281_modified_life: np.ma.MaskedArray | None = None
 
     def hours(self, life) -> np.ma.MaskedArray:
         """A life [rev] (C,) in hours at the cases' speed (masked without speed)."""
@@ -72,9 +126,23 @@ class SystemRating:
             a = np.ma.asarray(a)
             return None if np.ma.getmaskarray(a)[case] else float(np.ma.getdata(a)[case])
 
+        def opt(a, hours=False):
+            return None if a is None else val(self.hours(a) if hours else a)
+
+        iso = {
+            "L10_iso281_rev": opt(self.iso281_life),
+            "L10h_iso281_h": opt(self.iso281_life, True),
+            "Lnm_iso281_rev": opt(self.iso281_modified_life),
+            "Lnm_iso281_h": opt(self.iso281_modified_life, True),
+        }
+        first = "ISO 281" if iso["L10_iso281_rev"] is not None else "ISO/TS 16281"
         return {
             "bearings": {name: r.to_dict(case)["system"] for name, r in self.bearings.items()},
             "system": {
+                "headline": {"method": first, "why": SYSTEM_HEADLINE[first]},
+                **iso,
+                "weibull_rule": WEIBULL_RULE,
+                "life_difference": SYSTEM_LIFE_DIFFERENCE if first == "ISO 281" else None,
                 "L10r_rev": val(self.life),
                 "L10h_h": val(self.life_hours()),
                 "Lnmr_rev": None if self.modified_life is None else val(self.modified_life),
@@ -155,18 +223,23 @@ def combine_ratings(ratings: dict, converged, speed=None) -> SystemRating:
         for c in range(n):
             notes[c].extend(f"{name}: {w}" for w in r.warnings[c])
     if not ratings:
-        return SystemRating(ratings, np.ma.masked_all(n), speed, notes, np.ma.masked_all(n))
+        none = np.ma.masked_all(n)
+        return SystemRating(ratings, none, speed, notes, none, none, none)
     life, mask = _combined(ratings, "life", ~converged)
     for c in np.flatnonzero(mask):
         notes[c].append("system: no system life (a bearing has none, or the case did not converge)")
     a1 = float(next(iter(ratings.values())).a1)
     modified, mod_mask = _combined(ratings, "modified_life_90", ~converged)
+    iso, iso_mask = iso281_system_life(ratings, "life", ~converged)
+    iso_mod, iso_mod_mask = iso281_system_life(ratings, "modified_life", ~converged, a1)
     return SystemRating(
         ratings,
         np.ma.masked_array(life, mask),
         speed,
         notes,
         np.ma.masked_array(modified * a1, mod_mask),
+        np.ma.masked_array(iso, iso_mask),
+        np.ma.masked_array(iso_mod, iso_mod_mask),
     )
 
 

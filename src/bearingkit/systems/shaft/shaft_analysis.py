@@ -294,6 +294,8 @@ class ShaftAnalysis:
         if unrated:  # a system without one of its bearings' lives has no life (not a longer one)
             out.life = np.ma.masked_all(self.n_cases)
             out.modified_life = np.ma.masked_all(self.n_cases)
+            out.iso281_life = np.ma.masked_all(self.n_cases)
+            out.iso281_modified_life = np.ma.masked_all(self.n_cases)
             for notes in out.warnings:
                 notes.append(f"system: no system life: bearing(s) {unrated} could not be rated (see notes)")
         return out
@@ -356,6 +358,10 @@ class ShaftAnalysis:
             "axial_load_N": float(load[2]),
             "max_pressure_Pa": None,
             "static_safety": None,
+            "L10_iso281_rev": None,
+            "L10h_iso281_h": None,
+            "Lnm_iso281_rev": None,
+            "Lnm_iso281_h": None,
             "L10r_rev": None,
             "L10h_h": None,
             "Lnmr_rev": None,
@@ -373,7 +379,8 @@ class ShaftAnalysis:
         out["max_pressure_Pa"] = _max_or_none(float(np.max(r.max_pressure[case])) for r in a.statics.rows)
         if a.rating is not None:
             system = a.rating.to_dict(case)["system"]
-            out.update({k: system[k] for k in ("static_safety", "L10r_rev", "L10h_h", "Lnmr_rev", "Lnmr_h")})
+            keys = ("static_safety", "L10r_rev", "L10h_h", "Lnmr_rev", "Lnmr_h", *_ISO281_KEYS)
+            out.update({k: system.get(k) for k in keys})
         if a.lubrication is not None:
             films = a.lubrication.to_dict(case).get("rows", [])
             kappas = [r.get("kappa") for r in films]
@@ -464,18 +471,22 @@ class ShaftAnalysis:
                         case, seat.name, number(s["position_m"], 1e3), number(s["radial_load_N"], 1e-3),
                         number(s["axial_load_N"], 1e-3), number(s["misalignment_rad"], 1e3),
                         number(s["max_pressure_Pa"], 1e-6), number(s["static_safety"], digits=3),
+                        number(s["L10h_iso281_h"]), number(s["Lnm_iso281_h"]),
                         number(s["L10h_h"]), number(s["Lnmr_h"]), number(s["friction_torque_Nm"]),
                         number(s["temperature_C"]) + (" found" if s["temperature_found"] else ""),
                     ])  # fmt: skip
                 system = self.rating.to_dict(c)["system"]
-                rows.append(
-                    [case, "system", *["—"] * 6, number(system["L10h_h"]), number(system["Lnmr_h"]), "—", "—"]
-                )
+                lives = ("L10h_iso281_h", "Lnm_iso281_h", "L10h_h", "Lnmr_h")
+                rows.append([case, "system", *["—"] * 6, *(number(system[k]) for k in lives), "—", "—"])
                 warnings += [f"{case}: {w}" for w in self.warnings[c]]
             columns = ["case", "bearing", "z [mm]", "F_r [kN]", "F_a [kN]", "tilt [mrad]", "p_max [MPa]",
-                       "s0", "L10h [h]", "L_nmh [h]", "M_friction [N·m]", "T [°C]"]  # fmt: skip
+                       "s0", "L10h ISO 281 [h]", "L_nmh ISO 281 [h]", "L10rh ISO/TS 16281 [h]",
+                       "L_nmrh ISO/TS 16281 [h]", "M_friction [N·m]", "T [°C]"]  # fmt: skip
             title = f"{self.system.name} ({self.input.source})"
-            return html_table(title, columns, rows, warnings=warnings, notes=self.notes)
+            from bearingkit.systems.shaft.life import SYSTEM_LIFE_DIFFERENCE
+
+            notes = [*self.notes, f"why the two lives differ: {SYSTEM_LIFE_DIFFERENCE}"]
+            return html_table(title, columns, rows, warnings=warnings, notes=notes)
         except Exception as exc:  # a notebook cell must show something, and say what went wrong
             from html import escape
 
@@ -489,6 +500,8 @@ class ShaftAnalysis:
         return SHAFT_RENDERERS["html"](self, path, **options)
 
 
+#: The bearing's ISO 281 lives in the shaft summary (first among its lives).
+_ISO281_KEYS = ("L10_iso281_rev", "L10h_iso281_h", "Lnm_iso281_rev", "Lnm_iso281_h")
 _LOAD_KEYS = ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm")
 _DOF_KEYS = ("u_x_m", "u_y_m", "u_z_m", "theta_x_rad", "theta_y_rad")
 
