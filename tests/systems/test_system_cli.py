@@ -34,6 +34,16 @@ def test_system_json_tables_report_and_rexs(tmp_path):
     assert f"{eff:.5g}"[:5] in html
     model = json.loads(rexs.read_text(encoding="utf-8-sig"))["model"]
     assert len(model["load_spectrum"]["load_cases"]) == 2
+    # planet bearings below ISO 281 Table 3 (a ~0.1 N axial load) have their ISO 281 life on every face
+    planet = next(b for b in case["bearings"] if b["name"] == "stage.planet1.bearing_1")
+    life = planet["summary"]["L10h_iso281_h"]
+    assert life is not None and life > 0 and case["system"]["L10h_iso281_h"] < life
+    note = next(n for n in data["notes"] if n.startswith("stage.planet1.bearing_1: ISO 281: "))
+    assert "below ISO 281 Table 3's first row" in note
+    assert f"{life:.4g}" in out.output and f"{case['system']['L10h_iso281_h']:.4g} h (ISO 281)" in out.output
+    assert "below ISO 281 Table 3" in out.output.replace("\n", " ")
+    html_text = html.replace("&#39;", "'").replace("&#x27;", "'")
+    assert f"{life:.4g}" in html and "below ISO 281 Table 3's first row" in html_text
 
 
 def test_bad_input_is_one_line_exit_2(tmp_path):
