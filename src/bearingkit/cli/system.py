@@ -14,11 +14,13 @@ import typer
 from bearingkit.cli.common import (
     _CONTAMINATION_OPTION,
     _JSON_OPTION,
+    _ROSS_OPTION,
     _fail,
     _print_json,
     check_outputs,
     console,
     one_line_errors,
+    write_ross,
 )
 from bearingkit.errors import one_line
 
@@ -148,6 +150,7 @@ def register(app: typer.Typer) -> None:
         stiffness: Path = typer.Option(
             None, "--stiffness", help="Write every bearing's 5x5 stiffness per case (.csv or .json) here."
         ),
+        ross: Path = _ROSS_OPTION,
         contamination: str = _CONTAMINATION_OPTION,
         model: str = typer.Option("components", "--friction-model", help="components | skf | palmgren."),
     ):
@@ -157,7 +160,7 @@ def register(app: typer.Typer) -> None:
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
-        check_outputs(report=report, rexs=rexs, stiffness=stiffness)  # before any work
+        check_outputs(report=report, rexs=rexs, stiffness=stiffness, ross=ross)  # before any work
         inp = load_drivetrain_file(file)
         analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
         data = analysis.to_dict()
@@ -175,6 +178,10 @@ def register(app: typer.Typer) -> None:
             from bearingkit.io.rexs.export import write_rexs_results
 
             written.append(write_rexs_results(data, rexs))
+        if res.converged.all() and ross is not None:
+            paths, ross_notes = write_ross(analysis, ross)
+            written += paths
+            data["notes"] += ross_notes
         if as_json:
             _print_json(file, data)
         else:
