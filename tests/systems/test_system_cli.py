@@ -94,3 +94,23 @@ def test_output_paths_are_checked_before_any_work_and_nothing_is_half_written(tm
     # the guard is live: good outputs reach the solve (the stand-in's error, as an internal one)
     out = runner.invoke(app, ["system", model, "--report", "r.html"])
     assert out.exit_code == 70 and "solved before the outputs were checked" in out.stderr
+
+
+def test_case_keeps_the_named_load_cases_and_refuses_an_unknown_one(tmp_path):
+    """``--case`` solves only the named case(s) (a REXS model whose tapered rows run at one speed per
+    solve goes case by case); its results equal that case in the full run; an unknown name is one line."""
+    runner = CliRunner()
+    model = str(EXAMPLES / "gearbox_two_stage.toml")
+    full = json.loads(runner.invoke(app, ["system", model, "--json"]).output)
+    out = runner.invoke(app, ["system", model, "--json", "--case", "peak"])
+    assert out.exit_code == 0, out.output
+    one = json.loads(out.output)
+    assert [c["case"] for c in one["cases"]] == ["peak"] and one["duty_cycle"] is None
+    peak = next(c for c in full["cases"] if c["case"] == "peak")
+    for a, b in zip(one["cases"][0]["bearings"], peak["bearings"], strict=True):
+        assert abs(a["summary"]["radial_load_N"] - b["summary"]["radial_load_N"]) <= 1e-9 * max(
+            1.0, b["summary"]["radial_load_N"]
+        )
+    out = runner.invoke(app, ["system", model, "--case", "nope"])
+    assert out.exit_code == 2 and "no load case 'nope'" in out.output and "'peak'" in out.output
+    assert len(out.output.strip().splitlines()) == 1

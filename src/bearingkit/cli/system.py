@@ -12,6 +12,7 @@ from pathlib import Path
 import typer
 
 from bearingkit.cli.common import (
+    _CASE_OPTION,
     _CONTAMINATION_OPTION,
     _JSON_OPTION,
     _ROSS_OPTION,
@@ -151,6 +152,7 @@ def register(app: typer.Typer) -> None:
             None, "--stiffness", help="Write every bearing's 5x5 stiffness per case (.csv or .json) here."
         ),
         ross: Path = _ROSS_OPTION,
+        case: list[str] = _CASE_OPTION,
         contamination: str = _CONTAMINATION_OPTION,
         model: str = typer.Option("components", "--friction-model", help="components | skf | palmgren."),
     ):
@@ -161,7 +163,7 @@ def register(app: typer.Typer) -> None:
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
         check_outputs(report=report, rexs=rexs, stiffness=stiffness, ross=ross)  # before any work
-        inp = load_drivetrain_file(file)
+        inp = load_drivetrain_file(file, cases=case)
         analysis = DrivetrainAnalysis(inp, friction_model=model, contamination=contamination)
         data = analysis.to_dict()
         res = analysis.result
