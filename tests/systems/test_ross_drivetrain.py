@@ -125,3 +125,21 @@ def test_cases_by_speed_keeps_the_first_case_of_each_speed():
 
     assert cases_by_speed([10.0, 10.0, -20.0, 20.0, 0.0]) == [0, 2, 4]
     assert cases_by_speed([0.0, 0.0]) == [0]
+
+
+def test_every_shaft_of_the_two_stage_gearbox_becomes_a_rotor_ross_loads(tmp_path):
+    rs = _ross()
+    out = CliRunner().invoke(
+        app, ["system", str(EXAMPLES / "gearbox_two_stage.toml"), "--ross", str(tmp_path / "r"), "--json"]
+    )
+    assert out.exit_code == 0, out.output
+    import json
+
+    data = json.loads(out.output)
+    shafts = sorted(s["name"] for s in data["inputs"]["shafts"])
+    assert sorted(p.stem for p in (tmp_path / "r").glob("*.toml")) == shafts
+    bearings = {s: [b["name"] for b in data["inputs"]["bearings"] if b["inner"] == s] for s in shafts}
+    for s in shafts:
+        rotor = rs.Rotor.load(tmp_path / "r" / f"{s}.toml")
+        assert sorted(b.tag for b in rotor.bearing_elements) == sorted(bearings[s])
+    assert any("gear meshes' stiffness between the shafts is not in them" in n for n in data["notes"])
