@@ -55,10 +55,6 @@ def test_equal_sharing_without_errors_and_planet_bearing_lives(stage):
         if ".planet" in name:
             lives = stage.bearing_lives(name)
             assert np.all(np.isfinite(lives["L10h_h"])) and np.all(lives["L10h_h"] > 0)
-            # ISO 281 refuses these: the planet's two locating 6304 share a ~0.1 N axial load, and its
-            # screen refuses f0 Fa/C0r below Table 3's first row even at Fa/Fr << e (the note says so)
-            assert np.all(np.isnan(lives["L10h_iso281_h"]))
-            assert "no ISO 281 basic rating life" in stage.bearings[name].rating.iso281.note
     life = stage.system_lives["L10h_h"]
     planet = min(stage.bearing_lives(n)["L10h_h"][0] for n in stage.bearings if ".planet" in n)
     assert np.isfinite(life).all() and life[0] < planet
@@ -118,3 +114,45 @@ def test_a_pin_error_gives_the_closed_form_sharing():
             assert expected[0] < expected[1]  # the pin ahead unloads its planet
     # the remaining difference is the supports' compliance (1e12 and 1e13 N/m): it falls ∝ 1/k
     assert deviations[2] < 1e-4 and deviations[0] / deviations[2] == pytest.approx(10.0, rel=0.05)
+
+
+def test_planet_bearings_iso281_life_by_hand(stage):
+    """The planets' two locating 6304 share a ~0.1 N axial load: f0 F_a/C0r lies below ISO 281 Table 3's
+    first row (0.172), but F_r >= (0.172/0.19) C0r/f0 puts F_a/F_r under e (docs/ratings.md): P = F_r.
+    By hand: L10 = (C/F_r)^3 10^6 rev at the speed relative to the carrier, n_p - n_c with
+    n_c = n_s / (1 + z_r/z_s), n_p - n_c = -(z_s/z_p)(n_s - n_c); the stage's ISO 281 system life
+    combines the six equal planet bearings (the others carry nothing) with the ball slope e = 10/9."""
+    import csv
+
+    from bearingkit.physics.life import iso76
+
+    cat = EXAMPLES.parent / "src" / "bearingkit" / "catalogue" / "data" / "deep_groove_ball.csv"
+    with cat.open() as f:
+        C, c0 = next(
+            (float(r["C_N"]), float(r["C0_N"])) for r in csv.DictReader(f) if r["designation"] == "6304"
+        )
+    n_s = 3000.0
+    n_c = n_s / (1 + 69 / 21)
+    n_rel = abs(-(21 / 24) * (n_s - n_c))  # rpm
+    res = stage.result
+    by_hand = []
+    for name in (n for n in stage.bearings if ".planet" in n):
+        load = res.bearing_load(name)
+        fr, fa = np.hypot(load[:, 0], load[:, 1]), np.abs(load[:, 2])
+        a = stage.bearings[name]
+        row = a.statics.model.rows[0]
+        f0 = iso76.f0_radial_ball(float(np.max(row.element_diameter)) / float(np.max(row.pitch_diameter)))
+        assert np.all((fa > 0) & (f0 * fa / c0 < 0.172))  # a small axial load: below Table 3
+        assert np.all(fr >= 0.172 / 0.19 * c0 / f0)  # the bound holds: P = F_r
+        expected = (C / fr) ** 3 * 1e6 / (n_rel * 60.0)
+        np.testing.assert_allclose(stage.bearing_lives(name)["L10h_iso281_h"], expected, rtol=1e-9)
+        assert "below ISO 281 Table 3's first row" in a.rating.iso281.note
+        by_hand.append(expected)
+    assert len(by_hand) == 6
+    e = 10 / 9
+    system = np.sum(np.array(by_hand) ** -e, axis=0) ** (-1 / e)
+    np.testing.assert_allclose(stage.system_lives["L10h_iso281_h"], system, rtol=1e-9)
+    # every face: the JSON per bearing and system, the CLI/report notes
+    d = stage.to_dict()
+    text = str(d)
+    assert "below ISO 281 Table 3's first row" in text

@@ -166,3 +166,29 @@ def test_the_json_syntax_reads_as_the_xml(tmp_path):
     assert [(m.name, m.pair.a.teeth, m.pair.b.teeth, m.pair.a.helix_angle) for m in a.meshes] == [
         (m.name, m.pair.a.teeth, m.pair.b.teeth, m.pair.a.helix_angle) for m in b.meshes
     ]
+
+
+def test_one_direction_bearings_face_the_way_axial_force_absorption_says(tmp_path):
+    """A tapered row takes axial force one way: ``axial_force_absorption`` ``positive`` (an axial force on
+    the shaft along +u) reads as orientation +z, ``negative`` as -z; the input shaft on two tapered rows
+    facing each other then carries the helical thrust both ways (every case converges), the rows swapped
+    reverse both orientations."""
+    text = (EXAMPLES / "gearbox_two_stage.rexs").read_text(encoding="utf-8")
+    middle = '</attribute>\n      <attribute id="radial_force_absorption" unit="">true</attribute>\n      '
+    a_old = '">both_directions' + middle + '<attribute id="catalogue_designation" unit="">6208<'
+    b_old = '">no_direction' + middle + '<attribute id="catalogue_designation" unit="">NU 208<'
+    assert text.count(a_old) == 1 and text.count(b_old) == 1
+    orientations = []
+    for first, second in (("negative", "positive"), ("positive", "negative")):
+        edited = text.replace(a_old, a_old.replace("both_directions", first).replace("6208", "30208"))
+        edited = edited.replace(b_old, b_old.replace("no_direction", second).replace("NU 208", "30208"))
+        path = tmp_path / f"{first}.rexs"
+        path.write_text(edited, encoding="utf-8")
+        data = read_rexs(path)
+        shaft = next(s for s in data["shafts"] if any(b["name"] == "input_A" for b in s["bearings"]))
+        by_name = {b["name"]: b for b in shaft["bearings"]}
+        orientations.append((by_name["input_A"]["orientation"], by_name["input_B"]["orientation"]))
+        assert by_name["input_A"]["axial"] == by_name["input_B"]["axial"] == "locating"
+    assert orientations == [("-z", "+z"), ("+z", "-z")]
+    res = DrivetrainAnalysis(load_drivetrain_file(tmp_path / "negative.rexs")).result
+    assert res.converged.all()

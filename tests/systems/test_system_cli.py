@@ -34,6 +34,16 @@ def test_system_json_tables_report_and_rexs(tmp_path):
     assert f"{eff:.5g}"[:5] in html
     model = json.loads(rexs.read_text(encoding="utf-8-sig"))["model"]
     assert len(model["load_spectrum"]["load_cases"]) == 2
+    # planet bearings below ISO 281 Table 3 (a ~0.1 N axial load) have their ISO 281 life on every face
+    planet = next(b for b in case["bearings"] if b["name"] == "stage.planet1.bearing_1")
+    life = planet["summary"]["L10h_iso281_h"]
+    assert life is not None and life > 0 and case["system"]["L10h_iso281_h"] < life
+    note = next(n for n in data["notes"] if n.startswith("stage.planet1.bearing_1: ISO 281: "))
+    assert "below ISO 281 Table 3's first row" in note
+    assert f"{life:.4g}" in out.output and f"{case['system']['L10h_iso281_h']:.4g} h (ISO 281)" in out.output
+    assert "below ISO 281 Table 3" in out.output.replace("\n", " ")
+    html_text = html.replace("&#39;", "'").replace("&#x27;", "'")
+    assert f"{life:.4g}" in html and "below ISO 281 Table 3's first row" in html_text
 
 
 def test_system_lives_lead_with_iso281_on_every_face(tmp_path):
@@ -105,3 +115,23 @@ def test_output_paths_are_checked_before_any_work_and_nothing_is_half_written(tm
     # the guard is live: good outputs reach the solve (the stand-in's error, as an internal one)
     out = runner.invoke(app, ["system", model, "--report", "r.html"])
     assert out.exit_code == 70 and "solved before the outputs were checked" in out.stderr
+
+
+def test_case_keeps_the_named_load_cases_and_refuses_an_unknown_one(tmp_path):
+    """``--case`` solves only the named case(s) (a REXS model whose tapered rows run at one speed per
+    solve goes case by case); its results equal that case in the full run; an unknown name is one line."""
+    runner = CliRunner()
+    model = str(EXAMPLES / "gearbox_two_stage.toml")
+    full = json.loads(runner.invoke(app, ["system", model, "--json"]).output)
+    out = runner.invoke(app, ["system", model, "--json", "--case", "peak"])
+    assert out.exit_code == 0, out.output
+    one = json.loads(out.output)
+    assert [c["case"] for c in one["cases"]] == ["peak"] and one["duty_cycle"] is None
+    peak = next(c for c in full["cases"] if c["case"] == "peak")
+    for a, b in zip(one["cases"][0]["bearings"], peak["bearings"], strict=True):
+        assert abs(a["summary"]["radial_load_N"] - b["summary"]["radial_load_N"]) <= 1e-9 * max(
+            1.0, b["summary"]["radial_load_N"]
+        )
+    out = runner.invoke(app, ["system", model, "--case", "nope"])
+    assert out.exit_code == 2 and "no load case 'nope'" in out.output and "'peak'" in out.output
+    assert len(out.output.strip().splitlines()) == 1

@@ -28,6 +28,7 @@ from bearingkit.cli.common import (
     _LUBRICANT_FILE_OPTION,
     _LUBRICANT_OPTION,
     _PRELOAD_OPTION,
+    _ROSS_OPTION,
     _ROTATING_OPTION,
     _SHAFT_HEAT_OPTION,
     _SPEED_OPTION,
@@ -42,6 +43,7 @@ from bearingkit.cli.common import (
     check_outputs,
     console,
     one_line_errors,
+    write_ross,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT
 from bearingkit.cli.system import register as _register_system
@@ -481,6 +483,7 @@ def shaft(
     stiffness: Path = typer.Option(
         None, "--stiffness", help="Write every bearing's 5x5 stiffness per case to this .csv or .json."
     ),
+    ross: Path = _ROSS_OPTION,
     contamination: str = _CONTAMINATION_OPTION,
     model: str = typer.Option(
         "auto",
@@ -498,7 +501,7 @@ def shaft(
     from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
     from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
-    check_outputs(report=report, stiffness=stiffness, plot=plot)  # refused before any work
+    check_outputs(report=report, stiffness=stiffness, plot=plot, ross=ross)  # refused before any work
     inp = load_shaft_file(file)
     inp.check_work(report=report is not None or plot is not None)  # before anything is solved
     analysis = ShaftAnalysis(inp, friction_model=model, contamination=contamination, thermal=heat or None)
@@ -513,6 +516,8 @@ def shaft(
 
         for c, name in enumerate(result.loads.names):
             write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
+    rotors = write_ross(result, ross) if converged and ross is not None else ([], [])
+    data["notes"] += rotors[1]
     if converged and report is not None:
         written = analysis.report(report)
     if as_json:
@@ -524,8 +529,8 @@ def shaft(
                 console.print(part)
         for note in data["notes"]:
             console.print(f"  note: {note}", markup=False, highlight=False)
-        if converged and report is not None:
-            console.print(f"wrote {written}", markup=False, highlight=False)
+        for path in ([written] if converged and report is not None else []) + rotors[0]:
+            console.print(f"wrote {path}", markup=False, highlight=False)
     if not converged:
         bad = int(next(i for i, ok in enumerate(result.converged) if not ok))
         what = f"load case {result.loads.names[bad]!r} did not converge: {result.reason[bad]}"

@@ -309,7 +309,8 @@ def check_outputs(**paths) -> None:
 
     ``paths`` maps an option's name (``report`` for ``--report``) to its path or None. Each must name a
     file (not ``.``, ``..`` or an existing folder) of at most :data:`MAX_OUTPUT_NAME_BYTES` bytes, and no
-    two options may name the same file; ``stiffness`` must end in ``.csv`` or ``.json``. A command that
+    two options may name the same file; ``stiffness`` must end in ``.csv`` or ``.json``; ``ross`` names a
+    folder (not an existing file) and needs ROSS installed. A command that
     writes several files checks them all first, so a refusal leaves nothing half-written.
     """
     from bearingkit.errors import quote
@@ -324,6 +325,13 @@ def check_outputs(**paths) -> None:
             raise InputError(
                 f"{flag}: the file name is longer than {MAX_OUTPUT_NAME_BYTES} bytes; give a shorter one"
             )
+        if option == "ross":  # a folder (made if missing): one rotor file per shaft; ROSS installed
+            if path.exists() and not path.is_dir():
+                raise InputError(f"{flag} ({quote(str(path))}) must name a folder, not a file")
+            from bearingkit.extras import check
+
+            check("ross", "--ross (ROSS rotors)")
+            continue
         if path.name in ("", ".", "..") or path.is_dir():
             raise InputError(f"{flag} ({quote(str(path))}) must name a file, not a folder")
         if option == "stiffness" and path.suffix not in (".csv", ".json"):
@@ -334,3 +342,20 @@ def check_outputs(**paths) -> None:
                 f"{flag} and {seen[key]} name the same file ({quote(str(path))}); give two names"
             )
         seen[key] = flag
+
+
+_ROSS_OPTION = typer.Option(
+    None, "--ross", help="Write one ROSS rotor per shaft (ross-rotordynamics .toml) into this folder."
+)
+
+
+def write_ross(solved, folder: Path) -> tuple[list, list]:
+    """ROSS rotors of a solved shaft (ShaftResult) or drivetrain (DrivetrainAnalysis) into ``folder``:
+    the paths written and the notes (bearingkit.systems.ross)."""
+    from bearingkit.systems import ross
+
+    if hasattr(solved, "drivetrain"):
+        rotors, notes = ross.drivetrain_rotors(solved)
+    else:
+        rotors, notes = ross.shaft_rotors(solved)
+    return ross.write_rotors(rotors, folder), notes

@@ -12,14 +12,17 @@ from pathlib import Path
 import typer
 
 from bearingkit.cli.common import (
+    _CASE_OPTION,
     _CONTAMINATION_OPTION,
     _JSON_OPTION,
+    _ROSS_OPTION,
     _SHAFT_HEAT_OPTION,
     _fail,
     _print_json,
     check_outputs,
     console,
     one_line_errors,
+    write_ross,
 )
 from bearingkit.errors import one_line
 
@@ -159,6 +162,8 @@ def register(app: typer.Typer) -> None:
         stiffness: Path = typer.Option(
             None, "--stiffness", help="Write every bearing's 5x5 stiffness per case (.csv or .json) here."
         ),
+        ross: Path = _ROSS_OPTION,
+        case: list[str] = _CASE_OPTION,
         contamination: str = _CONTAMINATION_OPTION,
         model: str = typer.Option("components", "--friction-model", help="components | skf | palmgren."),
         heat: bool = _SHAFT_HEAT_OPTION,
@@ -170,8 +175,8 @@ def register(app: typer.Typer) -> None:
         from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
         from bearingkit.systems.drivetrain.input import load_drivetrain_file
 
-        check_outputs(report=report, rexs=rexs, stiffness=stiffness)  # before any work
-        inp = load_drivetrain_file(file)
+        check_outputs(report=report, rexs=rexs, stiffness=stiffness, ross=ross)  # before any work
+        inp = load_drivetrain_file(file, cases=case)
         analysis = DrivetrainAnalysis(
             inp, friction_model=model, contamination=contamination, thermal=heat or None
         )
@@ -190,6 +195,10 @@ def register(app: typer.Typer) -> None:
             from bearingkit.io.rexs.export import write_rexs_results
 
             written.append(write_rexs_results(data, rexs))
+        if res.converged.all() and ross is not None:
+            paths, ross_notes = write_ross(analysis, ross)
+            written += paths
+            data["notes"] += ross_notes
         if as_json:
             _print_json(file, data)
         else:

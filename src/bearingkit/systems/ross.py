@@ -178,15 +178,43 @@ def ross_rotor(result, cases=None, *, damping: float = 0.0):
     system = result.system
     mesh = result.assembly.mesh
     cases = np.arange(result.n_cases) if cases is None else np.asarray(cases, dtype=int)
-    mat = ross_material(system.shaft.material)
-    shaft_elements = [
+    bearings = [
+        (int(node), shaft_stiffness_table(result, b.name).select(cases), b.name)
+        for b, node in zip(system.bearings, result.assembly.seat_nodes, strict=True)
+    ]
+    gears = [(g.name, g.position, g.mass, g.pitch_diameter) for g in system.gears]
+    # ROSS's PointMass links bearing nodes; a lumped mass on the shaft is a disc without inertia.
+    return _rotor(rs, system.shaft, mesh, bearings, gears, system.masses, damping)
+
+
+def cases_by_speed(speeds) -> list[int]:
+    """The first load case of each distinct rotor speed (in the order met): the cases a rotor's bearing
+    elements carry, speed-indexed when there are several (ROSS interpolates over speed only).
+
+    Parameters
+    ----------
+    speeds : array_like (C,) [rad/s]
+        The rotor's speed per case (its magnitude counts; 0 without speeds).
+    """
+    out, seen = [], []
+    for c, w in enumerate(np.abs(np.asarray(speeds, float))):
+        if not any(np.isclose(w, s, rtol=1e-12, atol=1e-12) for s in seen):
+            seen.append(w)
+            out.append(c)
+    return out
+
+
+def _rotor(rs, shaft, mesh, bearings, gears, masses, damping):
+    """A ROSS Rotor of one Shaft on its mesh: ShaftElements, BearingElements [(node, table, tag)], discs."""
+    mat = ross_material(shaft.material)
+    elements = [
         rs.ShaftElement(
             L=float(length),
             idl=float(di),
             odl=float(do),
             material=mat,
             n=i,
-            shear_effects=system.shaft.shear_deformation,
+            shear_effects=shaft.shear_deformation,
             rotary_inertia=True,
             gyroscopic=True,
         )
@@ -194,19 +222,121 @@ def ross_rotor(result, cases=None, *, damping: float = 0.0):
             zip(mesh.length, mesh.inner_diameter, mesh.outer_diameter, strict=True)
         )
     ]
-    bearings = [
-        ross_bearing(
-            shaft_stiffness_table(result, b.name).select(cases), int(node), damping=damping, tag=b.name
-        )
-        for b, node in zip(system.bearings, result.assembly.seat_nodes, strict=True)
-    ]
+    elems = [ross_bearing(table, int(node), damping=damping, tag=tag) for node, table, tag in bearings]
     disks = []
-    for g in system.gears:
-        if g.mass > 0:
-            ip = g.mass * g.pitch_diameter**2 / 8.0
-            disks.append(rs.DiskElement(n=mesh.node(g.position), m=g.mass, Id=ip / 2.0, Ip=ip, tag=g.name))
-    # ROSS's PointMass links bearing nodes; a lumped mass on the shaft is a disc without inertia.
-    disks += [
-        rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=m.name) for m in system.masses
-    ]
-    return rs.Rotor(shaft_elements, disks, bearings)
+    for name, position, mass, diameter in gears:
+        if mass > 0:
+            ip = mass * diameter**2 / 8.0
+            disks.append(rs.DiskElement(n=mesh.node(position), m=mass, Id=ip / 2.0, Ip=ip, tag=name))
+    disks += [rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=m.name) for m in masses]
+    return rs.Rotor(elements, disks, elems)
+
+
+def drivetrain_rotors(analysis, *, damping: float = 0.0) -> tuple[dict, list[str]]:
+    """One ROSS ``Rotor`` per shaft (and planet) of a solved drivetrain, and notes on what each holds.
+
+    Each rotor is its shaft's Timoshenko mesh (as :func:`ross_rotor`), a ``DiskElement`` per gear with a
+    mass (solid disc of the reference diameter, the same assumption) and per point mass, and a
+    ``BearingElement`` for every bearing with a ring on the shaft's axis, its other ring taken as ground
+    (the housing; for a shaft-in-shaft bearing the other shaft, for a planet bearing the carrier's pin,
+    held rigid). The stiffness is the bearing's tangent at the solved load cases — the first case of each
+    distinct speed of the shaft, tabulated over the shaft's speed |ω| [rad/s] (speed-indexed elements
+    when the cases run at several speeds, constants otherwise). Not in the rotors: the gear meshes'
+    stiffness coupling the shafts, and the planet bearings on the carrier's pins (off its axis).
+
+    Parameters
+    ----------
+    analysis : DrivetrainAnalysis
+        Solved, every case converged.
+    damping : float [N·s/m]
+        Bearing damping cxx = cyy (bearingkit computes none).
+
+    Returns
+    -------
+    (dict, list of str)
+        Shaft name → ``ross.Rotor``; the notes (which cases each rotor's stiffness comes from).
+    """
+    import dataclasses
+
+    from bearingkit.systems.drivetrain.output import stiffness_tables
+
+    rs = import_ross()
+    res, dt = analysis.result, analysis.drivetrain
+    if not np.all(res.converged):
+        raise InputError("ROSS rotors only from a drivetrain whose every load case converged")
+    tables = {t.bearing: t for t in stiffness_tables(analysis)}
+    omega = analysis.omega or {}
+    rotors, notes, left_out = {}, [], []
+    for s in dt.shafts:
+        blk = res.assembly.blocks[s.name]
+        speed = np.abs(np.asarray(omega.get(s.name, np.zeros(analysis.n_cases)), float))
+        speed = np.broadcast_to(speed, (analysis.n_cases,))
+        cases = cases_by_speed(speed)
+        bearings = []
+        for b in dt.bearings:
+            for att in (b.inner, b.outer):
+                if att.body != s.name:
+                    continue
+                if np.any(np.asarray(att.arm, float) != 0.0):
+                    left_out.append(f"{b.name} (on {s.name}'s arm)")
+                    continue
+                table = dataclasses.replace(tables[b.name], speeds=np.array(speed)).select(cases)
+                bearings.append((blk.mesh.node(att.position), table, b.name))
+        gears = [(g.name, g.position, g.mass, g.geometry.reference_diameter) for g in s.gears]
+        rotors[s.name] = _rotor(rs, s.shaft, blk.mesh, bearings, gears, s.masses, damping)
+        used = ", ".join(analysis.case_names[c] for c in cases)
+        notes.append(
+            f"ROSS rotor {s.name!r}: {len(bearings)} bearing elements, stiffness of case(s) {used} "
+            f"over the shaft's speed"
+        )
+    notes.append("ROSS rotors: the gear meshes' stiffness between the shafts is not in them")
+    if left_out:
+        notes.append("ROSS rotors: bearings off a shaft's axis left out: " + ", ".join(left_out))
+    return rotors, notes
+
+
+def shaft_rotors(result, *, damping: float = 0.0) -> tuple[dict, list[str]]:
+    """The ROSS rotor of a solved shaft (``bearingkit shaft --ross``): :func:`ross_rotor` at the first load
+    case of each distinct speed (speed-indexed bearing elements when there are several), and a note.
+
+    Parameters
+    ----------
+    result : ShaftResult
+        Every case converged.
+    damping : float [N·s/m]
+
+    Returns
+    -------
+    (dict, list of str)
+        {shaft name: ``ross.Rotor``} and the notes.
+    """
+    if not np.all(result.converged):
+        raise InputError("a ROSS rotor only from a shaft whose every load case converged")
+    speeds = result.loads.speed if result.loads.speed is not None else np.zeros(result.n_cases)
+    cases = cases_by_speed(np.broadcast_to(np.asarray(speeds, float), (result.n_cases,)))
+    name = result.system.name
+    used = ", ".join(result.loads.names[c] for c in cases)
+    note = f"ROSS rotor {name!r}: {len(result.system.bearings)} bearing elements, stiffness of case(s) {used}"
+    return {name: ross_rotor(result, cases, damping=damping)}, [note + " over the shaft's speed"]
+
+
+def write_rotors(rotors: dict, folder) -> list:
+    """Save ROSS rotors as ``folder/<name>.toml`` (``Rotor.save``; ``ross.Rotor.load`` reads them back).
+
+    The folder is made if missing; returns the paths written."""
+    from pathlib import Path
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    out = []
+    for name, rotor in rotors.items():
+        path = folder / f"{_file_stem(name)}.toml"
+        with _quiet():
+            rotor.save(path)
+        out.append(path)
+    return out
+
+
+def _file_stem(name: str) -> str:
+    """A shaft name as a file name: characters other than letters, digits, '-', '_' and '.' become '_'."""
+    return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name) or "shaft"

@@ -168,8 +168,9 @@ def test_a_batch_with_refused_cases_gives_what_each_case_gives_alone():
     from bearingkit.physics.life import iso281_load
 
     c0, f0 = 20_400.0, 13.9
-    fr = np.array([10e3, 10e3, 4e3, 0.0, 2e3, 8e3])
-    fa = np.array([100.0, 1e3, 0.0, 3e3, 12e3, 50.0])  # 0, 5: below Table 3; 4: above it
+    fr = np.array([500.0, 10e3, 4e3, 0.0, 2e3, 1e3])
+    # 0, 5: below Table 3 with F_r < (0.172/0.19) C0r/f0 = 1329 N (no P); 4: above it
+    fa = np.array([100.0, 1e3, 0.0, 3e3, 12e3, 50.0])
     notes = []
     calls = []
     law = iso281_load.equivalent_dynamic_load
@@ -192,7 +193,18 @@ def test_a_batch_with_refused_cases_gives_what_each_case_gives_alone():
 
 
 def test_6209_with_a_small_axial_load_keeps_the_other_cases_rated():
-    a = bk.analyze("6209", load=[{"F_x": "10 kN", "F_z": "100 N"}, {"F_x": "10 kN", "F_z": "5 kN"}])
-    s0, s1 = _system(a, 0), _system(a, 1)
-    assert s0["P_iso281_N"] is None and "case 0: no ISO 281 basic rating life" in s0["iso281_note"]
+    a = bk.analyze(
+        "6209",
+        load=[
+            {"F_x": "10 kN", "F_z": "100 N"},
+            {"F_x": "10 kN", "F_z": "5 kN"},
+            {"F_x": "300 N", "F_z": "100 N"},
+        ],
+    )
+    s0, s1, s2 = _system(a, 0), _system(a, 1), _system(a, 2)
+    # case 0: f0 F_a/C0r below Table 3, but F_r = 10 kN >= (0.172/0.19) C0r/f0: P = F_r (docs/ratings.md)
+    assert s0["P_iso281_N"] == pytest.approx(10e3, rel=1e-12)
+    assert "case(s) 0: f0 F_a/C0r below ISO 281 Table 3's first row" in s0["iso281_note"]
     assert s1["P_iso281_N"] > 10e3  # F_a/F_r = 0.5 > e: the axial load counts
+    # case 2: below Table 3 with a small F_r: F_a/F_r = 1/3 may exceed e there, ISO 281 gives no Y
+    assert s2["P_iso281_N"] is None and "case 2: no ISO 281 basic rating life" in s2["iso281_note"]

@@ -413,3 +413,43 @@ def test_refused_cases_leaves_a_refused_bearing_to_the_law():
         assert not refused.any()
         with pytest.raises(InputError):
             iso281_load.equivalent_dynamic_load(fr, fa, "deep_groove_ball", static_rating=c0, f0=13.9)
+
+
+def test_deep_groove_below_table_3_has_p_equal_fr_above_the_chord_bound():
+    """Below Table 3's first row (f0 Fa/C0r < 0.172) a single-row deep groove ball bearing has P = F_r
+    exactly when F_r >= (0.172/0.19) C0r/f0 (the chord bound of e, docs/ratings.md); just
+    under that F_r, and for a double-row bearing, ISO 281 gives no P (refused, the screen agrees)."""
+    c0, f0 = 20_400.0, 13.9
+    bound = 0.172 / 0.19 * c0 / f0  # by hand: 1328.6 N
+    fa = np.array([1.0, 100.0, 0.1])  # f0 Fa/C0r = 6.8e-4, 0.068, 6.8e-5: all below 0.172
+    fr = np.array([bound, 2 * bound, 1e4])
+    p = iso281_load.equivalent_dynamic_load(fr, fa, "deep_groove_ball", static_rating=c0, f0=f0)
+    np.testing.assert_array_equal(p, fr)
+    np.testing.assert_array_equal(iso281_load.below_table_radial(fr, fa, c0, f0), [True, True, True])
+    just_under = bound * (1 - 1e-6)
+    with pytest.raises(InputError, match=r"table range \[0.172, 6.89\]"):
+        iso281_load.equivalent_dynamic_load(just_under, 1.0, "deep_groove_ball", static_rating=c0, f0=f0)
+    assert iso281_load.refused_cases(
+        [just_under, bound], [1.0, 1.0], "deep_groove_ball", 0.0, c0, f0
+    ).tolist() == [
+        True,
+        False,
+    ]
+    with pytest.raises(InputError):  # double row: Y of F_a/F_r <= e unknown below the table
+        iso281_load.equivalent_dynamic_load(1e4, 1.0, "deep_groove_ball", n_rows=2, static_rating=c0, f0=f0)
+    # inside the table nothing changes: F_r above the bound, f0 Fa/C0r = 0.689 (e = 0.26) and Fa/Fr > e
+    fa_in = 0.689 * c0 / f0
+    p_in = iso281_load.equivalent_dynamic_load(2 * fa_in, fa_in, "deep_groove_ball", static_rating=c0, f0=f0)
+    assert p_in == pytest.approx(0.56 * 2 * fa_in + 1.71 * fa_in, rel=1e-12)
+
+
+def test_table_3_e_over_x_falls_so_its_chord_bounds_it_below_the_first_row():
+    """The bound rests on e/x falling (e grows slower than x) along the whole table, as assumed below it:
+    then the chord from the origin through the first row lies under e."""
+    from bearingkit.physics import tables
+
+    x = tables.column("iso281_xy_radial_ball.csv", "f0_fa_c0r")
+    e = tables.column("iso281_xy_radial_ball.csv", "e")
+    slopes = np.diff(e) / np.diff(x)
+    assert np.all(slopes > 0) and np.all(slopes < e[:-1] / x[:-1])
+    assert np.all(np.diff(e / x) < 0)

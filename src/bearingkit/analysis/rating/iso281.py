@@ -300,6 +300,17 @@ def bearing_life(
         gamma = float(np.max(row.element_diameter)) * np.cos(alpha) / float(np.max(row.pitch_diameter))
         f0 = iso76.f0_radial_ball(gamma)
     p, failed = _equivalent_load(fr, fa, p_law, alpha, xy_rows, c0, f0, notes)
+    if p_law == "deep_groove_ball" and c0 is not None and f0 is not None:
+        bound = iso281_load.below_table_radial(fr, fa, c0, f0, xy_rows) & ~failed
+        if bound.any():
+            cases = ", ".join(str(c) for c in np.flatnonzero(bound))
+            x0, e0 = iso281_load.radial_first_row()
+            notes.append(
+                f"case(s) {cases}: f0 F_a/C0r below ISO 281 Table 3's first row ({x0:g}): P = F_r, since "
+                f"F_r >= ({x0:g}/{e0:g}) C0r/f0 = {x0 / e0 * c0 / f0:.4g} N puts F_a/F_r under "
+                f"e >= {e0:g} x/{x0:g}, the chord bound of e (e/x falls along the table; X = 1, Y = 0; "
+                "docs/ratings.md)"
+            )
     if failed.all():
         return _none(n, "; ".join(notes))
     mask = ~np.asarray(result.converged, bool) | ~(p > 0) | failed

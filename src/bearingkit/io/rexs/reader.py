@@ -193,6 +193,12 @@ def _si(attrs, key, factor_to_mm=1.0):
     return np.asarray(value, float) * scale * factor_to_mm
 
 
+#: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` takes an axial
+#: force on its inner part (the shaft) along +u (bearingkit's +z), as a ``+z`` tapered row does; the
+#: reading of the attribute's sign is bearingkit's [from memory of the REXS attribute list, not confirmed].
+AXIAL_DIRECTION = {"positive": "+z", "negative": "-z"}
+
+
 def read_rexs(path) -> dict:
     """The drivetrain dictionary of a REXS model (module docstring); one InputError line if refused."""
     path = Path(path)
@@ -351,6 +357,8 @@ def read_rexs(path) -> dict:
         bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
         if c["type"] == "rolling_bearing_with_catalog_geometry":
             bearing["designation"] = str(_q(a, "catalogue_designation", bw))
+            if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
+                bearing["orientation"] = AXIAL_DIRECTION[absorption]
         elif c["type"] == "concept_bearing":
             k_r = _q(a, "radial_stiffness", bw, False) or "1e12 N/m"
             k_a = _q(a, "axial_stiffness", bw, False) or (

@@ -39,6 +39,52 @@ def _ratio(fr, fa):
         return np.where(fr > 0, fa / np.where(fr > 0, fr, 1.0), np.inf)
 
 
+def radial_first_row() -> tuple[float, float]:
+    """(x₀, e₀): f0 F_a/C0r and e of ISO 281:2007 Table 3's first row, radial contact groove ball bearings."""
+    return float(tables.column(_XY_RADIAL, "f0_fa_c0r")[0]), float(tables.column(_XY_RADIAL, "e")[0])
+
+
+def below_table_radial(load_radial, load_axial, static_rating, f0, n_rows=1):
+    """Cases of a deep groove ball bearing below ISO 281 Table 3's first row that still have P = F_r.
+
+    Table 3 starts at f0 F_a/C0r = x₀ = 0.172 (e₀ = 0.19); a small axial load beside a radial one (the
+    two locating bearings of a planet, a locating bearing of spur gearing) lies below it. Along the whole
+    table e grows slower than x (e/x falls from row to row: e ∝ x^0.23 from first to last row); with e/x
+    still falling below x₀ (the one assumption), e lies above its chord to the origin there,
+    e(x) >= e₀ x/x₀. So F_a/F_r <= e₀ x/x₀ implies F_a/F_r <= e, where
+    the standard gives X = 1, Y = 0 (single row): P = F_r. With x = f0 F_a/C0r the condition no longer
+    depends on F_a:
+
+    .. math:: F_r \\ge \\frac{x_0}{e_0} \\frac{C_{0r}}{f_0} = F_{r,\\min}
+
+    Below x₀ with a smaller F_r (Y unknown) or a double-row bearing (Y of F_a/F_r <= e unknown) ISO 281
+    gives no P. ISO 281:2007 5.2.2, Table 3 (the bound: bearingkit, docs/ratings.md).
+
+    Parameters
+    ----------
+    load_radial, load_axial : array_like
+        F_r, F_a [N].
+    static_rating : array_like
+        C0r [N].
+    f0 : array_like
+        ISO 76 factor f0 [MPa].
+    n_rows : int
+        1 (the bound) or 2 (never: False everywhere).
+
+    Returns
+    -------
+    numpy.ndarray of bool
+        True where 0 < f0 F_a/C0r < x₀ and P = F_r follows from the bound.
+    """
+    fr, fa = np.broadcast_arrays(np.asarray(load_radial, float), np.asarray(load_axial, float))
+    x = tables.column(_XY_RADIAL, "f0_fa_c0r")
+    x0, e0 = radial_first_row()
+    c0, f0 = np.asarray(static_rating, float), np.asarray(f0, float)
+    rel = f0 * fa / c0
+    below = (fa > 0) & (rel < x0) & tables.outside(rel, x)
+    return below & (n_rows == 1) & (fr >= x0 / e0 * c0 / f0)
+
+
 def _p_deep_groove(fr, fa, alpha, n_rows, static_rating, f0):
     if static_rating is None or f0 is None:
         raise InputError(
@@ -48,8 +94,9 @@ def _p_deep_groove(fr, fa, alpha, n_rows, static_rating, f0):
     checks.positive("f0", f0, "MPa")
     t = _XY_RADIAL
     rel = np.asarray(f0, float) * fa / np.asarray(static_rating, float)
-    has_axial = fa > 0
     x = tables.column(t, "f0_fa_c0r")
+    bound = below_table_radial(fr, fa, static_rating, f0, n_rows)  # P = F_r below Table 3
+    has_axial = (fa > 0) & ~bound
     rel_in = np.where(has_axial, rel, x[0])
 
     def col(name):
@@ -293,7 +340,8 @@ def refused_cases(
 
     The refusals that depend on a case's loads, not on the bearing (ISO 281:2007 5.2, 6.2, 7.2, 8.2):
 
-    - ``deep_groove_ball``: f0 Fa/C0r with Fa > 0 outside Table 3 (0.172 … 6.89);
+    - ``deep_groove_ball``: f0 Fa/C0r with Fa > 0 outside Table 3 (0.172 … 6.89), except below it
+      where :func:`below_table_radial` gives P = F_r;
     - ``angular_contact_ball`` below 20°: i f0 Fa/C0r with Fa > 0 outside Table 3's grid of the angle
       (5°: 0.173 … 6.92, 10°: 0.175 … 7.00, 15°: 0.178 … 7.14; between two angles the common part);
     - ``radial_roller`` with α = 0: Fa > 0;
@@ -329,7 +377,8 @@ def refused_cases(
         if not rated:
             return np.zeros(fr.shape, bool)  # the law refuses the bearing itself: nothing to screen
         rel = float(f0) * fa / float(static_rating)
-        return (fa > 0) & tables.outside(rel, tables.column(_XY_RADIAL, "f0_fa_c0r"))
+        outside = (fa > 0) & tables.outside(rel, tables.column(_XY_RADIAL, "f0_fa_c0r"))
+        return outside & ~below_table_radial(fr, fa, static_rating, f0, n_rows)
     if bearing_type == "angular_contact_ball":
         deg = np.degrees(alpha)
         if not rated or not ANGULAR_MIN_DEG <= deg < ANGULAR_CONSTANT_FROM_DEG:
@@ -352,7 +401,8 @@ def equivalent_dynamic_load(
 
     .. math:: P = X F_r + Y F_a
 
-    - ``deep_groove_ball``: e, Y from Table 3 as functions of f0 Fa/C0r (0.172 … 6.89; outside → error);
+    - ``deep_groove_ball``: e, Y from Table 3 as functions of f0 Fa/C0r (0.172 … 6.89; outside → error,
+      except below 0.172 with F_r >= (0.172/0.19) C0r/f0, single row: P = F_r, :func:`below_table_radial`);
       Fa/Fr <= e: X = 1, Y = 0 (single row) or Y from the double-row column; Fa/Fr > e: X = 0.56 single
       row, 0.78 double row.
     - ``angular_contact_ball``: Table 3, α = 5° … 45°. From 20° the rows do not depend on the load (linear

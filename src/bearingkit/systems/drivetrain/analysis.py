@@ -325,6 +325,9 @@ class DrivetrainAnalysis:
             )
         for name, a in self.bearings.items():
             out += [f"{name}: {n}" for n in a.notes]
+            iso_note = a.rating.iso281.note if a.rating is not None else None
+            if iso_note:  # why a bearing has no ISO 281 life, or how it got one (below Table 3)
+                out.append(f"{name}: ISO 281: {iso_note}")
         return list(dict.fromkeys(out))
 
     def to_dict(self) -> dict:

@@ -221,9 +221,10 @@ def is_drivetrain_file(path) -> bool:
     return isinstance(data.get("shafts"), list)
 
 
-def load_drivetrain_file(path) -> DrivetrainInput:
+def load_drivetrain_file(path, cases=None) -> DrivetrainInput:
     """Read a drivetrain file (TOML, or REXS .rexs/.rexsj/.rexs.json/.rexs.xml); one InputError line
-    naming the file and field if malformed."""
+    naming the file and field if malformed. ``cases``: names of the load cases to keep (all when None);
+    a subset drops the cases' ``time_fraction`` (it no longer adds up to 1: no duty cycle)."""
     path = Path(path)
     name = path.name.lower()
     if name.endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml")):
@@ -232,7 +233,22 @@ def load_drivetrain_file(path) -> DrivetrainInput:
         data = read_rexs(path)
     else:
         data = load_toml(path)
+    if cases:
+        data = _keep_cases(data, list(cases), str(path))
     return drivetrain_from_dict(data, str(path), base=path.parent)
+
+
+def _keep_cases(data, names: list, source: str):
+    """The file's data with only the named load cases (in the file's order), without time fractions."""
+    found = data.get("load_cases") if isinstance(data, dict) else None
+    if not isinstance(found, list):
+        return data  # validation says what is wrong
+    have = [c.get("name") for c in found if isinstance(c, dict)]
+    unknown = [n for n in names if n not in have]
+    if unknown:
+        raise InputError(f"{source}: no load case {unknown[0]!r}; the file has {have}")
+    kept = [{k: v for k, v in c.items() if k != "time_fraction"} for c in found if c.get("name") in names]
+    return {**data, "load_cases": kept}
 
 
 def drivetrain_from_dict(data: dict, source: str = "<dict>", base=None) -> DrivetrainInput:
