@@ -35,9 +35,14 @@ def _select(browser, element_id: str, value: str) -> None:
 
 
 def _wait(browser, page, condition, seconds=None):
+    """Poll until ``condition``; a table re-rendered under the poll (its cells replaced) is not an error."""
+    from selenium.common.exceptions import StaleElementReferenceException
     from selenium.webdriver.support.ui import WebDriverWait
 
-    return WebDriverWait(browser, seconds or page.WAIT, poll_frequency=0.1).until(condition)
+    ignored = (StaleElementReferenceException,)
+    return WebDriverWait(browser, seconds or page.WAIT, poll_frequency=0.1, ignored_exceptions=ignored).until(
+        condition
+    )
 
 
 def _tab(browser, name: str) -> None:

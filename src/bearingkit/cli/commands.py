@@ -42,6 +42,7 @@ from bearingkit.cli.common import (
     _print_json,
     check_outputs,
     console,
+    notes_on_stderr,
     one_line_errors,
     write_ross,
 )
@@ -580,26 +581,13 @@ def compile_core(
         raise typer.Exit(1)
 
 
-def _notes_on_stderr() -> None:
-    """The solver's one-line notes (which core ran, a compile starting) as ``note: …`` on stderr."""
-    import logging
-
-    log = logging.getLogger("bearingkit.solver")
-    if not any(getattr(h, "bearingkit_cli", False) for h in log.handlers):
-        handler = logging.StreamHandler(sys.stderr)
-        handler.setFormatter(logging.Formatter("note: %(message)s"))
-        handler.bearingkit_cli = True
-        log.addHandler(handler)
-        log.setLevel(logging.INFO)
-
-
 # ``bearingkit system``: drivetrains (its own module, docs/drivetrains.md)
 _register_system(app)
 
 
 def main() -> None:
     """Entry point: one-line errors for bad input, exit code 2; the solver's notes on stderr."""
-    _notes_on_stderr()
+    notes_on_stderr()
     try:
         app()
     except InputError as exc:

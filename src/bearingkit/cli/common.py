@@ -359,3 +359,16 @@ def write_ross(solved, folder: Path) -> tuple[list, list]:
     else:
         rotors, notes = ross.shaft_rotors(solved)
     return ross.write_rotors(rotors, folder), notes
+
+
+def notes_on_stderr() -> None:
+    """The solver's one-line notes (which core ran, a compile starting) as ``note: …`` on stderr."""
+    import logging
+
+    log = logging.getLogger("bearingkit.solver")
+    if not any(getattr(h, "bearingkit_cli", False) for h in log.handlers):
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("note: %(message)s"))
+        handler.bearingkit_cli = True
+        log.addHandler(handler)
+        log.setLevel(logging.INFO)
