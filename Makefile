@@ -42,7 +42,7 @@ test: $(STAMP)
 SEED ?= $(shell date +%Y%m%d)
 N ?= 10000
 CI_FUZZ_N ?= 300
-fuzz: $(STAMP)
+fuzz: compile
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --seed $(SEED) --n $(N)
 
 test-slow: $(STAMP)

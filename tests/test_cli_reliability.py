@@ -170,3 +170,46 @@ def test_an_aborted_command_is_one_line(capsys):
         demo(["boom"])
     assert stop.value.code == 1
     assert capsys.readouterr().err == "error: aborted\n"
+
+
+@pytest.mark.parametrize(
+    "options",
+    [
+        ["--report", "out/report.html", "--stiffness", "k.csv", "--ross", "out/report.html"],  # fuzz #4197
+        ["--report", "out", "--ross", "out/rotors"],
+        ["--report", "out", "--stiffness", "out/k.csv"],
+    ],
+)
+def test_outputs_where_one_needs_the_other_as_a_folder_are_refused_before_anything_is_written(
+    tmp_path, monkeypatch, options
+):
+    """The fuzz (seed 20261128, #4197): the report and the stiffness table were written, then ``--ross``
+    found the report's name taken and failed, leaving both behind."""
+    monkeypatch.chdir(tmp_path)
+    line = one_line(runner.invoke(app, ["system", str(EXAMPLES / "gearbox_two_stage.toml"), *options]))
+    assert "--ross" in line or "--stiffness" in line
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_files_inside_the_rotor_folder_are_allowed(tmp_path):
+    from bearingkit.cli.common import check_outputs
+
+    check_outputs(report=tmp_path / "out" / "report.html", ross=tmp_path / "out")  # no error
+    check_outputs(ross=tmp_path / "out", stiffness=tmp_path / "out" / "k.csv")
+
+
+def test_a_load_case_that_is_not_a_table_is_one_line_with_case(tmp_path):
+    """The fuzz (seed 20261128, #2766): ``system --case NAME`` on a file whose load_cases hold a number
+    was an internal error (AttributeError) before validation could name the entry."""
+    import sys
+    import tomllib
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent / "fuzz"))  # its TOML writer
+    from bk_fuzz_inputs import toml_text
+
+    data = tomllib.loads((EXAMPLES / "gearbox_two_stage.toml").read_text())
+    data["load_cases"].insert(1, 1e8)
+    path = tmp_path / "g.toml"
+    path.write_text(toml_text(data))
+    line = one_line(runner.invoke(app, ["system", str(path), "--case", "peak"]))
+    assert "load_cases[1]" in line and "internal error" not in line

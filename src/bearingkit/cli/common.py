@@ -316,6 +316,7 @@ def check_outputs(**paths) -> None:
     from bearingkit.errors import quote
 
     seen: dict = {}
+    folders: set = set()  # the keys of ``seen`` that name a folder (--ross)
     for option, path in paths.items():
         if path is None:
             continue
@@ -331,8 +332,10 @@ def check_outputs(**paths) -> None:
             from bearingkit.extras import check
 
             check("ross", "--ross (ROSS rotors)")
-            continue
-        if path.name in ("", ".", "..") or path.is_dir():
+            seen_as_folder = True
+        else:
+            seen_as_folder = False
+        if not seen_as_folder and (path.name in ("", ".", "..") or path.is_dir()):
             raise InputError(f"{flag} ({quote(str(path))}) must name a file, not a folder")
         if option == "stiffness" and path.suffix not in (".csv", ".json"):
             raise InputError(f"{flag} ({quote(str(path))}) must end in .csv or .json")
@@ -341,7 +344,19 @@ def check_outputs(**paths) -> None:
             raise InputError(
                 f"{flag} and {seen[key]} name the same file ({quote(str(path))}); give two names"
             )
+        # a file written first where another option needs a folder (`--report out --ross out/rotors`,
+        # or `--ross` the report's own name) failed only after the first file was written
+        for other, other_flag in seen.items():
+            inner, outer = (key, other) if len(key) > len(other) else (other, key)
+            outer_is_folder = seen_as_folder if outer == key else outer in folders
+            if inner.startswith(outer + os.sep) and not outer_is_folder:
+                raise InputError(
+                    f"{flag} and {other_flag} collide: one names a file the other needs as a folder "
+                    f"({quote(str(path))}); give two separate names"
+                )
         seen[key] = flag
+        if seen_as_folder:
+            folders.add(key)
 
 
 _ROSS_OPTION = typer.Option(

@@ -241,9 +241,9 @@ def load_drivetrain_file(path, cases=None) -> DrivetrainInput:
 def _keep_cases(data, names: list, source: str):
     """The file's data with only the named load cases (in the file's order), without time fractions."""
     found = data.get("load_cases") if isinstance(data, dict) else None
-    if not isinstance(found, list):
-        return data  # validation says what is wrong
-    have = [c.get("name") for c in found if isinstance(c, dict)]
+    if not isinstance(found, list) or not all(isinstance(c, dict) for c in found):
+        return data  # validation says what is wrong (with the file's own index of a bad case)
+    have = [c.get("name") for c in found]
     unknown = [n for n in names if n not in have]
     if unknown:
         raise InputError(f"{source}: no load case {unknown[0]!r}; the file has {have}")
