@@ -16,8 +16,12 @@ from bearingkit.cli import app
 
 
 def test_each_finding_class_is_found_in_a_planted_app():
-    """Every command of the planted app breaks one promise; the fuzz names each."""
-    s = run.fuzz(seed=1, n=40, workers=2, hang=5.0, app_spec="bk_fuzz_planted:app")
+    """Every command of the planted app breaks one promise; the fuzz names each.
+
+    Seed 62's first 10 mutants reach every planted command (``badjson`` with ``--json``), ``sleepy``
+    once (seed 1 needed 40 mutants, eight of them ``sleepy``: eight 5 s hangs and worker restarts
+    made this test 43 s of the suite)."""
+    s = run.fuzz(seed=62, n=10, workers=2, hang=5.0, app_spec="bk_fuzz_planted:app")
     by_command = {}
     for r in s["details"]:
         for cls, _ in r["problems"]:
@@ -29,7 +33,7 @@ def test_each_finding_class_is_found_in_a_planted_app():
     assert {"warning"} <= by_command["warny"]
     assert "fine" not in by_command
     assert s["findings"]["hang"] >= 1  # sleepy: killed after 5 s, its worker replaced
-    assert s["mutants"] == 40  # nothing lost when a worker was killed
+    assert s["mutants"] == 10  # nothing lost when a worker was killed
 
 
 def test_a_server_error_is_found():
