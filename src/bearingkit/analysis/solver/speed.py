@@ -8,7 +8,7 @@ include the inertia of their rolling elements at the given ring speeds, per load
   outer contact angles part);
 - radial cylindrical rows: :class:`~bearingkit.rows.cylindrical.speed.CylindricalSpeedKernel`
   (per-roller equilibrium with the centrifugal force; thrust rows are unaffected);
-- tapered rows: their own centrifugal model (``TaperedRow.speed``), one speed per solve;
+- tapered rows: their own centrifugal model (``TaperedRow.speed``, one value or one per case);
 - other kinds (threaded, rows registered later): unchanged; :func:`speed_notes` says so.
 
 Row kinds register their speed kernel with :func:`register_speed_kernel` (a spherical-roller row
@@ -27,7 +27,6 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.solver.model import BearingModel
-from bearingkit.errors import InputError
 from bearingkit.physics.dynamics.ball_kinematics import RACEWAY_CONTROLS
 
 #: Default density of the rolling elements [kg/m³] (GCr15, bearingkit.materials).
@@ -97,13 +96,12 @@ def _cylindrical(row, speed: OperatingSpeed):
 
 
 def _tapered(row, speed: OperatingSpeed):
+    """The row at its relative ring speed: one value when every case shares it (the row constant, as
+    before), else one per case (each case's rollers at its own centrifugal force)."""
     relative = speed.inner - speed.outer
-    if np.any(relative != relative[0]):
-        raise InputError(
-            f"row {row.name!r}: a tapered row takes one speed per solve (its centrifugal force is a row "
-            f"constant); got {np.unique(relative).size} different speeds; solve each speed separately"
-        )
-    return dataclasses.replace(row, speed=float(relative[0])).kernel()
+    if np.all(relative == relative[0]):
+        return dataclasses.replace(row, speed=float(relative[0])).kernel()
+    return dataclasses.replace(row, speed=relative).kernel()
 
 
 #: Row kind → factory ``(row, OperatingSpeed) -> kernel`` of the row at speed.
