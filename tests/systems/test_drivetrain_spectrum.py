@@ -191,13 +191,19 @@ def test_the_duty_cycle_is_palmgren_miner_over_the_cases_solved_alone(runs):
             assert lives[key] == pytest.approx(1.0 / np.sum(f / per_case), rel=RTOL)
 
 
-def test_the_tables_show_every_case_and_the_duty_cycle(runs):
+def test_the_tables_and_the_report_show_every_case_and_the_duty_cycle(runs, tmp_path):
     path = runs[0]
-    out = CliRunner().invoke(app, ["system", str(path)])
+    report = tmp_path / "spectrum.html"
+    out = CliRunner().invoke(app, ["system", str(path), "--report", str(report)])
     assert out.exit_code == 0, out.output
+    html = report.read_text(encoding="utf-8")
     for name in RPM:
         assert f"{name}: bearings" in out.output
+        assert name in html
+    duty = runs[1]["duty_cycle"]["system"]
     assert "duty cycle (Palmgren–Miner): system L10h" in out.output
+    assert f"system L10h {duty['L10h_iso281_h']:.4g} h (ISO 281)" in out.output
+    assert "Duty cycle (Palmgren–Miner over the time fractions)" in html
 
 
 def test_a_speed_missing_from_one_case_is_one_line(tmp_path):
