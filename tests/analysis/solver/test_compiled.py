@@ -197,3 +197,17 @@ def test_tapered_rows_at_a_speed_per_case_agree_and_equal_each_speed_alone():
         np.testing.assert_array_less(np.abs(b.displacement[c] - alone.displacement[0]), 1e-9 * scale)
     # the speed matters at this precision: cases 0 and 1 share the load, not the speed
     assert np.abs(b.displacement[1] - b.displacement[0]).max() > 1e-6 * np.abs(b.displacement[0]).max()
+
+
+def test_speeds_that_are_not_one_per_case_are_one_line():
+    from bearingkit.errors import InputError
+
+    pair = seed001_pair(arrangement="DB", spacing=0.04, clearance=-10e-6)
+    load = load_vector(F_z=[5000.0, 5000.0, 2000.0, 200.0])
+    with pytest.raises(InputError, match=r"speed \(inner ring\): 3 values for 4 load cases") as err:
+        solve(pair, load, speed=np.array([100.0, 200.0, 300.0]))
+    assert "\n" not in str(err.value)
+    with pytest.raises(InputError, match=r"speed \(shape \(2, 3\)\) must be one value"):
+        seed001_row(speed=np.ones((2, 3)))
+    with pytest.raises(InputError, match="must be finite"):
+        solve(pair, load, speed=np.array([100.0, np.nan, 1.0, 2.0]))

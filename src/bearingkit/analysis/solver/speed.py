@@ -27,6 +27,7 @@ import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.solver.model import BearingModel
+from bearingkit.errors import InputError
 from bearingkit.physics.dynamics.ball_kinematics import RACEWAY_CONTROLS
 
 #: Default density of the rolling elements [kg/m³] (GCr15, bearingkit.materials).
@@ -141,6 +142,19 @@ def model_at_speed(model: BearingModel, speed) -> BearingModel:
     out = ModelAtSpeed(**fields, speed=speed)
     object.__setattr__(out, "base", base)
     return out
+
+
+def check_case_count(model: BearingModel, n_cases: int) -> None:
+    """Raise InputError when the speeds of ``model`` (a :class:`ModelAtSpeed`) are neither one value nor
+    one per load case."""
+    if not isinstance(model, ModelAtSpeed):
+        return
+    for ring, values in (("inner", model.speed.inner), ("outer", model.speed.outer)):
+        if values.size not in (1, n_cases):
+            raise InputError(
+                f"speed ({ring} ring): {values.size} values for {n_cases} load cases; give one speed or "
+                "one per load case"
+            )
 
 
 def speed_notes(model: BearingModel) -> list[str]:
