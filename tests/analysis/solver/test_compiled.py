@@ -197,6 +197,15 @@ def test_tapered_rows_at_a_speed_per_case_agree_and_equal_each_speed_alone():
         np.testing.assert_array_less(np.abs(b.displacement[c] - alone.displacement[0]), 1e-9 * scale)
     # the speed matters at this precision: cases 0 and 1 share the load, not the speed
     assert np.abs(b.displacement[1] - b.displacement[0]).max() > 1e-6 * np.abs(b.displacement[0]).max()
+    # the compiled per-roller loads (Monte Carlo outputs) take each case's centrifugal force too
+    from bearingkit.analysis.solver.speed import model_at_speed
+    from bearingkit.rows.tapered.compiled import roller_loads
+
+    for kernel in model_at_speed(pair, speed).kernels:
+        got = roller_loads(kernel, b.displacement)
+        ref = kernel.roller_state(b.displacement)
+        for k, key in enumerate(("load_inner", "load_outer", "load_flange")):
+            np.testing.assert_allclose(got[..., k], ref[key], rtol=0, atol=1e-12 * np.abs(ref[key]).max())
 
 
 def test_speeds_that_are_not_one_per_case_are_one_line():
