@@ -160,3 +160,30 @@ def test_contamination_level_names_on_a_threaded_roller_bearing():
     values = contamination_values(bearing)
     assert values["normal_cleanliness"] == contamination_factor("normal_cleanliness", dm)
     assert 0 < values["severe_contamination"] < values["normal_cleanliness"] < 1
+
+
+def test_a_tapered_bearing_whose_cases_run_at_different_speeds_is_one_analysis(tmp_path):
+    """The 32008 with its two load cases at 500 and 8000 r/min: one `analyze` run (formerly refused: a
+    tapered row took one speed per solve); each case equals the file run with only that case
+    (displacement and roller loads to 1e-9); the speed shows in the rollers' centrifugal force."""
+    text = (EXAMPLES / "trb_32008.toml").read_text(encoding="utf-8")
+    text = text.replace('F_z = "10 kN"\n', 'F_z = "10 kN"\nspeed = "500 rpm"\n')
+    text = text.replace('F_z = "2 kN"\n', 'F_z = "2 kN"\nspeed = "8000 rpm"\n')
+    both = tmp_path / "both.toml"
+    both.write_text(text, encoding="utf-8")
+    full = _json(runner.invoke(app, ["analyze", str(both), "--json"]))
+    assert [c["case"] for c in full["cases"]] == ["axial_10kN", "axial_2kN"]
+    for case in full["cases"]:
+        one = _json(runner.invoke(app, ["analyze", str(both), "--case", case["case"], "--json"]))["cases"][0]
+        assert case["converged"] and one["converged"]
+        u, ref = np.array(list(case["displacement"].values())), np.array(list(one["displacement"].values()))
+        assert np.abs(u - ref).max() <= 1e-9 * np.abs(ref).max()
+        q, q_ref = np.array(case["rows"][0]["loads_N"]), np.array(one["rows"][0]["loads_N"])
+        assert np.abs(q - q_ref).max() <= 1e-9 * q_ref.max()
+    # 500 vs 8000 r/min at the same load: the 8000 r/min case's axial deflection differs
+    fast_file = tmp_path / "fast.toml"
+    fast_file.write_text(text.replace('"500 rpm"', '"8000 rpm"'), encoding="utf-8")
+    out = runner.invoke(app, ["analyze", str(fast_file), "--case", "axial_10kN", "--json"])
+    fast = _json(out)["cases"][0]
+    slow = full["cases"][0]["displacement"]["u_z_m"]
+    assert abs(fast["displacement"]["u_z_m"] - slow) > 1e-6 * abs(slow)

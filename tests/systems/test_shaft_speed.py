@@ -16,7 +16,6 @@ import pytest
 
 from bearingkit.analysis.solver.quasistatic import solve as solve_bearing
 from bearingkit.analysis.solver.speed import ModelAtSpeed
-from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
 from bearingkit.systems.shaft.loads import PointLoad, ShaftLoads
 from bearingkit.systems.shaft.shaft import Section, Shaft
@@ -163,7 +162,10 @@ def test_speed_beyond_the_ball_model_is_not_converged_with_the_reason(acbb):
     assert not res.bearing_result("A").converged[1]
 
 
-def test_tapered_rows_at_several_speeds_are_refused_naming_the_bearing():
+def test_tapered_rows_at_several_speeds_are_one_solve_equal_to_each_speed_alone():
+    """A shaft on two 32008 facing each other whose load cases run at different speeds (a load
+    spectrum) is solved in one run; every case equals the same case solved alone at its speed
+    (reactions, stiffness, displacements to 1e-9); the speeds matter at that precision."""
     trb = load_file(EXAMPLES / "trb_32008.toml")
     shaft = Shaft((Section(0.0, 0.3, 0.04),))
     system = ShaftSystem(
@@ -173,16 +175,24 @@ def test_tapered_rows_at_several_speeds_are_refused_naming_the_bearing():
             BearingSeat("rear", trb.model, 0.28, orientation="-z", axial_offset=1e-5, source=trb),
         ),
     )
-    loads = ShaftLoads(
-        ("a", "b"),
-        forces=(PointLoad(0.15, np.array([[2e3, 0, 0, 0, 0]] * 2)),),
-        speed=np.array([100.0, 300.0]),
-    )
-    with pytest.raises(InputError, match=r"bearings\.front: .*one speed per solve"):
-        solve(system, loads)
-    # one speed for every case is solved, with the rollers' centrifugal force
-    same = ShaftLoads(("a", "b"), forces=loads.forces, speed=np.array([300.0, 300.0]))
-    res = solve(system, same)
+    force = np.array([[2e3, 0, 0, 0, 0], [2e3, 0, 0, 0, 0], [1e3, 500.0, 800.0, 0, 0]])
+    rpm = np.array([100.0, 8000.0, 3000.0])
+    loads = ShaftLoads(("a", "b", "c"), forces=(PointLoad(0.15, force),), speed=rpm * RPM)
+    res = solve(system, loads)
     assert res.converged.all(), res.reason
     assert isinstance(res.model("front"), ModelAtSpeed)
     assert np.all(res.equilibrium_residual() <= 1e-9)
+    for c in range(3):
+        one = ShaftLoads(("x",), forces=(PointLoad(0.15, force[c : c + 1]),), speed=rpm[c : c + 1] * RPM)
+        alone = solve(system, one)
+        assert alone.converged.all(), alone.reason
+        for b in ("front", "rear"):
+            scale = np.abs(alone.reaction(b)).max()
+            assert np.abs(res.reaction(b)[c] - alone.reaction(b)[0]).max() <= 1e-9 * scale
+            k = alone.stiffness(b)
+            assert np.abs(res.stiffness(b)[c] - k[0]).max() <= 1e-9 * np.abs(k).max()
+        u = alone.displacement
+        assert np.abs(res.displacement[c] - u[0]).max() <= 1e-9 * np.abs(u).max()
+    # cases a and b carry the same load at 100 and 8000 r/min: the rollers' centrifugal force shows
+    ka, kb = res.stiffness("front")[0], res.stiffness("front")[1]
+    assert np.abs(kb - ka).max() > 1e-6 * np.abs(ka).max()

@@ -118,8 +118,8 @@ def test_output_paths_are_checked_before_any_work_and_nothing_is_half_written(tm
 
 
 def test_case_keeps_the_named_load_cases_and_refuses_an_unknown_one(tmp_path):
-    """``--case`` solves only the named case(s) (a REXS model whose tapered rows run at one speed per
-    solve goes case by case); its results equal that case in the full run; an unknown name is one line."""
+    """``--case`` solves only the named case(s); its results equal that case in the full run; an unknown
+    name is one line."""
     runner = CliRunner()
     model = str(EXAMPLES / "gearbox_two_stage.toml")
     full = json.loads(runner.invoke(app, ["system", model, "--json"]).output)

@@ -169,3 +169,54 @@ def test_light_load_tapered_roller_loads_balance_the_ring(backend, monkeypatch):
     assert row["axial_load_N"] == pytest.approx(0.49, rel=1e-9)
     assert row["radial_load_N"] < 1e-9 * 0.49
     assert max(row["loads_N"]) < 0.49  # no roller carries more than the whole bearing
+
+
+def test_tapered_rows_at_a_speed_per_case_agree_and_equal_each_speed_alone():
+    """A tapered bearing whose load cases run at different speeds (a load spectrum) is one solve: each
+    roller's centrifugal force is that case's. The compiled core agrees with the numpy reference to
+    1e-12, and every case equals the same load solved alone at its own speed (1e-9; both converge to
+    the solver's tolerance from different iterates). The speeds are high enough that the centrifugal
+    force moves the result: one speed for all cases would fail the comparison."""
+    from bearingkit.analysis.solver.model import BearingModel
+
+    pair = seed001_pair(arrangement="DB", spacing=0.04, clearance=-10e-6)
+    rpm = np.array([500.0, 6000.0, 12000.0, 6000.0])
+    speed = rpm * np.pi / 30.0
+    load = load_vector(F_x=[3000.0, 3000.0, 1500.0, -500.0], F_z=[5000.0, 5000.0, 2000.0, 200.0])
+    both = [solve(pair, load, speed=speed, options=o) for o in (COMPILED, NUMPY)]
+    for res in both:
+        assert res.converged.all(), res.reason
+    a, b = both
+    for x, y in ((a.displacement, b.displacement), (a.stiffness, b.stiffness)):
+        scale = np.abs(y).reshape(len(y), -1).max(axis=1)
+        np.testing.assert_array_less(np.abs(x - y).reshape(len(y), -1).max(axis=1), 1e-12 * scale)
+    assert isinstance(pair, BearingModel)
+    for c in range(len(rpm)):
+        alone = solve(pair, load[c : c + 1], speed=speed[c], options=NUMPY)
+        scale = np.abs(alone.displacement[0]).max()
+        np.testing.assert_array_less(np.abs(b.displacement[c] - alone.displacement[0]), 1e-9 * scale)
+    # the speed matters at this precision: cases 0 and 1 share the load, not the speed
+    assert np.abs(b.displacement[1] - b.displacement[0]).max() > 1e-6 * np.abs(b.displacement[0]).max()
+    # the compiled per-roller loads (Monte Carlo outputs) take each case's centrifugal force too
+    from bearingkit.analysis.solver.speed import model_at_speed
+    from bearingkit.rows.tapered.compiled import roller_loads
+
+    for kernel in model_at_speed(pair, speed).kernels:
+        got = roller_loads(kernel, b.displacement)
+        ref = kernel.roller_state(b.displacement)
+        for k, key in enumerate(("load_inner", "load_outer", "load_flange")):
+            np.testing.assert_allclose(got[..., k], ref[key], rtol=0, atol=1e-12 * np.abs(ref[key]).max())
+
+
+def test_speeds_that_are_not_one_per_case_are_one_line():
+    from bearingkit.errors import InputError
+
+    pair = seed001_pair(arrangement="DB", spacing=0.04, clearance=-10e-6)
+    load = load_vector(F_z=[5000.0, 5000.0, 2000.0, 200.0])
+    with pytest.raises(InputError, match=r"speed \(inner ring\): 3 values for 4 load cases") as err:
+        solve(pair, load, speed=np.array([100.0, 200.0, 300.0]))
+    assert "\n" not in str(err.value)
+    with pytest.raises(InputError, match=r"speed \(shape \(2, 3\)\) must be one value"):
+        seed001_row(speed=np.ones((2, 3)))
+    with pytest.raises(InputError, match="must be finite"):
+        solve(pair, load, speed=np.array([100.0, np.nan, 1.0, 2.0]))

@@ -170,6 +170,10 @@ def solve(
         checks.finite("load", load, "N")  # raises, naming the values
     free_key = _ALL_FREE if free is None else _free_key(free)
     n_cases = load.shape[0]
+    if speed is not None:
+        from bearingkit.analysis.solver.speed import check_case_count
+
+        check_case_count(model, n_cases)
     if displacement is None:
         # The compiled core only reads q0: one zero start per plan serves every single solve.
         q0 = _ZERO_START if n_cases == 1 else np.zeros((n_cases, N_DOF))

@@ -8,7 +8,7 @@ include the inertia of their rolling elements at the given ring speeds, per load
   outer contact angles part);
 - radial cylindrical rows: :class:`~bearingkit.rows.cylindrical.speed.CylindricalSpeedKernel`
   (per-roller equilibrium with the centrifugal force; thrust rows are unaffected);
-- tapered rows: their own centrifugal model (``TaperedRow.speed``), one speed per solve;
+- tapered rows: their own centrifugal model (``TaperedRow.speed``, one value or one per case);
 - other kinds (threaded, rows registered later): unchanged; :func:`speed_notes` says so.
 
 Row kinds register their speed kernel with :func:`register_speed_kernel` (a spherical-roller row
@@ -97,13 +97,12 @@ def _cylindrical(row, speed: OperatingSpeed):
 
 
 def _tapered(row, speed: OperatingSpeed):
+    """The row at its relative ring speed: one value when every case shares it (the row constant, as
+    before), else one per case (each case's rollers at its own centrifugal force)."""
     relative = speed.inner - speed.outer
-    if np.any(relative != relative[0]):
-        raise InputError(
-            f"row {row.name!r}: a tapered row takes one speed per solve (its centrifugal force is a row "
-            f"constant); got {np.unique(relative).size} different speeds; solve each speed separately"
-        )
-    return dataclasses.replace(row, speed=float(relative[0])).kernel()
+    if np.all(relative == relative[0]):
+        return dataclasses.replace(row, speed=float(relative[0])).kernel()
+    return dataclasses.replace(row, speed=relative).kernel()
 
 
 #: Row kind → factory ``(row, OperatingSpeed) -> kernel`` of the row at speed.
@@ -143,6 +142,19 @@ def model_at_speed(model: BearingModel, speed) -> BearingModel:
     out = ModelAtSpeed(**fields, speed=speed)
     object.__setattr__(out, "base", base)
     return out
+
+
+def check_case_count(model: BearingModel, n_cases: int) -> None:
+    """Raise InputError when the speeds of ``model`` (a :class:`ModelAtSpeed`) are neither one value nor
+    one per load case."""
+    if not isinstance(model, ModelAtSpeed):
+        return
+    for ring, values in (("inner", model.speed.inner), ("outer", model.speed.outer)):
+        if values.size not in (1, n_cases):
+            raise InputError(
+                f"speed ({ring} ring): {values.size} values for {n_cases} load cases; give one speed or "
+                "one per load case"
+            )
 
 
 def speed_notes(model: BearingModel) -> list[str]:

@@ -31,8 +31,9 @@ configure()  # before numba reads its configuration: the cache follows the compi
 from numba import njit, prange  # noqa: E402
 
 #: Packed tapered rows (T rollers, S ≥ n_s slots): cone directions gi (T, S, 5), rib gf (T, 5); constant
-#: approach parts d0i, d0e (Ct, T, S) and Δ dev (Ct, T); slices ns (T,); local directions bi, be, bf
-#: (T, 2); per-roller constants cs, kf, fc, floor (stiffness floor), ffloor (force floor), cap (step
+#: approach parts d0i, d0e (Ct, T, S), Δ dev (Ct, T) and the centrifugal force fc (Ct, T): a row whose
+#: load cases run at several speeds has one per case; slices ns (T,); local directions bi, be, bf
+#: (T, 2); per-roller constants cs, kf, floor (stiffness floor), ffloor (force floor), cap (step
 #: cap), taylor (1.0 for seed 001 eq. 4); row (T,) the row index; lc (Ct, T, 5) the constants of the
 #: eq. (4) law of each roller and case (:func:`_consts`; zeros for the Kunert law), computed once.
 TaperedPack = namedtuple(
@@ -49,11 +50,12 @@ def pack_tapered(kernels, rows) -> TaperedPack:
         z0 = np.zeros(0)
         return TaperedPack(
             np.zeros((0, 1, 5)), np.zeros((0, 5)), np.zeros((1, 0, 1)), np.zeros((1, 0, 1)), np.zeros((1, 0)),
-            np.zeros(0, np.int64), z2, z2, z2, z0, z0, z0, z0, z0, z0, z0, np.zeros(0, np.int64),
+            np.zeros(0, np.int64), z2, z2, z2, z0, z0, np.zeros((1, 0)), z0, z0, z0, z0,
+            np.zeros(0, np.int64),
             np.zeros((1, 0, 5)),
         )  # fmt: skip
     s_max = max(k.row.n_slices for k in kernels)
-    lead = max(max(k.d0_i.shape[0], k.d0_e.shape[0], k.delta_dev.shape[0]) for k in kernels)
+    lead = max(max(k.d0_i.shape[0], k.d0_e.shape[0], k.delta_dev.shape[0], k.f_c.shape[0]) for k in kernels)
     parts = {f: [] for f in TaperedPack._fields if f != "lc"}
     for kern, r in zip(kernels, rows, strict=True):
         z, n_s = kern.row.n_elements, kern.row.n_slices
@@ -66,13 +68,13 @@ def pack_tapered(kernels, rows) -> TaperedPack:
             a[:, :, :n_s] = np.broadcast_to(getattr(kern, attr), (lead, z, n_s))
             parts[name].append(a)
         parts["dev"].append(np.broadcast_to(kern.delta_dev, (lead, z)))
+        parts["fc"].append(np.broadcast_to(kern.f_c, (lead, z)))
         parts["ns"].append(np.full(z, n_s, np.int64))
         for name in ("bi", "be", "bf"):
             parts[name].append(np.broadcast_to(getattr(kern, "b_" + name[1]), (z, 2)))
         scalars = {
             "cs": kern.c_s,
             "kf": kern.k_f,
-            "fc": kern.f_c,
             "floor": kern.stiffness_floor,
             "ffloor": kern.force_floor,
             "cap": ROLLER_STEP_CAP * kern.row.element_diameter,
@@ -83,7 +85,7 @@ def pack_tapered(kernels, rows) -> TaperedPack:
         parts["row"].append(np.full(z, r, np.int64))
     out = {}
     for name, arrays in parts.items():
-        axis = 1 if name in ("d0i", "d0e", "dev") else 0
+        axis = 1 if name in ("d0i", "d0e", "dev", "fc") else 0
         out[name] = np.ascontiguousarray(np.concatenate(arrays, axis=axis))
     out["lc"] = _consts_table(out["dev"], out["cs"], out["taylor"])
     return TaperedPack(**out)
@@ -174,8 +176,9 @@ def _rib(d_raw, kf):
 
 
 @njit(cache=True, error_model="numpy")
-def _eval(tp, t, ai, af, d0e, dv, lc, x0, x1):
-    """Φ, ∂Φ/∂X, load scale and summed stiffnesses of roller t at X = (x0, x1)."""
+def _eval(tp, t, ai, af, d0e, dv, lc, fc, x0, x1):
+    """Φ, ∂Φ/∂X, load scale and summed stiffnesses of roller t at X = (x0, x1) (fc: its centrifugal
+    force in this case [N])."""
     ns = tp.ns[t]
     cs, tay = tp.cs[t], tp.taylor[t]
     xi = x0 * tp.bi[t, 0] + x1 * tp.bi[t, 1]
@@ -196,7 +199,6 @@ def _eval(tp, t, ai, af, d0e, dv, lc, x0, x1):
         ke += kk
         ee += e
     qf, kf, ef = _rib(af + (x0 * tp.bf[t, 0] + x1 * tp.bf[t, 1]), tp.kf[t])
-    fc = tp.fc[t]
     g0 = si * tp.bi[t, 0] + se * tp.be[t, 0] + qf * tp.bf[t, 0] - fc
     g1 = si * tp.bi[t, 1] + se * tp.be[t, 1] + qf * tp.bf[t, 1]
     phi = ei + ee + ef - fc * x0
@@ -259,9 +261,9 @@ def _ring(tp, t, cc, q, ai, d0e):
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1):
+def _solve_roller(tp, t, ai, af, d0e, dv, lc, fc, x0, x1):
     """Bounded damped Newton for roller t from (x0, x1); returns X, its evaluation, iterations, done."""
-    ev = _eval(tp, t, ai, af, d0e, dv, lc, x0, x1)
+    ev = _eval(tp, t, ai, af, d0e, dv, lc, fc, x0, x1)
     ns = tp.ns[t]
     ring = 0.0
     re = 0.0
@@ -297,7 +299,7 @@ def _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1):
         for _ls in range(ROLLER_MAX_HALVINGS):
             tx0 = x0 + step_t * s0
             tx1 = x1 + step_t * s1
-            ev_t = _eval(tp, t, ai, af, d0e, dv, lc, tx0, tx1)
+            ev_t = _eval(tp, t, ai, af, d0e, dv, lc, fc, tx0, tx1)
             g_t = np.sqrt(ev_t[1] * ev_t[1] + ev_t[2] * ev_t[2])
             if (ev_t[0] <= phi + 1e-4 * step_t * slope + 1e-14 * abs(phi)) or (g_t <= 0.5 * gnorm):
                 x0, x1, ev = tx0, tx1, ev_t
@@ -336,6 +338,7 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
     for t in range(n_t):
         dv = tp.dev[cc, t]
         lc = _row_consts(tp, cc, t)
+        fc = tp.fc[cc, t]
         af = _ring(tp, t, cc, q, ai, d0e)
         x0, x1 = _guess(tp, t, ai, af, d0e)
         if warm:
@@ -344,11 +347,11 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
             for d in range(5):
                 w0 -= ws_sens[t, d, 0] * dq[d]
                 w1 -= ws_sens[t, d, 1] * dq[d]
-            phi_g = _eval(tp, t, ai, af, d0e, dv, lc, x0, x1)[0]
-            phi_w = _eval(tp, t, ai, af, d0e, dv, lc, w0, w1)[0]
+            phi_g = _eval(tp, t, ai, af, d0e, dv, lc, fc, x0, x1)[0]
+            phi_w = _eval(tp, t, ai, af, d0e, dv, lc, fc, w0, w1)[0]
             if np.isfinite(phi_w) and np.isfinite(w0) and np.isfinite(w1) and phi_w <= phi_g:
                 x0, x1 = w0, w1
-        x0, x1, _, used, done = _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1)
+        x0, x1, _, used, done = _solve_roller(tp, t, ai, af, d0e, dv, lc, fc, x0, x1)
         used_max = max(used_max, used)
         if not done:
             unconverged += 1
@@ -377,7 +380,7 @@ def tapered_response(c, q, tp, ws_x, ws_sens, ws_q, ws_flag, force, jac, rowf):
                 for j in range(5):
                     kqq[i, j] += ki * g * tp.gi[t, k, j]
         qf, kf, ef = _rib(af + (x0 * tp.bf[t, 0] + x1 * tp.bf[t, 1]), tp.kf[t])
-        energy += ef - tp.fc[t] * x0
+        energy += ef - fc * x0
         for i in range(5):
             g = tp.gf[t, i]
             force[i] -= qf * g
@@ -434,7 +437,7 @@ def _case_roller_loads(c, q, tp, out, start):
             x0, x1 = start[c, t, 0], start[c, t, 1]
         else:
             x0, x1 = _guess(tp, t, ai, af, d0e)
-        x0, x1, _, _, _ = _solve_roller(tp, t, ai, af, d0e, dv, lc, x0, x1)
+        x0, x1, _, _, _ = _solve_roller(tp, t, ai, af, d0e, dv, lc, tp.fc[cc, t], x0, x1)
         cs, tay = tp.cs[t], tp.taylor[t]
         xi = x0 * tp.bi[t, 0] + x1 * tp.bi[t, 1]
         xe = x0 * tp.be[t, 0] + x1 * tp.be[t, 1]

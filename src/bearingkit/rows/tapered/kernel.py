@@ -58,7 +58,7 @@ class TaperedKernel(KernelBase):
     are those of the last iterate).
     """
 
-    _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation")
+    _case_arrays = ("d0_i", "d0_e", "delta_dev", "deviation", "f_c", "omega_cage")
 
     def __init__(self, row):
         from bearingkit.physics.contact import hertz, line
@@ -121,8 +121,10 @@ class TaperedKernel(KernelBase):
         shift = 0.0 if self.taylor else self.delta_dev[..., None]
         self.d0_i = base + shift
         self.d0_e = base + shift - 0.5 * float(row.clearance)
-        # Centrifugal force (radial, outward) at the pure-rolling cage speed.
-        omega_c = float(row.speed) * geo.radius_inner / (geo.radius_inner + geo.radius_outer)
+        # Centrifugal force (radial, outward) at the pure-rolling cage speed, per case (C|1, 1): a
+        # row at one speed has one value, a row whose load cases run at several speeds one per case.
+        speed = np.asarray(row.speed, dtype=float).reshape(-1, 1)
+        omega_c = speed * geo.radius_inner / (geo.radius_inner + geo.radius_outer)
         self.omega_cage = omega_c
         self.f_c = float(row.density) * geo.volume * omega_c**2 * geo.centre[0]
         # Local roller-DOF directions: cone −n_i, cup +n_e, rib −n_f; outer contacts have no ring part.
@@ -395,7 +397,7 @@ class TaperedKernel(KernelBase):
         # and stored in one assignment, so a concurrent call on the same kernel (a user's threads)
         # can only replace the warm start, never mix two calls' arrays.
         self._cache = (relative_displacement(q, offset), xr, sens)
-        energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c * xr[..., 0].sum(-1)
+        energy = ei.sum((-1, -2)) + ee.sum((-1, -2)) + ef.sum(-1) - self.f_c[:, 0] * xr[..., 0].sum(-1)
         return RowResponse(force, -schur, energy)
 
     def warm_start(self, q: np.ndarray, x: np.ndarray | None, offset: RacewayOffset | None = None) -> None:

@@ -124,8 +124,9 @@ class TaperedRow:
         e_r, height of the rib contact above the cone-side edge of the large end.
     end_radius : float or None [m]
         Spherical radius of the roller's large end (rib stiffness K_f).
-    speed : float [rad/s]
-        Inner-ring speed ω_i (centrifugal force at the pure-rolling cage speed).
+    speed : float or array (C,) [rad/s]
+        Inner-ring speed ω_i (centrifugal force at the pure-rolling cage speed); an array gives each
+        load case its own speed (a drivetrain's load spectrum).
     density : float [kg/m³]
         Roller density.
     axial_position, azimuth_phase : float [m], [rad]
@@ -154,7 +155,7 @@ class TaperedRow:
     e_reduced: float | None = None
     flange_contact_height: float | None = None
     end_radius: float | None = None
-    speed: float = 0.0
+    speed: object = 0.0
     density: float = STEEL_DENSITY
     axial_position: float = 0.0
     azimuth_phase: float = 0.0
@@ -229,6 +230,11 @@ class TaperedRow:
         if self.end_radius is not None:
             checks.positive("end_radius", self.end_radius, "m")
         checks.finite("speed", self.speed, "rad/s")
+        if np.ndim(self.speed) > 1:
+            raise InputError(
+                f"speed (shape {np.shape(self.speed)}) must be one value [rad/s] or one per load case "
+                "(n_cases,)"
+            )
         checks.positive("density", self.density, "kg/m^3")
         checks.finite("axial_position", self.axial_position, "m")
         checks.finite("azimuth_phase", self.azimuth_phase, "rad")

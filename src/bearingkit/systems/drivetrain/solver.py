@@ -435,6 +435,4 @@ def law_for(bearing, inner_speed, outer_speed) -> BearingLaw:
     try:
         return BearingLaw(model_at_speed(seat.bearing, speed))
     except InputError as exc:
-        raise InputError(
-            f"bearings.{seat.name}: {exc} (the load cases with this bearing must share one speed)"
-        ) from None
+        raise InputError(f"bearings.{seat.name}: {exc}") from None

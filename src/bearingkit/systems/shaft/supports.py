@@ -237,8 +237,8 @@ class BearingSeat:
         """The bearing's law with its rows at shaft speed Ω (C,) [rad/s]; :attr:`law` itself when no
         case turns (the zero-speed law, unchanged) or for a linear bearing.
 
-        Raises InputError naming the bearing when its rows cannot take these speeds in one solve (a
-        tapered row takes one speed per solve).
+        Each case's rows run at that case's speed (a load spectrum at several speeds is one solve).
+        Raises InputError naming the bearing when its rows cannot take these speeds.
         """
         if shaft_speed is None or not isinstance(self.bearing, BearingModel):
             return self.law
@@ -251,10 +251,7 @@ class BearingSeat:
         try:
             return BearingLaw(model)
         except InputError as exc:
-            raise InputError(
-                f"bearings.{self.name}: {exc} (the load cases of a shaft with this bearing must share one "
-                "speed: put the cases of each speed in their own file)"
-            ) from None
+            raise InputError(f"bearings.{self.name}: {exc}") from None
 
     def outer_springs(self) -> np.ndarray:
         """Housing stiffness per outer-ring DOF (5,): inf = held rigidly, 0 = free (floating axially)."""
