@@ -213,3 +213,47 @@ def test_a_load_case_that_is_not_a_table_is_one_line_with_case(tmp_path):
     path.write_text(toml_text(data))
     line = one_line(runner.invoke(app, ["system", str(path), "--case", "peak"]))
     assert "load_cases[1]" in line and "internal error" not in line
+
+
+def test_a_failing_later_output_takes_the_earlier_ones_with_it(tmp_path, monkeypatch):
+    """The fuzz (seed 20261129, #5399): ``system --stiffness k.csv --rexs out/x`` wrote the table, then
+    the REXS writer failed (its folder did not exist), leaving the table behind. Now the REXS model is
+    written as every output is (folders made, all or nothing), and one failing write undoes the others."""
+    from bearingkit.errors import InputError
+    from bearingkit.io.rexs import export
+
+    monkeypatch.chdir(tmp_path)
+    gearbox = str(EXAMPLES / "gearbox_two_stage.toml")
+    ok = runner.invoke(app, ["system", gearbox, "--stiffness", "k.csv", "--rexs", "out/x.rexsj"])
+    assert ok.exit_code == 0, ok.stderr
+    assert (tmp_path / "k.csv").is_file() and (tmp_path / "out" / "x.rexsj").is_file()
+
+    def full_disk(data, path, source=None):
+        raise InputError(f"{path}: cannot write the REXS model: no space left on device")
+
+    monkeypatch.setattr(export, "write_rexs_results", full_disk)
+    (tmp_path / "b").mkdir()
+    monkeypatch.chdir(tmp_path / "b")
+    options = ["--report", "r/report.html", "--stiffness", "k.csv", "--rexs", "x.rexsj"]
+    line = one_line(runner.invoke(app, ["system", gearbox, *options]))
+    assert "no space left" in line
+    assert list((tmp_path / "b").iterdir()) == []
+
+
+def test_undo_outputs_keeps_what_existed_before(tmp_path):
+    from bearingkit.cli.common import undo_outputs
+
+    old = tmp_path / "old.csv"
+    old.write_text("kept")
+    new, folder = tmp_path / "a" / "b" / "new.html", tmp_path / "rotors"
+    with pytest.raises(RuntimeError), undo_outputs([old, new, folder]):
+        new.parent.mkdir(parents=True)
+        new.write_text("x")
+        folder.mkdir()
+        (folder / "shaft.toml").write_text("x")
+        raise RuntimeError("a later write failed")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["old.csv"] and old.read_text() == "kept"
+    with undo_outputs([new]):  # no error: nothing removed
+        new.parent.mkdir(parents=True)
+        new.write_text("x")
+    assert new.read_text() == "x"

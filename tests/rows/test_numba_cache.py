@@ -46,3 +46,17 @@ def test_a_fresh_process_uses_the_hashed_directory_under_the_users_base(tmp_path
     used = Path(out.stdout.strip().splitlines()[-1])
     assert used == tmp_path / numba_cache.sources_hash()
     assert used.is_dir()
+
+
+def test_a_second_copy_of_the_same_sources_gets_its_own_cache(tmp_path, monkeypatch):
+    """numba files its cache by the source path: a copy elsewhere (a venv, a clone) must not find the
+    first copy's "built" marker and then compile for a minute on its first large job."""
+    hashes = []
+    for name in ("a", "b"):
+        copy = tmp_path / name / "bearingkit"
+        for rel in numba_cache.COMPILED_SOURCES:
+            (copy / rel).parent.mkdir(parents=True, exist_ok=True)
+            (copy / rel).write_bytes((PACKAGE / rel).read_bytes())
+        monkeypatch.setattr(numba_cache, "_PACKAGE", copy)
+        hashes.append(numba_cache.sources_hash())
+    assert hashes[0] != hashes[1]

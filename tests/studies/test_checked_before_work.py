@@ -93,6 +93,19 @@ def test_more_workers_than_cores_are_refused(tmp_path):
     _refused(tmp_path / "b", lambda d: None, "must lie in 1", "--workers", "0")
 
 
+def test_workers_inside_a_daemonic_process_are_refused_in_one_line(tmp_path, monkeypatch):
+    """The fuzz (seed 20261129, #302, #4321): ``study --workers 2`` run inside a daemonic process (a
+    multiprocessing pool's worker) was an internal error (Python's AssertionError "daemonic processes are
+    not allowed to have children") after the probe had run."""
+    import multiprocessing
+
+    me = multiprocessing.current_process()
+    monkeypatch.setattr(me, "_config", {**me._config, "daemon": True})
+    monkeypatch.setattr(os, "cpu_count", lambda: 4)
+    line = _refused(tmp_path, lambda d: None, "daemonic worker process", "--workers", "2")
+    assert "--workers 1" in line and "--scheduler" in line
+
+
 @pytest.mark.parametrize("address", ["udp://x", "nonsense", "tcp://", "tcp://host:99999", ""])
 def test_a_scheduler_address_is_checked_before_dask_sees_it(tmp_path, address):
     _refused(tmp_path, lambda d: None, "--scheduler", "--scheduler", address)

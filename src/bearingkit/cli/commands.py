@@ -44,6 +44,7 @@ from bearingkit.cli.common import (
     console,
     notes_on_stderr,
     one_line_errors,
+    undo_outputs,
     write_ross,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT
@@ -510,17 +511,20 @@ def shaft(
     data = analysis.to_dict()
     # Files only from a solution that converged: a failed case prints its tables, writes nothing.
     converged = bool(result.converged.all())
-    if converged and stiffness is not None:
-        write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
-    if converged and plot is not None:
-        from bearingkit.report.systems.shaft_plots import write_shaft_figure
+    names = result.loads.names
+    figures = [plot.with_name(f"{plot.stem}_{n}{plot.suffix or '.png'}") for n in names] if plot else []
+    with undo_outputs([stiffness, *figures, ross, report]):  # one failing write undoes the others
+        if converged and stiffness is not None:
+            write_tables([shaft_stiffness_table(result, b.name) for b in inp.system.bearings], stiffness)
+        if converged and plot is not None:
+            from bearingkit.report.systems.shaft_plots import write_shaft_figure
 
-        for c, name in enumerate(result.loads.names):
-            write_shaft_figure(result, plot.with_name(f"{plot.stem}_{name}{plot.suffix or '.png'}"), c)
-    rotors = write_ross(result, ross) if converged and ross is not None else ([], [])
-    data["notes"] += rotors[1]
-    if converged and report is not None:
-        written = analysis.report(report)
+            for c, figure in enumerate(figures):
+                write_shaft_figure(result, figure, c)
+        rotors = write_ross(result, ross) if converged and ross is not None else ([], [])
+        data["notes"] += rotors[1]
+        if converged and report is not None:
+            written = analysis.report(report)
     if as_json:
         _print_json(file, data)
     else:

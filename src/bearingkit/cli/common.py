@@ -359,6 +359,46 @@ def check_outputs(**paths) -> None:
             folders.add(key)
 
 
+class undo_outputs:
+    """``with undo_outputs(paths):`` — a command's several output files, all or nothing.
+
+    Each file is written whole or not at all (:func:`bearingkit.io.export.write_atomic`), but a command
+    that writes a report, then a table, then rotor files failed on the last with the first ones left
+    behind. On any error inside the block this removes every path of ``paths`` (files, or a folder such
+    as ``--ross``'s) that did not exist before, and the folders made for them, then lets the error go on.
+    """
+
+    def __init__(self, paths):
+        self.paths = [Path(p) for p in paths if p is not None]
+
+    def __enter__(self):
+        self.new = [p for p in self.paths if not p.exists()]
+        self.new_folders = []
+        for p in self.new:
+            q = p.parent
+            while not q.exists() and q not in self.new_folders:
+                self.new_folders.append(q)
+                q = q.parent
+        return self
+
+    def __exit__(self, kind, exc, tb):
+        if kind is None:
+            return False
+        import shutil
+
+        for p in self.new:
+            if p.is_dir() and not p.is_symlink():
+                shutil.rmtree(p, ignore_errors=True)
+            else:
+                p.unlink(missing_ok=True)
+        for q in sorted(self.new_folders, key=lambda d: len(d.parts), reverse=True):
+            try:
+                q.rmdir()
+            except OSError:
+                pass
+        return False
+
+
 _ROSS_OPTION = typer.Option(
     None, "--ross", help="Write one ROSS rotor per shaft (ross-rotordynamics .toml) into this folder."
 )

@@ -22,6 +22,7 @@ from bearingkit.cli.common import (
     check_outputs,
     console,
     one_line_errors,
+    undo_outputs,
     write_ross,
 )
 from bearingkit.errors import one_line
@@ -184,21 +185,22 @@ def register(app: typer.Typer) -> None:
         res = analysis.result
         # Files only from a solution that converged: a failed case prints its tables, writes nothing.
         written = []
-        if res.converged.all() and report is not None:
-            written.append(analysis.report(report))
-        if res.converged.all() and stiffness is not None:
-            from bearingkit.systems.drivetrain.output import stiffness_tables
-            from bearingkit.systems.shaft.stiffness import write_tables
+        with undo_outputs([report, stiffness, rexs, ross]):  # one failing write undoes the others
+            if res.converged.all() and report is not None:
+                written.append(analysis.report(report))
+            if res.converged.all() and stiffness is not None:
+                from bearingkit.systems.drivetrain.output import stiffness_tables
+                from bearingkit.systems.shaft.stiffness import write_tables
 
-            written.append(write_tables(stiffness_tables(analysis), stiffness))
-        if res.converged.all() and rexs is not None:
-            from bearingkit.io.rexs.export import write_rexs_results
+                written.append(write_tables(stiffness_tables(analysis), stiffness))
+            if res.converged.all() and rexs is not None:
+                from bearingkit.io.rexs.export import write_rexs_results
 
-            written.append(write_rexs_results(data, rexs))
-        if res.converged.all() and ross is not None:
-            paths, ross_notes = write_ross(analysis, ross)
-            written += paths
-            data["notes"] += ross_notes
+                written.append(write_rexs_results(data, rexs))
+            if res.converged.all() and ross is not None:
+                paths, ross_notes = write_ross(analysis, ross)
+                written += paths
+                data["notes"] += ross_notes
         if as_json:
             _print_json(file, data)
         else:

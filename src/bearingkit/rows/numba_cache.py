@@ -5,7 +5,8 @@ function. The compiled Newton loop (``analysis/solver/compiled_newton.py``) call
 ``rows/*/compiled.py``; after an edit of a row module alone
 (a ``git checkout``, a merge) the loop's cached machine code still holds the old responses and runs
 them silently. Keying the cache directory by a hash of every compiled source (and the numba
-version) makes any change recompile everything, and lets identical sources share one cache.
+version) makes any change recompile everything. numba also files its cache by the sources' path, so
+the directory is keyed by the package's folder too (one cache per installed copy).
 
 :func:`configure` must run before numba reads its configuration; each compiled module calls it
 before importing numba. A ``NUMBA_CACHE_DIR`` the user set is kept as the base directory.
@@ -57,7 +58,13 @@ _DONE: dict[str, str] = {}
 
 
 def sources_hash() -> str:
-    """SHA-256 (first 16 hex digits) of the compiled sources and the installed numba version."""
+    """SHA-256 (first 16 hex digits) of the compiled sources, their folder and the numba version.
+
+    The folder counts because numba files its cache by the source file's path (a subfolder named
+    after a hash of it): a second copy of the same sources (another venv, a clone, a worktree) found
+    the first copy's "built" marker, skipped ``bearingkit compile`` and compiled in the foreground on
+    its first large job (a minute, unannounced: the fuzz saw it as 30 s hangs).
+    """
     from importlib.metadata import PackageNotFoundError, version
 
     digest = hashlib.sha256()
@@ -65,6 +72,7 @@ def sources_hash() -> str:
         digest.update(version("numba").encode())
     except PackageNotFoundError:  # the caller's numba import fails next and says so
         pass
+    digest.update(os.fsencode(_PACKAGE))
     for rel in COMPILED_SOURCES:
         digest.update(rel.encode())
         digest.update((_PACKAGE / rel).read_bytes())

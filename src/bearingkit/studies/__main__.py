@@ -153,6 +153,15 @@ def check_workers(workers) -> None:
             f"--workers ({workers}) must lie in 1 … {cores}, the cores of this machine (each worker is "
             "one process solving on one core)"
         )
+    import multiprocessing
+
+    if workers > 1 and multiprocessing.current_process().daemon:
+        # a daemonic process (a multiprocessing pool's worker, the fuzz's workers) may not start
+        # processes: the pool failed after the probe with Python's AssertionError
+        raise InputError(
+            f"--workers ({workers}) starts worker processes, which this process cannot: it is itself a "
+            "daemonic worker process; give --workers 1, or --scheduler ADDRESS for a Dask cluster"
+        )
 
 
 #: A Dask scheduler address: scheme, host and port (Dask's own schemes over a network).

@@ -19,7 +19,7 @@ import datetime
 import json
 from pathlib import Path
 
-from bearingkit.io.export import to_json
+from bearingkit.io.export import to_json, write_atomic
 
 #: REXS version whose attribute names the export uses.
 REXS_VERSION = "1.4"
@@ -106,7 +106,8 @@ def write_rexs_results(data: dict, path, source=None) -> Path:
     }
     text = to_json(model)
     json.loads(text)  # strict JSON (no NaN)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text("\ufeff" + text + "\n", encoding="utf-8")
-    tmp.replace(path)
-    return path
+    # the one writer of output files: parent folders made, all or nothing (a bare temporary file beside
+    # ``path`` failed when the folder did not exist yet, after the command's other files were written)
+    return write_atomic(
+        path, lambda tmp: tmp.write_text("\ufeff" + text + "\n", encoding="utf-8"), "REXS model"
+    )
