@@ -170,3 +170,23 @@ def test_openmp_waits_passively_unless_the_user_says_otherwise():
     env["OMP_WAIT_POLICY"] = "ACTIVE"
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert out.stdout.split()[-1] == "ACTIVE"
+
+
+def test_single_solves_in_several_threads_share_the_held_pack():
+    """Threads of one process (the web app, a study's chunks) solving single cases at once all read the
+    one typed list that holds the model's pack (compiled_newton._held): the same bits as one by one."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    inp = load_file(os.path.join(ROOT, "examples", "dgbb_6209.toml"))
+    options = dataclasses.replace(inp.options, backend="compiled")
+    rng = np.random.default_rng(11)
+    load = load_vector(F_x=rng.uniform(1e3, 15e3, 64), F_z=rng.uniform(0.0, 2e3, 64))
+
+    def one(c):
+        return solve(inp.model, load[c], free=inp.free, options=options).displacement[0]
+
+    alone = np.array([one(c) for c in range(len(load))])
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        together = np.array(list(pool.map(one, range(len(load)))))
+    np.testing.assert_array_equal(together, alone)
+    assert len({tuple(r) for r in alone}) == len(load)  # every load its own answer
