@@ -41,9 +41,13 @@ def _bearings():
 
 def curve(model, loads, kw, sizes=SIZES) -> dict[int, tuple[float, float, int]]:
     """{n: (thread-seconds per case, wall per case, threads used)} of one call of n cases."""
+    from bearingkit.analysis.solver import backend
     from bearingkit.analysis.solver.quasistatic import solve
     from bearingkit.analysis.solver.threads import parallel_split, solver_threads
 
+    # The compiled core, also when this module runs alone ("auto" would solve the first small
+    # batches of a fresh process on the numpy core, :func:`backend.wants_compiled`).
+    backend.for_batches()
     solve(model, loads[:64], **kw)  # warm-up: the compiled core, the model's plan
     out = {}
     for n in sizes:

@@ -19,10 +19,12 @@ from collections.abc import Callable
 import numpy as np
 
 from bearingkit.analysis.solver import SolverOptions, solve
+from bearingkit.analysis.solver.threads import PARALLEL_MIN_CASES_PER_THREAD
 from bearingkit.rows import numba_cache
 
-#: Cases of the batched solve (more than one so the parallel entry point is compiled).
-BATCH_CASES = 4
+#: Cases of the batched solve: enough for two threads to take the parallel entry point
+#: (:data:`~bearingkit.analysis.solver.threads.PARALLEL_MIN_CASES_PER_THREAD` each), so it is compiled.
+BATCH_CASES = 2 * PARALLEL_MIN_CASES_PER_THREAD
 
 
 def warmup_bearings() -> dict[str, tuple]:

@@ -84,11 +84,41 @@ def test_serial_and_parallel_drivers_agree_bit_for_bit(case):
         _same(serial, out)
 
 
+def test_the_cached_entry_points_give_the_dispatchers_bits():
+    """solve_packed calls each driver through numba's dispatcher once, then through the compiled entry
+    point it kept (no type resolution; the serial driver gets the pack held in a typed list): the
+    later calls must give the first call's bits."""
+    inp = load_file(os.path.join(ROOT, "examples", "dgbb_6209.toml"))
+    rng = np.random.default_rng(3)
+    load = np.ascontiguousarray(load_vector(F_x=rng.uniform(1e3, 15e3, 20), F_z=rng.uniform(0.0, 2e3, 20)))
+    options = dataclasses.replace(qs.DEFAULT_OPTIONS, backend="compiled")
+    plan = qs._plan(inp.model, qs._free_key(inp.free), options, None)
+    args = (plan.pack, np.zeros_like(load), load, plan.free, plan.scale, plan.max_step, plan.limit, options)
+    args += (plan.cone_matrix, False)
+    for parallel, key in ((False, "serial"), (True, "batch")):
+        cache = {}
+        first = plan.solve_packed(*args, parallel, cache, block=3)
+        assert cache[key] is not None, "the entry point was found"
+        again = plan.solve_packed(*args, parallel, cache, block=3)
+        _same(first, again)
+        assert first.flags[0].all()
+    one = [
+        plan.solve_packed(plan.pack, np.zeros((1, 5)), load[c : c + 1], *args[3:], False, cache)
+        for c in (0, 1, 0)
+    ]
+    _same(one[0], one[2])
+    assert not np.array_equal(one[0].q, one[1].q)  # another load, another answer
+
+
 def test_a_batch_too_small_for_the_threads_runs_serially():
+    m = threads.PARALLEL_MIN_CASES_PER_THREAD
+    assert m >= 2
     assert threads.parallel_split(1, 16) == (1, 1)
-    assert threads.parallel_split(3, 2) == (1, 3)  # two threads need 2 cases each
-    assert threads.parallel_split(4, 2) == (2, 1)
-    assert threads.parallel_split(100, 16) == (16, 1)  # 100 cases over 16 threads: blocks of 1
+    assert threads.parallel_split(2 * m - 1, 2) == (1, 2 * m - 1)  # two threads need m cases each
+    assert threads.parallel_split(2 * m, 2) == (2, max(1, 2 * m // 8))
+    assert threads.parallel_split(10, 2) == (1, 10)  # a batch of 10 is serial (issue 34's curve)
+    t = 100 // m  # 100 cases on 16 threads: m cases per thread at least, ~4 blocks per thread
+    assert threads.parallel_split(100, 16) == (t, max(1, 100 // (t * 4)))
     assert threads.parallel_split(100, 2) == (2, 12)  # ~4 blocks per thread
     assert threads.parallel_split(10_000, 2) == (2, threads.PARALLEL_CHUNK)
     assert threads.parallel_split(10_000, 1) == (1, 10_000)
@@ -98,13 +128,14 @@ def test_solve_results_do_not_depend_on_the_thread_count():
     """The public solve at 1, 2 and the default threads, batch sizes around the serial threshold."""
     model = composite_turntable()
     rng = np.random.default_rng(7)
+    n_max = 2 * threads.PARALLEL_MIN_CASES_PER_THREAD + 1  # the largest batch runs on two threads
     load = load_vector(
-        F_z=rng.uniform(1e3, 8e3, 9), F_x=rng.uniform(0, 3e3, 9), M_y=-rng.uniform(0, 1.8e3, 9)
+        F_z=rng.uniform(1e3, 8e3, n_max), F_x=rng.uniform(0, 3e3, n_max), M_y=-rng.uniform(0, 1.8e3, n_max)
     )
     ref = solve(model, load)
     for n_threads in (1, 2):
         with threads.thread_limit(n_threads):
-            for n in (1, 3, 9):
+            for n in (1, 3, 9, 2 * threads.PARALLEL_MIN_CASES_PER_THREAD + 1):
                 got = solve(model, load[:n])
                 np.testing.assert_array_equal(got.displacement, ref.displacement[:n])
                 np.testing.assert_array_equal(got.stiffness, ref.stiffness[:n])
@@ -139,3 +170,23 @@ def test_openmp_waits_passively_unless_the_user_says_otherwise():
     env["OMP_WAIT_POLICY"] = "ACTIVE"
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert out.stdout.split()[-1] == "ACTIVE"
+
+
+def test_single_solves_in_several_threads_share_the_held_pack():
+    """Threads of one process (the web app, a study's chunks) solving single cases at once all read the
+    one typed list that holds the model's pack (compiled_newton._held): the same bits as one by one."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    inp = load_file(os.path.join(ROOT, "examples", "dgbb_6209.toml"))
+    options = dataclasses.replace(inp.options, backend="compiled")
+    rng = np.random.default_rng(11)
+    load = load_vector(F_x=rng.uniform(1e3, 15e3, 64), F_z=rng.uniform(0.0, 2e3, 64))
+
+    def one(c):
+        return solve(inp.model, load[c], free=inp.free, options=options).displacement[0]
+
+    alone = np.array([one(c) for c in range(len(load))])
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        together = np.array(list(pool.map(one, range(len(load)))))
+    np.testing.assert_array_equal(together, alone)
+    assert len({tuple(r) for r in alone}) == len(load)  # every load its own answer

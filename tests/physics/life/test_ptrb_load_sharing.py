@@ -75,3 +75,74 @@ def test_identified_factor_and_table4_prediction():
         sweep_geometry("contact_angle", np.radians(30)), distribution="calibrated"
     ).static_axial
     assert abs(c0a_const / 22.49e3 - 1) > 0.025
+
+
+def _shares_as_first_written(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter=60, tol=1e-10):
+    """The Newton loop of tooth_load_shares as first written (the full Jacobian assembled every
+    iteration, its diagonal added as a matrix): issue 34 made the loop cheaper, not different."""
+    idx = np.arange(n)
+    dist_o = (n - 1 - idx) if support == "opposite" else idx
+    a_i = li[:, None, None] * np.minimum.outer(idx, idx).astype(float)
+    a_o = lo[:, None, None] * np.minimum.outer(dist_o, dist_o).astype(float)
+    t = lr[:, None, None] * np.maximum(idx[:, None] - idx[None, :], 0).astype(float)
+    c = f_roller.size
+    y = np.repeat((f_roller / n)[:, None] ** (1.0 / 3.0), 2 * n, axis=1)
+    w0 = ao * y[:, 0] ** 2 + co * y[:, 0] ** 3
+    u = w0 + ai * y[:, 0] ** 2 + ci * y[:, 0] ** 3
+    scale = ai / f_roller ** (1.0 / 3.0)
+    eye = np.eye(n)
+    for _ in range(max_iter):
+        yi, yo = y[:, :n], y[:, n:]
+        fi, fo = yi**3, yo**3
+        w = w0[:, None] - np.einsum("cij,cj->ci", t, fi - fo)
+        r = np.concatenate(
+            [
+                ai[:, None] * yi**2 + ci[:, None] * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w),
+                ao[:, None] * yo**2 + co[:, None] * fo - (w - np.einsum("cij,cj->ci", a_o, fo)),
+                ((fi.sum(axis=1) - f_roller) * scale)[:, None],
+                ((fo.sum(axis=1) - f_roller) * scale)[:, None],
+            ],
+            axis=1,
+        )
+        di, do = 3 * yi**2, 3 * yo**2
+        jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
+        jac[:, :n, :n] = (a_i - t) * di[:, None, :] + (2 * ai[:, None] * yi + ci[:, None] * di)[
+            :, :, None
+        ] * eye
+        jac[:, :n, n : 2 * n] = t * do[:, None, :]
+        jac[:, :n, 2 * n] = 1.0
+        jac[:, :n, 2 * n + 1] = -1.0
+        jac[:, n : 2 * n, :n] = t * di[:, None, :]
+        jac[:, n : 2 * n, n : 2 * n] = (a_o - t) * do[:, None, :] + (2 * ao[:, None] * yo + co[:, None] * do)[
+            :, :, None
+        ] * eye
+        jac[:, n : 2 * n, 2 * n] = -1.0
+        jac[:, 2 * n, :n] = di * scale[:, None]
+        jac[:, 2 * n + 1, n : 2 * n] = do * scale[:, None]
+        step = np.linalg.solve(jac, -r[..., None])[..., 0]
+        dy = step[:, : 2 * n]
+        y = np.maximum(y + dy, 0.2 * y)
+        w0 = w0 + step[:, 2 * n]
+        u = u + step[:, 2 * n + 1]
+        if (np.max(np.abs(dy) / y, axis=1) < tol).all():
+            break
+    return y[:, :n] ** 3, y[:, n:] ** 3
+
+
+@pytest.mark.parametrize("support", pls.SUPPORTS)
+@pytest.mark.parametrize("n", [1, 2, 7, 16])
+def test_the_cheaper_newton_loop_gives_the_same_bits(n, support):
+    rng = np.random.default_rng(n)
+    c = 9
+    f = rng.uniform(500.0, 5000.0, c)
+    ai, ao = rng.uniform(1e-7, 3e-7, c), rng.uniform(1e-7, 3e-7, c)
+    ci, co = rng.uniform(1e-10, 1e-9, c), rng.uniform(0.0, 1e-9, c)
+    lr, li, lo = (rng.uniform(1e-11, 1e-10, c) for _ in range(3))
+    fi, fo, _, conv = pls.tooth_load_shares(
+        f, n, ai, ao, ci, co, lr, li, lo, support=support
+    )  # fmt: skip
+    ref_i, ref_o = _shares_as_first_written(f, n, ai, ao, ci, co, lr, li, lo, support)
+    assert conv.all()
+    np.testing.assert_array_equal(fi, ref_i)
+    np.testing.assert_array_equal(fo, ref_o)
+    np.testing.assert_allclose(fi.sum(axis=1), f, rtol=1e-9)  # the roller's load is carried

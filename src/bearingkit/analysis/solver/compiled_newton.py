@@ -42,6 +42,7 @@ from bearingkit.rows.threaded.row import ThreadedKernel
 
 configure()  # before numba reads its configuration: the cache follows the compiled sources
 from numba import njit, prange  # noqa: E402
+from numba.typed import List  # noqa: E402
 
 #: A bearing in compiled form: the packed rows of each kind, the start matrices summed over the rows
 #: of one start exponent (G, 5, 5) and those exponents (G,), the row count, the cylindrical rows of
@@ -453,6 +454,29 @@ def _solve_serial(
     return bad
 
 
+@njit(cache=True, nogil=True)
+def _held(mp):
+    """The pack in a one-item typed list (:func:`_solve_held`): built once per model and plan."""
+    held = List()
+    held.append(mp)
+    return held
+
+
+@njit(cache=True, error_model="numpy", nogil=True)
+def _solve_held(
+    q0, load, free, held, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner,
+    out_x,
+):  # fmt: skip
+    """:func:`_solve_serial` with the pack held in a typed list (:func:`_held`).
+
+    Entering a compiled function converts every array argument (~0.1 µs each, a memory block per
+    array); the pack holds 48 of them, 5 µs of a single 6209 solve's ~30 µs in the compiled core
+    (issue 34). A typed list is converted as one object, and its item is the pack already converted.
+    """
+    return _solve_serial(q0, load, free, held[0], scale, idx, p, fracs, cone, given, out_q, out_f, out_k,
+                         out_b, out_n, out_r, inner, out_x)  # fmt: skip
+
+
 def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
     """The arguments of a solve that do not depend on the loads (kept by the caller per model)."""
     idx = np.flatnonzero(free).astype(np.int64)
@@ -476,19 +500,21 @@ def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
         "fracs": np.linspace(1.0 / steps, 1.0, steps) if steps else np.zeros(0),
         "cone": np.zeros((len(idx), 0)) if cone is None else np.ascontiguousarray(cone, dtype=np.float64),
         "flat": _flat(mp),
+        "held": _held(mp),
     }
 
 
-def _serial_entry(args):
-    """The compiled serial driver for these argument types, without the dispatcher's type resolution.
+def _entry(driver, args):
+    """The compiled driver for these argument types, without the dispatcher's type resolution.
 
     Resolving the types of a ModelPack (a namedtuple of ~45 arrays) costs the dispatcher ~10 µs per
-    call, a tenth of a whole single solve; the argument types of one model never change, so the
-    compiled entry point is looked up once (None: let the dispatcher compile or choose).
+    call, a tenth of a whole single solve (and ~12 µs for the parallel driver's 66 arguments); the
+    argument types of one model never change, so the compiled entry point is looked up once (None:
+    let the dispatcher compile or choose).
     """
     try:
-        sig = tuple(_solve_serial.typeof_pyval(a) for a in args)
-        return _solve_serial.overloads[sig].entry_point
+        sig = tuple(driver.typeof_pyval(a) for a in args)
+        return driver.overloads[sig].entry_point
     except Exception:  # not compiled for these types yet, or a numba without this API
         return None
 
@@ -538,16 +564,22 @@ def solve_packed(
     if q0.dtype is not _F64 or not q0.flags.c_contiguous:
         q0 = np.ascontiguousarray(q0, dtype=np.float64)
     if parallel:
-        _solve_batch(q0, load, cache["free"], *cache["flat"], *cache["const"], bool(given),
-                     q, force, stiffness, flags, counts, norm, inner, out_x, np.int64(block))  # fmt: skip
+        args = (q0, load, cache["free"], *cache["flat"], *cache["const"], bool(given))
+        args += (q, force, stiffness, flags, counts, norm, inner, out_x, np.int64(block))
+        entry = cache.get("batch")
+        if entry is None:
+            _solve_batch(*args)
+            cache["batch"] = _entry(_solve_batch, args)
+        else:  # ~12 µs less per call than the dispatcher's type resolution of its 66 arguments
+            entry(*args)
         bad = n - int(np.count_nonzero(flags[0]))
     else:
         entry = cache.get("serial")
-        args = (q0, load, cache["free"], mp, *cache["const"], bool(given))
+        args = (q0, load, cache["free"], cache["held"], *cache["const"], bool(given))
         args += (q, force, stiffness, flags, counts, norm, inner, out_x)
         if entry is None:
-            bad = _solve_serial(*args)
-            cache["serial"] = _serial_entry(args)
+            bad = _solve_held(*args)
+            cache["serial"] = _entry(_solve_held, args)
         else:
             bad = entry(*args)
     return PackedSolution(q, force, stiffness, flags, counts, norm, bad, inner, out_x)

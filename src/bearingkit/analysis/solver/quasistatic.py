@@ -231,8 +231,8 @@ def solve(
             if effort is not None and effort.stopped[c] and not broken[c]:
                 reasons[c] = _out_of_budget(effort, c, options, reasons[c])
     reaction = load
-    if not plan.all_free:
-        reaction[:, ~free] = -force[:, ~free]
+    if not plan.all_free:  # one masked ufunc: fancy indexing cost a single solve ~3 µs
+        np.negative(force, out=reaction, where=plan.fixed)
     result = QuasiStaticResult(
         model=model,
         load=reaction,
@@ -439,6 +439,8 @@ def _free_key(free) -> tuple:
     """``free`` (None or 5 booleans) as a tuple of 5 bools (the key of the per-model solver plan)."""
     if free is None:
         return (True,) * N_DOF
+    if isinstance(free, np.ndarray) and free.dtype == np.bool_ and free.shape == (N_DOF,):
+        return tuple(free.tolist())  # the common case (a loaded bearing's ``free``): ~0.1 µs, not ~1.3
     arr = np.asarray(free, dtype=bool)
     if arr.shape != (N_DOF,):
         raise InputError(f"free (shape {arr.shape}) must be 5 booleans for u_x, u_y, u_z, theta_x, theta_y")
@@ -460,6 +462,8 @@ class _Plan:
         self.kernels = ref.kernels
         self.free, self.options, self.offsets = free, options, offsets
         self.all_free = bool(free.all())
+        self.fixed = ~free  # the DOFs whose reaction a solve reports (read-only)
+        self.fixed.flags.writeable = False
         self.scale, self.idx = ref.scale, ref.idx
         self.max_step, self.limit = ref.max_step, ref.limit
         reach = _model_cache(

@@ -43,9 +43,13 @@ PARALLEL_CHUNK = 32
 #: Measured on the 2-core machine (issue 34): a parallel call of an empty ``prange`` loop costs
 #: 20 µs wall and 38 µs CPU with ``OMP_WAIT_POLICY=PASSIVE`` (55/80 µs with the workqueue layer,
 #: 15 ms with OpenMP's default spinning policy on a loaded machine), while one case of the 6209
-#: (9 balls, the cheapest bearing of the examples) costs 25-35 µs: with two cases per thread the
-#: wake-up is below half a case per thread.
-PARALLEL_MIN_CASES_PER_THREAD = 2
+#: (9 balls, the cheapest bearing of the examples) costs 19-21 µs. Whole calls of the 6209 on the
+#: shared machine (load 2.9, serial vs two threads, wall per case): 4 cases 22.7 vs 24.1 µs, 8 cases
+#: 20.8 vs 20.4, 12 cases 19.4 vs 18.6, 16 cases 19.2 vs 17.2, 64 cases 18.7 vs 15.2. Below 8 cases
+#: per thread the second thread saves at most a few per cent of the wall time for twice the CPU
+#: time (a batch of 10 cases cost 2.0x the thread-seconds per case of a batch of 10⁴ with 2 cases
+#: per thread); from 16 cases on two threads it saves 10 % or more.
+PARALLEL_MIN_CASES_PER_THREAD = 8
 
 #: Blocks each thread should get at least (dynamic scheduling evens out cases of unequal cost).
 BLOCKS_PER_THREAD = 4

@@ -116,37 +116,40 @@ def tooth_load_shares(
     w0 = ao * y[:, 0] ** 2 + co * y[:, 0] ** 3
     u = w0 + ai * y[:, 0] ** 2 + ci * y[:, 0] ** 3
     scale = ai / f_roller ** (1.0 / 3.0)  # equation scaling of the two sums (lengths, like the others)
-    eye = np.eye(n)
     converged = np.zeros(c, dtype=bool)
+    # What does not change between iterations is formed once (issue 34: this loop was half of the
+    # PTRB design optimisation's evaluator): the coupling matrices, the Jacobian's constant entries
+    # (±1 columns, zeros) and the views of its blocks. Every value is computed as before, bit for bit:
+    # the diagonal terms are added to the diagonal instead of adding a diagonal matrix (whose zeros
+    # leave the other entries as they are).
+    a_it, a_ot = a_i - t, a_o - t
+    jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
+    jac[:, :n, 2 * n] = 1.0
+    jac[:, :n, 2 * n + 1] = -1.0
+    jac[:, n : 2 * n, 2 * n] = -1.0
+    j_ii, j_io = jac[:, :n, :n], jac[:, :n, n : 2 * n]
+    j_oi, j_oo = jac[:, n : 2 * n, :n], jac[:, n : 2 * n, n : 2 * n]
+    diag = np.arange(n)
+    ai_, ci_, ao_, co_, scale_ = ai[:, None], ci[:, None], ao[:, None], co[:, None], scale[:, None]
+    r = np.empty((c, 2 * n + 2, 1))
     for _ in range(max_iter):
         yi, yo = y[:, :n], y[:, n:]
         fi, fo = yi**3, yo**3
         w = w0[:, None] - np.einsum("cij,cj->ci", t, fi - fo)
-        r = np.concatenate(
-            [
-                ai[:, None] * yi**2 + ci[:, None] * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w),
-                ao[:, None] * yo**2 + co[:, None] * fo - (w - np.einsum("cij,cj->ci", a_o, fo)),
-                ((fi.sum(axis=1) - f_roller) * scale)[:, None],
-                ((fo.sum(axis=1) - f_roller) * scale)[:, None],
-            ],
-            axis=1,
-        )
+        r[:, :n, 0] = ai_ * yi**2 + ci_ * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w)
+        r[:, n : 2 * n, 0] = ao_ * yo**2 + co_ * fo - (w - np.einsum("cij,cj->ci", a_o, fo))
+        r[:, 2 * n, 0] = (fi.sum(axis=1) - f_roller) * scale
+        r[:, 2 * n + 1, 0] = (fo.sum(axis=1) - f_roller) * scale
         di, do = 3 * yi**2, 3 * yo**2
-        jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
-        jac[:, :n, :n] = (a_i - t) * di[:, None, :] + (2 * ai[:, None] * yi + ci[:, None] * di)[
-            :, :, None
-        ] * eye
-        jac[:, :n, n : 2 * n] = t * do[:, None, :]
-        jac[:, :n, 2 * n] = 1.0
-        jac[:, :n, 2 * n + 1] = -1.0
-        jac[:, n : 2 * n, :n] = t * di[:, None, :]
-        jac[:, n : 2 * n, n : 2 * n] = (a_o - t) * do[:, None, :] + (2 * ao[:, None] * yo + co[:, None] * do)[
-            :, :, None
-        ] * eye
-        jac[:, n : 2 * n, 2 * n] = -1.0
-        jac[:, 2 * n, :n] = di * scale[:, None]
-        jac[:, 2 * n + 1, n : 2 * n] = do * scale[:, None]
-        step = np.linalg.solve(jac, -r[..., None])[..., 0]
+        np.multiply(a_it, di[:, None, :], out=j_ii)
+        j_ii[:, diag, diag] += 2 * ai_ * yi + ci_ * di
+        np.multiply(t, do[:, None, :], out=j_io)
+        np.multiply(t, di[:, None, :], out=j_oi)
+        np.multiply(a_ot, do[:, None, :], out=j_oo)
+        j_oo[:, diag, diag] += 2 * ao_ * yo + co_ * do
+        jac[:, 2 * n, :n] = di * scale_
+        jac[:, 2 * n + 1, n : 2 * n] = do * scale_
+        step = np.linalg.solve(jac, np.negative(r))[..., 0]
         dy = step[:, : 2 * n]
         y = np.maximum(y + dy, 0.2 * y)  # damped: loads stay positive
         w0 = w0 + step[:, 2 * n]
