@@ -374,13 +374,21 @@ def _apply(what: str, data: dict, rng: random.Random, huge: int) -> str:
         cases = data.get("load_cases")
         if isinstance(cases, list) and cases and isinstance(cases[0], dict):
             n = rng.choice((101, 1001, 5000))
-            first = {k: v for k, v in cases[0].items() if not (isinstance(v, list) and len(v) > 50)}
+            # The copied case keeps only small values: a huge array nested inside it (a drivetrain's
+            # torques.sun after huge_array) copied 5000 times made a 500 MB mutant whose making
+            # alone ran past the hang limit (seed 20261201, #4179), a finding of the fuzz itself.
+            first = {k: v for k, v in cases[0].items() if _small(v)}
             data["load_cases"] = [{**first, "name": f"c{i}"} for i in range(n)]
             where = f"load_cases x {n}"
     elif what == "by_key":
         key_name = key if isinstance(parent, dict) else (path[-2] if len(path) > 1 else key)
         parent[key] = _by_key(key_name, value, rng)
     return f"{what} {where}"
+
+
+def _small(value, limit: int = 2_000) -> bool:
+    """Whether a value, however nested, writes as fewer than ``limit`` characters."""
+    return len(repr(value)) < limit
 
 
 def _typo(key: str, rng: random.Random) -> str:

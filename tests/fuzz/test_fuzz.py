@@ -90,3 +90,21 @@ def test_sixty_mutants_through_bearingkit_find_nothing():
     s = run.fuzz(seed=2024, n=60, workers=2)
     assert s["details"] == [], s["details"][:3]
     assert s["mutants"] == 60
+
+
+def test_many_cases_does_not_copy_a_huge_nested_array():
+    """many_cases copies the first load case 101-5000 times without its large values, however deeply
+    nested: seed 20261201's mutant #4179 (huge_array in load_cases.0.torques.sun, then many_cases
+    x 5000) was a 500 MB file whose making took 63 s, reported as a hang of bearingkit."""
+    import random
+
+    data = {"load_cases": [{"name": "a", "speed": "100 rpm", "torques": {"sun": [13] * 20_000}}]}
+    for seed in range(40):
+        trial = {"load_cases": [dict(c) for c in data["load_cases"]]}
+        what = inputs._apply("many_cases", trial, random.Random(seed), 20_000)
+        assert what.startswith("many_cases load_cases x")
+        assert len(trial["load_cases"]) in (101, 1001, 5000)
+        assert all("torques" not in c and c["speed"] == "100 rpm" for c in trial["load_cases"])
+    case = run.make_case(20261201, 4179, run.commands(app), inputs.example_files(), [])
+    assert "many_cases load_cases x 5000" in case.mutations
+    assert max(len(t) for t in case.files.values()) < 5_000_000
