@@ -17,7 +17,7 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install -q -e '.[dev,docs,ross]'
 	touch $(STAMP)
 
-# The compiled solver core, once per machine and version (about a minute; then cached).
+# The compiled solver core, once per installed copy and version (about a minute; then cached).
 compile: $(STAMP)
 	$(BIN)/bearingkit compile
 
