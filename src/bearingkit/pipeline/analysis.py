@@ -28,12 +28,12 @@ when asked for, and only once:
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable
 
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.pipeline import analysis_messages
 from bearingkit.pipeline.analysis_messages import FREE_TILT_LIMIT  # re-exported: its home before the split
 from bearingkit.pipeline.analysis_output import AnalysisOutput
@@ -109,7 +109,7 @@ class Analysis(AnalysisOutput):
     def case_names(self) -> list[str]:
         return [c.name for c in self.input.cases]
 
-    @functools.cached_property
+    @cached_property
     def setup(self):
         """What the statics are solved with: speed, fits and temperatures, tilt, preload
         (:func:`bearingkit.pipeline.conditions.statics_setup`)."""
@@ -117,7 +117,7 @@ class Analysis(AnalysisOutput):
 
         return self._in_file(statics_setup, self)
 
-    @functools.cached_property
+    @cached_property
     def statics(self):
         """QuasiStaticResult of every load case (one batched solve, with the rows at speed, the
         operating clearance, the imposed tilt and the preload of :attr:`setup`)."""
@@ -155,7 +155,7 @@ class Analysis(AnalysisOutput):
         """ClearanceChain of the radial rows (fits and temperatures), or None when none were given."""
         return self.setup.clearance
 
-    @functools.cached_property
+    @cached_property
     def preload(self):
         """Axial force [N] each row carries at rest without external load, or None when not preloaded.
 
@@ -166,7 +166,7 @@ class Analysis(AnalysisOutput):
 
         return preload_state(self)
 
-    @functools.cached_property
+    @cached_property
     def lubrication(self):
         """LubricationResult: film thickness and Λ per contact, ν, ν1, κ, e_C, a_ISO, L_nm, grease life
         (:mod:`bearingkit.analysis.lubrication`); None without a lubricant or a speed."""
@@ -174,7 +174,7 @@ class Analysis(AnalysisOutput):
 
         return lubrication(self)
 
-    @functools.cached_property
+    @cached_property
     def flexible(self):
         """The coupled flexible-ring solve, or None when the input has no flexible ring: a
         :class:`~bearingkit.analysis.structure.StructureResult` for a ``[structure]`` (any bearing,
@@ -190,7 +190,7 @@ class Analysis(AnalysisOutput):
 
         return solve_flexible_input(self.input)
 
-    @functools.cached_property
+    @cached_property
     def flexible_rating(self):
         """RatingResult of the ``[structure]``'s coupled solution (None without one), beside
         :attr:`rating` of the rigid rings (:func:`bearingkit.pipeline.structure.change`)."""
@@ -246,7 +246,7 @@ class Analysis(AnalysisOutput):
             **life,
         )
 
-    @functools.cached_property
+    @cached_property
     def _rating(self):
         from bearingkit.pipeline.rating.statics import ts_statics
 
@@ -285,7 +285,7 @@ class Analysis(AnalysisOutput):
         (frictionless, target case safety 1; :meth:`subsurface_by` for other settings)."""
         return self.subsurface_by()
 
-    @functools.cached_property
+    @cached_property
     def truncation(self):
         """TruncationOutcome: truncated ball contacts as pressures and safeties, and the rating with them
         (:mod:`bearingkit.pipeline.rating.subsurface`)."""
@@ -331,7 +331,7 @@ class Analysis(AnalysisOutput):
 
         return shoulder_fractions(self.input.geometry.model_dump(), self.input.model)
 
-    @functools.cached_property
+    @cached_property
     def limits(self):
         """Speed and load limits per case (limiting and thermal reference speed, seal lip speed, minimum
         load: :class:`~bearingkit.pipeline.limits.OperatingLimits`); None for a bearing no catalogue rule
@@ -340,7 +340,7 @@ class Analysis(AnalysisOutput):
 
         return self._in_file(operating_limits, self)
 
-    @functools.cached_property
+    @cached_property
     def load_diagram(self):
         """Static load diagram of a slewing ring (allowable axial force vs tilting moment,
         :class:`~bearingkit.analysis.slewing.SlewingLoadDiagram`), None for other bearings."""
@@ -359,7 +359,7 @@ class Analysis(AnalysisOutput):
         """RatingResult, or None when the bearing cannot be rated (:attr:`notes` say why)."""
         return self._rating[0]
 
-    @functools.cached_property
+    @cached_property
     def duty_cycle(self):
         """DutyCycleResult: every ``[[duty_cycle]]`` bin rated (one batch) and the combined life
         (Palmgren–Miner, :mod:`bearingkit.pipeline.duty_cycle`); None when the input has no duty cycle."""
@@ -390,7 +390,7 @@ class Analysis(AnalysisOutput):
         """What was assumed or skipped, for every face (not per case)."""
         return analysis_messages.notes(self)
 
-    @functools.cached_property
+    @cached_property
     def warnings(self) -> list[list[str]]:
         """Per case: every doubtful finding of the parts computed for it (statics and ratings always)."""
         return analysis_messages.warnings(self)

@@ -8,7 +8,6 @@ studies and the app use to turn "what the user named" into a
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -17,6 +16,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.io import loader
+from bearingkit.lazy import cached_property
 
 __all__ = ["load_cases_from", "load_input"]
 
@@ -189,7 +189,7 @@ class ModelInput:
 
             object.__setattr__(self, "material", get_material("GCr15"))
 
-    @functools.cached_property
+    @cached_property
     def cases(self) -> tuple:
         """One load case per row of ``load`` (named ``case 0`` …)."""
         return tuple(loader.LoadCase(f"case {i}", self.load[i]) for i in range(self.load.shape[0]))

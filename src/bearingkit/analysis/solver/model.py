@@ -7,9 +7,9 @@ SI units. Builders in :mod:`bearingkit.bearings` return a :class:`BearingModel`;
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 
 
 @dataclass(frozen=True)

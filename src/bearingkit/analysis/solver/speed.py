@@ -21,13 +21,13 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import cached_property
 
 import numpy as np
 
 from bearingkit import checks
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.physics.dynamics.ball_kinematics import RACEWAY_CONTROLS
 
 #: Default density of the rolling elements [kg/m³] (GCr15, bearingkit.materials).

@@ -11,11 +11,10 @@ fibre stress of its section (curved-beam rings; an imported structure gives its 
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
 from bearingkit.analysis.structure.coupling import Coupled, Structure, _combine
+from bearingkit.lazy import cached_property
 
 #: Azimuths (equally spaced, 5°) of the ring shapes in :meth:`StructureResult.to_dict`.
 SHAPE_POINTS = 72
@@ -84,7 +83,7 @@ class StructureResult:
         """(C, N, 3) (radial, axial, tilt) of the outer raceway relative to the inner one."""
         return self._c.x.reshape(self.n_cases, -1, 3)
 
-    @functools.cached_property
+    @cached_property
     def force_balance(self) -> np.ndarray:
         """(C,) largest miss of Σ (F_r e_r + F_z e_z) of the elements on the outer raceway against the load's
         forces (free DOFs), as a share of the largest load force: the equilibrium of the coupled solution."""
@@ -99,7 +98,7 @@ class StructureResult:
         return miss.max(-1) / scale if miss.size else np.zeros(self.n_cases)
 
     # -- the rings ---------------------------------------------------------------------------------
-    @functools.cached_property
+    @cached_property
     def rings(self) -> list[dict]:
         """Per ring part: its deflection and resultants on :data:`SHAPE_POINTS` azimuths (every case)."""
         theta = np.linspace(0.0, 2.0 * np.pi, SHAPE_POINTS, endpoint=False)

@@ -268,17 +268,22 @@ def _f_of_log_kappa(u):
     return f, dfdm * 2.0 * p
 
 
-_START_TABLE: list = []
+#: (F grid, u grid) once built. Built whole and then bound in one assignment: two threads that both
+#: find it missing each build one (the same table), and neither ever sees a half-built one (it was a
+#: list extended in place: two study chunks solving at once made it four items, issue 34).
+_START_TABLE: tuple | None = None
 
 
 def _start_table():
     """F(ρ) on a dense grid of u = ln κ (built once): interpolating it starts Newton within ~1e-6."""
-    if not _START_TABLE:
+    global _START_TABLE
+    table = _START_TABLE
+    if table is None:
         u = np.concatenate(
             [np.linspace(0.0, 0.05, 200), np.linspace(0.05, np.log(MAX_ELLIPTICITY), 3000)[1:]]
         )
-        _START_TABLE.extend([_f_of_log_kappa(u)[0], u])
-    return _START_TABLE
+        table = _START_TABLE = (_f_of_log_kappa(u)[0], u)
+    return table
 
 
 def _exact_kappa(curvature_difference):

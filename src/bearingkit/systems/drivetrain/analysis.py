@@ -26,7 +26,6 @@ L = 1 / Σ_c (f_c / L_c), for every bearing and for the system.
 
 from __future__ import annotations
 
-import functools
 import importlib
 
 import numpy as np
@@ -34,6 +33,7 @@ import numpy as np
 from bearingkit.analysis.rating.assembly import HOUR, system_life
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.pipeline import analyze
 from bearingkit.pipeline.thermal.balance import at_heat_balance, heat_balance_wanted
 from bearingkit.systems.drivetrain import power_flow
@@ -98,7 +98,7 @@ class DrivetrainAnalysis:
     def case_names(self) -> list[str]:
         return list(self.input.loads["names"])
 
-    @functools.cached_property
+    @cached_property
     def omega(self) -> dict | None:
         """Speed (C,) [rad/s] of every shaft (None when the load cases give no speed)."""
         given = self.input.loads["given_speeds"]
@@ -127,7 +127,7 @@ class DrivetrainAnalysis:
             return "inner"
         return "outer" if np.abs(speeds[1]).max() > np.abs(speeds[0]).max() else "inner"
 
-    @functools.cached_property
+    @cached_property
     def laws(self) -> list:
         out = []
         for b in self.drivetrain.bearings:
@@ -135,7 +135,7 @@ class DrivetrainAnalysis:
             out.append(b.seat.law if speeds is None else law_for(b, *speeds))
         return out
 
-    @functools.cached_property
+    @cached_property
     def result(self):
         """The :class:`~bearingkit.systems.drivetrain.result.DrivetrainResult` (one batched Newton)."""
         return solve(self.drivetrain, self.input.loads, self.laws, self.input.options)
@@ -167,7 +167,7 @@ class DrivetrainAnalysis:
             thermal=getattr(self.input, "thermal", None),
         )
 
-    @functools.cached_property
+    @cached_property
     def bearings(self) -> dict:
         """Name → pipeline :class:`~bearingkit.pipeline.Analysis` of every bearing with rows."""
         out = {}
@@ -206,7 +206,7 @@ class DrivetrainAnalysis:
                 out[key][c] = np.inf if unloaded else (np.nan if v is None else float(v))
         return out
 
-    @functools.cached_property
+    @cached_property
     def system_lives(self) -> dict:
         """System L10h (C,) [h] from the ISO/TS 16281 row lives and the ISO 281 lives (module docstring)."""
         n = self.n_cases
@@ -250,7 +250,7 @@ class DrivetrainAnalysis:
         return out
 
     # -- power ------------------------------------------------------------------------------------
-    @functools.cached_property
+    @cached_property
     def power(self) -> dict | None:
         """Power flow per case (C,) [W]: input, bearing and mesh losses, output, efficiency."""
         if self.omega is None:
@@ -284,7 +284,7 @@ class DrivetrainAnalysis:
         }
 
     # -- warnings ---------------------------------------------------------------------------------
-    @functools.cached_property
+    @cached_property
     def warnings(self) -> list[list[str]]:
         res, out = self.result, []
         separated = res.separated_meshes()

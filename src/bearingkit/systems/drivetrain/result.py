@@ -12,13 +12,13 @@ its tangential, radial and axial parts on each gear and the torque it puts on ea
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 from types import SimpleNamespace
 
 import numpy as np
 
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
 from bearingkit.systems.drivetrain.model import HOUSING
 from bearingkit.systems.shaft.beam import NODE_DOF

@@ -18,13 +18,13 @@ on end supports with a load towards −x bends with M_y > 0.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 
 import numpy as np
 from scipy.linalg import cho_solve
 
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.rows.base import DOF_NAMES, LOAD_NAMES, N_DOF
 from bearingkit.systems.shaft import beam
 from bearingkit.systems.shaft.beam import NODE_DOF

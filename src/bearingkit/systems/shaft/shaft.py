@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
-from functools import cached_property
 
 import numpy as np
 
 from bearingkit import checks
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.materials import Material
 from bearingkit.systems.shaft import beam
 from bearingkit.systems.shaft.beam import NODE_DOF

@@ -31,7 +31,6 @@ fits or thermal growth), so each bearing balances at the reaction the shaft give
 from __future__ import annotations
 
 import dataclasses
-import functools
 import importlib
 from dataclasses import dataclass
 
@@ -39,6 +38,7 @@ import numpy as np
 
 from bearingkit.analysis.solver.model import BearingModel
 from bearingkit.errors import InputError
+from bearingkit.lazy import cached_property
 from bearingkit.pipeline import ModelInput, analyze
 from bearingkit.pipeline.thermal.balance import at_heat_balance, heat_balance_wanted
 from bearingkit.systems.shaft.life import combine_ratings
@@ -99,7 +99,7 @@ class SeatInput(ModelInput):
         if np.any(self.free):
             raise InputError("free: a seat input holds all five DOFs at the shaft's solution")
 
-    @functools.cached_property
+    @cached_property
     def cases(self) -> tuple:
         from bearingkit.io.loader import LoadCase
 
@@ -218,7 +218,7 @@ class ShaftAnalysis:
         """True when each bearing's temperature is found by its heat balance (module docstring)."""
         return heat_balance_wanted(self.thermal, self.input)
 
-    @functools.cached_property
+    @cached_property
     def result(self):
         """The :class:`~bearingkit.systems.shaft.result.ShaftResult` (one batched solve of every case)."""
         return self._result if self._result is not None else self.input.solve()
@@ -258,7 +258,7 @@ class ShaftAnalysis:
             thermal=getattr(self.input, "thermal", None),
         )
 
-    @functools.cached_property
+    @cached_property
     def bearings(self) -> dict:
         """Name → :class:`~bearingkit.pipeline.Analysis` of every bearing with rows (not linear ones)."""
         out = {}
@@ -281,7 +281,7 @@ class ShaftAnalysis:
                 ) from None
         return at_heat_balance(out, self.input.source, self.thermal) if self.heat_balance and out else out
 
-    @functools.cached_property
+    @cached_property
     def rating(self):
         """The :class:`~bearingkit.systems.shaft.life.SystemRating`: each bearing's Analysis rating
         combined."""
@@ -300,7 +300,7 @@ class ShaftAnalysis:
                 notes.append(f"system: no system life: bearing(s) {unrated} could not be rated (see notes)")
         return out
 
-    @functools.cached_property
+    @cached_property
     def warnings(self) -> list[list[str]]:
         """Per case: the system's non-convergence, every bearing's warnings (``NAME: …``), the system's."""
         res, out = self.result, []

@@ -32,7 +32,6 @@ single-bearing solve at speed (:func:`bearingkit.analysis.solver.speed.flag_beyo
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 
 import numpy as np
 from scipy.linalg import cho_factor, cho_solve
@@ -40,6 +39,7 @@ from scipy.linalg import cho_factor, cho_solve
 from bearingkit import checks
 from bearingkit.analysis.solver.quasistatic import _merge, _newton
 from bearingkit.errors import ConvergenceError, InputError
+from bearingkit.lazy import cached_property
 from bearingkit.rows.base import LOAD_NAMES, N_DOF
 from bearingkit.systems.shaft.beam import NODE_DOF
 from bearingkit.systems.shaft.loads import ShaftLoads
