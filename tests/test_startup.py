@@ -117,7 +117,8 @@ def test_first_answer_of_a_fresh_install_runs_on_the_numpy_core_with_one_note(tm
     assert data["cases"][0]["converged"] is True
     assert seen["analyze 6205 --load Fr=2kN --json"] == ["numpy", "pydantic", "scipy"]
     notes = [line for line in err.splitlines() if line.startswith("note:")]
-    assert notes == [f"note: {backend.NOT_BUILT_NOTE}"]
+    # BEARINGKIT_BACKGROUND_COMPILE=0 here: the note does not claim a build in the background
+    assert notes == [f"note: {backend.NOT_BUILT_NO_BACKGROUND_NOTE}"]
 
 
 def test_a_one_case_job_does_not_load_the_built_compiled_core(tmp_path):
@@ -138,6 +139,7 @@ def policy(monkeypatch):
     started = []
     monkeypatch.setattr(numba_cache, "start_background_build", lambda: started.append(1) or True)
     monkeypatch.setattr(numba_cache, "numba_installed", lambda: True)
+    monkeypatch.delenv(numba_cache.BACKGROUND_ENV, raising=False)
     return state, started
 
 
@@ -228,3 +230,13 @@ def test_compile_solves_every_kind_on_the_compiled_core_and_marks_it_built(tmp_p
     assert (tmp_path / numba_cache.BUILT_MARKER).is_file()
     second = CliRunner().invoke(app, ["compile"])
     assert "already built" in second.output
+
+
+def test_the_note_says_no_background_build_where_it_is_switched_off(policy, monkeypatch, caplog):
+    _state, _started = policy
+    monkeypatch.setattr(numba_cache, "is_built", lambda: False)
+    monkeypatch.setenv(numba_cache.BACKGROUND_ENV, "0")
+    with caplog.at_level("INFO", logger="bearingkit.solver"):
+        assert not backend.wants_compiled(1)
+    assert [r.getMessage() for r in caplog.records] == [backend.NOT_BUILT_NO_BACKGROUND_NOTE]
+    assert "building it" not in backend.NOT_BUILT_NO_BACKGROUND_NOTE

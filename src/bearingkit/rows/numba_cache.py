@@ -147,6 +147,11 @@ def build_lock(wait: float = 0.0):
         lock.unlink(missing_ok=True)
 
 
+def background_allowed() -> bool:
+    """Whether :data:`BACKGROUND_ENV` allows a background build (anything but ``0``)."""
+    return os.environ.get(BACKGROUND_ENV, "1").strip() != "0"
+
+
 def start_background_build() -> bool:
     """Start ``python -m bearingkit compile --quiet --wait 0`` detached, once per process; True if started.
 
@@ -155,7 +160,7 @@ def start_background_build() -> bool:
     device; it outlives this process (its own session), so a one-line command that answered on the
     numpy core leaves the compiled core built for the next one.
     """
-    if _DONE.get("spawned") or os.environ.get(BACKGROUND_ENV, "1").strip() == "0" or is_built():
+    if _DONE.get("spawned") or not background_allowed() or is_built():
         return False
     _DONE["spawned"] = "1"
     lock = cache_dir() / BUILD_LOCK

@@ -53,6 +53,12 @@ NOT_BUILT_NOTE = (
     "solved on the numpy core: the compiled core is not built yet (building it in the background; "
     "`bearingkit compile` builds it now)"
 )
+#: The same when ``BEARINGKIT_BACKGROUND_COMPILE=0`` stops the background build (it said "building it in
+#: the background" there too, and nothing was building).
+NOT_BUILT_NO_BACKGROUND_NOTE = (
+    "solved on the numpy core: the compiled core is not built yet (no background build: "
+    "BEARINGKIT_BACKGROUND_COMPILE=0; `bearingkit compile` builds it)"
+)
 #: What ``auto`` logs before it compiles the core in the foreground for a large job.
 COMPILING_NOTE = (
     "compiling the solver core once for this {n}-case job (about a minute; `bearingkit compile` does it "
@@ -71,8 +77,9 @@ def loaded() -> bool:
 def wants_compiled(n_cases: int) -> bool:
     """``auto``: whether a job of ``n_cases`` cases should run on the compiled core (see the module doc).
 
-    A small job on the numpy core while the core is not built logs :data:`NOT_BUILT_NOTE` once and
-    starts :func:`bearingkit.rows.numba_cache.start_background_build`.
+    A small job on the numpy core while the core is not built logs :data:`NOT_BUILT_NOTE` once (or
+    :data:`NOT_BUILT_NO_BACKGROUND_NOTE` where the background build is switched off) and starts
+    :func:`bearingkit.rows.numba_cache.start_background_build`.
     """
     if loaded():
         return True
@@ -88,7 +95,7 @@ def wants_compiled(n_cases: int) -> bool:
         return _STATE["numpy_seconds"] > LOAD_BUDGET_S
     if not _STATE.get("noted") and numba_cache.numba_installed():
         _STATE["noted"] = True
-        log.info(NOT_BUILT_NOTE)
+        log.info(NOT_BUILT_NOTE if numba_cache.background_allowed() else NOT_BUILT_NO_BACKGROUND_NOTE)
         numba_cache.start_background_build()
     return False
 
