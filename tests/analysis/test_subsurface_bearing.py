@@ -215,6 +215,15 @@ def test_traction_needs_subsurface():
     assert result.exit_code == 2 and "--subsurface" in result.stderr
 
 
+@pytest.mark.parametrize("traction", ["1e308", "-1.5"])
+def test_traction_beyond_a_friction_coefficient_is_one_line(traction):
+    """|q/p| > 1 is no rolling contact's (the fuzz, seed 20261202 #3407: 1e308 overflowed with a warning)."""
+    result = runner.invoke(app, ["analyze", str(DGBB), "--subsurface", "--traction", traction])
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "traction" in lines[0] and "between -1 and 1" in lines[0]
+
+
 def test_study_outputs():
     from bearingkit.studies.generic import quantities
 

@@ -77,3 +77,25 @@ def test_select_nothing_found_exits_1_with_one_line():
     ]
     result = runner.invoke(app, args)
     assert result.exit_code == 1 and "no catalogue bearing meets" in result.stderr
+
+
+@pytest.mark.parametrize("count", [0, 101, 10**20])
+def test_count_outside_1_to_100_is_one_line(count):
+    """The fuzz (seed 20261202 #2504): --count 10^20 with a life few rows reach analysed every row that
+    passed the screen, one after another, for 32 s."""
+    with pytest.raises(InputError, match=r"count \(\d+\) must be 1 to 100"):
+        select({"F_x": "5 kN"}, "3000 rpm", "20000 h", count=count)
+
+
+def test_the_work_limit_stops_the_full_analyses_with_a_note(monkeypatch):
+    """Past BEARINGKIT_MAX_WORK_S of wall time no further full analysis starts; the note says why and
+    what to do; the screen's counts are those of an unlimited run."""
+    args = ({"F_x": "5 kN", "F_z": "1 kN"}, "3000 rpm", "20000 h")
+    full = select(*args, kind="deep_groove", count=3)
+    monkeypatch.setenv("BEARINGKIT_MAX_WORK_S", "1e-9")
+    cut = select(*args, kind="deep_groove", count=3)
+    assert full.candidates and not cut.candidates and not cut.rejected
+    assert (cut.screened, cut.passed_screen) == (full.screened, full.passed_screen)
+    assert "stopped after 0 full analyses: the work limit" in cut.notes[-1]
+    assert "--count" in cut.notes[-1] and "BEARINGKIT_MAX_WORK_S" in cut.notes[-1]
+    assert not any("stopped after" in n for n in full.notes)

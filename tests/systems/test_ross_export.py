@@ -178,3 +178,31 @@ def test_a_speed_table_is_read_along_the_rotor_speed_axis(tmp_path):
         wn_table, wn_fixed = _modal_wn(indexed, speeds[i], **whirl), _modal_wn(fixed, speeds[i], **whirl)
         assert np.all(wn_fixed > 0)
         assert np.allclose(wn_table, wn_fixed, rtol=1e-6), (speeds[i], wn_table, wn_fixed)
+
+
+def test_repeated_names_become_distinct_rotor_tags(tmp_path):
+    """Two masses of one name (the default "mass", or a table repeated: the fuzz's seed 20261202 #1333
+    ended in ROSS's 'Tags should be unique' as an internal error): the rotor loads, each element tagged
+    once, later repeats with " #2", " #3"."""
+    from bearingkit.systems.ross import ross_rotor
+
+    _ross()
+    text = SPINDLE.read_text(encoding="utf-8")
+    start = text.index("[[shaft.masses]]")
+    block = text[start:].split("\n\n")[0] + "\n\n"
+    for line in text.splitlines():  # the bearing files it names, beside it
+        if line.strip().startswith("file"):
+            name = line.split("=", 1)[1].split("#")[0].strip().strip('"')
+            (tmp_path / name).write_bytes((SPINDLE.parent / name).read_bytes())
+    path = tmp_path / "spindle.toml"
+    path.write_text(text[:start] + block * 3 + text[start + len(block) :], encoding="utf-8")
+    inp = load_shaft_file(path)
+    masses = inp.system.masses
+    assert len(masses) == 3 and len({m.name for m in masses}) == 1
+    res = inp.solve()
+    assert res.converged.all()
+    rotor = ross_rotor(res, [0])
+    name = masses[0].name
+    tags = [d.tag for d in rotor.disk_elements]
+    assert [t for t in tags if t.startswith(name)] == [name, f"{name} #2", f"{name} #3"]
+    assert len(set(tags)) == len(tags)

@@ -51,6 +51,10 @@ CHUNK = 16
 #: (equal pressures along a straight roller are no peak).
 EDGE_PEAK = 1.0001
 #: Raceway labels of the four contacts of a four-point ball (rows.four_point.CONTACTS order).
+#: Largest |q/p| taken [-]: the traction coefficient is a friction coefficient of the contact (rolling
+#: with slip 0.01–0.1; dry sliding steel on steel about 0.6, Bowden & Tabor, from memory); above 1 it is
+#: not a rolling contact's, and 1e308 overflowed the stress field (the fuzz, seed 20261202 #3407).
+MAX_TRACTION = 1.0
 _FOUR_POINT_SIDES = ("outer", "outer", "inner", "inner")
 
 
@@ -454,6 +458,13 @@ def subsurface(
     from bearingkit import checks
 
     checks.finite("traction", traction)
+    if not abs(float(traction)) <= MAX_TRACTION:
+        from bearingkit.errors import InputError
+
+        raise InputError(
+            f"traction ({float(traction):g}) must be between -{MAX_TRACTION:g} and {MAX_TRACTION:g}: it is "
+            "q/p, the contact's friction coefficient (rolling with slip about 0.01-0.1)"
+        )
     checks.positive("target_safety", target_safety)
     converged = np.asarray(result.converged, bool)
     rows, notes = [], []

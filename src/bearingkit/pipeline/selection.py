@@ -27,12 +27,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from bearingkit.budget import MAX_WORK_ENV, max_work
 from bearingkit.errors import InputError
 
 #: Default static safety s0 a candidate must reach (ISO 76 annex: ≥ 1 for normal operation) [-].
 DEFAULT_STATIC_SAFETY = 1.0
 #: Candidates fully analysed at most per requested candidate (the screen passes many more).
 EVALUATIONS_PER_CANDIDATE = 6
+#: Most candidates one selection may ask for: a table longer than this is a search, not a choice
+#: (``bearingkit catalogue`` lists rows by bounds), and 6 × 100 full analyses take about a minute.
+MAX_COUNT = 100
 
 
 @dataclass
@@ -131,8 +135,10 @@ def select(
     if not omega > 0 or not required > 0:
         raise InputError(f"speed ({speed!r}) and life ({life!r}) must be positive")
     count = int(count)
-    if count < 1:
-        raise InputError(f"count ({count}) must be at least 1")
+    if not 1 <= count <= MAX_COUNT:
+        raise InputError(
+            f"count ({count}) must be 1 to {MAX_COUNT}; `bearingkit catalogue` with bounds lists more rows"
+        )
     case = load_cases_from(load, "select")[0]
     f = np.asarray(case.load, float)
     if np.any(np.abs(f[3:]) > 0):
@@ -153,7 +159,14 @@ def select(
     passing.sort(key=lambda s: (s.row.mass if s.row.mass is not None else np.inf, s.row.entry.outer_diameter))
     out.passed_screen = len(passing)
     items = [f"F_x={fr!r} N", f"F_z={fa!r} N"]
+    # The full analyses run one after another until `count` meet the life: when few can, up to 6 ×
+    # count of them. The work limit stops the loop (a note says so) rather than letting a selection
+    # run for minutes unasked (the fuzz: --count 10^20 with a life few rows reach ran 32 s).
+    limit, stopped = max_work(), False
     for s in passing[: EVALUATIONS_PER_CANDIDATE * count]:
+        if time.perf_counter() - start > limit:
+            stopped = True
+            break
         verdict = _evaluate(s, items, omega, required, static_safety)
         (out.candidates if "reason" not in verdict else out.rejected).append(verdict)
         if len(out.candidates) >= count:
@@ -169,6 +182,12 @@ def select(
         f"{out.screened} rows screened, {out.passed_screen} passed the catalogue method, "
         f"{len(out.candidates) + len(out.rejected)} analysed in full ({out.seconds:.3g} s)",
     ]
+    if stopped:
+        out.notes.append(
+            f"stopped after {len(out.candidates) + len(out.rejected)} full analyses: the work limit "
+            f"({limit:g} s, {MAX_WORK_ENV}) was reached before {count} candidates met the life; ask for "
+            "fewer (--count), narrow the search (--kind, bounds) or raise the limit"
+        )
     return out
 
 

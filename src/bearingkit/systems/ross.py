@@ -222,14 +222,31 @@ def _rotor(rs, shaft, mesh, bearings, gears, masses, damping):
             zip(mesh.length, mesh.inner_diameter, mesh.outer_diameter, strict=True)
         )
     ]
-    elems = [ross_bearing(table, int(node), damping=damping, tag=tag) for node, table, tag in bearings]
+    # ROSS refuses two elements with one tag; a shaft file may repeat a name (two masses keep the default
+    # name "mass"; the fuzz repeated a [[shaft.masses]] table 17 times): later ones get " #2", " #3" …
+    tag = _unique_tags()
+    elems = [ross_bearing(table, int(node), damping=damping, tag=tag(name)) for node, table, name in bearings]
     disks = []
     for name, position, mass, diameter in gears:
         if mass > 0:
             ip = mass * diameter**2 / 8.0
-            disks.append(rs.DiskElement(n=mesh.node(position), m=mass, Id=ip / 2.0, Ip=ip, tag=name))
-    disks += [rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=m.name) for m in masses]
+            disks.append(rs.DiskElement(n=mesh.node(position), m=mass, Id=ip / 2.0, Ip=ip, tag=tag(name)))
+    disks += [
+        rs.DiskElement(n=mesh.node(m.position), m=m.mass, Id=0.0, Ip=0.0, tag=tag(m.name)) for m in masses
+    ]
     return rs.Rotor(elements, disks, elems)
+
+
+def _unique_tags():
+    """A function giving each name it is called with once as it is, then with " #2", " #3" … appended."""
+    seen: dict[str, int] = {}
+
+    def tag(name):
+        name = str(name)
+        seen[name] = seen.get(name, 0) + 1
+        return name if seen[name] == 1 else f"{name} #{seen[name]}"
+
+    return tag
 
 
 def drivetrain_rotors(analysis, *, damping: float = 0.0) -> tuple[dict, list[str]]:
