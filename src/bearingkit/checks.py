@@ -21,6 +21,11 @@ def _fmt(value) -> str:
     return f"array(shape={arr.shape}, min={np.nanmin(bad):.6g}, max={np.nanmax(bad):.6g})"
 
 
+def _shown(value, unit: str) -> str:
+    """The value and its unit as a message shows them: "2", "2 mm" (no space left by an empty unit)."""
+    return f"{_fmt(value)} {unit}".rstrip()
+
+
 def scalar_or_array(x):
     """``x`` as float: 0-d arrays come back as numpy scalars, everything else as arrays."""
     x = np.asarray(x, dtype=float)
@@ -42,7 +47,7 @@ def finite(field: str, value, unit: str = ""):
     """Require finite values; return ``value`` unchanged."""
     ok = math.isfinite(value) if type(value) is float else _all_finite(_floats(value))
     if not ok:
-        raise InputError(f"{field} ({_fmt(value)} {unit}) must be finite".replace("  ", " "))
+        raise InputError(f"{field} ({_shown(value, unit)}) must be finite")
     return value
 
 
@@ -50,7 +55,7 @@ def positive(field: str, value, unit: str = ""):
     """Require finite values > 0."""
     finite(field, value, unit)
     if not (value > 0 if type(value) is float else (_floats(value) > 0).all()):
-        raise InputError(f"{field} ({_fmt(value)} {unit}) must be positive".replace("  ", " "))
+        raise InputError(f"{field} ({_shown(value, unit)}) must be positive")
     return value
 
 
@@ -58,7 +63,7 @@ def non_negative(field: str, value, unit: str = ""):
     """Require finite values >= 0."""
     finite(field, value, unit)
     if not (value >= 0 if type(value) is float else (_floats(value) >= 0).all()):
-        raise InputError(f"{field} ({_fmt(value)} {unit}) must be non-negative".replace("  ", " "))
+        raise InputError(f"{field} ({_shown(value, unit)}) must be non-negative")
     return value
 
 
@@ -69,9 +74,7 @@ def in_range(field: str, value, low: float, high: float, unit: str = "", *, clos
     ok = (arr >= low) & (arr <= high) if closed else (arr > low) & (arr < high)
     if not ok.all():
         br = "[]" if closed else "()"
-        raise InputError(
-            f"{field} ({_fmt(value)} {unit}) must lie in {br[0]}{low:g}, {high:g}{br[1]}".replace("  ", " ")
-        )
+        raise InputError(f"{field} ({_shown(value, unit)}) must lie in {br[0]}{low:g}, {high:g}{br[1]}")
     return value
 
 
@@ -79,11 +82,7 @@ def greater(field: str, value, other_field: str, other, unit: str = ""):
     """Require ``value > other`` elementwise, naming both fields."""
     finite(field, value, unit)
     if not np.all(np.asarray(value, dtype=float) > np.asarray(other, dtype=float)):
-        raise InputError(
-            f"{field} ({_fmt(value)} {unit}) must exceed {other_field} ({_fmt(other)} {unit})".replace(
-                "  ", " "
-            )
-        )
+        raise InputError(f"{field} ({_shown(value, unit)}) must exceed {other_field} ({_shown(other, unit)})")
     return value
 
 
