@@ -221,7 +221,7 @@ def test_traction_beyond_a_friction_coefficient_is_one_line(traction):
     result = runner.invoke(app, ["analyze", str(DGBB), "--subsurface", "--traction", traction])
     assert result.exit_code == 2
     lines = result.stderr.strip().splitlines()
-    assert len(lines) == 1 and "traction" in lines[0] and "between -1 and 1" in lines[0]
+    assert len(lines) == 1 and "traction" in lines[0] and "must lie in [-1, 1]" in lines[0]
 
 
 def test_study_outputs():

@@ -444,8 +444,8 @@ def subsurface(
     poisson_ratio : float
         ν of the rings [-].
     traction : float
-        Surface traction coefficient μ = q/p [-] (0: frictionless; ≠ 0 searches every depth over the
-        rolling position, slower).
+        Surface traction coefficient μ = q/p [-], in [−:data:`MAX_TRACTION`, :data:`MAX_TRACTION`]
+        (0: frictionless; ≠ 0 searches every depth over the rolling position, slower).
     target_safety : float
         Case safety the required case depth is computed for [-].
     every_contact : bool
@@ -457,14 +457,7 @@ def subsurface(
     """
     from bearingkit import checks
 
-    checks.finite("traction", traction)
-    if not abs(float(traction)) <= MAX_TRACTION:
-        from bearingkit.errors import InputError
-
-        raise InputError(
-            f"traction ({float(traction):g}) must be between -{MAX_TRACTION:g} and {MAX_TRACTION:g}: it is "
-            "q/p, the contact's friction coefficient (rolling with slip about 0.01-0.1)"
-        )
+    checks.in_range("traction q/p", traction, -MAX_TRACTION, MAX_TRACTION)
     checks.positive("target_safety", target_safety)
     converged = np.asarray(result.converged, bool)
     rows, notes = [], []
