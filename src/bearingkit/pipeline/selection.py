@@ -183,8 +183,9 @@ def select(
         f"{len(out.candidates) + len(out.rejected)} analysed in full ({out.seconds:.3g} s)",
     ]
     if stopped:
+        done = len(out.candidates) + len(out.rejected)
         out.notes.append(
-            f"stopped after {len(out.candidates) + len(out.rejected)} full analyses: the work limit "
+            f"stopped after {done} full {'analysis' if done == 1 else 'analyses'}: the work limit "
             f"({limit:g} s, {MAX_WORK_ENV}) was reached before {count} candidates met the life; ask for "
             "fewer (--count), narrow the search (--kind, bounds) or raise the limit"
         )
