@@ -1,6 +1,6 @@
 """The ring cases of ``bearingkit validate`` (validation/literature_rings.py): each passes its tolerance
-against Roark's, Hetényi's and the everted ring's closed forms, and its result serialises (a numpy bool
-or float in a published value once broke ``validate --json``)."""
+against Roark's, Hetényi's, the everted ring's and the in-plane couples' closed forms, and its result
+serialises (a numpy bool or float in a published value once broke ``validate --json``)."""
 
 import json
 
@@ -8,7 +8,7 @@ import pytest
 
 from bearingkit.validation.registry import all_cases, run_case
 
-PREFIXES = ("roark/", "hetenyi1946/", "ring-eversion/")
+PREFIXES = ("roark/", "hetenyi1946/", "ring-eversion/", "ring-couples/")
 
 
 def _ring_cases():
@@ -21,6 +21,8 @@ def test_ring_cases_are_registered():
         assert f"roark/table9.2/{name}" in ids
     assert "roark/table13.1/case1a/thin-ring-pressure" in ids
     assert "ring-eversion/uniform-twisting-moment" in ids
+    for name in ("M_A", "M_C", "N_A"):
+        assert f"ring-couples/in-plane/theta60/{name}" in ids
 
 
 @pytest.mark.parametrize("case", _ring_cases(), ids=lambda c: c.id)

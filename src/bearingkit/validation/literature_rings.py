@@ -5,6 +5,8 @@
   chord: M_A of its closed form, as reproduced by engineersedge.com "Circular Ring Analysis Roarks
   Formulas 2"), recomputed by the curved ring's Fourier series
   (:mod:`bearingkit.physics.structure.curved_ring`);
+- in-plane couples (the moment load of Roark's Table 9.2): two opposite couples at ±θ on a free thin
+  ring against the least-work closed form written here (:func:`couples_closed_form`);
 - Hetényi (1946): a ring on a Winkler foundation under a point load tends, for λR ≫ 1, to the infinite
   beam on an elastic foundation, w(0) = Qλ/(2k) (λR = 60 here: the ring's curvature moves it by 3e-5);
 - Li et al. (2025), seed 002, condition 1 at the identified compliance scale 0.5: the published
@@ -80,6 +82,84 @@ register(
         tolerance=1e-6,
     )
 )
+
+
+def couple_loads(
+    angle: float, couple: float, radius: float, half_gap: float
+) -> list[tuple[float, float, float]]:
+    """An in-plane couple on the ring's centre line as point forces (angle [rad], F_r [N], F_t [N]).
+
+    Radial forces ∓F at ``angle ± half_gap`` and a tangential force 2F sin(half_gap) at ``angle``: their
+    resultant force is zero exactly and their moment about +z is ``couple`` [N·m] (the radial pair has
+    none about the centre; the tangential force has 2FR sin(half_gap)). They tend to the point couple
+    as half_gap² (the ring model's loads are forces only: a rolling element applies no couple).
+    """
+    f = couple / (2.0 * radius * np.sin(half_gap))
+    return [(angle + half_gap, -f, 0.0), (angle - half_gap, f, 0.0), (angle, 0.0, 2.0 * f * np.sin(half_gap))]
+
+
+def couples_closed_form(theta: float, m0: float, radius: float) -> tuple[float, float, float]:
+    """M_A, M_C [N·m] and N_A [N] of a free thin ring (bending only) under the couple −M0 (clockwise about
+    +z) at x = +θ from the top A and +M0 at x = −θ (mirror-symmetric, self-equilibrated), bearingkit's
+    signs (the curved ring's M, hoop force tension positive).
+
+    Least work written here (Castigliano; the method of Roark & Young 2012 §9.2): by symmetry V_A = 0;
+    on the half ring M(x) = M_A − N_A R(1 − cos x) + M0⟨x − θ⟩⁰ and ∂U/∂M_A = ∫₀^π M dx = 0,
+    ∂U/∂N_A = ∫₀^π M(1 − cos x) dx = 0 give N_A = 2M0 sin θ/(πR), M_A = −(M0/π)(π − θ − 2 sin θ) and
+    M_C = M_A − 2N_A R + M0 = (M0/π)(θ − 2 sin θ) in Roark's signs (M0 turning in the sense of x);
+    (x runs clockwise in bearingkit's frame). bearingkit's M is Roark's with the opposite sign, its hoop
+    force N is Roark's (as in Roark's case 2, ``tests/physics/structure/test_curved_ring.py``).
+    """
+    s = np.sin(theta)
+    m_a = -(m0 / np.pi) * (np.pi - theta - 2.0 * s)
+    m_c = (m0 / np.pi) * (theta - 2.0 * s)
+    n_a = 2.0 * m0 * s / (np.pi * radius)
+    return -m_a, -m_c, n_a
+
+
+def _couples(theta: float) -> tuple[float, float, float]:
+    """M_A, M_C, N_A of the curved ring's series under the couples of :func:`couples_closed_form`, each
+    couple as the force triple of :func:`couple_loads` (Richardson over half gaps 2e-3 and 1e-3 rad:
+    the gap's error is in its square)."""
+    out = []
+    for gap in (2e-3, 1e-3):
+        loads = couple_loads(np.pi / 2 - theta, -_W * _R, _R, gap) + couple_loads(
+            np.pi / 2 + theta, _W * _R, _R, gap
+        )
+        total = np.zeros((2, 4))
+        for ang, f_r, f_t in loads:
+            k = cr.resultants(np.array([np.pi / 2, -np.pi / 2]) - ang, _THIN, 2048)
+            total += k[:, :, 0] * f_r + k[:, :, 1] * f_t
+        out.append(total)
+    r = (4.0 * out[1] - out[0]) / 3.0
+    return float(r[0, 1]), float(r[1, 1]), float(r[0, 0])
+
+
+_COUPLES = (
+    "Closed form by least work written here (thin ring, bending only; the method of " + _ROARK + "); "
+    "the load of Roark's in-plane couple case (M_A = −(M0/π)(π − θ − 2 sin θ), N_A = 2M0 sin θ/(πR), "
+    "Roark's signs; Roark's own table from memory: the search tool could not show it)"
+)
+for _i, _name in enumerate(("M_A", "M_C", "N_A")):
+    register(
+        Case(
+            id=f"ring-couples/in-plane/theta60/{_name}",
+            source=_COUPLES,
+            quantity=(
+                f"{_name} of a free thin ring, couples ∓M0 = ∓200 N·m at ±60° from the top, R = 0.2 m "
+                "(bearingkit's signs)"
+            ),
+            unit="N" if _name == "N_A" else "N*m",
+            published=float(couples_closed_form(_T, _W * _R, _R)[_i]),
+            compute=lambda i=_i: _couples(_T)[i],
+            tolerance=1e-6,
+            role="diagnostic",
+            note=(
+                "a closed form derived here, not a published number: shown by validate --all, not counted "
+                "(tests/validation/test_ring_cases.py asserts it passes)"
+            ),
+        )
+    )
 
 
 def _hetenyi() -> float:

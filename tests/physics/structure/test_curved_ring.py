@@ -4,7 +4,8 @@ thin ring and an independent least-work (Castigliano) solution written here.
 Roark & Young (2012) Table 9.2, case 2 (two equal and opposite forces W along a chord at ±θ from the top
 A, as reproduced by engineersedge.com "Circular Ring Analysis Roarks Formulas 2"): M_A, M_C, N_A of the
 thin ring (α = β = 0). Case 1 (ΔD = −(π/4 − 2/π) PR³/EI along the loads), case 15 (own weight on a
-point support) and the uniform pressure (Δr = pR²/EA, Roark Table 13.1 thin ring) likewise. Roark's
+point support) and the uniform pressure (Δr = pR²/EA, Roark Table 13.1 thin ring) likewise; in-plane
+couples against a least-work closed form (validation/literature_rings.py). Roark's
 hoop-deformation factor α = I/(AR²) (the coupling of M and N in a curved bar) is NOT in this model;
 its size is measured in :func:`test_roark_hoop_factor_is_left_out`.
 """
@@ -14,6 +15,7 @@ import pytest
 
 from bearingkit.physics.structure import curved_ring as cr
 from bearingkit.physics.structure import thin_ring
+from bearingkit.validation import literature_rings as lr
 
 R, EI, W = 0.2, 500.0, 1000.0
 
@@ -68,6 +70,37 @@ def test_roark_case2_forces_along_a_chord(theta):
     n_a = -W / np.pi * (np.pi - theta + s * c)
     assert -f[:, 1] == pytest.approx([m_a, m_c], rel=1e-6, abs=1e-9 * W * R)
     assert f[0, 0] == pytest.approx(n_a, rel=1e-6)
+
+
+@pytest.mark.parametrize("theta", [np.pi / 6, np.pi / 3, np.pi / 2, 2 * np.pi / 3])
+def test_in_plane_couples_against_least_work(theta):
+    """The moment load of Roark's Table 9.2: couples ∓M0 at x = ±θ from the top of a free thin ring, each
+    as three point forces of zero resultant (the ring takes forces only), against the least-work closed
+    form (validation/literature_rings.couples_closed_form): M_A, M_C and N_A to 1e-6 (measured ≤ 2e-8)."""
+    gap, m0 = 1e-3, W * R
+    triple = lr.couple_loads(0.7, m0, R, gap)
+    force = sum(
+        np.array([fr * np.cos(a) - ft * np.sin(a), fr * np.sin(a) + ft * np.cos(a)]) for a, fr, ft in triple
+    )
+    assert np.abs(force).max() < 1e-9 * m0 / R  # a couple: no resultant force
+    assert sum(ft * R for _, _, ft in triple) == pytest.approx(m0, rel=1e-12)  # radial forces: no moment
+    ring = _ring(ea=1e9 * EI / R**2)
+    f = [
+        _resultants_at(
+            ring,
+            [np.pi / 2, -np.pi / 2],
+            lr.couple_loads(np.pi / 2 - theta, -m0, R, g) + lr.couple_loads(np.pi / 2 + theta, m0, R, g),
+        )
+        for g in (2 * gap, gap)
+    ]
+    f = (4 * f[1] - f[0]) / 3  # the gap's error is in its square
+    m_a, m_c, n_a = lr.couples_closed_form(theta, m0, R)
+    assert f[:, 1] == pytest.approx([m_a, m_c], rel=1e-6)
+    assert f[0, 0] == pytest.approx(n_a, rel=1e-6)
+    # the closed form itself: the moment jumps by M0 across the couple (M_C − M_A + 2N_A R = M0 in
+    # Roark's signs), and the two couples cancel as θ → 0
+    assert -(m_c - m_a) + 2 * n_a * R == pytest.approx(m0, rel=1e-12)
+    assert lr.couples_closed_form(1e-9, m0, R)[2] == pytest.approx(0.0, abs=1e-8 * m0 / R)
 
 
 def test_roark_hoop_factor_is_left_out():
