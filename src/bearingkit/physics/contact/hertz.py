@@ -28,11 +28,11 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 import numpy as np
-from scipy import special
 
 from bearingkit import checks
 from bearingkit.checks import scalar_or_array as _out
 from bearingkit.errors import InputError
+from bearingkit.physics.contact.elliptic import complete_integrals
 
 __all__ = [
     "POINT_METHODS",
@@ -252,14 +252,13 @@ def curvature_difference_from_radii(radius_x, radius_y):
 def _f_of_log_kappa(u):
     """F(rho) and dF/du at u = ln(kappa), with stable elliptic integrals.
 
-    Uses p = 1/kappa^2 = 1 - m, K = ellipkm1(p), E = ellipe(m) and
-    K - E = (m/3) R_D(0, p, 1) (Carlson), so that F = 1 - 2 p R_D / (3 E) has no cancellation
+    Uses p = 1/kappa^2 = 1 - m, E(m) and K - E = (m/3) R_D(0, p, 1) (Carlson;
+    :mod:`bearingkit.physics.contact.elliptic`), so that F = 1 - 2 p R_D / (3 E) has no cancellation
     near kappa = 1.
     """
     p = np.exp(-2.0 * u)
     m = -np.expm1(-2.0 * u)
-    big_e = special.ellipe(m)
-    d_int = special.elliprd(0.0, p, 1.0) / 3.0  # D(m) = (K - E)/m
+    _, big_e, d_int = complete_integrals(p)  # D(m) = (K - E)/m = R_D(0, p, 1)/3
     f = 1.0 - 2.0 * p * d_int / big_e
     ratio = d_int / big_e
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -313,8 +312,8 @@ def _exact_kappa(curvature_difference):
 
 def _exact_integrals(curvature_difference):
     kappa = _exact_kappa(curvature_difference)
-    p = 1.0 / kappa**2
-    return kappa, special.ellipkm1(p), special.ellipe(1.0 - p)
+    big_k, big_e, _ = complete_integrals(1.0 / kappa**2)
+    return kappa, big_k, big_e
 
 
 def _hb_kappa(curvature_difference):

@@ -47,9 +47,9 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import elliprd
 
 from bearingkit import checks, references
+from bearingkit.physics.contact.elliptic import carlson_rf_rd
 
 __all__ = [
     "PLANE_NODES",
@@ -148,7 +148,7 @@ def _check(semi_major, semi_minor, max_pressure, poisson_ratio):
 
 def _rd(x, y, z):
     """(2/3) R_D(x, y, z) = ∫₀^∞ dt / ((t+x)^½ (t+y)^½ (t+z)^{3/2})."""
-    return (2.0 / 3.0) * elliprd(x, y, z)
+    return (2.0 / 3.0) * carlson_rf_rd(x, y, z)[1]
 
 
 def axis_stresses(depth, semi_major, semi_minor, max_pressure, poisson_ratio) -> AxisStresses:

@@ -18,9 +18,9 @@ or taken from the cited primary/secondary source, with its reliability stated.
 from __future__ import annotations
 
 import numpy as np
-from scipy.special import ellipe
 
 from bearingkit import checks, references
+from bearingkit.physics.contact.elliptic import ellipe
 
 references.add(
     "tabor1955",

@@ -27,9 +27,9 @@ from __future__ import annotations
 
 import difflib
 import re
+from statistics import NormalDist
 
 import numpy as np
-from scipy.special import ndtri
 
 from bearingkit import checks, references
 from bearingkit.errors import InputError
@@ -254,4 +254,5 @@ def fit_interference(shaft, hole, statistic="mean"):
     if not 0.0 < p < 100.0:
         raise InputError(f"statistic ({p:g}) must be 'mean', 'min', 'max' or a percentile in (0, 100)")
     sigma = np.hypot((su - sl) / (2 * FIELD_SIGMAS), (hu - hl) / (2 * FIELD_SIGMAS))
-    return float(np.clip(mean + ndtri(p / 100.0) * sigma, smallest, largest))
+    # the standard normal quantile (the standard library's: scipy.special costs ~0.3 s to import)
+    return float(np.clip(mean + NormalDist().inv_cdf(p / 100.0) * sigma, smallest, largest))
