@@ -51,6 +51,7 @@ def test_bore_codes(code, bore):
         ("NA49/22 C3", "needle_roller", "NA49/22", "C3", ()),
         ("NA4822", "needle_roller", "NA4822", None, ()),
         ("302/22", "tapered_roller", "302/22", None, ()),
+        ("NU 10/500 M C3", "cylindrical_roller", "NU10/500", "C3", ("M",)),
         ("320/28 XJ", "tapered_roller", "320/28X", None, ("J",)),
         ("6406 ZZ", "deep_groove_ball", "6406", None, ("ZZ",)),
     ],

@@ -36,7 +36,7 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("four_point_contact_ball", re.compile(r"^(QJ\s?[23])(\d\d)(.*)$")),
     ("needle_roller", re.compile(r"^(R?NA\s?4[89])(\d\d|/\d\d)(.*)$")),
     ("double_row_cylindrical_roller", re.compile(r"^(NN\s?(?:30|49))(\d\d)(.*)$")),
-    ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|19|22|23|2|3)(\d\d)(.*)$")),
+    ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|19|22|23|2|3)(\d\d|/\d+)(.*)$")),
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
     ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[012])(\d\d|/\d\d)(.*)$")),
