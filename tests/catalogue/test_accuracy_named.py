@@ -101,6 +101,18 @@ EXCEPTIONS = {
     "NU10, bores 55-65 mm: NSK's rollers are shorter there than the 0.42 B - 1 mm rule (C0 +11…+15 %)": [
         "NU1011", "NU1012", "NU1013",
     ],
+    "NU10 from 110 mm (NSK B92-B98): C -10…-18 %, C0 -7…-15 %: the NU10 roller (0.22 (D - d), 0.42 B - 1 mm, "
+    "chosen on the 25-80 mm sizes) is below the one NSK's ratings imply; NSK's E_w - F_w gives D_w = "
+    "0.24-0.25 (D - d) at every size, and a length 0.47 B would bring C to -8…+1 % (tried, not adopted)": [
+        "NU1022", "NU1024", "NU1026", "NU1030", "NU1032", "NU1034", "NU1036", "NU1038", "NU1044", "NU1048",
+        "NU1052", "NU1056", "NU1060", "NU1064", "NU1068", "NU1072", "NU1076", "NU1080", "NU1084", "NU1088",
+        "NU1092", "NU1096", "NU10/500",
+    ],
+    "cylindrical wide series 22/23 E, 100-200 mm (NSK B92-B96): C0 -10…-14 % (NU2220E also C -12 %): NSK's "
+    "ratings imply more roller length or rollers than the family rule (0.63 B - 1 mm, 0.27 (D - d), chosen "
+    "on the 20-80 mm sizes); NSK publishes neither": [
+        "NU2220E", "NU2236E", "NU2240E", "NU2320E", "NU2324E", "NU2326E",
+    ],
     "30202: NSK's non-HR design (the HR series is NSK's high-capacity one)": ["30202"],
     "long rollers: the 1.0 mm end allowance on top of the 0.23 (D - d) roller leaves C −10…−11 %": [
         "30211", "30217", "30309", "32211", "32216",
