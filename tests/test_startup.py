@@ -115,7 +115,8 @@ def test_first_answer_of_a_fresh_install_runs_on_the_numpy_core_with_one_note(tm
     seen, out, err = _run([["analyze", "6205", "--load", "Fr=2kN", "--json"]], env=env)
     data = json.loads(out)
     assert data["cases"][0]["converged"] is True
-    assert seen["analyze 6205 --load Fr=2kN --json"] == ["numpy", "pydantic", "scipy"]
+    # no scipy: scipy.special alone cost ~0.3 s of the answer (physics/contact/elliptic.py, issue 42)
+    assert seen["analyze 6205 --load Fr=2kN --json"] == ["numpy", "pydantic"]
     notes = [line for line in err.splitlines() if line.startswith("note:")]
     # BEARINGKIT_BACKGROUND_COMPILE=0 here: the note does not claim a build in the background
     assert notes == [f"note: {backend.NOT_BUILT_NO_BACKGROUND_NOTE}"]

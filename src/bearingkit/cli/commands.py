@@ -48,7 +48,6 @@ from bearingkit.cli.common import (
     write_ross,
 )
 from bearingkit.cli.flagship import FLAGSHIP_REPORT
-from bearingkit.cli.help_imports import import_typer_help
 from bearingkit.cli.system import register as _register_system
 from bearingkit.errors import InputError, error_line, quote
 
@@ -592,7 +591,6 @@ _register_system(app)
 
 def main() -> None:
     """Entry point: one-line errors for bad input, exit code 2; the solver's notes on stderr."""
-    import_typer_help()  # help without rich.markdown / rich.traceback (cli/help_imports.py)
     notes_on_stderr()
     try:
         app()

@@ -1,16 +1,16 @@
 """typer's help formatter without the two rich modules it imports at load time and help never uses.
 
-``typer.rich_utils`` (loaded by the first ``--help`` or usage error) imports ``rich.markdown`` (which
-loads markdown-it-py, ~40 ms) and ``rich.traceback`` (which loads ``rich.pretty``, ~25 ms) at module
-level. In the markup mode the command line uses ("rich") help renders neither: ``Markdown`` only
-formats the "markdown" mode's text, ``Traceback`` only an uncaught exception. Those ~65 ms were a
-fifth of ``bearingkit --help`` (issue 42: < 0.3 s; ``benchmarks/bench_startup.py``).
+``typer.rich_utils`` (loaded by the first ``--help`` or usage error) imports ``rich.markdown`` (which loads
+markdown-it-py, ~40 ms) and ``rich.traceback`` (which loads ``rich.pretty``, ~25 ms) at module level. In the
+markup mode the command line uses ("rich") help renders neither: ``Markdown`` only formats the "markdown"
+mode's text, ``Traceback`` only an uncaught exception. Those ~65 ms were a fifth of ``bearingkit --help``
+(issue 42: < 0.3 s; ``benchmarks/bench_startup.py``).
 
-:func:`import_typer_help` imports ``typer.rich_utils`` while the two modules are stand-ins whose
-``Markdown`` and ``Traceback`` import the real module on first use, then removes the stand-ins from
-``sys.modules``: a later ``import rich.traceback`` anywhere gets the real module, and
-``typer.rich_utils`` keeps two names that build real rich objects when called (the help text is the
-same character for character, and an uncaught exception still prints rich's traceback:
+:func:`import_typer_help` (called when :mod:`bearingkit.cli` is imported) imports ``typer.rich_utils`` while
+the two modules are stand-ins whose ``Markdown`` and ``Traceback`` import the real module on first use, then
+removes the stand-ins from ``sys.modules``: a later ``import rich.traceback`` anywhere gets the real module,
+and ``typer.rich_utils`` keeps two names that build real rich objects when called (the help text is the same
+character for character, and an uncaught exception still prints rich's traceback:
 ``tests/test_cli_help_imports.py``).
 """
 
