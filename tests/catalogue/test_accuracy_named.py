@@ -115,9 +115,21 @@ EXCEPTIONS = {
     ],
     "30202: NSK's non-HR design (the HR series is NSK's high-capacity one)": ["30202"],
     "long rollers: the 1.0 mm end allowance on top of the 0.23 (D - d) roller leaves C −10…−11 %": [
-        "30211", "30217", "30309", "32211", "32216",
+        "30211", "30217", "30309", "32211", "32216", "32319",
     ],
-    "31318: the largest 313 size, steep cup angle (e = 0.83): C0 +15 %": ["31318"],
+    "tapered, NSK's standard (non-HR) design, the only one NSK prints for these sizes (B124-B130): where NSK "
+    "prints both designs of one size (30326, 30330, 30332, 30334) the non-HR C is 12-16 % and C0 12-19 % "
+    "below the HR one's, and the rules follow the HR rows (C +5…+16 %, C0 +10…+24 %); other non-HR sizes "
+    "(30344-30352, 32244-32264, 32328-32364) are within 10 %": [
+        "30244", "30248", "30252", "30256", "30260", "30264", "30336", "30338", "30340", "32326",
+    ],
+    "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
+    "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],
+    "32232: NSK's C0 in N (1 120 000, B126) disagrees with its own {kgf} column (125 000 kgf = 1 226 000 N); "
+    "the row keeps the N value, against the kgf one the estimate is +1.7 %": ["32232"],
+    "31318: steep cup angle (e = 0.83): C0 +15 %; NSK rates its C0 at the smaller 31317's (315 kN, B122)": [
+        "31318"
+    ],
     "thrust ball, small and 115 mm sizes: the cage pitch 1.05 gives one ball more than NSK's": [
         "51100", "51101", "51115", "51203", "51315",
     ],
