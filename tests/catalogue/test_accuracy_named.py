@@ -120,8 +120,8 @@ EXCEPTIONS = {
     "tapered, NSK's standard (non-HR) design, the only one NSK prints for these sizes (B124-B130): where NSK "
     "prints both designs of one size (30326, 30330, 30332, 30334) the non-HR C is 12-16 % and C0 12-19 % "
     "below the HR one's, and the rules follow the HR rows (C +5…+16 %, C0 +10…+24 %); other non-HR sizes "
-    "(30344-30352, 32244-32264, 32328-32364) are within 10 %": [
-        "30244", "30248", "30252", "30256", "30260", "30264", "30336", "30338", "30340", "32326",
+    "(30344-30352, 32244-32264, 32328-32364, 32980, 32984) are within 10 %": [
+        "30244", "30248", "30252", "30256", "30260", "30264", "30336", "30338", "30340", "32326", "32976",
     ],
     "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
     "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],

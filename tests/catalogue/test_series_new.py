@@ -2,7 +2,8 @@
 row); spherical 213, 230, 231, 232, 240, 241; tapered 329, 330, 331. Dimensions only (no stored catalogue
 printed their ratings): each row names where its d, D, B come from, the rows of the same ISO 15 dimension
 series agree with the rows they were taken from, and the two geometric rules that replace the e these
-rows lack are checked against the rows that print one."""
+rows lack are checked against the rows that print one. (The 329 sizes above 200 mm, 32944-32984, were
+added later from NSK E1102 B128-B130 with their ratings.)"""
 
 from __future__ import annotations
 
@@ -34,6 +35,10 @@ def test_every_new_row_names_its_source_and_has_no_invented_rating(family, serie
     rows = _rows(family, series)
     assert len(rows) >= 9, (family, series)
     for e in rows:
+        if e.source.startswith("NSK-E1102:"):
+            # 32944-32984, read later from NSK's tables (B128-B130) with their ratings
+            assert e.C is not None and e.C0 is not None, e.designation
+            continue
         assert e.C is None and e.C0 is None and "no rating" in e.source
         assert e.source.startswith(("ISO 15 dimension series", "ISO 355 series")), e.source
         # what was not read from a stored table says so
