@@ -59,7 +59,21 @@ def test_catalogue_lists_pattern_with_ratings():
 
 def test_catalogue_pattern_without_match():
     result = runner.invoke(app, ["catalogue", "9999*"])
-    assert result.exit_code == 2 and "match no designation" in result.stderr
+    assert result.exit_code == 2 and "no designation matches pattern '9999*'" in result.stderr
+
+
+def test_bounds_without_match_name_what_was_typed():
+    """The issue's own search (6208 C = 29.1 kN; 6308 has D = 90 mm): the message names the bounds given,
+    not the pattern '*' the user never typed."""
+    args = ["catalogue", "--d", "40", "--D-max", "80", "--kind", "deep_groove", "--C-min", "30kN"]
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    line = result.stderr.strip()
+    assert line == (
+        "error: catalogue: no designation matches --kind deep_groove, --d 40, --D-max 80, --C-min 30kN; "
+        "widen a bound or the pattern (e.g. '62*')"
+    )
+    assert "'*'" not in line and result.stdout == ""
 
 
 def test_catalogue_series_patterns_list_the_new_series():

@@ -76,8 +76,16 @@ def catalogue(
         C0_min=_force(C0_min, "--C0-min"),
     )
     if not rows:
+        given = [f"pattern {pattern!r}"] if pattern != "*" else []
+        for flag, value in (("--kind", kind), ("--d", d), ("--d-min", d_min), ("--d-max", d_max),
+                            ("--D-min", D_min), ("--D-max", D_max), ("--B-max", B_max), ("--C-min", C_min),
+                            ("--C0-min", C0_min)):  # fmt: skip
+            if value is not None:
+                given.append(f"{flag} {value}")
+        # what the user typed, not the default pattern '*' they never wrote
         raise InputError(
-            f"catalogue pattern ({pattern!r}) and bounds match no designation; widen them (try '62*' or '*')"
+            f"catalogue: no designation matches {', '.join(given) or 'the whole catalogue'}; "
+            "widen a bound or the pattern (e.g. '62*')"
         )
     out = [r.to_dict() for r in rows]
     if as_json:
