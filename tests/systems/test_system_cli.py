@@ -135,3 +135,17 @@ def test_case_keeps_the_named_load_cases_and_refuses_an_unknown_one(tmp_path):
     out = runner.invoke(app, ["system", model, "--case", "nope"])
     assert out.exit_code == 2 and "no load case 'nope'" in out.output and "'peak'" in out.output
     assert len(out.output.strip().splitlines()) == 1
+
+
+def test_the_bearing_table_says_whether_a_temperature_is_given_or_found():
+    """Without --heat the column shows the load case's temperature marked "given" (a bare 70 read as a
+    computed temperature); the JSON says the same with temperature_found."""
+    runner = CliRunner()
+    args = ["system", str(EXAMPLES / "gearbox_two_stage.toml"), "--case", "rated"]
+    out = runner.invoke(app, args, env={"COLUMNS": "220"})
+    assert out.exit_code == 0, out.output
+    rows = [line for line in out.output.splitlines() if line.startswith("│ input_A")]
+    assert len(rows) == 1 and rows[0].rstrip(" │").split("│")[-2].strip().endswith("given")
+    data = json.loads(runner.invoke(app, [*args, "--json"]).stdout)
+    summaries = [b["summary"] for b in data["cases"][0]["bearings"]]
+    assert summaries and not any(s["temperature_found"] for s in summaries)

@@ -93,7 +93,8 @@ def case_tables(c: dict) -> list:
             _num(s["L10h_iso281_h"], 1.0, ".4g"),
             _num(s["L10h_h"], 1.0, ".4g"),
             _num(s["power_loss_W"], 1.0, ".3g"),
-            _num(s["temperature_C"], 1.0, ".4g") + (" found" if s["temperature_found"] else ""),
+            # "given": the load case's temperature (no --heat), which a bare 70 read as a result
+            _num(s["temperature_C"], 1.0, ".4g") + (" found" if s["temperature_found"] else " given"),
             str(s["warnings"]),
         )
     out.append(bearings)
