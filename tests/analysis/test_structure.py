@@ -58,7 +58,7 @@ def _independent_6209(model, load):
             return np.concatenate([[q @ np.cos(psi) / f_x - 1.0], (w - g @ q) * 1e6])
 
         x0 = np.concatenate([[2e-5], np.zeros(psi.size)])
-        x = scipy.optimize.fsolve(equations, x0, xtol=1e-14, maxfev=20000)
+        x = scipy.optimize.fsolve(equations, x0, xtol=1e-12, maxfev=20000)  # 1e-14: "too small" warning
         assert np.abs(equations(x)).max() < 1e-9
         out.append(k_n * np.maximum(x[0] * np.cos(psi) - gap - x[1:], 0.0) ** 1.5)
     return np.array(out)
