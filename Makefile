@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 #: Test processes (pytest-xdist): one per core.
 JOBS   ?= auto
 
-.PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz
+.PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz ross3
 
 # One pip run installs everything `make run` and `make test` need: the tests, the docs site and the
 # optional rotordynamics extra (ross-rotordynamics; the ROSS export test, tests/systems/test_ross_export.py,
@@ -45,6 +45,17 @@ CI_FUZZ_N ?= 300
 fuzz: compile
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --seed $(SEED) --n $(N)
 
+# ROSS 3 needs Python >= 3.12, CI's venv has 3.11 (ROSS 2.3): this runs the ROSS tests (marked `ross`) on
+# ROSS 3 in their own venv, by hand (not in `make test`: a second install of the stack). PY312 names a
+# Python 3.12+ (e.g. PY312=~/.pyenv/versions/3.12.1/bin/python); the numpy core spares a second compile.
+PY312 ?= python3.12
+ross3:
+	@command -v $(PY312) >/dev/null || { echo "make ross3: no $(PY312) (set PY312 to a Python >= 3.12)"; exit 2; }
+	test -x .venv-ross3/bin/python || $(PY312) -m venv .venv-ross3
+	.venv-ross3/bin/python -m pip install -q -e '.[dev,ross]'
+	.venv-ross3/bin/python -c "import ross, sys; print('ROSS', ross.__version__, 'on Python', sys.version.split()[0])"
+	BEARINGKIT_BACKEND=numpy .venv-ross3/bin/python -m pytest -p no:cacheprovider -m ross tests/systems
+
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS) -m slow
 
@@ -67,4 +78,4 @@ validate: $(STAMP)
 	$(BIN)/bearingkit validate
 
 clean:
-	rm -rf $(VENV) out .pytest_cache
+	rm -rf $(VENV) .venv-ross3 out .pytest_cache
