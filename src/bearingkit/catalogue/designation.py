@@ -40,14 +40,14 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
     ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[012])(\d\d|/\d\d)(.*)$")),
-    ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d)(.*)$")),
+    ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d|/\d+)(.*)$")),
     ("angular_contact_ball", re.compile(r"^(71[89]|7[023])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
     # spherical 2xxyy before self-aligning 22yy/23yy: "22208", "23120" are spherical roller bearings, "2208",
     # "2312" not
     ("spherical_roller", re.compile(r"^(213|22[23]|23[012]|24[01])(\d\d)(.*)$")),
     ("self_aligning_ball", re.compile(r"^(1[23]|2[23])(\d\d)(.*)$")),
-    ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d)(.*)$")),
+    ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d|/\d+)(.*)$")),
 )
 #: Designations of kinds bearingkit has no builder for: pattern (group 1 = series) → what they are.
 _NOT_MODELLED: tuple[tuple[re.Pattern, str], ...] = (
