@@ -79,6 +79,30 @@ EXCEPTIONS = {
         "61800", "61801", "61802", "61808", "61809", "61816",
         "61900", "61901", "61906", "61911",
     ],
+    "618 from 130 mm (NSK B16-B24, machined brass cages from 61840): C -6…-23 %, C0 -11…-25 %: the "
+    "0.55 B cap holds the ball at or below the 0.53-0.62 B NSK's C and C0 imply, and NSK's counts need "
+    "fill angles of 211-253° (where the two ratings can be solved for a ball and a count), above the "
+    "rule's 189°: the large thin rings take more balls": [
+        "61826", "61828", "61830", "61832", "61834", "61836", "61838", "61840", "61844", "61848",
+        "61852", "61856", "61860", "61864", "61868", "61872", "61876", "61880", "61884", "61888",
+        "61892", "61896", "618/500", "618/530", "618/560", "618/600", "618/630", "618/670", "618/710",
+        "618/750", "618/800",
+    ],
+    "62 95-130 mm, 63 100-110 mm and 180 mm, 160 at 90-190 and 280-320 mm (NSK B14-B20): C -9…-14 %, "
+    "C0 -7…-16 %: the width cap 0.70 B holds the ball below the 0.74-0.81 B NSK's C and C0 imply at the "
+    "rule's count (implied fill angles 180-194°)": [
+        "6219", "6220", "6221", "6222", "6224", "6226", "6320", "6321", "6322", "6336",
+        "16018", "16019", "16022", "16026", "16028", "16032", "16036", "16038", "16056", "16060", "16064",
+    ],
+    "61938, 619/530, 6232, 60/630, 60/670 (NSK B18-B24): C and C0 +9…+27 %: the rule's ball is larger "
+    "than the one NSK's C and C0 imply (61938 20.5 against 21.7 mm, 6232 31.7 against 33.6 mm, 619/530 "
+    "0.26 (D - d), 60/630 and 60/670 0.24-0.27 (D - d) against the rule's 0.31); why NSK's ball is smaller "
+    "at these sizes than at their neighbours: cause not found": [
+        "61938", "619/530", "6232", "60/630", "60/670",
+    ],
+    "6021: NSK's ratings imply 15 balls at a 204° fill angle, two more than the 189° rule (C0 -10.4 %)": [
+        "6021"
+    ],
     "smallest bores: the rule's ball 0.31 (D - d) is 5-30 % above the one NSK's C and C0 imply "
     "(6200: 6.2 against 4.7 mm)": ["6003", "6008", "16003", "6200"],
     "6215: NSK's ratings imply 11 balls at a 198° fill angle, one more than the 189° rule": ["6215"],

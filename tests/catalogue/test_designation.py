@@ -94,7 +94,7 @@ def test_bore_outside_table_names_range_and_nearest():
     with pytest.raises(InputError) as exc:
         parse("6299")
     msg = str(exc.value)
-    assert "bore 495 mm" in msg and "10–200 mm of series 62" in msg and "nearest: 6240" in msg
+    assert "bore 495 mm" in msg and "10–360 mm of series 62" in msg and "nearest: 6272" in msg
 
 
 def test_angular_contact_needs_angle_suffix():
