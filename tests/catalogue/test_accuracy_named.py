@@ -147,6 +147,17 @@ EXCEPTIONS = {
     "(30344-30352, 32244-32264, 32328-32364, 32980, 32984) are within 10 %": [
         "30244", "30248", "30252", "30256", "30260", "30264", "30336", "30338", "30340", "32326", "32976",
     ],
+    "330/331 wide sections 85-100 mm (33018-33020, 33117; NSK B122): C -11…-14 %, C0 -9…-12 %: NSK's "
+    "ratings imply more roller length or more rollers than the rule gives (L_we/D_w 2.25-2.35; 33018-33020 "
+    "share D - d = 50 mm and so the rule's roller); NSK publishes neither": [
+        "33018", "33019", "33020", "33117",
+    ],
+    "329 light sections 30-95 mm (NSK B114-B122): C +6…+29 %, C0 +8…+28 % (32906 the most): the estimate "
+    "(roller 0.23 (D - d), L_we/D_w 1.9, count from the cage pitch) rates above NSK, whose ratings imply "
+    "less roller capacity; NSK publishes no roller; the neighbours 32912, 32914-32916, 32918, 32920 are "
+    "within 10 %: cause not found": [
+        "32906", "32907", "32908", "32909", "32910", "32911", "32913", "32917", "32919",
+    ],
     "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
     "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],
     "32232: NSK's C0 in N (1 120 000, B126) disagrees with its own {kgf} column (125 000 kgf = 1 226 000 N); "
