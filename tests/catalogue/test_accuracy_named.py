@@ -80,7 +80,8 @@ EXCEPTIONS = {
         "61900", "61901", "61906", "61911",
     ],
     "618 from 130 mm (NSK B16-B24, machined brass cages from 61840): C -6…-23 %, C0 -11…-25 %: the "
-    "0.55 B cap holds the ball at or below the 0.53-0.62 B NSK's C and C0 imply, and NSK's counts need "
+    "rule's ball (0.55 B cap) is 11 % smaller to 3 % larger than the 0.53-0.62 B NSK's C and C0 imply, "
+    "and NSK's counts need "
     "fill angles of 211-253° (where the two ratings can be solved for a ball and a count), above the "
     "rule's 189°: the large thin rings take more balls": [
         "61826", "61828", "61830", "61832", "61834", "61836", "61838", "61840", "61844", "61848",
