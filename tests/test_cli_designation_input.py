@@ -13,8 +13,6 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from bearingkit.catalogue import resolve
-from bearingkit.catalogue.pairs import PRELOAD_FRACTIONS
 from bearingkit.cli import app
 
 runner = CliRunner()
@@ -47,17 +45,17 @@ def test_pair_with_light_preload_gives_stiffness_and_contact_angles():
     assert data["bearing_type"] == "angular_contact_pair" and case["converged"]
     k = np.array(case["stiffness_SI"])
     assert k.shape == (5, 5) and (np.diag(k)[:3] > 1e7).all()  # N/m: radial and axial stiffness of a set
-    # the light class is F_pr = 0.01 C of one bearing (the rule of catalogue.pairs); both rows carry it
-    c_single = resolve("7014 C").C
+    # the light class of a 7014 C set is NSK's: L = 290 N (NSK E1102e Table 10.2.2, pp. A98-A99); both
+    # rows carry it
     rows = case["rows"]
     assert [r["name"] for r in rows] == ["balls_A", "balls_B"]
     for r in rows:
-        assert r["preload_N"] == pytest.approx(PRELOAD_FRACTIONS["light"] * c_single, rel=1e-6)
+        assert r["preload_N"] == pytest.approx(290.0, rel=1e-6)
         inner = np.abs(np.degrees(r["contact_angle_inner_rad"]))
         outer = np.abs(np.degrees(r["contact_angle_outer_rad"]))
         # at 12000 r/min the centrifugal force opens the inner and closes the outer contact angle
         assert (inner > 15.0).all() and (outer < 15.0).all()
-    assert "rule of thumb" in data["source"]
+    assert "NSK Rolling Bearings CAT. No. E1102e, Table 10.2" in data["source"]
 
 
 def test_preload_on_a_single_bearing_refused():

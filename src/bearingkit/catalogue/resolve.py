@@ -144,7 +144,7 @@ def _pair(des, est: Estimate, geometry: dict, notes: list, preload, rating: floa
     if des.arrangement == "DT":
         notes.append(f"preload {chosen}: a tandem pair carries load in one direction only; no preload is set")
         return bearing_type, None
-    force, note = pairs.preload_force(chosen, rating)
+    force, note = pairs.preload_force(chosen, rating, des.base, des.tolerance_class)
     notes.append(note)
     return bearing_type, force
 
