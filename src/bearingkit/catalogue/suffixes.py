@@ -25,8 +25,10 @@ Preload classes of the makers, mapped onto bearingkit's four classes (:data:`PRE
 super-precision sets A extra light, B light, C moderate, D heavy; SKF universally matchable GA/GB/GC
 light/moderate/heavy; FAG UL/UM/UH light/medium/heavy; NSK EL/L/M/H extra light/light/medium/heavy.
 The code letters are the makers' (SKF says its preload values are "not standardized and are listed in
-the product table", skf.com, super-precision bearings, bearing preload); the letter meanings are taken
-from the makers' catalogues as remembered [from memory], not from a stored copy.
+the product table", skf.com, super-precision bearings, bearing preload); the SKF and FAG letter meanings
+are taken from the makers' catalogues as remembered [from memory], not from a stored copy; NSK's are in
+NSK E1102e Table 7.6 (A56–A57). The forces of the classes are NSK's (:mod:`.pairs`), onto which the
+other makers' letters map by name only.
 
 A token that is not in the vocabulary is kept and named in a note; a token of an enumerated kind with
 a value that does not exist (clearance ``C7``, tolerance ``P3``, seal ``2RX``) is refused with the
