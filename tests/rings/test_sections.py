@@ -81,3 +81,17 @@ def test_bad_sections():
         S.grooved_section(0.10, 0.13, -0.015, 0.015, 0.005, 0.006)
     with pytest.raises(InputError, match="no material"):
         S.smear_bolt_holes([S.rectangle(0.10, 0.16, 0.0, 0.05)], 200, 0.014, 0.14)
+
+
+@pytest.mark.parametrize(("b", "t"), [(1e9, 0.02), (0.02, 1e9), (1e3, 0.01)])
+def test_the_prandtl_grid_stays_bounded_for_any_proportions(b, t):
+    """A wall of 1e12 mm by 20 mm (a mutated file: tests/io/test_mutations.py) made a grid of 1.5e8 cells
+    and 23 GB before the cells were bounded where the thin side is floored at 2 cells; now at most
+    TORSION_MAX_CELLS, and J finite and positive (2 cells across: J = 1.5 × the thin strip's b t³/3 —
+    such a section is far outside what the grid resolves)."""
+    rect = np.array([[0.0, 0.0], [b, 0.0], [b, t], [0.0, t]])
+    w, _, _ = S._weight_grid([rect], [1.0], S.TORSION_GRID)
+    assert w.size <= S.TORSION_MAX_CELLS
+    j = S.torsion_constant([rect])
+    thin = min(b, t) ** 3 * max(b, t) / 3.0
+    assert np.isfinite(j) and 0.5 * thin < j < 2.0 * thin

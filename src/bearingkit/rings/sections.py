@@ -344,6 +344,9 @@ def _weight_grid(parts, weights, n):
     thin = 2.0 * area / perimeter  # a thin wall's thickness (b h/(b + h) for a b × h rectangle)
     h = min(float(span.max()) / n, thin / (TORSION_THIN_CELLS * n / TORSION_GRID))
     h = max(h, float(np.sqrt(span[0] * span[1] / TORSION_MAX_CELLS)))  # bounded work for any proportions
+    # ... also where the thin side gets its floor of 2 cells (a 1e12 mm ring wall of 20 mm: 1.5e8 cells,
+    # 23 GB, before this bound; tests/io/test_mutations.py found it)
+    h = max(h, 2.0 * float(span.max()) / TORSION_MAX_CELLS)
     nr, nz = (max(int(np.ceil(s / h)), 2) for s in span)
     h_r, h_z = span[0] / nr, span[1] / nz
     r = lo[0] + (np.arange(nr) + 0.5) * h_r
