@@ -159,6 +159,9 @@ EXCEPTIONS = {
     "within 10 %: cause not found": [
         "32906", "32907", "32908", "32909", "32910", "32911", "32913", "32917", "32919",
     ],
+    "332 (HR 332xx J, 25-85 mm, NSK B112-B122): C -3…-12 % (series mean -8 %), 33208, 33210, 33215 and 33216 "
+    "beyond -10 % (33216 C0 -10 %): the estimate (roller 0.23 (D - d), length 0.72 B - 1 mm) rates below NSK "
+    "throughout; NSK publishes no roller: cause not found": ["33208", "33210", "33215", "33216"],
     "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
     "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],
     "32232: NSK's C0 in N (1 120 000, B126) disagrees with its own {kgf} column (125 000 kgf = 1 226 000 N); "
@@ -178,6 +181,23 @@ EXCEPTIONS = {
     "spherical: C0 +10…+16 % at C within ±10 %: the osculation 0.98 and L_we = 0.80 B/2 of the rule are "
     "not NSK's": [
         "22211", "22228", "22236", "22238", "22330", "22332", "22334", "22336", "22338", "22340",
+    ],
+    "spherical 213 C, CD and CA designs (21305-21307 CD, 21319, 21320 C, 21322 CA; NSK B180-B184): C "
+    "-1…+16 %, C0 +23…+42 %: NSK's designs other than EA (B178: 'Type EA has especially high load "
+    "capacity'), while the rule (k_w 0.24, L_we 0.80 B/2) is one for every design; why C0 is off more "
+    "than C: cause not found": [
+        "21305", "21306", "21307", "21319", "21320", "21322",
+    ],
+    "spherical 213 EA, NSK's uneven steps (B180-B182): 21311 is rated as the smaller 21310 (142 kN, 174 kN; "
+    "estimate C +6 %, C0 +17 %), 21314 as the larger 21315 (250 kN, 325 kN; C -12 %), 21312's 190 kN lies "
+    "between 142 and 212 kN (C -10 %); the estimate steps evenly": ["21311", "21312", "21314"],
+    "spherical 24120: NSK prints the CA design and rates it at the C of the narrower 23120 C (345 kN each, "
+    "B = 65 against 52 mm; B184); the estimate follows the width (C +22 %, C0 +32 %)": ["24120"],
+    "spherical 230, 231, 232, 240, 241 at 100-200 mm and 21317, 21318 (NSK B182-B190): C0 +10…+17 % at C "
+    "+1…+10 % (23020 C +10.1 %): the estimate's C0 runs 3-6 points further above NSK's than its C in each of "
+    "these series (the same pattern as the 222/223 sizes above); cause not found": [
+        "21317", "21318", "23020", "23022", "23024", "23034", "23036", "23038", "23124", "23222", "24020",
+        "24036", "24126", "24136", "24138", "24140",
     ],
     "needle: the needle size grows with the section (NA49 small bores +10…+16 %, NA4926/28 and large NA48 "
     "−10…−12 %): the needle count and size are not the real ones": [
