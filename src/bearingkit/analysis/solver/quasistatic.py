@@ -159,6 +159,7 @@ def solve(
     QuasiStaticResult
     """
     options = options or DEFAULT_OPTIONS
+    base_model = model
     if speed is not None:  # speed hook: rows at speed (the model itself when nothing turns)
         from bearingkit.analysis.solver.speed import model_at_speed
 
@@ -250,8 +251,10 @@ def solve(
         _roller_x=roller_x,
     )
     if speed is not None:  # speed hook: a case beyond what the speed model holds is not converged
-        from bearingkit.analysis.solver.speed import flag_beyond_model
+        from bearingkit.analysis.solver.speed import explain_at_rest, flag_beyond_model
 
+        if bad and raceway_offsets is None:  # failed at speed: does it converge at rest?
+            explain_at_rest(base_model, result, load, free, options, displacement)
         flag_beyond_model(result)
         converged = result.converged
     if raise_on_failure and (bad or speed is not None) and not converged.all():

@@ -197,3 +197,36 @@ def flag_beyond_model(result) -> None:
                 "force has pushed it over the raceway (angular rows: limit "
                 f"{np.degrees(ANGLE_LIMIT):.1f} deg); reduce the speed or add axial load"
             )
+
+
+#: Why a case that did not converge at speed did: the same load converges at rest (:func:`explain_at_rest`).
+AT_REST_REASON = (
+    "at {rpm} r/min the elements' centrifugal force and gyroscopic moment outweigh the load: the same load "
+    "converges at rest (a load below the bearing's minimum load at this speed, or a speed past its limiting "
+    "speed); give more load (axial load for angular-contact and tapered rows) or check the speed"
+)
+
+
+def explain_at_rest(base_model: BearingModel, result, load, free, options, displacement) -> None:
+    """Re-solve at rest the cases that did not converge at speed; where they converge there, the speed is
+    the cause, not the load (the solver's own reason said "the load exceeds what the contacts carry" for
+    a light load on a large tapered bearing at 1000 r/min); a case stopped by its budget keeps that
+    reason with the cause after it. Changes ``result.reason`` in place; only on the failure path, so a
+    converged run pays nothing.
+    """
+    from bearingkit.analysis.solver.quasistatic import solve
+
+    failed = np.flatnonzero(~result.converged)
+    if failed.size == 0 or not isinstance(result.model, ModelAtSpeed):
+        return
+    disp = displacement
+    if displacement is not None and np.ndim(displacement) == 2:
+        disp = np.asarray(displacement)[failed]
+    rest = solve(base_model, np.asarray(load)[failed], free=free, displacement=disp, options=options)
+    inner = np.atleast_1d(result.model.speed.inner) * 30.0 / np.pi
+    for i, c in enumerate(failed):
+        if rest.converged[i]:
+            why = AT_REST_REASON.format(rpm=f"{float(inner[c % inner.size]):.6g}")
+            old = result.reason[c] or ""
+            # a stop by the case's budget stays said (what stopped it, how to give more); the cause follows
+            result.reason[c] = f"{old}; {why}" if "budget" in old else why
