@@ -93,12 +93,14 @@ def test_new_designations_resolve_to_an_estimated_geometry(text, family, bearing
 
 
 def test_self_aligning_e_rule_against_the_printed_e():
-    """Rows without a printed e (13, 23): the two rows fill the width, B = 0.25 (D − d) + d_m tan α
-    (internal.SELF_ALIGNING_E_BALL_SHARE, chosen over these rows). Over the 42 rows of 12/22 that print e
-    it gives e = 1.5 tan α within ±15 %, mean |error| below 7 %."""
+    """Rows without a printed e: the two rows fill the width, B = 0.25 (D − d) + d_m tan α
+    (internal.SELF_ALIGNING_E_BALL_SHARE, chosen over the 42 rows of 12/22). Over those rows it gives
+    e = 1.5 tan α within ±15 %, mean |error| below 7 %. The 13/23 rows, which print e since they were
+    rated from NSK B74-B78, are not part of the choice (there the rule gives -32…+7 % on 13 and +1…+13 %
+    on 23, mean |error| 9-10 %; the printed e is what the estimate uses for them)."""
     err = []
     for e in entries("self_aligning_ball").values():
-        if not e.extra["e"]:
+        if not e.extra["e"] or e.designation[:2] not in ("12", "22"):
             continue
         ball = internal.SELF_ALIGNING_E_BALL_SHARE * (e.outer_diameter - e.bore)
         predicted = 1.5 * (e.width - ball) / (0.5 * (e.bore + e.outer_diameter))
