@@ -103,6 +103,6 @@ def test_analyze_four_point_designation_axial_load():
 
 def test_catalogue_table_shows_the_from_memory_tag():
     """A row's source "[from memory; …]" is text: the table prints it (rich would take it for a style)."""
-    result = runner.invoke(app, ["catalogue", "NN3020"], env={"COLUMNS": "400"})
+    result = runner.invoke(app, ["catalogue", "6420"], env={"COLUMNS": "400"})
     assert result.exit_code == 0, result.output
     assert "[from memory" in result.output

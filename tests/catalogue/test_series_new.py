@@ -4,7 +4,8 @@ printed their ratings): each row names where its d, D, B come from, the rows of 
 series agree with the rows they were taken from, and the two geometric rules that replace the e these
 rows lack are checked against the rows that print one. (The 329 sizes above 200 mm, 32944-32984, were
 added later from NSK E1102 B128-B130 with their ratings; the 329/330/331 rows up to 200 mm and every
-spherical row of these series were since replaced by NSK's rated rows, B112-B128 and B180-B190.)"""
+spherical row of these series were since replaced by NSK's rated rows, B112-B128 and B180-B190, and
+the self-aligning 13/23 and the NN30 rows by NSK's B74-B78 and B102-B104.)"""
 
 from __future__ import annotations
 
@@ -38,7 +39,7 @@ def test_every_new_row_names_its_source_and_has_no_invented_rating(family, serie
     assert len(rows) >= 9, (family, series)
     for e in rows:
         if e.source.startswith("NSK-E1102:"):
-            # read later from NSK's tables (B112-B130, B180-B190) with their ratings
+            # read later from NSK's tables (B74-B78, B102-B104, B112-B130, B180-B190) with their ratings
             assert e.C is not None and e.C0 is not None, e.designation
             continue
         assert e.C is None and e.C0 is None and "no rating" in e.source
