@@ -254,7 +254,7 @@ def solve(
         from bearingkit.analysis.solver.speed import explain_at_rest, flag_beyond_model
 
         if bad and raceway_offsets is None:  # failed at speed: does it converge at rest?
-            explain_at_rest(base_model, result, load, free, options, displacement)
+            explain_at_rest(base_model, result, load, free, options, displacement, solve)
         flag_beyond_model(result)
         converged = result.converged
     if raise_on_failure and (bad or speed is not None) and not converged.all():

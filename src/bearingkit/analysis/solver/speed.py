@@ -207,15 +207,14 @@ AT_REST_REASON = (
 )
 
 
-def explain_at_rest(base_model: BearingModel, result, load, free, options, displacement) -> None:
+def explain_at_rest(base_model: BearingModel, result, load, free, options, displacement, solve) -> None:
     """Re-solve at rest the cases that did not converge at speed; where they converge there, the speed is
     the cause, not the load (the solver's own reason said "the load exceeds what the contacts carry" for
     a light load on a large tapered bearing at 1000 r/min); a case stopped by its budget keeps that
     reason with the cause after it. Changes ``result.reason`` in place; only on the failure path, so a
-    converged run pays nothing.
+    converged run pays nothing. ``solve`` is :func:`bearingkit.analysis.solver.quasistatic.solve`, passed
+    in by it (this module sits below it).
     """
-    from bearingkit.analysis.solver.quasistatic import solve
-
     failed = np.flatnonzero(~result.converged)
     if failed.size == 0 or not isinstance(result.model, ModelAtSpeed):
         return
