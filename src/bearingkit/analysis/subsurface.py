@@ -50,11 +50,11 @@ CHUNK = 16
 #: An end slice is the roller's edge peak when its pressure exceeds its neighbour's by this factor [-]
 #: (equal pressures along a straight roller are no peak).
 EDGE_PEAK = 1.0001
-#: Raceway labels of the four contacts of a four-point ball (rows.four_point.CONTACTS order).
 #: Largest |q/p| taken [-]: the traction coefficient is a friction coefficient of the contact (rolling
 #: with slip 0.01–0.1; dry sliding steel on steel about 0.6, Bowden & Tabor, from memory); above 1 it is
 #: not a rolling contact's, and 1e308 overflowed the stress field (the fuzz, seed 20261202 #3407).
 MAX_TRACTION = 1.0
+#: Raceway labels of the four contacts of a four-point ball (rows.four_point.CONTACTS order).
 _FOUR_POINT_SIDES = ("outer", "outer", "inner", "inner")
 
 
