@@ -34,12 +34,10 @@ counts, which follows from the contact angle and this spacing].
 
 from __future__ import annotations
 
-import csv
 import functools
-import io
-from importlib import resources
 
 from bearingkit.catalogue.suffixes import PRELOAD_CLASSES
+from bearingkit.catalogue.tables import reference_table
 from bearingkit.errors import InputError
 
 #: Preload force as a fraction of the single bearing's C per class [-] (module docstring) [from memory]:
@@ -61,9 +59,8 @@ def nsk_preloads() -> dict[str, dict]:
     """NSK's preloads per bearingkit base designation (``"7014C"``, ``"71914C"``): ``{"maker_designation":
     "7014 C", "extra_light": 145.0, "light": 290.0, "medium": 740.0, "heavy": 1470.0, "source": ...}``
     (N, each bearing of the set; ``data/preload_nsk.csv``)."""
-    text = resources.files("bearingkit.catalogue").joinpath("data", "preload_nsk.csv").read_text("utf-8")
     table = {}
-    for row in csv.DictReader(io.StringIO(text)):
+    for row in reference_table("preload_nsk"):
         entry = {"maker_designation": row["maker_designation"], "source": row["source"]}
         entry.update({c: float(row[f"{c}_N"]) for c in PRELOAD_CLASSES})
         table[row["designation"]] = entry

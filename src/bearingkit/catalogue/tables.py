@@ -143,8 +143,9 @@ def _without_inner_ring(e: Entry) -> Entry:
 
 @functools.cache
 def reference_table(name: str) -> tuple[dict, ...]:
-    """Rows (text) of a comparison table ``data/<name>.csv``: data of other catalogues or of related
-    products kept to check the estimate, not to resolve designations (``data/SOURCES.md``)."""
+    """Rows (text) of a table ``data/<name>.csv`` that is not a bearing table: data of other catalogues
+    or of related products kept to check the estimate, and NSK's preloads of duplex sets
+    (:mod:`.pairs`) (``data/SOURCES.md``)."""
     return tuple(_read(f"{name}.csv"))
 
 
