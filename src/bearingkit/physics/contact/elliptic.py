@@ -1,20 +1,21 @@
-r"""Complete elliptic integrals in numpy, by Carlson's symmetric forms (what Hertz contact needs).
+r"""Elliptic integrals in numpy: K, E and D = (K − E)/m for the Hertz contact, and Carlson's R_F, R_D.
 
 Units: SI; every quantity here is dimensionless [1].
 
 Why not ``scipy.special``: importing it costs ~0.3 s on this project's machines (scipy 1.17 loads its
 array-API layer, which loads ``numpy.f2py`` and ``numpy.testing``), a third of a warm one-case
-``bearingkit analyze`` (issue 42: < 1 s). The duplication below is as fast as scipy's ufuncs on a batch
-(K, E and D by the arithmetic–geometric mean: 0.020 s against scipy's 0.062 s on 1.8·10⁵ arguments,
-though 80 µs against 6 µs on 9: numpy's cost per call) and agrees with them to ~1e-15
+``bearingkit analyze`` (issue 42: < 1 s). Both methods agree with scipy to ~1e-15
 (``tests/physics/contact/test_elliptic.py`` keeps scipy as the oracle).
 
-R_F and R_D (for the subsurface stresses' general arguments) come from one duplication loop (Carlson
-1995; DLMF §19.36(i)): with
-λ = √x√y + √x√z + √y√z, (x, y, z) ← (x + λ, y + λ, z + λ)/4 until the spread of the arguments is
-small enough for the fifth-order series to reach the tolerance; R_D collects 3 Σ 4⁻ᵐ/(√z_m (z_m + λ_m)).
-With p = 1 − m (DLMF 19.25.1): K(m) = R_F(0, p, 1), E(m) = R_F(0, p, 1) − (m/3) R_D(0, p, 1): the
-test's identity between the two methods.
+- :func:`complete_integrals` (K, E, D of the contact ellipse): the arithmetic–geometric mean, 0.020 s
+  against scipy's 0.062 s on 1.8·10⁵ arguments, 80 µs against 6 µs on 9 (numpy's cost per call).
+- :func:`carlson_rf_rd` (the subsurface stresses' R_D of general arguments): Carlson's duplication
+  (Carlson 1995; DLMF §19.36(i)): with λ = √x√y + √x√z + √y√z, (x, y, z) ← (x + λ, y + λ, z + λ)/4 until
+  the spread of the arguments is small enough for the fifth-order series to reach the tolerance; R_D
+  collects 3 Σ 4⁻ᵐ/(√z_m (z_m + λ_m)).
+
+The two agree through DLMF 19.25.1 (p = 1 − m): K(m) = R_F(0, p, 1), E(m) = R_F(0, p, 1) − (m/3) R_D(0, p, 1)
+(tested).
 
 References: B. C. Carlson (1995), "Numerical computation of real or complex elliptic integrals",
 Numerical Algorithms 10, 13–26; NIST DLMF §19.8, §19.25, §19.36; Abramowitz & Stegun (1964) §17.6.
