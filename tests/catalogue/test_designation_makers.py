@@ -56,6 +56,9 @@ from bearingkit.errors import InputError
         ),
         ("7014A5TYNDBMP4", "7014AC", dict(arrangement="DB", preload_class="medium", tolerance_class="P4")),
         ("7014 C DB", "7014C", dict(arrangement="DB", preload_class=None)),
+        # NSK's series 79 is ISO 719 (NSK E1102 A54, Table 7.5): 7914 C = 71914 C
+        ("7914 C", "71914C", dict(series="719", bore_code="14", contact_angle_code="C")),
+        ("7914 A5 DBL P4", "71914AC", dict(series="719", arrangement="DB", preload_class="light")),
         # tapered: X (ISO 355 dimensions), Q (SKF contact geometry), J2 cage, DF/DB pairs
         ("32008 X/Q", "32008X", dict(design=["Q"], arrangement=None)),
         ("30206 J2/Q", "30206", dict(cage="J2", design=["Q"])),

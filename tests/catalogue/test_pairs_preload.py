@@ -16,6 +16,8 @@ from bearingkit.catalogue.pairs import PRELOAD_FRACTIONS, nsk_preloads, preload_
         ("71901 C DB", "extra_light", 8.6),
         # "7917 C  145  290  640  1 270"
         ("71917 C DB", "heavy", 1270.0),
+        # the same row in NSK's own spelling (series 79 = ISO 719, NSK A54 Table 7.5)
+        ("7917 C DB", "heavy", 1270.0),
         # Table 10.2.2, series 70: "7014 C  145  290" | M, H "740  1 470"
         ("7014 C DB", "light", 290.0),
         ("7014 C DF", "medium", 740.0),

@@ -41,7 +41,7 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
     ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[012])(\d\d|/\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d|/\d+)(.*)$")),
-    ("angular_contact_ball", re.compile(r"^(71[89]|7[023])(\d\d)(.*)$")),
+    ("angular_contact_ball", re.compile(r"^(71[89]|7[0239])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
     # spherical 2xxyy before self-aligning 22yy/23yy: "22208", "23120" are spherical roller bearings, "2208",
     # "2312" not
@@ -78,6 +78,10 @@ ANGLE_CODES = {
 }
 #: Contact angle suffixes the tables hold (the error message lists them).
 TABLE_ANGLES = {"B": "40°", "AC": "25°", "A": "30°", "C": "15°"}
+#: Makers' spellings of an ISO dimension series: printed series → (ISO series, whose spelling). NSK
+#: writes the ISO 719 angular contact series as 79 (NSK E1102 A54 Table 7.5: series 79 = type 7, width series
+#: 1, diameter series 9; SKF prints the same bearing as 71914 CD).
+SERIES_ALIASES = {"angular_contact_ball": {"79": ("719", "NSK")}}
 #: Families whose rows may be paired from the designation (DB/DF/DT), with the arrangements allowed.
 PAIRABLE = {"angular_contact_ball": ("DB", "DF", "DT"), "tapered_roller": ("DB", "DF")}
 _SHOWN = 40
@@ -269,6 +273,10 @@ def parse(text: str) -> Designation:
 def _parse_family(raw: str, family: str, prefix: str | None, m: re.Match) -> Designation:
     series, code, rest = m.group(1).replace(" ", ""), m.group(2), m.group(3)
     angle, angle_code, notes = "", None, []
+    alias = SERIES_ALIASES.get(family, {}).get(series)
+    if alias is not None:
+        notes.append(f"series {series}: the {alias[1]} spelling of ISO series {alias[0]}")
+        series = alias[0]
     if prefix is not None:
         notes.append(f"prefix {prefix}: {PREFIXES[prefix][1]}")
     if prefix in CERAMIC_PREFIXES:
