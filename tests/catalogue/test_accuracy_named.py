@@ -149,6 +149,7 @@ EXCEPTIONS = {
     "self-aligning 12: small α keeps the balls below d_m tan α (the engine's rows may not cross the centre "
     "plane; real rows are staggered): too many small balls at small bores, too small at large ones": [
         "1200", "1201", "1203", "1204", "1207", "1212", "1215", "1216", "1217", "1218", "1219", "1220",
+        "1222",
     ],
     "self-aligning 22: count discreteness (one ball per row is 6-8 %)": ["2200", "2205", "2206"],
     "self-aligning 13 (NSK B74-B78): C -10…-29 %, C0 up to -27 %, low at every size from 1305 and more "
