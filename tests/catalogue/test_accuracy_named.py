@@ -149,6 +149,7 @@ EXCEPTIONS = {
     "self-aligning 12: small α keeps the balls below d_m tan α (the engine's rows may not cross the centre "
     "plane; real rows are staggered): too many small balls at small bores, too small at large ones": [
         "1200", "1201", "1203", "1204", "1207", "1212", "1215", "1216", "1217", "1218", "1219", "1220",
+        "1222",
     ],
     "self-aligning 22: count discreteness (one ball per row is 6-8 %)": ["2200", "2205", "2206"],
     "self-aligning 13 (NSK B74-B78): C -10…-29 %, C0 up to -27 %, low at every size from 1305 and more "
@@ -158,12 +159,20 @@ EXCEPTIONS = {
         "1301", "1305", "1306", "1308", "1309", "1310", "1311", "1312", "1313", "1314", "1315", "1316",
         "1317", "1318", "1319", "1320", "1321", "1322",
     ],
-    "double-row cylindrical NN30 (NSK B102-B104): C0 +10…+19 %, C up to +13 % (series mean +6.9 %/+11.8 %): "
+    "double-row cylindrical NN30 (NSK B102-B104): C0 +10…+19 %, C up to +13 % (their mean +6.9 %/+11.8 %): "
     "the estimate's double-row roller set is above the one NSK's ratings imply (NSK prints E_w, not checked "
     "against the estimate's): cause not found. NN3015: NSK rates it 96.5 kN, below the smaller NN3014's "
     "97.5 kN; the estimate steps up": [
         "NN3006", "NN3008", "NN3009", "NN3010", "NN3011", "NN3012", "NN3013", "NN3015", "NN3016", "NN3017",
         "NN3018", "NN3019", "NN3020", "NN3026", "NN3028", "NN3030", "NN3032", "NN3034", "NN3040",
+    ],
+    "double-row cylindrical NN30 220-360 mm (NN3048-NN3072, NSK B104): C +7…+15 %, C0 +14…+22 %: NSK's NN30 "
+    "C and C0 are 1.46-1.64 and 1.76-1.98 times its NU10's of the same d and D (NSK's E_w equal to the "
+    "NU10's within 2 mm), at or below two NU10 rows (2^(7/9) = 1.71 and 2), while the "
+    "estimate's are 1.97-2.08 and 2.41-2.57 times its NU10's: its per-row roller length (0.63 B/2 - 1 mm) "
+    "is 20-24 % longer than its NU10 roller (0.42 B - 1 mm), where NSK's ratios imply rows no stronger than "
+    "its NU10's (NSK prints no roller length; the rule is not changed)": [
+        "NN3048", "NN3052", "NN3056", "NN3060", "NN3064", "NN3068", "NN3072",
     ],
     "self-aligning 23 (NSK B74-B78): C and C0 -10…-14 % at these sizes (the series' mean -7.5 %/-5.7 %): "
     "cause not found": ["2301", "2305", "2311", "2312", "2313", "2319"],

@@ -5,7 +5,7 @@ import itertools
 
 import pytest
 
-from bearingkit.catalogue import clearance, clearance_range
+from bearingkit.catalogue import clearance, clearance_range, resolve
 from bearingkit.errors import InputError
 
 UM = 1e-6
@@ -20,6 +20,10 @@ UM = 1e-6
         ("deep_groove_ball", 25, "C3", (13, 28)),
         ("deep_groove_ball", 45, "C2", (1, 11)),
         ("deep_groove_ball", 50, "C5", (45, 73)),  # d = 50 belongs to "over 40 incl. 50"
+        # Table 9.9 rows above 500 mm: "500-560", "630-710", "710-800" (the table ends at 800 mm)
+        ("deep_groove_ball", 530, "C2", (10, 100)),
+        ("deep_groove_ball", 670, "CN", (110, 260)),
+        ("deep_groove_ball", 800, "C5", (600, 840)),
         # Table 9.14 (cylindrical roller, cylindrical bore, interchangeable), rows "24-30", "40-50"
         ("cylindrical_roller", 30, "CN", (20, 45)),
         ("cylindrical_roller", 45, "C4", (70, 100)),
@@ -36,6 +40,16 @@ UM = 1e-6
 def test_published_groups(group, bore_mm, cls, expected_um):
     lo, hi = clearance_range(group, bore_mm * 1e-3, cls)
     assert (lo / UM, hi / UM) == pytest.approx(expected_um)
+
+
+def test_deep_groove_designations_above_500_mm_get_a_clearance():
+    """The catalogue's deep groove rows reach 800 mm (618/800, 619/800; 60/670): NSK Table 9.9 prints the
+    ISO 5753-1 groups to 800 mm, so a designation there is resolved with its CN mean (it was refused,
+    "outside the deep_groove_ball clearance table (0-500 mm)", while the table stopped at 500 mm)."""
+    for name, bore in (("60/670", 0.670), ("618/800", 0.800), ("619/530", 0.530)):
+        r = resolve(name)
+        assert r.geometry["clearance_radial"] == pytest.approx(clearance("deep_groove_ball", bore, "CN", 0.5))
+    assert resolve("60/670").geometry["clearance_radial"] == pytest.approx(185e-6)  # (110 + 260)/2 um
 
 
 def test_default_is_class_mean_and_position_interpolates():

@@ -75,7 +75,7 @@ TAPER_HALF_ANGLE = 1.5 * DEG
 #: row check is strict); a numerical margin, not a design value.
 CENTRE_PLANE_MARGIN = 1e-3
 #: Self-aligning ball rows without a published e: the two rows fill the ring width, B = D_w + d_m tan α,
-#: with the ball D_w = this · (D − d). CHOSEN over the 42 sizes of the 12 and 22 tables, whose published e
+#: with the ball D_w = this · (D − d). CHOSEN over the 42 sizes 1200–1220, 2200–2220, whose published e
 #: it gives within ±15 % (mean |error| 6 %, tests/catalogue/test_series_new.py); used only for rows the
 #: source prints no e for (13, 23).
 SELF_ALIGNING_E_BALL_SHARE = 0.25
