@@ -27,8 +27,10 @@ UM = 1e-6
         # Table 9.14 (cylindrical roller, cylindrical bore, interchangeable), rows "24-30", "40-50"
         ("cylindrical_roller", 30, "CN", (20, 45)),
         ("cylindrical_roller", 45, "C4", (70, 100)),
-        # Table 9.15 (spherical roller, cylindrical bore), row "40-50"
+        # Table 9.15 (spherical roller, cylindrical bore), rows "40-50", "560-630", "1 250-1 400"
         ("spherical_roller", 45, "C3", (55, 75)),
+        ("spherical_roller", 600, "C3", (480, 650)),
+        ("spherical_roller", 1400, "C4", (1240, 1620)),
         # SKF 6000 p. 706 Table 4 (spherical roller, TAPERED bore), row "40-50"; p. 477 Table 5
         # (self-aligning ball, tapered bore), row "65-80"
         ("spherical_roller_tapered_bore", 45, "C3", (60, 80)),
@@ -71,6 +73,8 @@ def test_classes_grow_from_c2_to_c5():
         (("deep_groove_ball", 0.9, "CN"), "outside the deep_groove_ball clearance table"),
         (("needle", 0.025, "CN"), "clearance group"),
         # SKF 6000 p. 477 lists no C5 for tapered-bore self-aligning ball bearings: say which classes exist
+        # (nor NSK E1102 Table 9.15 for spherical roller bearings above 1 000 mm)
+        (("spherical_roller", 1.06, "C5"), r"not defined .* classes there: C2, CN, C3, C4$"),
         (("self_aligning_ball_tapered_bore", 0.05, "C5"), r"not defined .* classes there: C2, CN, C3, C4$"),
     ],
 )

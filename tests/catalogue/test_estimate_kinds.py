@@ -126,13 +126,22 @@ def test_self_aligning_derived_factors_against_nsk():
 
 
 # --- spherical roller --------------------------------------------------------------------------------------
+#: Rows whose rollers, at NSK's printed e, reach past the ring faces (docs/catalogue.md, Known deviations):
+#: designation → the overhang [m] it may not exceed. 232/530 (NSK B196, e = 0.38, B = 355 mm): the rule's
+#: rollers (D_we = 0.24 (D − d) = 108 mm, L_we = 142 mm) reach 0.22 mm past the faces.
+OVERHANG = {"232/530": 0.25e-3}
+
+
 def test_spherical_rows_fit_radially_and_axially():
     for e in entries("spherical_roller").values():
         est = estimate(e)
         assert est.rows == 2
         if e.extra["e"]:
             assert math.tan(est.contact_angle) * 1.5 == pytest.approx(float(e.extra["e"]))
-            assert internal.axial_margin(est) > 0, e.designation
+            if e.designation in OVERHANG:
+                assert -OVERHANG[e.designation] < internal.axial_margin(est) <= 0, e.designation
+            else:
+                assert internal.axial_margin(est) > 0, e.designation
         else:  # no printed e: the rows reach the faces less the chamfer (the angle is the geometry's)
             assert e.chamfer - 1e-9 <= internal.axial_margin(est) < e.chamfer + 1e-3 * e.width, e.designation
             # and the rollers (their full diameter) stay on their side of the centre plane

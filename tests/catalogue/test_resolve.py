@@ -17,6 +17,15 @@ def test_deep_groove_geometry_and_clearance_class():
     assert "ESTIMATED" in r.source and "C3" in r.source and "2RS" in r.source
 
 
+def test_large_spherical_takes_the_clearance_above_500_mm():
+    """Spherical bores 500-1 400 mm (NSK E1102 B196-B200) take NSK Table 9.15's rows above 500 mm (A92)."""
+    r = resolve("230/600 C3")
+    assert r.bearing_type == "spherical_roller" and r.geometry["bore"] == pytest.approx(0.600)
+    assert r.geometry["clearance_radial"] == pytest.approx(0.5 * (480 + 650) * 1e-6)
+    e = entries("spherical_roller")["230/600"]
+    assert (e.C, e.C0) == (5.45e6, 12.2e6) and "NSK-E1102:B198" in e.source
+
+
 def test_default_clearance_is_cn_mean():
     r = resolve("6206")
     assert r.geometry["clearance_radial"] == pytest.approx(clearance("deep_groove_ball", 0.030, "CN", 0.5))

@@ -44,8 +44,8 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("angular_contact_ball", re.compile(r"^(71[89]|7[0239])(\d\d)(.*)$")),
     ("double_row_angular_contact_ball", re.compile(r"^(3[23])(\d\d)(.*)$")),
     # spherical 2xxyy before self-aligning 22yy/23yy: "22208", "23120" are spherical roller bearings, "2208",
-    # "2312" not
-    ("spherical_roller", re.compile(r"^(213|22[23]|23[012]|24[01])(\d\d)(.*)$")),
+    # "2312" not; bores from 500 mm as "/dd" ("230/600", "239/1000")
+    ("spherical_roller", re.compile(r"^(213|22[23]|23[0129]|24[01])(\d\d|/\d+)(.*)$")),
     ("self_aligning_ball", re.compile(r"^(1[23]|2[23])(\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d|/\d+)(.*)$")),
 )
@@ -263,9 +263,9 @@ def parse(text: str) -> Designation:
             )
     raise InputError(
         f"designation ({_shown(raw)}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, "
-        "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 240, "
-        "241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NN49, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, 322, "
-        "323, 329, 330, 331, 332, 511, 512, 513, 811, 812) and no file of that "
+        "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 239, "
+        "240, 241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NN49, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, "
+        "322, 323, 329, 330, 331, 332, 511, 512, 513, 811, 812) and no file of that "
         f"name exists; nearest: {', '.join(nearest(raw))}"
     )
 
