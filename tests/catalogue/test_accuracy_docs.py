@@ -22,4 +22,4 @@ def test_docs_accuracy_table_equals_the_script_output():
     start = doc.index(table[0])
     shown = doc[start : start + len(table) + 1]
     assert shown[: len(table)] == table, "docs/catalogue.md's accuracy table differs from the script's output"
-    assert not shown[-1].startswith("|"), "docs/catalogue.md's accuracy table has rows the script does not print"
+    assert not shown[-1].startswith("|"), "docs/catalogue.md's table has rows the script does not print"

@@ -35,6 +35,9 @@ UM = 1e-6
         # (self-aligning ball, tapered bore), row "65-80"
         ("spherical_roller_tapered_bore", 45, "C3", (60, 80)),
         ("self_aligning_ball_tapered_bore", 70, "C4", (69, 98)),
+        # NSK E1102 A92 Table 9.15 (spherical roller, TAPERED bore), rows "225-250", "1 250-1 400"
+        ("spherical_roller_tapered_bore", 240, "CN", (200, 270)),
+        ("spherical_roller_tapered_bore", 1300, "C4", (1560, 2000)),
         # SKF 6000 p. 453 Table 1: AXIAL clearance of QJ bearings, row "40-60"
         ("four_point_contact_ball_axial", 50, "CN", (76, 126)),
     ],
@@ -52,6 +55,14 @@ def test_deep_groove_designations_above_500_mm_get_a_clearance():
         r = resolve(name)
         assert r.geometry["clearance_radial"] == pytest.approx(clearance("deep_groove_ball", bore, "CN", 0.5))
     assert resolve("60/670").geometry["clearance_radial"] == pytest.approx(185e-6)  # (110 + 260)/2 um
+
+
+def test_spherical_tapered_bore_above_225_mm_gets_nsk_groups():
+    """23048 CAK (d = 240 mm): the tapered-bore groups stopped at 225 mm (SKF 6000 p. 706), so the K
+    variant was refused; NSK Table 9.15 prints them to 1 400 mm (CN 200-270 um for 225-250 mm)."""
+    r = resolve("23048 CAK")
+    assert r.geometry["clearance_radial"] == pytest.approx(235e-6)  # (200 + 270)/2 um
+    assert r.geometry["clearance_radial"] > resolve("23048 CA").geometry["clearance_radial"]
 
 
 def test_default_is_class_mean_and_position_interpolates():

@@ -5,8 +5,9 @@ and 9.15 (``data/radial_clearance.csv``): deep groove ball, self-aligning ball, 
 (interchangeable rings; NSK E1102 B245 applies the same table to needle roller bearings with inner ring)
 and spherical roller bearings with cylindrical bore; the tapered-bore groups of self-aligning ball and
 spherical roller bearings as SKF General Catalogue 6000 (2006) pp. 477 and 706 print them (SKF: "ISO
-5753"; its cylindrical-bore rows agree with NSK's). Four-point contact (QJ) bearings are classed by
-their axial clearance (SKF General Catalogue 6000, 2006, p. 453 Table 1; group
+5753"; its cylindrical-bore rows agree with NSK's), and above 225 mm the spherical roller tapered-bore
+groups of NSK E1102 Table 9.15 (its rows to 225 mm equal SKF's). Four-point contact (QJ) bearings are
+classed by their axial clearance (SKF General Catalogue 6000, 2006, p. 453 Table 1; group
 ``four_point_contact_ball_axial``, :data:`AXIAL_GROUPS`). The engine counts a radial
 clearance twice (``clearance_radial`` = the diametral clearance P_d, each element sees P_d/2), which is
 what these tables give (the total radial play of one ring against the other).
@@ -46,7 +47,7 @@ GROUP_SOURCES = {
     "spherical_roller": "ISO 5753-1",
     "four_point_contact_ball_axial": "SKF 6000 p. 453",
     "self_aligning_ball_tapered_bore": "tapered bore, SKF 6000 p. 477",
-    "spherical_roller_tapered_bore": "tapered bore, SKF 6000 p. 706",
+    "spherical_roller_tapered_bore": "tapered bore, SKF 6000 p. 706 to 225 mm, NSK E1102 Table 9.15 above",
 }
 
 
