@@ -138,47 +138,51 @@ def _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol):
     converged = np.zeros(c, dtype=bool)
     # What does not change between iterations is formed once (issue 34: this loop was half of the
     # PTRB design optimisation's evaluator): the coupling matrices, the Jacobian's constant entries
-    # (±1 columns, zeros) and the views of its blocks and of their diagonals. Every value is computed
-    # as before, bit for bit: the diagonal terms are added to the diagonal in place instead of adding
-    # a diagonal matrix (whose zeros leave the other entries as they are), and y² is formed once for
-    # the residual and the Jacobian.
-    a_it, a_ot = a_i - t, a_o - t
+    # (±1 columns, zeros), the views of its blocks and of its diagonal. Every value is computed as
+    # before, bit for bit: the same products and sums of the same numbers, each y-block entry one
+    # product as before, the diagonal terms added to the diagonal in place instead of adding a
+    # diagonal matrix (whose zeros leave the other entries as they are), y² formed once for the
+    # residual and the Jacobian (a square is exact whatever the array's layout).
     m = 2 * n + 2
     jac = np.zeros((c, m, m))
     jac[:, :n, 2 * n] = 1.0
     jac[:, :n, 2 * n + 1] = -1.0
     jac[:, n : 2 * n, 2 * n] = -1.0
-    j_ii, j_io = jac[:, :n, :n], jac[:, :n, n : 2 * n]
-    j_oi, j_oo = jac[:, n : 2 * n, :n], jac[:, n : 2 * n, n : 2 * n]
-    flat = jac.reshape(c, m * m)  # a view: entry (k, k) is flat[:, k (m + 1)]
-    diag_i, diag_o = flat[:, : n * (m + 1) : m + 1], flat[:, n * (m + 1) : 2 * n * (m + 1) : m + 1]
+    # The y-block of the Jacobian is [[a_i − t, t], [t, a_o − t]] times 3y² column by column, its
+    # diagonal plus 2 a_H y + c 3y² (a_H, c of the ITP for the first n, of the OTP for the last n).
+    coupling = np.empty((c, 2 * n, 2 * n))
+    coupling[:, :n, :n] = a_i - t
+    coupling[:, :n, n:] = t
+    coupling[:, n:, :n] = t
+    coupling[:, n:, n:] = a_o - t
+    j_yy = jac[:, : 2 * n, : 2 * n]
+    diag = jac.reshape(c, m * m)[:, : 2 * n * (m + 1) : m + 1]  # a view: entry (k, k) is k (m + 1)
     row_i, row_o = jac[:, 2 * n, :n], jac[:, 2 * n + 1, n : 2 * n]
     ai_, ci_, ao_, co_, scale_ = ai[:, None], ci[:, None], ao[:, None], co[:, None], scale[:, None]
+    two_a = np.concatenate([np.repeat(2 * ai_, n, axis=1), np.repeat(2 * ao_, n, axis=1)], axis=1)
+    c_io = np.concatenate([np.repeat(ci_, n, axis=1), np.repeat(co_, n, axis=1)], axis=1)
+    w0, u = w0[:, None], u[:, None]
     r = np.empty((c, m, 1))
     r_i, r_o, r_si, r_so = r[:, :n, 0], r[:, n : 2 * n, 0], r[:, 2 * n, 0], r[:, 2 * n + 1, 0]
     for _ in range(max_iter):
         yi, yo = y[:, :n], y[:, n:]
         fi, fo = yi**3, yo**3
-        yi2, yo2 = yi**2, yo**2
-        w = w0[:, None] - np.einsum("cij,cj->ci", t, fi - fo)
-        r_i[...] = ai_ * yi2 + ci_ * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w)
-        r_o[...] = ao_ * yo2 + co_ * fo - (w - np.einsum("cij,cj->ci", a_o, fo))
+        y2 = y**2
+        w = w0 - np.einsum("cij,cj->ci", t, fi - fo)
+        r_i[...] = ai_ * y2[:, :n] + ci_ * fi - (u - np.einsum("cij,cj->ci", a_i, fi) - w)
+        r_o[...] = ao_ * y2[:, n:] + co_ * fo - (w - np.einsum("cij,cj->ci", a_o, fo))
         r_si[...] = (fi.sum(axis=1) - f_roller) * scale
         r_so[...] = (fo.sum(axis=1) - f_roller) * scale
-        di, do = 3 * yi2, 3 * yo2
-        np.multiply(a_it, di[:, None, :], out=j_ii)
-        diag_i += 2 * ai_ * yi + ci_ * di
-        np.multiply(t, do[:, None, :], out=j_io)
-        np.multiply(t, di[:, None, :], out=j_oi)
-        np.multiply(a_ot, do[:, None, :], out=j_oo)
-        diag_o += 2 * ao_ * yo + co_ * do
-        np.multiply(di, scale_, out=row_i)
-        np.multiply(do, scale_, out=row_o)
+        d = 3 * y2
+        np.multiply(coupling, d[:, None, :], out=j_yy)
+        diag += two_a * y + c_io * d
+        np.multiply(d[:, :n], scale_, out=row_i)
+        np.multiply(d[:, n:], scale_, out=row_o)
         step = np.linalg.solve(jac, np.negative(r))[..., 0]
         dy = step[:, : 2 * n]
         y = np.maximum(y + dy, 0.2 * y)  # damped: loads stay positive
-        w0 = w0 + step[:, 2 * n]
-        u = u + step[:, 2 * n + 1]
+        w0 = w0 + step[:, 2 * n : 2 * n + 1]
+        u = u + step[:, 2 * n + 1 :]
         converged = np.max(np.abs(dy) / y, axis=1) < tol
         if converged.all():
             break
