@@ -49,6 +49,7 @@ __all__ = [
     "point_contact",
     "point_stiffness",
     "reduced_modulus",
+    "reusing_integrals",
     "series_stiffness",
 ]
 
