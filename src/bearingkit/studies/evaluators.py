@@ -290,10 +290,8 @@ def python_value(value, factor: Factor):
     return float(value)
 
 
-def assemble_columns(n: int, parts):
-    """One DataFrame of ``n`` rows from ``(index array, {column: values})`` parts."""
-    import pandas as pd
-
+def assemble_arrays(n: int, parts) -> dict[str, np.ndarray]:
+    """Columns of ``n`` rows (name → (n,) array) from ``(index array, {column: values})`` parts."""
     cols: dict[str, np.ndarray] = {}
     for idx, table in parts:
         for k, v in table.items():
@@ -301,7 +299,14 @@ def assemble_columns(n: int, parts):
             if k not in cols:
                 cols[k] = np.zeros(n, dtype=v.dtype)
             cols[k][idx] = v
-    return pd.DataFrame(cols)
+    return cols
+
+
+def assemble_columns(n: int, parts):
+    """One DataFrame of ``n`` rows from ``(index array, {column: values})`` parts."""
+    import pandas as pd
+
+    return pd.DataFrame(assemble_arrays(n, parts))
 
 
 # ------------------------------------------------------------------------------ analytic problems

@@ -55,3 +55,26 @@ def test_population_equals_one_design_at_a_time(case):
         for k, v in expected.items():
             assert out[k][i] == pytest.approx(v, rel=1e-12, abs=0.0), (case, i, k)
         assert bool(out["feasible"][i])
+
+
+def test_columns_equal_the_table():
+    """The numpy columns a study's workers take (Evaluator.columns → seed004_ptrb.columns, issue 34) are
+    the function's table column for column, bit for bit, over two groups of load case."""
+    from bearingkit.studies.run.workers import evaluate_columns
+
+    a, n, r, d = map(np.array, zip(*DESIGNS, strict=True))
+    cases = pd.DataFrame(
+        {
+            "contact_angle": np.radians(a),
+            "n_teeth": n,
+            "roller_contact_radius": r,
+            "roller_pitch_diameter": d,
+            "load_case": ["axial", "radial", "axial", "radial"],
+        }
+    )
+    cols = evaluate_columns(zev.PTRB, cases)
+    table = evaluate_chunk(zev.PTRB, cases)
+    assert list(cols) == list(table.columns)
+    for k, v in cols.items():
+        np.testing.assert_array_equal(v, table[k].to_numpy(), err_msg=k)
+        assert v.dtype == table[k].to_numpy().dtype, k

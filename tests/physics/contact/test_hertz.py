@@ -407,3 +407,39 @@ def test_unknown_method_lists_valid_names():
         hertz.contact_coefficients(0.3, method="nope")
     with pytest.raises(InputError, match="iso16281, kunert"):
         line.line_stiffness(1e-2, 2e11, law="nope")
+
+
+def test_reused_integrals_give_the_bits_of_computing_every_call():
+    """Inside hertz.reusing_integrals the κ, K, E of equal F(ρ) values are solved once (issue 34: a PTRB
+    design population asks for the same contacts three times) and every result equals, bit for bit,
+    the result outside the block, whatever the shape of the later call; the copies handed out are the
+    caller's own."""
+    rng = np.random.default_rng(34)
+    f = rng.uniform(0.0, 0.99, 57)
+    s, e = rng.uniform(100.0, 900.0, 57), 2.3e11
+    q = rng.uniform(10.0, 1e3, (57, 4))
+    plain = (
+        hertz.point_stiffness(s, f, e),
+        hertz.point_contact(q, s[:, None], f[:, None], e),
+        hertz.ellipticity(f),
+    )
+    calls = []
+    exact = hertz.POINT_METHODS["exact"]
+    hertz.POINT_METHODS["exact"] = lambda x: calls.append(x.shape) or exact(x)
+    try:
+        with hertz.reusing_integrals():
+            kappa = hertz.ellipticity(f)
+            kappa[:] = 0.0  # the caller's copy: later calls do not see it
+            reused = (
+                hertz.point_stiffness(s, f, e),
+                hertz.point_contact(q, s[:, None], f[:, None], e),
+                hertz.ellipticity(f),
+            )
+        hertz.ellipticity(f)
+    finally:
+        hertz.POINT_METHODS["exact"] = exact
+    assert calls == [(57,), (57,)]  # one solve in the block, one after it
+    np.testing.assert_array_equal(reused[0], plain[0])
+    for a, b in zip(reused[1], plain[1], strict=True):
+        np.testing.assert_array_equal(a, b)
+    np.testing.assert_array_equal(reused[2], plain[2])

@@ -146,3 +146,34 @@ def test_the_cheaper_newton_loop_gives_the_same_bits(n, support):
     np.testing.assert_array_equal(fi, ref_i)
     np.testing.assert_array_equal(fo, ref_o)
     np.testing.assert_allclose(fi.sum(axis=1), f, rtol=1e-9)  # the roller's load is carried
+
+
+def test_max_tooth_share_checks_once_and_solves_each_tooth_count_as_tooth_load_shares():
+    """max_tooth_share checks all designs at once and runs the Newton loop per tooth count (issue 34):
+    the same bits as tooth_load_shares on each group, the same refusals."""
+    rng = np.random.default_rng(7)
+    c = 23
+    n = rng.integers(3, 9, c)
+    f = rng.uniform(500.0, 5000.0, c)
+    k = dict(
+        hertz_inner=rng.uniform(1e-7, 3e-7, c),
+        hertz_outer=rng.uniform(1e-7, 3e-7, c),
+        tooth_inner=rng.uniform(1e-10, 1e-9, c),
+        tooth_outer=rng.uniform(0.0, 1e-9, c),
+        body_roller=rng.uniform(1e-11, 1e-10, c),
+        body_inner=rng.uniform(1e-11, 1e-10, c),
+        body_outer=rng.uniform(1e-11, 1e-10, c),
+    )
+    fa = pls.max_tooth_share(f, n, **k)
+    for m in np.unique(n):
+        sel = n == m
+        ref = pls.tooth_load_shares(f[sel], int(m), **{key: v[sel] for key, v in k.items()})[2]
+        np.testing.assert_array_equal(fa[sel], ref)
+    with pytest.raises(InputError, match="hertz_outer"):
+        pls.max_tooth_share(f, n, **{**k, "hertz_outer": -k["hertz_outer"]})
+    with pytest.raises(InputError, match="roller_load"):
+        pls.max_tooth_share(-f, n, **k)
+    with pytest.raises(InputError, match="support"):
+        pls.max_tooth_share(f, n, support="middle", **k)
+    with pytest.raises(TypeError, match="coefficients"):
+        pls.max_tooth_share(f, n, **{**k, "tooth_middle": 1.0})

@@ -27,6 +27,7 @@ from bearingkit.analysis.friction.threaded import (
     ptrb_friction,
 )
 from bearingkit.bearings.ptrb import ptrb_prototype
+from bearingkit.physics.contact import hertz
 from bearingkit.physics.friction import ptrb as pf
 from bearingkit.physics.life import ptrb_load_sharing as pls
 from bearingkit.physics.life import ptrb_rating as pr
@@ -156,6 +157,16 @@ def ptrb_objectives(
     friction as :func:`ptrb_friction` (uniform tooth shares). Infeasible designs are evaluated anyway
     (flagged, not NaN) as long as the inputs are physical.
     """
+    # The contacts' κ, K, E are solved once and reused by the rating, the stiffness of the load sharing
+    # and the friction (the same curvatures three times; bit for bit what three solves give).
+    with hertz.reusing_integrals():
+        return _objectives(
+            alpha, n, R_rr, d_R, case, load, speed, n_elements, lubricant, temperature_C, parameters
+        )
+
+
+def _objectives(alpha, n, R_rr, d_R, case, load, speed, n_elements, lubricant, temperature_C, parameters):
+    """:func:`ptrb_objectives` (its arguments, in its order)."""
     checks.one_of("case", case, CASES)
     params = parameters or PTRBFrictionParameters()
     base = _prototype()

@@ -10,7 +10,7 @@ import numpy as np
 from bearingkit.studies.evaluators import (
     Evaluator,
     Factor,
-    assemble_columns,
+    assemble_arrays,
     group_cases,
     register,
 )
@@ -46,6 +46,14 @@ def seed004_ptrb(cases):
     ``mu``, the four ratings, the Hertz-validity margin ``hertz_margin_m`` = 2 R_rr cos α − d_R (§5 (3)–(4),
     feasible ≥ 0) and ``feasible``.
     """
+    import pandas as pd
+
+    return pd.DataFrame(_seed004_columns(cases))
+
+
+def _seed004_columns(cases) -> dict:
+    """:func:`seed004_ptrb`'s outputs as numpy columns (name → (C,) array): what a study's workers send
+    back, without a table built and taken apart again (issue 34)."""
     from bearingkit.papers.zheng2022.design import ptrb_objectives
 
     parts = []
@@ -70,7 +78,10 @@ def seed004_ptrb(cases):
         table.update(M_Nm=o["M"], mu=o["mu"], feasible=np.asarray(o["feasible"], bool))
         table["hertz_margin_m"] = 2.0 * r_rr * np.cos(alpha) - d_r
         parts.append((idx, table))
-    return assemble_columns(len(cases), parts)
+    return assemble_arrays(len(cases), parts)
+
+
+seed004_ptrb.columns = _seed004_columns  # Evaluator.columns calls it instead of the function
 
 
 SEED004_FACTORS = _seed004_factors()

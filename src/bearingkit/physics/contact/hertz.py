@@ -25,6 +25,8 @@ approximations), ``kunert1961``/``palmgren1959`` (line-contact deflection), ``is
 from __future__ import annotations
 
 from collections.abc import Callable
+from contextlib import contextmanager
+from contextvars import ContextVar
 from typing import NamedTuple
 
 import numpy as np
@@ -47,6 +49,7 @@ __all__ = [
     "point_contact",
     "point_stiffness",
     "reduced_modulus",
+    "reusing_integrals",
     "series_stiffness",
 ]
 
@@ -340,10 +343,38 @@ POINT_METHODS: dict[str, Callable] = {"exact": _exact_integrals, "hamrock_brewe"
 _F_MAX = float(_f_of_log_kappa(np.log(MAX_ELLIPTICITY))[0])
 
 
+#: The κ, K, E already computed in the current :func:`reusing_integrals` block (None outside one).
+_REUSED: ContextVar[dict | None] = ContextVar("hertz_reused_integrals", default=None)
+
+
+@contextmanager
+def reusing_integrals():
+    """Within the block, κ, K, E of a curvature-difference array are computed once per set of values.
+
+    A batched design evaluation asks for the same contacts several times (rating, stiffness, friction
+    of the same curvatures): the later calls get copies of the first call's κ, K, E, reshaped to their
+    own shape. The solve is elementwise except for its stopping test, which looks at the whole array,
+    so equal values (in the same order) give equal bits whatever the shape: the results are those of
+    computing every call. Per thread and per context (a :class:`~contextvars.ContextVar`); the memory
+    is released when the block ends.
+    """
+    token = _REUSED.set({})
+    try:
+        yield
+    finally:
+        _REUSED.reset(token)
+
+
 def _integrals(curvature_difference, method):
     fn = _registry_get("method", method, POINT_METHODS)
     f = _check_curvature_difference(curvature_difference)
-    return fn(f)
+    reused = _REUSED.get()
+    if reused is None:
+        return fn(f)
+    key = (method, f.tobytes())
+    if key not in reused:
+        reused[key] = tuple(np.ravel(x).copy() for x in np.broadcast_arrays(*fn(f)))
+    return tuple(x.reshape(f.shape).copy() for x in reused[key])
 
 
 def ellipticity(curvature_difference, method="exact"):

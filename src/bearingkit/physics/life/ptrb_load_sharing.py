@@ -16,6 +16,8 @@ References: ``zheng2022`` (doi:10.3390/machines10111051), ``zheng2020`` (doi:10.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from bearingkit import checks
@@ -104,11 +106,28 @@ def tooth_load_shares(
         _arr(checks.non_negative(k, v, "m/N"), c)
         for k, v in (("body_roller", body_roller), ("body_inner", body_inner), ("body_outer", body_outer))
     )
+    return _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol)
+
+
+@functools.cache
+def _coupling(n: int, support: str):
+    """The (n, n) coupling patterns min(i, j), min(e_i, e_j) and max(i − j, 0) [1] (read-only)."""
     idx = np.arange(n)
     dist_o = (n - 1 - idx) if support == "opposite" else idx
-    m_i = np.minimum.outer(idx, idx).astype(float)
-    m_o = np.minimum.outer(dist_o, dist_o).astype(float)
-    m_t = np.maximum(idx[:, None] - idx[None, :], 0).astype(float)
+    out = (
+        np.minimum.outer(idx, idx).astype(float),
+        np.minimum.outer(dist_o, dist_o).astype(float),
+        np.maximum(idx[:, None] - idx[None, :], 0).astype(float),
+    )
+    for m in out:
+        m.flags.writeable = False
+    return out
+
+
+def _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol):
+    """The Newton loop of :func:`tooth_load_shares` on checked (C,) float arrays (SI, see there)."""
+    c = f_roller.size
+    m_i, m_o, m_t = _coupling(n, support)
     a_i = li[:, None, None] * m_i  # (C, n, n)
     a_o = lo[:, None, None] * m_o
     t = lr[:, None, None] * m_t
@@ -119,41 +138,51 @@ def tooth_load_shares(
     converged = np.zeros(c, dtype=bool)
     # What does not change between iterations is formed once (issue 34: this loop was half of the
     # PTRB design optimisation's evaluator): the coupling matrices, the Jacobian's constant entries
-    # (±1 columns, zeros) and the views of its blocks. Every value is computed as before, bit for bit:
-    # the diagonal terms are added to the diagonal instead of adding a diagonal matrix (whose zeros
-    # leave the other entries as they are).
-    a_it, a_ot = a_i - t, a_o - t
-    jac = np.zeros((c, 2 * n + 2, 2 * n + 2))
+    # (±1 columns, zeros), the views of its blocks and of its diagonal. Every value is computed as
+    # before, bit for bit: the same products and sums of the same numbers, each y-block entry one
+    # product as before, the diagonal terms added to the diagonal in place instead of adding a
+    # diagonal matrix (whose zeros leave the other entries as they are), y² formed once for the
+    # residual and the Jacobian (a square is exact whatever the array's layout).
+    m = 2 * n + 2
+    jac = np.zeros((c, m, m))
     jac[:, :n, 2 * n] = 1.0
     jac[:, :n, 2 * n + 1] = -1.0
     jac[:, n : 2 * n, 2 * n] = -1.0
-    j_ii, j_io = jac[:, :n, :n], jac[:, :n, n : 2 * n]
-    j_oi, j_oo = jac[:, n : 2 * n, :n], jac[:, n : 2 * n, n : 2 * n]
-    diag = np.arange(n)
+    # The y-block of the Jacobian is [[a_i − t, t], [t, a_o − t]] times 3y² column by column, its
+    # diagonal plus 2 a_H y + c 3y² (a_H, c of the ITP for the first n, of the OTP for the last n).
+    coupling = np.empty((c, 2 * n, 2 * n))
+    coupling[:, :n, :n] = a_i - t
+    coupling[:, :n, n:] = t
+    coupling[:, n:, :n] = t
+    coupling[:, n:, n:] = a_o - t
+    j_yy = jac[:, : 2 * n, : 2 * n]
+    diag = jac.reshape(c, m * m)[:, : 2 * n * (m + 1) : m + 1]  # a view: entry (k, k) is k (m + 1)
+    row_i, row_o = jac[:, 2 * n, :n], jac[:, 2 * n + 1, n : 2 * n]
     ai_, ci_, ao_, co_, scale_ = ai[:, None], ci[:, None], ao[:, None], co[:, None], scale[:, None]
-    r = np.empty((c, 2 * n + 2, 1))
+    two_a = np.concatenate([np.repeat(2 * ai_, n, axis=1), np.repeat(2 * ao_, n, axis=1)], axis=1)
+    c_io = np.concatenate([np.repeat(ci_, n, axis=1), np.repeat(co_, n, axis=1)], axis=1)
+    w0, u = w0[:, None], u[:, None]
+    r = np.empty((c, m, 1))
+    r_i, r_o, r_si, r_so = r[:, :n, 0], r[:, n : 2 * n, 0], r[:, 2 * n, 0], r[:, 2 * n + 1, 0]
     for _ in range(max_iter):
         yi, yo = y[:, :n], y[:, n:]
         fi, fo = yi**3, yo**3
-        w = w0[:, None] - np.einsum("cij,cj->ci", t, fi - fo)
-        r[:, :n, 0] = ai_ * yi**2 + ci_ * fi - (u[:, None] - np.einsum("cij,cj->ci", a_i, fi) - w)
-        r[:, n : 2 * n, 0] = ao_ * yo**2 + co_ * fo - (w - np.einsum("cij,cj->ci", a_o, fo))
-        r[:, 2 * n, 0] = (fi.sum(axis=1) - f_roller) * scale
-        r[:, 2 * n + 1, 0] = (fo.sum(axis=1) - f_roller) * scale
-        di, do = 3 * yi**2, 3 * yo**2
-        np.multiply(a_it, di[:, None, :], out=j_ii)
-        j_ii[:, diag, diag] += 2 * ai_ * yi + ci_ * di
-        np.multiply(t, do[:, None, :], out=j_io)
-        np.multiply(t, di[:, None, :], out=j_oi)
-        np.multiply(a_ot, do[:, None, :], out=j_oo)
-        j_oo[:, diag, diag] += 2 * ao_ * yo + co_ * do
-        jac[:, 2 * n, :n] = di * scale_
-        jac[:, 2 * n + 1, n : 2 * n] = do * scale_
+        y2 = y**2
+        w = w0 - np.einsum("cij,cj->ci", t, fi - fo)
+        r_i[...] = ai_ * y2[:, :n] + ci_ * fi - (u - np.einsum("cij,cj->ci", a_i, fi) - w)
+        r_o[...] = ao_ * y2[:, n:] + co_ * fo - (w - np.einsum("cij,cj->ci", a_o, fo))
+        r_si[...] = (fi.sum(axis=1) - f_roller) * scale
+        r_so[...] = (fo.sum(axis=1) - f_roller) * scale
+        d = 3 * y2
+        np.multiply(coupling, d[:, None, :], out=j_yy)
+        diag += two_a * y + c_io * d
+        np.multiply(d[:, :n], scale_, out=row_i)
+        np.multiply(d[:, n:], scale_, out=row_o)
         step = np.linalg.solve(jac, np.negative(r))[..., 0]
         dy = step[:, : 2 * n]
         y = np.maximum(y + dy, 0.2 * y)  # damped: loads stay positive
-        w0 = w0 + step[:, 2 * n]
-        u = u + step[:, 2 * n + 1]
+        w0 = w0 + step[:, 2 * n : 2 * n + 1]
+        u = u + step[:, 2 * n + 1 :]
         converged = np.max(np.abs(dy) / y, axis=1) < tol
         if converged.all():
             break
@@ -161,6 +190,18 @@ def tooth_load_shares(
     mean = (f_roller / n)[:, None]
     fa_max = np.maximum((fi / mean).max(axis=1), (fo / mean).max(axis=1))
     return fi, fo, fa_max, converged
+
+
+#: The coefficient arrays of :func:`tooth_load_shares`, in the order of its signature.
+_COEFFICIENTS = (
+    "hertz_inner",
+    "hertz_outer",
+    "tooth_inner",
+    "tooth_outer",
+    "body_roller",
+    "body_inner",
+    "body_outer",
+)
 
 
 def max_tooth_share(roller_load, n_teeth, **coefficients):
@@ -175,14 +216,33 @@ def max_tooth_share(roller_load, n_teeth, **coefficients):
     """
     n_all = np.rint(np.atleast_1d(np.asarray(n_teeth, dtype=float))).astype(int)
     c = n_all.size
-    f_roller = _arr(roller_load, c)
     support = coefficients.pop("support", "opposite")
-    coefs = {k: _arr(v, c) for k, v in coefficients.items()}
+    max_iter, tol = coefficients.pop("max_iter", 60), coefficients.pop("tol", 1e-10)
+    if set(coefficients) != set(_COEFFICIENTS):
+        raise TypeError(
+            f"max_tooth_share() takes the coefficients {', '.join(_COEFFICIENTS)}; got {list(coefficients)}"
+        )
+    # The checks of tooth_load_shares, made once for all designs (a group passes them iff all do).
+    checks.one_of("support", support, SUPPORTS)
+    f_roller = _arr(checks.positive("roller_load", _arr(roller_load, c), "N"), c)
+    coefs = {}
+    for k in _COEFFICIENTS:
+        v = _arr(coefficients[k], c)
+        if k.startswith("hertz"):
+            checks.positive(k, v, "m/N^(2/3)")
+        else:
+            checks.non_negative(k, v, "m/N")
+        coefs[k] = v
     out = np.empty(c)
     for n in np.unique(n_all):
         sel = n_all == n
-        _, _, fa, conv = tooth_load_shares(
-            f_roller[sel], int(n), support=support, **{k: v[sel] for k, v in coefs.items()}
+        _, _, fa, conv = _shares(
+            f_roller[sel],
+            checks.integer("n_teeth", int(n), low=1),
+            *(coefs[k][sel] for k in _COEFFICIENTS),
+            support,
+            max_iter,
+            tol,
         )
         if not conv.all():
             raise checks.InputError(
