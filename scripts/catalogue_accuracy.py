@@ -38,7 +38,9 @@ def _series(e) -> str:
 
 
 def _source(e) -> str:
-    return "SKF 6000" if e.source.upper().startswith("SKF") else "NSK E1102"
+    if e.source.upper().startswith("SKF"):
+        return "SKF 6000"
+    return "NTN ULTAGE" if e.source.startswith("NTN-ULTAGE") else "NSK E1102"
 
 
 def groups():
