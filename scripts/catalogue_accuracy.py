@@ -40,7 +40,9 @@ def _series(e) -> str:
 def _source(e) -> str:
     if e.source.upper().startswith("SKF"):
         return "SKF 6000"
-    return "NTN ULTAGE" if e.source.startswith("NTN-ULTAGE") else "NSK E1102"
+    if e.source.startswith("NTN-ULTAGE"):
+        return "NTN ULTAGE"
+    return "KOYO B2001" if e.source.startswith("KOYO-B2001") else "NSK E1102"
 
 
 def groups():
