@@ -233,7 +233,8 @@ EXCEPTIONS = {
     ],
     "332 (HR 332xx J, 25-85 mm, NSK B112-B122): C -3…-12 % (series mean -8 %), 33208, 33210, 33215 and 33216 "
     "beyond -10 % (33216 C0 -10 %): the estimate (roller 0.23 (D - d), length 0.72 B - 1 mm) rates below NSK "
-    "throughout; NSK publishes no roller: cause not found": ["33208", "33210", "33215", "33216"],
+    "throughout; NSK publishes no roller: cause not found; KOYO's 33218 (B2001RUS p. 214) C -10.2 % the same "
+    "way": ["33208", "33210", "33215", "33216", "33218"],
     "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
     "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],
     "32232: NSK's C0 in N (1 120 000, B126) disagrees with its own {kgf} column (125 000 kgf = 1 226 000 N); "
