@@ -158,6 +158,8 @@ EXCEPTIONS = {
     "NSK's 72 A/B deviation) C0 -11…-15 %; 7328C-7332C C0 -12 %: cause not found": [
         "7304C", "7310C", "7311C", "7228C", "7230C", "7328C", "7330C", "7332C",
     ],
+    "AKE's 72 AC (AKE CSKGB072009 p. 13, B72..ATA): 7203AC, 7204AC C +14 %, C0 +13 %; AKE's 15° rows of "
+    "these bores equal NSK's 72 C: cause not found": ["7203AC", "7204AC"],
     "double row: ball size and count against those NSK's C and C0 imply (3200 ball too large; 3303, 3304, "
     "3306 one ball fewer or width-capped; 3214 rated by NSK above the larger 3215; 3206 one ball fewer)": [
         "3200", "3206", "3214", "3303", "3304", "3306",
