@@ -38,7 +38,13 @@ def _series(e) -> str:
 
 
 def _source(e) -> str:
-    return "SKF 6000" if e.source.upper().startswith("SKF") else "NSK E1102"
+    if e.source.upper().startswith("SKF"):
+        return "SKF 6000"
+    if e.source.startswith("NTN-ULTAGE"):
+        return "NTN ULTAGE"
+    if e.source.startswith("AKE-"):
+        return "AKE CSKGB072009"
+    return "KOYO B2001" if e.source.startswith("KOYO-B2001") else "NSK E1102"
 
 
 def groups():

@@ -1,16 +1,17 @@
 """The estimate's ISO 281 C and ISO 76 C0 against the catalogues: the sizes of issue 33 within 15 %, and
 every size outside 10 % named with its cause (docs/catalogue.md, "Known deviations").
 
-Published ratings: NSK *Rolling Bearings*, CAT. No. E1102e (English edition), as transcribed into the
-data files (whose ``source`` column names the page); repeated here with the page so that a change of a
-data file shows. CALIBRATIONS (a constant chosen on that
-size, so not a prediction): the 6309 (Conrad fill angle 189°, catalogue.internal.CONRAD_FILL_ANGLE), the
-1205 (self-aligning cage pitch 1.205, RULES) and the 32008 X (roller end allowance 1.0 mm,
-ROLLER_END_ALLOWANCE, from seed 001's published roller against NSK's C0); the 34 sizes 7204-7220 of the
-72 series (72B and 72C; 72A shares 72B's bearings; 7221-7240, rated later, are predictions) are the
-calibration set of the angular contact ball size and cage pitches (k_w = 0.317, pressed steel 1.145,
-machined 1.227: the medians of the geometry NSK's C and C0 imply). Every other size is a prediction of
-rules chosen before or elsewhere (73, 70, 719, QJ: the same rule).
+Published ratings: NSK *Rolling Bearings*, CAT. No. E1102e (English edition), and for the 70 AC rows
+NTN's ULTAGE spindle bearing table and for the 70 B and some 72/73/70 C rows KOYO's CAT. No. B2001RUS, as
+transcribed into the data files (whose ``source`` column names the page); repeated here with the page so
+that a change of a data file shows. CALIBRATIONS (a constant chosen on that size, so not a prediction):
+the 6309 (Conrad fill angle 189°, catalogue.internal.CONRAD_FILL_ANGLE), the 1205 (self-aligning cage
+pitch 1.205, RULES) and the 32008 X (roller end allowance 1.0 mm, ROLLER_END_ALLOWANCE, from seed 001's
+published roller against NSK's C0); the 34 sizes 7204-7220 of the 72 series (72B and 72C; 72A shares
+72B's bearings; 7221-7240, rated later, are predictions) are the calibration set of the angular contact
+ball size and cage pitches (k_w = 0.317, pressed steel 1.145, machined 1.227: the medians of the geometry
+NSK's C and C0 imply). Every other size is a prediction of rules chosen before or elsewhere (73, 70, 719,
+QJ: the same rule).
 """
 
 from __future__ import annotations
@@ -142,6 +143,23 @@ EXCEPTIONS = {
         "71909AC", "71910AC", "71911AC", "71912AC", "71913AC", "71914AC", "71915AC", "71916AC", "71917AC",
         "71920AC", "71921AC", "71922AC", "71926AC", "71928AC", "71930AC",
     ],
+    "NTN's 70 AC (NTN ULTAGE table p. 4, NTN's ratings): C +10…+17 %, C0 up to +12 % at the small 70 "
+    "sizes, the pattern of NSK's 70 C/A rows of the same bores (above); from 7007AC within 10 %. NTN prints "
+    "no ball size or count: cause not found": [
+        "7000AC", "7001AC", "7002AC", "7004AC", "7005AC", "7006AC",
+    ],
+    "KOYO's 70 B (KOYO B2001RUS, machined cages only): C +11…+27 %, C0 +8…+19 %: the estimate's cage rule "
+    "(NSK's: 70 pressed steel to 7018) gives 7000B-7018B pressed steel cages; with KOYO's machined cage "
+    "7000B-7010B stay above +10 %, the small-70 pattern of NSK's 70 A/C: cause not found": [
+        "7000B", "7001B", "7002B", "7003B", "7004B", "7005B", "7006B", "7007B", "7008B", "7009B", "7010B",
+        "7011B", "7012B", "7013B",
+    ],
+    "KOYO's 73 C and 72 C (machined cage): 7304C +10 %; 7310C, 7311C C0 -10 %; 7228C, 7230C (the bores of "
+    "NSK's 72 A/B deviation) C0 -11…-15 %; 7328C-7332C C0 -12 %: cause not found": [
+        "7304C", "7310C", "7311C", "7228C", "7230C", "7328C", "7330C", "7332C",
+    ],
+    "AKE's 72 AC (AKE CSKGB072009 p. 13, B72..ATA): 7203AC, 7204AC C +14 %, C0 +13 %; AKE's 15° rows of "
+    "these bores equal NSK's 72 C: cause not found": ["7203AC", "7204AC"],
     "double row: ball size and count against those NSK's C and C0 imply (3200 ball too large; 3303, 3304, "
     "3306 one ball fewer or width-capped; 3214 rated by NSK above the larger 3215; 3206 one ball fewer)": [
         "3200", "3206", "3214", "3303", "3304", "3306",
@@ -217,7 +235,8 @@ EXCEPTIONS = {
     ],
     "332 (HR 332xx J, 25-85 mm, NSK B112-B122): C -3…-12 % (series mean -8 %), 33208, 33210, 33215 and 33216 "
     "beyond -10 % (33216 C0 -10 %): the estimate (roller 0.23 (D - d), length 0.72 B - 1 mm) rates below NSK "
-    "throughout; NSK publishes no roller: cause not found": ["33208", "33210", "33215", "33216"],
+    "throughout; NSK publishes no roller: cause not found; KOYO's 33218 (B2001RUS p. 214) C -10.2 % the same "
+    "way": ["33208", "33210", "33215", "33216", "33218"],
     "30228: NSK's C0 (515 kN, B126) is 2 % above the smaller 30226's (505 kN) and 23 % below the 30230's "
     "(665 kN); the estimate steps evenly (C0 +11.5 %, C +3 %)": ["30228"],
     "32232: NSK's C0 in N (1 120 000, B126) disagrees with its own {kgf} column (125 000 kgf = 1 226 000 N); "

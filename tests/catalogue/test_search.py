@@ -23,11 +23,11 @@ def test_search_by_bore_outside_diameter_kind_and_rating():
 
 
 def test_search_uses_the_estimate_where_the_table_prints_no_rating():
-    row = _row("7014AC")  # dimensions only: NSK E1102 B56 prints the 7014 A and C, no 25° 7014
+    row = _row("7314AC")  # dimensions only: NSK E1102 B56 prints the 7314 A and B, no 25° 7314
     assert row.entry.C is None and row.rating_source == "estimate" and row.C == row.C_estimate > 0
-    assert any(r.entry.designation == "7014AC" for r in search(kind="angular_contact", d=0.070, C_min=row.C))
+    assert any(r.entry.designation == "7314AC" for r in search(kind="angular_contact", d=0.070, C_min=row.C))
     assert not any(
-        r.entry.designation == "7014AC" for r in search(kind="angular_contact", d=0.070, C_min=row.C + 1)
+        r.entry.designation == "7314AC" for r in search(kind="angular_contact", d=0.070, C_min=row.C + 1)
     )
 
 

@@ -2,7 +2,8 @@
 NN49 (NN4910-NN4928) and tapered 332 (33205-33218). Dimensions only: no stored catalogue prints their
 ratings, so the estimate rates them; each row names its source, the dimensions are consistent with the
 rows they were taken from, and the estimates are checked against their rated siblings. (33205-33217 were
-since replaced by NSK's rated HR 332xx J rows, E1102 B112-B122; NSK prints no 33218, which stays.)"""
+since replaced by NSK's rated HR 332xx J rows, E1102 B112-B122; NSK prints no 33218, rated later with
+KOYO's 33218JR, B2001RUS p. 214, whose d, D, T, B, C, r and e equal the row's: no 332 row is unrated now.)"""
 
 from __future__ import annotations
 
@@ -19,7 +20,6 @@ def _rows(family, series):
 NEW = [
     ("deep_groove_ball", "64", 7),
     ("double_row_cylindrical_roller", "NN49", 15),
-    ("tapered_roller", "332", 1),
 ]
 
 
