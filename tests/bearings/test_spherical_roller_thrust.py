@@ -95,3 +95,28 @@ def test_contact_angle_bounds():
             pitch_diameter=0.097,
             contact_angle=np.radians(81.0),
         )
+
+
+def test_approach_and_angle_equal_the_sphere_geometry_by_hand():
+    """The kernel's δ_j and operating angle against the geometry written out: sphere centre O on the
+    axis, R_o = d_m/(2 cos α) + D_w/2, inner profile centre P_j at L₀ = R_o + R_i − D_w along
+    m_j = (cos α cos ψ_j, cos α sin ψ_j, sin α), moved by the washer's translation u: δ_j = |P_j − O| − L₀
+    and the load line's angle atan2(z, r) of P_j − O, for a shaft washer moved along and across the axis.
+    As every row of the engine, the element stays in its azimuth plane: the washer's tangential motion
+    u_t = −u_x sin ψ + u_y cos ψ is left out (it changes |P_j − O| by u_t²/(2 L₀), 2e-5 of δ here)."""
+    row = _model().rows[0]
+    d_m, d_w, a = row.pitch_diameter, row.element_diameter, row.contact_angle
+    r_o = d_m / (2 * np.cos(a)) + d_w / 2
+    r_i = 0.98 * r_o / 0.98  # R_r = 0.98 R_o (osculation_outer), R_i = R_r / 0.98 (osculation_inner)
+    l0 = r_o + r_i - d_w
+    u = np.array([[0.0, 0.0, 30e-6, 0.0, 0.0], [12e-6, -5e-6, 40e-6, 0.01, 0.0]])
+    st = row.kernel().state(u)
+    psi = 2 * np.pi * np.arange(Z) / Z
+    m = np.stack([np.cos(a) * np.cos(psi), np.cos(a) * np.sin(psi), np.full(Z, np.sin(a))], axis=-1)
+    p = l0 * m[None] + u[:, None, :3]  # a tilt about O moves no P_j off its sphere: it does not enter
+    r = p[..., 0] * np.cos(psi) + p[..., 1] * np.sin(psi)  # in the azimuth plane (u_t dropped)
+    np.testing.assert_allclose(st.deflection, np.hypot(r, p[..., 2]) - l0, rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(st.contact_angle, np.arctan2(p[..., 2], r), rtol=1e-12)
+    full = np.linalg.norm(p, axis=-1) - l0  # with u_t: second order, within 3e-5 of δ
+    np.testing.assert_allclose(st.deflection, full, rtol=3e-5)
+    assert r_o == pytest.approx(row.outer_radius, rel=1e-15) and l0 == pytest.approx(row.touch_distance)

@@ -114,3 +114,15 @@ def test_cli_analyze_and_rating():
     text = " ".join(res.output.split())
     # ISO 281 8.2: P = tan α F_r + F_a = 1.2 · 20 + 100 kN; ISO 76: P0 = 2.3 tan α F_r + F_a = 155.2 kN
     assert "P = 124 kN, C = 330 kN (catalogue)" in text and "P0 = 155.2 kN, C0 = 885 kN" in text
+
+
+def test_radial_load_beyond_the_makers_limit_has_no_iso281_life():
+    """F_r/F_a <= 0.55 (NSK B225) is ISO 281's F_a/F_r > e = 1.5 tan α = 1.8: at F_r = 0.6 F_a the bearing
+    still solves (the row carries it) but has no ISO 281 P; at 0.5 F_a it has P = 1.2 F_r + F_a."""
+    cases = [{"F_z": "100 kN", "F_x": "50 kN"}, {"F_z": "100 kN", "F_x": "60 kN"}]
+    a = bk.analyze("29412", load=cases, speed="1000 rpm")
+    assert a.statics.converged.all()
+    life = a.rating.iso281
+    assert float(life.load[0]) == pytest.approx(160e3, rel=1e-12) and not np.ma.getmaskarray(life.life)[0]
+    assert np.ma.getmaskarray(life.life)[1]
+    assert "must exceed e" in (life.note or "")
