@@ -3,7 +3,8 @@ against the published ratings, per family and series, over every tabulated size.
 
 Usage: ``python scripts/catalogue_accuracy.py [--sizes]`` (``--sizes`` adds one line per size).
 Error = estimate / catalogue - 1. Needle bearings without inner ring (RNA, twins of the NA rows with the
-same published ratings) are left out; angular contact series are split by contact-angle suffix.
+same published ratings) are left out; angular contact series are split by contact-angle suffix,
+spherical roller thrust series by design (E or standard).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ NAMES = {
     "thrust_ball": "thrust ball",
     "thrust_cylindrical_roller": "thrust cylindrical roller",
     "spherical_roller": "spherical roller",
+    "spherical_roller_thrust": "spherical roller thrust (axial)",
     "needle_roller": "needle roller",
 }
 
@@ -34,6 +36,8 @@ NAMES = {
 def _series(e) -> str:
     if e.family == "angular_contact_ball":
         return e.series + re.sub(r"^\d+", "", e.designation)
+    if e.family == "spherical_roller_thrust":  # NSK's E design and the standard one have their own rules
+        return e.series + (" E" if e.extra.get("design") == "E" else "")
     return e.series
 
 

@@ -301,6 +301,14 @@ EXCEPTIONS = {
         "NA4900", "NA4902", "NA4903", "NA4905", "NA49/28", "NA4907", "NA4909", "NA4926", "NA4928",
         "NA4852", "NA4860", "NA4864",
     ],
+    "spherical roller thrust 292 (NSK B225-B229, standard design): C +6…+11 %, C0 +8…+14 %: the standard "
+    "design's rule (calibrated on the 294 standard sizes) gives L_we = 0.518 T; NSK's 292 ratings imply, "
+    "at the same alpha, d_m and cage pitch, a roller of the same D_we/T (0.36-0.37) but shorter for its "
+    "diameter (L_we/D_we 1.19-1.28 against 1.38-1.49 in 294): NSK prints no roller; the rule is not "
+    "split by series": [
+        "29240", "29244", "29248", "29260", "29264", "29268", "29272", "29276", "29280", "29284", "29288",
+        "29292", "292/500",
+    ],
 }  # fmt: skip
 
 

@@ -14,10 +14,8 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from typer.testing import CliRunner
 
 from bearingkit.catalogue import entries, estimate, internal, parse, resolve
-from bearingkit.cli import app
 from bearingkit.errors import InputError
 
 NEW = {
@@ -153,13 +151,11 @@ def test_narrow_213_rows_meet_at_the_centre_plane():
         assert e.chamfer - 1e-9 <= internal.axial_margin(est) < e.chamfer + 1e-3 * e.width
 
 
-def test_thrust_spherical_roller_bearings_are_not_designations():
-    """bearingkit has no thrust spherical roller builder: 29412 is answered in one line that says what it
-    is (not the nearest spellings of another kind, 32912 …)."""
-    result = CliRunner().invoke(app, ["rating", "29412", "--load", "Fa=10kN"])
-    assert result.exit_code == 2 and "not a designation bearingkit knows" in result.stderr
-    assert "thrust spherical roller bearing (series 294)" in result.stderr and "32912" not in result.stderr
-    assert len(result.stderr.strip().splitlines()) == 1
-    for text in ("29230 E", "293/530", "29320"):
-        with pytest.raises(InputError, match=r"thrust spherical roller bearing \(series 29[23]\)"):
+def test_thrust_spherical_roller_designations_and_sizes_not_in_the_tables():
+    """292/293/294 are designations since the spherical roller thrust kind exists (it used to be refused
+    in one line as a kind without a model); a size NSK E1102 does not print is refused with the nearest
+    sizes of its own series (not those of another kind, 32912 …)."""
+    assert parse("29320").family == "spherical_roller_thrust"
+    for text in ("29230 E", "293/530"):
+        with pytest.raises(InputError, match=r"not in the catalogue tables.*series 29[23]; nearest: 29[23]"):
             parse(text)

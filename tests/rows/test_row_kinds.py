@@ -79,6 +79,7 @@ def _rows():
         1.0,
     )
     yield "spherical_roller", _srb(), 1.0
+    yield "spherical_roller_thrust", _srb(alpha=np.arctan(1.2), clearance=0.0), 1.0
     yield "self_aligning_ball", _sabb(), 1.0
     yield (
         "needle",

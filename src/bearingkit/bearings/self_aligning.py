@@ -8,6 +8,11 @@ The self-aligning bearings are two rows on one spherical outer raceway centred a
 (the origin): they carry radial and axial force but no moment, at any misalignment (see
 :mod:`bearingkit.rows.self_aligning`). A moment on a free tilt is refused by the solver; fix the tilts
 (``free = [True, True, True, False, False]``) to impose a misalignment.
+
+The spherical roller thrust bearing (series 292, 293, 294) is one row of the same kind at 45° < α ≤ 80°
+(catalogue bearings about 50°): the housing washer's sphere is centred on the axis where the rollers'
+load lines meet it; it carries an axial load with a radial load of up to about F_r ≤ 0.55 F_a (NSK
+E1102 B225: ISO 281's e = 1.5 tan α at tan α = 1.2), and, like the radial kinds, no moment.
 """
 
 from __future__ import annotations
@@ -95,6 +100,70 @@ def spherical_roller(
         e_reduced=e_reduced_of(material),
     )
     return BearingModel(rows, name=name, references=("harris2007", "kunert1961", "iso16281"))
+
+
+def spherical_roller_thrust(
+    *,
+    n_elements: int,
+    element_diameter: float,
+    effective_length: float,
+    pitch_diameter: float,
+    contact_angle: float,
+    osculation_outer: float = 0.98,
+    osculation_inner: float = 0.98,
+    n_slices: int = 15,
+    line_law: str = "kunert",
+    material=None,
+    name: str = "spherical roller thrust bearing",
+) -> BearingModel:
+    """Spherical roller thrust bearing: one row of barrel rollers on the housing washer's sphere.
+
+    Parameters
+    ----------
+    n_elements : int
+        Rollers Z.
+    element_diameter : float [m]
+        Roller diameter at the middle D_w.
+    effective_length : float [m]
+        Effective roller length l.
+    pitch_diameter : float [m]
+        Pitch diameter d_m of the roller centres.
+    contact_angle : float [rad]
+        α of the row, 45° < α < 80° (catalogue 292/293/294 series about 50°).
+    osculation_outer, osculation_inner : float
+        Roller profile radius over the housing washer's sphere radius and over the shaft washer's
+        raceway profile radius (0.8 … 1).
+    n_slices : int
+        Slices per contact.
+    line_law : str
+        ``"kunert"`` or ``"iso16281"``.
+    material : Material or None
+    name : str
+
+    Returns
+    -------
+    BearingModel
+        One row ``rollers`` (α > 0: carries +F_z on the shaft washer, the "inner ring"). A single-direction
+        thrust bearing has no internal clearance to speak of: the row starts at first touch.
+    """
+    checks.in_range(
+        "contact_angle", contact_angle, np.pi / 4, SphericalRollerRow.max_contact_angle, "rad", closed=False
+    )
+    row = SphericalRollerRow(
+        n_elements=n_elements,
+        element_diameter=element_diameter,
+        effective_length=effective_length,
+        pitch_diameter=pitch_diameter,
+        contact_angle=contact_angle,
+        osculation_outer=osculation_outer,
+        osculation_inner=osculation_inner,
+        clearance=0.0,
+        n_slices=n_slices,
+        line_law=line_law,
+        e_reduced=e_reduced_of(material),
+        name="rollers",
+    )
+    return BearingModel((row,), name=name, references=("harris2007", "kunert1961", "iso16281"))
 
 
 def self_aligning_ball(

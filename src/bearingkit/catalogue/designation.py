@@ -39,6 +39,7 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("cylindrical_roller", re.compile(r"^(?:NUP|NU|NJ|N)\s?(10|19|22|23|2|3)(\d\d|/\d+)(.*)$")),
     ("thrust_cylindrical_roller", re.compile(r"^(81[12])(\d\d)(.*)$")),
     ("thrust_ball", re.compile(r"^(51[123])(\d\d)(.*)$")),
+    ("spherical_roller_thrust", re.compile(r"^(29[234])(\d\d|/\d+)(.*)$")),
     ("tapered_roller", re.compile(r"^(30[23]|313|32[0239]|33[012])(\d\d|/\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(61[89]|160)(\d\d|/\d+)(.*)$")),
     ("angular_contact_ball", re.compile(r"^(71[89]|7[0239])(\d\d)(.*)$")),
@@ -48,10 +49,6 @@ _PATTERNS: tuple[tuple[str, re.Pattern], ...] = (
     ("spherical_roller", re.compile(r"^(213|22[23]|23[0129]|24[01])(\d\d|/\d+)(.*)$")),
     ("self_aligning_ball", re.compile(r"^(1[23]|2[23])(\d\d)(.*)$")),
     ("deep_groove_ball", re.compile(r"^(6[0234])(\d\d|/\d+)(.*)$")),
-)
-#: Designations of kinds bearingkit has no builder for: pattern (group 1 = series) → what they are.
-_NOT_MODELLED: tuple[tuple[re.Pattern, str], ...] = (
-    (re.compile(r"^(29[234])(\d\d|/\d+)"), "thrust spherical roller bearing"),
 )
 #: Prefixes before the basic designation: code → (the series it may precede (regex), meaning).
 PREFIXES = {
@@ -252,20 +249,11 @@ def parse(text: str) -> Designation:
         if m is None:
             continue
         return _parse_family(raw, family, prefix, m)
-    for pattern, kind in _NOT_MODELLED:
-        m = pattern.match(body)
-        if m is not None:
-            # say what it is rather than offer the nearest spellings of another kind (29412 → 32912)
-            raise InputError(
-                f"designation ({_shown(raw)}) names a {kind} (series {m.group(1)}): bearingkit has no model "
-                "of that kind, so it is not a designation bearingkit knows (its thrust kinds: thrust ball "
-                "511, 512, 513; cylindrical roller thrust 811, 812)"
-            )
     raise InputError(
         f"designation ({_shown(raw)}) is not a designation bearingkit knows (series 618, 619, 160, 60, 62, "
         "63, 64, 70, 718, 719, 72, 73, 32, 33, QJ2, QJ3, 12, 13, 22, 23, 213, 222, 223, 230, 231, 232, 239, "
         "240, 241, N/NU/NJ/NUP 10/19/2/22/3/23, NN30, NN49, NA48, NA49, RNA48, RNA49, 302, 303, 313, 320, "
-        "322, 323, 329, 330, 331, 332, 511, 512, 513, 811, 812) and no file of that "
+        "322, 323, 329, 330, 331, 332, 511, 512, 513, 811, 812, 292, 293, 294) and no file of that "
         f"name exists; nearest: {', '.join(nearest(raw))}"
     )
 

@@ -32,6 +32,9 @@ The rules are the bearing-design rules of the textbooks, with their constants in
 - self-aligning ball and spherical roller rows: α = atan(e/1.5) from the e the catalogue prints per
   bearing (ISO 281 Table 3 and cl. 7.2: e = 1.5 tan α for both kinds);
 - spherical roller: two rows of barrel rollers, D_we = k_w (D − d), L_we = k_L B/2 per row, d_m = (d + D)/2;
+- spherical roller thrust: one row, α = atan 1.2 from the equivalent load NSK prints (ISO 281 8.2:
+  X = tan α), D_we = k_w T and L_we = k_L T per design (NSK's E design or the standard one), Z from the
+  cage pitch, d_m = (d + D)/2 (:data:`SPHERICAL_THRUST_RULES`);
 - needle roller: d_m = F_w + D_w with the published roller inscribed diameter F_w, D_w = k_w (D − F_w)/2
   (the needle takes a share of the outer-ring section), L_we = k_L C (C the ring width);
 
@@ -90,6 +93,11 @@ PRESSED_STEEL_CAGE_UP_TO = {"70": 18, "72": 22, "73": 20}
 #: Spherical rollers no thicker than this times their length (D_we ≤ L_we): narrow sections (213) take
 #: slimmer rollers rather than rollers that cross into the other row.
 SPHERICAL_ROLLER_ASPECT = 1.0
+#: Spherical roller thrust bearings (292, 293, 294): tan α of every size. NSK E1102 B225-B229 print one
+#: dynamic equivalent load for all, P = 1.2 F_r + F_a, which is ISO 281 8.2's P = tan α F_r + F_a of a
+#: thrust roller bearing at tan α = 1.2 (α = 50.2°); the static P0 = 2.8 F_r + F_a (ISO 76: 2.3 tan α =
+#: 2.76) and the limit F_r/F_a ≤ 0.55 (ISO 281: F_a/F_r > e = 1.5 tan α = 1.8) agree with it.
+SPHERICAL_THRUST_TAN = 1.2
 #: Groove conformities r/D_w (Harris 2006 ch. 2 [M]).
 CONFORMITY_INNER = 0.52
 CONFORMITY_OUTER = 0.53
@@ -122,6 +130,17 @@ class Rule:
     wall: float = 0.0
 
 
+#: Spherical roller thrust rollers by design (the ``design`` column: ``E`` NSK's E design, ``""`` the
+#: standard one): D_we = k_w T, L_we = length · T (T the height), Z from the cage pitch of the radial
+#: spherical rule (1.15, not chosen here). CALIBRATED: k_w and length are the medians of the geometry
+#: NSK's C_a and C_0a imply (ISO 281 eq. (11) and ISO 76 eq. (7) solved for D_we and L_we at the α above,
+#: d_m = (d + D)/2, Z = π d_m/(1.15 D_we)) over the 294 series: its 14 E sizes (29412 E-29432 E) for the E
+#: rule, its 19 standard sizes (29434-294/500) for the other; 293 and 292 are predictions
+#: (docs/catalogue.md).
+SPHERICAL_THRUST_RULES = {
+    "E": Rule(k_w=0.445, pitch=1.15, length=0.580),
+    "": Rule(k_w=0.368, pitch=1.15, length=0.518),
+}
 #: The one place where the rule constants live (module docstring: where they come from).
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
@@ -143,6 +162,8 @@ RULES: dict[str, Rule] = {
     "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
     "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
     "spherical_roller": Rule(k_w=0.24, pitch=1.15, length=0.80, rows=2),
+    # by design: SPHERICAL_THRUST_RULES (estimate() picks the row's)
+    "spherical_roller_thrust": SPHERICAL_THRUST_RULES["E"],
     # NN30 (diameter series 0): the roller of the NU10 rule (same diameter series) and the single-row
     # length ratio on each half of the width; nothing chosen (no stored catalogue rates NN30)
     "double_row_cylindrical_roller": Rule(k_w=0.22, pitch=1.15, length=0.63, rows=2),
@@ -254,6 +275,18 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         notes.append(
             f"D_we = {rule.k_w} T, L_we = {rule.length} (D - d)/2, Z from cage pitch {rule.pitch} D_we, "
             "d_m = (d + D)/2"
+        )
+    elif fam == "spherical_roller_thrust":
+        design = entry.extra.get("design", "")
+        rule = SPHERICAL_THRUST_RULES.get(design, SPHERICAL_THRUST_RULES[""])
+        d_w, length = rule.k_w * width, rule.length * width
+        z = _pitch_count(d_m, d_w, rule.pitch)
+        alpha = math.atan(SPHERICAL_THRUST_TAN) if contact_angle is None else contact_angle
+        notes.append(
+            f"one row ({'NSK E design' if design == 'E' else 'standard design'}): D_we = {rule.k_w} T, "
+            f"L_we = {rule.length} T, Z from cage pitch {rule.pitch} D_we, d_m = (d + D)/2, "
+            f"alpha = atan({SPHERICAL_THRUST_TAN}) from the printed P = {SPHERICAL_THRUST_TAN} F_r + F_a "
+            "(ISO 281 8.2: X = tan alpha)"
         )
     elif fam == "spherical_roller":
         length = rule.length * 0.5 * width
@@ -478,7 +511,7 @@ def envelope_margins(est: Estimate) -> np.ndarray:
         half = 0.5 * est.element_diameter
     elif est.entry.family == "thrust_cylindrical_roller":
         half = 0.5 * est.effective_length
-    elif est.entry.family == "spherical_roller":
+    elif est.entry.family in ("spherical_roller", "spherical_roller_thrust"):
         a = est.contact_angle
         half = 0.5 * (est.element_diameter * math.cos(a) + est.effective_length * math.sin(a))
     else:

@@ -6,7 +6,8 @@ bearing (one rating for the whole bearing, on the basis the catalogue prints, :d
 
 - radial ball / roller rows: C_r with i rows, C_0r (ISO 281 cl. 5.1, 7.1; ISO 76 cl. 6.1, 7.1);
   spherical roller bearings i = 2 with b_m = 1.15, needle roller bearings b_m = 1.1 (machined rings);
-- thrust rows (α = 90°): C_a, C_0a (ISO 281 cl. 6.1, 8.1; ISO 76 cl. 8.1, 9.1);
+- thrust rows (α = 90°): C_a, C_0a (ISO 281 cl. 6.1, 8.1; ISO 76 cl. 8.1, 9.1); spherical roller thrust
+  (one row at α ≈ 50°) by the same clauses' α ≠ 90° formulas with b_m = 1.15;
 - self-aligning ball: C_r, C_0r with i = 2, the f_c of :mod:`bearingkit.physics.life.kinds` (derived
   there: ISO 281 Table 2 column 3 is not shipped) and ISO 76 Table 1 column 2's f0 (shipped from memory,
   checked against the stress definition: ``kinds.f0_self_aligning_ball_table``);
@@ -40,12 +41,14 @@ ISO281_TYPES = {
     "thrust_ball": "thrust_ball",
     "thrust_cylindrical_roller": "thrust_cylindrical_roller",
     "spherical_roller": "spherical_roller",
+    "spherical_roller_thrust": "thrust_spherical_roller",
     "needle_roller": "needle_roller_machined",
 }
 #: What C, C0 mean per family (the catalogue's basis, which :func:`ratings` follows).
 BASIS = {
     "thrust_ball": "axial",
     "thrust_cylindrical_roller": "axial",
+    "spherical_roller_thrust": "axial",
     "four_point_contact_ball": "axial (C_a = C_r/Y, C_0a = C_0r/Y0 of a double-row 35 deg bearing)",
 }
 #: Rows four-point contact bearings are rated with (ISO's double-row angular contact treatment).

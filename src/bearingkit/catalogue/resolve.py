@@ -242,6 +242,13 @@ def _geometry(est: Estimate, des, notes: list, position: float) -> dict:
             clearance_radial=clearance,
         )
         notes.append("roller/raceway osculations: the builder's 0.98 (assumed; catalogues do not print them)")
+    elif fam == "spherical_roller_thrust":
+        g.update(
+            element_diameter=est.element_diameter,
+            effective_length=est.effective_length,
+            contact_angle=est.contact_angle,
+        )
+        notes.append("roller/raceway osculations: the builder's 0.98 (assumed; catalogues do not print them)")
     elif fam == "needle_roller":
         g.update(
             element_diameter=est.element_diameter,

@@ -44,10 +44,11 @@ KINDS = {
     "needle": ("needle_roller",),
     "thrust_ball": ("thrust_ball",),
     "thrust_cylindrical": ("thrust_cylindrical_roller",),
+    "thrust_spherical": ("spherical_roller_thrust",),
     "ball": ("deep_groove_ball", "angular_contact_ball", "double_row_angular_contact_ball",
              "four_point_contact_ball", "self_aligning_ball", "thrust_ball"),
     "roller": ("cylindrical_roller", "double_row_cylindrical_roller", "tapered_roller", "spherical_roller",
-               "needle_roller", "thrust_cylindrical_roller"),
+               "needle_roller", "thrust_cylindrical_roller", "spherical_roller_thrust"),
 }  # fmt: skip
 #: Family → (ISO 281 P law, ISO 76 P0 law, rows whose X, Y apply) of the catalogue method (the laws of
 #: :mod:`bearingkit.physics.life.iso281_load` / ``iso76``; four-point, self-aligning, spherical and
@@ -65,6 +66,7 @@ SCREEN_LAWS = {
     "needle_roller": life_kinds.KIND_LOAD_LAWS["needle"],
     "thrust_ball": ("thrust_ball", "thrust_ball", 1),
     "thrust_cylindrical_roller": ("thrust_roller", "thrust_roller", 1),
+    "spherical_roller_thrust": ("thrust_roller", "thrust_roller", 1),
 }
 #: Families of single rows that carry axial load one way only (a lone one needs F_a >= F_r tan α).
 LONE_ONE_DIRECTION = ("angular_contact_ball", "tapered_roller")

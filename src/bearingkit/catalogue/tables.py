@@ -35,6 +35,7 @@ FAMILIES: dict[str, tuple[str, str | None, str]] = {
     "thrust_ball": ("thrust_ball.csv", "thrust_ball", "ball"),
     "thrust_cylindrical_roller": ("thrust_cylindrical_roller.csv", "cylindrical_roller_thrust", "roller"),
     "spherical_roller": ("spherical_roller.csv", "spherical_roller", "roller"),
+    "spherical_roller_thrust": ("spherical_roller_thrust.csv", "spherical_roller_thrust", "roller"),
     "needle_roller": ("needle_roller.csv", "needle_roller", "roller"),
 }
 #: Prefix of the needle roller bearings without inner ring (RNA): each NA row of the data file has an RNA

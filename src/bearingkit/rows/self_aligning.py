@@ -22,6 +22,14 @@ tilted shaft, the shaft's frame). A lone self-aligning bearing under a moment ca
 the solver refuses a moment on a free tilt ("no row can carry"), and a free tilt under no moment stays
 where it starts (an unloaded mechanism).
 
+**Spherical roller thrust bearings** (one row, 45° < α ≤ 80°) have the same geometry: the housing
+washer's raceway is a sphere centred on the bearing axis, the rollers' load lines meet the axis at its
+centre O (the self-aligning point, below the shaft washer), and the shaft washer plays the inner ring,
+whose raceway profile is a circle about P_j. Nothing above depends on α ≤ 45°. What the row assumes
+there: symmetric barrel rollers with both contacts on one line through O; the makers' rollers are
+asymmetric and pushed by the roller/raceway contact forces against a flange of the shaft washer, a
+small force (and the slightly different contact angles on the two washers) this line model leaves out.
+
 **Element law.** Each element's two contacts are in series along n_j: δ = δ_o + δ_i with the same load
 Q on both. Balls: Hertz point contacts (ball in the groove of conformity f_i; ball in the sphere),
 Q = K δ^1.5 with the series K. Barrel rollers: each contact is sliced along the roller profile
@@ -65,8 +73,13 @@ from bearingkit.rows.base import (
 #: Hertz point-contact and line-contact load exponents (Harris & Kotzalas 2007 eq. 6.43; Kunert 1961).
 POINT_EXPONENT = 1.5
 LINE_EXPONENT = 10.0 / 9.0
-#: Largest contact angle of a self-aligning row [rad]: ISO radial bearings (α ≤ 45°).
+#: Largest contact angle of a self-aligning ball row [rad]: ISO radial bearings (α ≤ 45°).
 MAX_CONTACT_ANGLE = np.pi / 4
+#: Largest contact angle of a spherical roller row [rad]: up to 80° for the single row of a spherical
+#: roller thrust bearing (catalogue bearings about 50°: NSK's X = 1.2 = tan α). The geometry (sphere about
+#: O, lines through O) holds for any α < 90°; the cap keeps R_o = d_m/(2 cos α) + D_w/2 below 3 d_m, short
+#: of the flat washer (α = 90°) where the sphere degenerates to a plane.
+MAX_THRUST_CONTACT_ANGLE = np.radians(80.0)
 #: Osculation (roller profile radius / raceway profile radius) accepted for barrel rollers [-]: below 1
 #: (the roller is more curved than its raceway) and above 0.8 (catalogue designs are 0.96-0.99; a much
 #: smaller value is a typing error).
@@ -81,10 +94,12 @@ def _common(row):
     validate_common(row)
     alpha = np.asarray(row.contact_angle, dtype=float)
     checks.finite("contact_angle", alpha, "rad")
-    if np.any(np.abs(alpha) > MAX_CONTACT_ANGLE):
+    limit = row.max_contact_angle
+    if np.any(np.abs(alpha) > limit):
+        what = "self-aligning ball row" if limit == MAX_CONTACT_ANGLE else "spherical roller row"
         raise checks.InputError(
-            f"contact_angle ({np.degrees(np.max(np.abs(alpha))):.6g} deg) must lie within ±45 deg for a "
-            "self-aligning radial row"
+            f"contact_angle ({np.degrees(np.max(np.abs(alpha))):.6g} deg) must lie within "
+            f"±{np.degrees(limit):.6g} deg for a {what}"
         )
     if row.e_reduced is not None:
         checks.positive("e_reduced", row.e_reduced, "Pa")
@@ -130,7 +145,9 @@ class SphericalRollerRow:
     pitch_diameter : float [m]
         Pitch diameter d_m of the roller centres.
     contact_angle : float [rad]
-        α of the row, |α| ≤ 45°; its sign is the row's side and axial direction (α > 0: the row lies at
+        α of the row, |α| ≤ 45° for a radial (double-row) bearing, 45° < |α| ≤ 80° for the single row of
+        a spherical roller thrust bearing (the shaft washer is the "inner ring", the housing washer's
+        sphere the outer raceway); its sign is the row's side and axial direction (α > 0: the row lies at
         +z and resists +u_z of the inner ring).
     osculation_outer, osculation_inner : float
         Roller profile radius over raceway profile radius, R_r/R_o and R_r/R_i (0.8 … 1, typically
@@ -147,6 +164,8 @@ class SphericalRollerRow:
     """
 
     kind: ClassVar[str] = "spherical_roller"
+    #: |α| allowed: the radial bearings' rows (≤ 45°, capped by their builder) and the thrust bearing's row.
+    max_contact_angle: ClassVar[float] = MAX_THRUST_CONTACT_ANGLE
 
     n_elements: int
     element_diameter: float
@@ -266,6 +285,7 @@ class SelfAligningBallRow:
     """
 
     kind: ClassVar[str] = "self_aligning_ball"
+    max_contact_angle: ClassVar[float] = MAX_CONTACT_ANGLE
 
     n_elements: int
     element_diameter: float

@@ -108,3 +108,34 @@ def test_needle_construction_and_shaft_warning():
     ratio = float(cup.rows[0].load_rating[0]) / float(machined.rows[0].load_rating[0])
     assert ratio == pytest.approx(iso281.rating_factor("needle_roller_drawn_cup") / 1.1, rel=1e-12)
     assert any("shaft" in w for w in cup.warnings[0]) and not any("shaft" in w for w in machined.warnings[0])
+
+
+def test_spherical_roller_thrust_rated_with_the_thrust_formulas():
+    """One spherical roller row at α = atan 1.2 (NSK's X = 1.2): ISO 281 eq. (11) with b_m 1.15, ISO 76
+    eq. (7), P = tan α F_r + F_a (ISO 281 8.2) and P0 = 2.3 tan α F_r + F_a (ISO 76 9.2), by hand."""
+    alpha = np.arctan(1.2)
+    dw, length, dm, z = 16.0, 16.0, 97.0, 15  # mm
+    model = sa.spherical_roller_thrust(
+        n_elements=z,
+        element_diameter=dw * 1e-3,
+        effective_length=length * 1e-3,
+        pitch_diameter=dm * 1e-3,
+        contact_angle=alpha,
+    )
+    fa, fr = 100e3, np.array([0.0, 20e3])
+    res = solve(model, load_vector(F_z=fa, F_x=fr), free=[True, True, True, False, False])
+    rating = rate(res, speed=100.0)
+    row = rating.rows[0]
+    assert row.bearing_type == "thrust_spherical_roller"
+    gamma = dw * np.cos(alpha) / dm
+    fc = float(iso281.fc_thrust_roller(gamma, alpha))
+    c_a = 1.15 * fc * (length * np.cos(alpha)) ** (7 / 9) * z**0.75 * dw ** (29 / 27) * np.tan(alpha)
+    c_0a = 220.0 * (1 - gamma) * z * length * dw * np.sin(alpha)
+    assert float(row.load_rating[0]) == pytest.approx(c_a, rel=1e-12)
+    assert float(row.static_rating[0]) == pytest.approx(c_0a, rel=1e-12)
+    life = rating.iso281
+    p = 1.2 * fr + fa
+    np.testing.assert_allclose(np.ma.getdata(life.load), p, rtol=1e-12)
+    np.testing.assert_allclose(np.ma.getdata(life.static_load), 2.3 * 1.2 * fr + fa, rtol=1e-12)
+    np.testing.assert_allclose(np.ma.getdata(life.life), (c_a / p) ** (10 / 3) * 1e6, rtol=1e-12)
+    assert float(row.life[1]) < float(row.life[0])  # the radial load shortens the L10r

@@ -7,7 +7,7 @@ the bearing's basic dynamic rating C, L10 = (C/P)^p 10⁶ rev (p = 3 ball, 10/3 
 lubrication inputs, L_nm = a1 a_ISO L10 with a_ISO from the rows' κ, e_C and C_u at P.
 
 Which bearings have an ISO 281 P: one row (deep groove, angular contact, thrust ball; cylindrical,
-tapered, thrust roller; four-point, self-aligning, spherical, needle through
+tapered, thrust roller, spherical roller thrust; four-point, self-aligning, spherical, needle through
 :data:`bearingkit.physics.life.kinds.KIND_LOAD_LAWS`) and two equal ball or tapered rows side by side,
 rated as ISO 281's paired unit (:func:`bearingkit.physics.life.iso281.paired_unit_ratings`): C = 2^0.7
 C_row (ball) or 2^(7/9) C_row (roller), C0 = 2 C0_row, with the double-row X, Y for rows of opposite
@@ -186,6 +186,8 @@ def _law(model, ratings) -> tuple[str, int, float, int] | str:
     xy_rows = iso281.PAIRED_UNIT_XY_ROWS[arrangement] if n_rows == 2 else n_rows
     if kind in ROWS_PER_MODEL_ROW:  # a four-point row: i = 2 rows and the double-row X, Y (ISO 281 Table 3)
         return life_kinds.KIND_LOAD_LAWS[kind][0], ROWS_PER_MODEL_ROW[kind], alpha, ROWS_PER_MODEL_ROW[kind]
+    if kind == "spherical_roller" and n_rows == 1 and alpha > iso281.RADIAL_MAX_ANGLE:
+        return "thrust_roller", 1, alpha, 1  # a spherical roller thrust bearing: ISO 281 8.2
     if kind in life_kinds.KIND_LOAD_LAWS:
         return life_kinds.KIND_LOAD_LAWS[kind][0], n_rows, alpha, xy_rows
     btype = ratings[0].bearing_type

@@ -17,7 +17,11 @@ SI units: loads in N, pressures in Pa, lives in revolutions. Each rater follows
   radial roller bearing at α = 45° (ISO 281 eq. (9), ISO 76 eq. (3), b_m of cylindrical rollers); its two
   raceway pairs' lives combine with slope 9/8.
 - **spherical roller** (``spherical_roller``): each row a single-row radial roller row of b_m 1.15
-  (ISO 281 Table 1, "spherical roller"); L10r from the outer and inner slice loads separately.
+  (ISO 281 Table 1, "spherical roller"); L10r from the outer and inner slice loads separately. A row at
+  α > 45° is the row of a spherical roller thrust bearing: the thrust roller formulas (ISO 281 eq. (11),
+  b_m 1.15 of "spherical roller thrust", f_c of :func:`~bearingkit.physics.life.iso281.fc_thrust_roller`;
+  ISO 76 eq. (7), C0a = 220 (1 − D_we cos α/D_pw) Z L_we D_we sin α) and the thrust raceway ratings of
+  ISO/TS 16281 (λ = 0.73).
 - **self-aligning ball** (``self_aligning_ball``): f_c and f0 from :mod:`bearingkit.physics.life.kinds`
   (not shipped ISO columns, derived), C0 stress limit 4600 MPa; truncation checked at the inner grooves'
   shoulders (the outer raceway is a sphere).
@@ -238,8 +242,11 @@ def rate_spherical_roller_row(row, state, ctx: RowContext) -> RowRating:
         row.n_slices,
     )
     alpha = abs(float(row.contact_angle))
-    btype = "spherical_roller"
-    c0 = _attempt("C0 (ISO 76)", lambda: iso76.static_rating_roller(d, length, dm, alpha, z), notes)
+    kind = "thrust" if alpha > RADIAL_MAX_ANGLE else "radial"
+    btype = "thrust_spherical_roller" if kind == "thrust" else "spherical_roller"
+    c0 = _attempt(
+        "C0 (ISO 76)", lambda: iso76.static_rating_roller(d, length, dm, alpha, z, kind=kind), notes
+    )
     c = _given_rating(ctx, row, notes)
     if c is None:
         c = _attempt(
@@ -251,7 +258,7 @@ def rate_spherical_roller_row(row, state, ctx: RowContext) -> RowRating:
     m_in, m_out = (rot, stat) if ctx.options.rotating == "inner" else (stat, rot)
 
     def life_fn(c_arr, loaded):
-        qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s)
+        qci, qce = iso16281.roller_raceway_ratings(c_arr, d, dm, alpha, z, n_s, kind=kind)
         mask = loaded[:, None, None]
         inner = np.where(mask, state.extras["slice_load_inner"], 0.0)
         outer = np.where(mask, state.slice_load, 0.0)
@@ -268,7 +275,7 @@ def rate_spherical_roller_row(row, state, ctx: RowContext) -> RowRating:
         life_fn=life_fn,
         flags=_edge_flag(state, ctx, n_s),
         notes=notes,
-        aiso_kind="radial_roller",
+        aiso_kind="thrust_roller" if kind == "thrust" else "radial_roller",
     )
 
 

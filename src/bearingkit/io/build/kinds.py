@@ -1,5 +1,5 @@
 """Input-file types of the bearing kinds: four-point contact ball (QJ), slewing rings, spherical roller,
-self-aligning ball and needle roller bearings.
+spherical roller thrust, self-aligning ball and needle roller bearings.
 
 SI inside: the geometry models use the annotated unit types of :mod:`bearingkit.io.schema`, so every
 ``"25 mm"`` arrives in metres. :func:`register` adds the models to ``schema.GEOMETRY_MODELS`` and the
@@ -78,6 +78,25 @@ class SphericalRollerGeometry(schema.Envelope):
     stagger: bool | None = Field(None, description="Row B shifted by half a pitch. Default false.")
 
 
+class SphericalRollerThrustGeometry(schema.Envelope):
+    """Spherical roller thrust bearing — bearings.self_aligning.spherical_roller_thrust."""
+
+    n_elements: schema.Count = Field(description="Rollers Z.")
+    element_diameter: schema.PositiveLength = Field(description="Roller diameter at the middle D_w.")
+    effective_length: schema.PositiveLength
+    pitch_diameter: schema.PositiveLength
+    contact_angle: schema.Angle = Field(description="Contact angle α (45 < α < 80 deg; catalogue about 50).")
+    osculation_outer: schema.Dimensionless | None = Field(
+        None, description="Roller profile radius / housing washer sphere radius (0.8 … 1). Default 0.98."
+    )
+    osculation_inner: schema.Dimensionless | None = Field(
+        None,
+        description="Roller profile radius / shaft washer raceway profile radius (0.8 … 1). Default 0.98.",
+    )
+    n_slices: schema.SliceCount | None = Field(None, description="Slices per contact. Default 15.")
+    line_law: Literal["kunert", "iso16281"] | None = None
+
+
 class SelfAligningBallGeometry(schema.BallBase):
     """Double-row self-aligning ball bearing — bearings.self_aligning.self_aligning_ball."""
 
@@ -144,6 +163,10 @@ KINDS = {
         _builder("slewing", "slewing_ring_crossed_roller"),
     ),
     "spherical_roller": (SphericalRollerGeometry, _builder("self_aligning", "spherical_roller")),
+    "spherical_roller_thrust": (
+        SphericalRollerThrustGeometry,
+        _builder("self_aligning", "spherical_roller_thrust"),
+    ),
     "self_aligning_ball": (SelfAligningBallGeometry, _builder("self_aligning", "self_aligning_ball")),
     "needle_roller": (NeedleRollerGeometry, _builder("self_aligning", "needle_roller")),
 }
