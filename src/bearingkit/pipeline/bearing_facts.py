@@ -42,6 +42,7 @@ ENGINEERING_TYPES = {
     "cylindrical_roller_thrust": "cylindrical_roller_thrust",
     "tapered_roller": "tapered_roller",
     "spherical_roller": "spherical_roller",
+    "spherical_roller_thrust": "spherical_roller_thrust",
     "needle_roller": "needle_roller",
 }
 #: Seal counterface diameter over the section height above the bore, d_s ≈ d + SHARE (D − d) [-]: the

@@ -155,7 +155,7 @@ def engineering_friction_moment(model: str, bearing_type: str, **kwargs) -> Engi
         raise InputError(
             f"bearing_type ({bearing_type!r}): {model} model refused: {NOT_COVERED[model][bearing_type]}"
         )
-    checks.one_of(f"bearing_type (of model {model!r})", bearing_type, BEARING_TYPES[model])
+    checks.one_of(f"{model} bearing_type", bearing_type, BEARING_TYPES[model])
     raw = ENGINEERING_MODELS[model](bearing_type, **kwargs)
     comps = {k: raw[f"{k}_Nm"] for k in MODEL_COMPONENTS[model]}
     factors = {k: v for k, v in raw.items() if not k.endswith("_Nm")}
@@ -178,10 +178,13 @@ def bearing_type_of(bearing) -> str:
     ``thrust_ball``. Cylindrical row: radial → ``cylindrical_roller``; thrust → ``cylindrical_roller_thrust``.
     Four-point row → ``four_point_contact_ball``; needle row → ``needle_roller``; the two rows of a spherical
     roller or self-aligning ball bearing → ``spherical_roller`` / ``self_aligning_ball`` (the catalogue
-    models describe the whole two-row bearing).
+    models describe the whole two-row bearing); one spherical roller row at |α| > 45° →
+    ``spherical_roller_thrust``.
     """
     rows = getattr(bearing, "rows", None)
     kinds = {getattr(r, "kind", None) for r in rows or ()}
+    if kinds == {"spherical_roller"} and len(rows) == 1 and abs(float(rows[0].contact_angle)) > np.pi / 4:
+        return "spherical_roller_thrust"  # the one row of a 292/293/294 bearing (45° < α ≤ 80°)
     if len(kinds) == 1 and next(iter(kinds)) in _TWO_ROW_KINDS:
         return _TWO_ROW_KINDS[next(iter(kinds))]
     if not rows or len(rows) != 1:

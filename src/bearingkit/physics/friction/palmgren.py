@@ -123,6 +123,12 @@ NOT_COVERED = {
         "f1 = z (P0/C0)^y (z, y) and the load P1 (Harris & Kotzalas 2007 ch. 11 tabulates them; not in a "
         "searchable source, so bearingkit does not guess them)"
     ),
+    "spherical_roller_thrust": (
+        "no source found for the Palmgren friction factors of spherical roller thrust bearings (f0 per "
+        "lubrication, f1 and the load P1; Harris & Kotzalas 2007 ch. 11 and Schaeffler's tables give them, "
+        "neither is in a searchable source; SKF General Catalogue 6000 gives only its four-component model "
+        "for them): use the 'skf' model"
+    ),
 }
 
 

@@ -185,7 +185,7 @@ def skf_friction_moment(
     fr = np.asarray(load_radial, dtype=float)
     fa = np.asarray(load_axial, dtype=float)
     d, big_d, dm, n, nu, fr, fa = np.broadcast_arrays(d, big_d, dm, n, nu, fr, fa)
-    extra = {"static_rating_N": static_rating, "axial_factor": axial_factor}
+    extra = {"static_rating_N": static_rating, "axial_factor": axial_factor, "nu_mm2s": nu}
     g_rr, g_sl = G_MODELS[bearing_type](c, dm, fr, fa, n, extra)
     phi_ish = inlet_shear_factor(n, dm, nu)
     phi_rs = replenishment_factor(n, nu, d, big_d, c["K_Z"], LUBRICATION_METHODS[lubrication])

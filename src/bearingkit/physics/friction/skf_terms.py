@@ -71,6 +71,16 @@ SR_RR_E_DM_EXP = 1.85  # [-]
 SR_RR_L_DM_EXP = 2.3  # [-]
 SR_SL_E_DM_EXP = 0.25  # [-]
 SR_SL_L_DM_EXP = 0.94  # [-]
+#: Spherical roller thrust laws (SKF Table 2b; General Catalogue 6000 RU 2006 p. 92 and one public code
+#: transcription agree): exponents of d_m in G_rr.e 1.96, G_rr.l 2.39, G_sr.e −0.35, G_sr.l 0.89, G_f 0.76,
+#: and the flange term's weighting exp(−1e-6 (n ν)^1.4 d_m).
+SRT_RR_E_DM_EXP = 1.96  # [-]
+SRT_RR_L_DM_EXP = 2.39  # [-]
+SRT_SL_E_DM_EXP = -0.35  # [-]
+SRT_SL_L_DM_EXP = 0.89  # [-]
+SRT_F_DM_EXP = 0.76  # [-]
+SRT_F_COEFF = 1.0e-6  # [-] (SKF units)
+SRT_F_EXP = 1.4  # [-]
 
 #: Lubrication methods and their K_rs.
 LUBRICATION_METHODS = {
@@ -89,6 +99,7 @@ _ROLLER_TYPES = (
     "tapered_roller",
     "cylindrical_roller_thrust",
     "spherical_roller",
+    "spherical_roller_thrust",
 )
 _THRUST_TYPES = ("thrust_ball", "cylindrical_roller_thrust")
 
@@ -111,7 +122,7 @@ def series_constants(bearing_type: str, series: str | None = None) -> dict:
     Returns
     -------
     dict
-        ``R1 R2 R3 R4 S1 S2 S3 S4`` (NaN where the type has none), ``K_Z``, ``K_L``, ``series``, ``tag``,
+        ``R1 R2 R3 R4 S1 S2 S3 S4 S5`` (NaN where the type has none), ``K_Z``, ``K_L``, ``series``, ``tag``,
         ``kz_tag``.
     """
     checks.one_of("bearing_type", bearing_type, G_MODELS)
@@ -124,7 +135,7 @@ def series_constants(bearing_type: str, series: str | None = None) -> dict:
     else:
         checks.one_of(f"series (of {bearing_type})", str(series), known)
         i = rows[known.index(str(series))]
-    keys = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4")
+    keys = ("R1", "R2", "R3", "R4", "S1", "S2", "S3", "S4", "S5")
     out = {k: float(tables.column(_CONSTANTS_FILE, k)[i]) for k in keys}
     out["series"] = all_series[i]
     out["tag"] = tables.text_column(_CONSTANTS_FILE, "tag")[i]
@@ -399,6 +410,36 @@ def _g_cyl_thrust(c, dm, fr, fa, n, extra):
     return c["R1"] * dm**2.38 * fa**0.31, c["S1"] * dm**0.62 * fa
 
 
+def _g_spherical_thrust(c, dm, fr, fa, n, extra):
+    """SKF Table 2b, spherical roller thrust bearings: the smaller of two laws, plus a flange term.
+
+    .. math::
+
+        G_{rr} = \\min\\bigl(R_1 d_m^{1.96}(F_r + R_2 F_a)^{0.54},\\
+                        R_3 d_m^{2.39}(F_r + R_4 F_a)^{0.31}\\bigr)
+
+        G_{sr} = \\min\\bigl(S_1 d_m^{-0.35}(F_r^{5/3} + S_2 F_a^{5/3}),\\
+                        S_3 d_m^{0.89}(F_r + F_a)\\bigr)
+
+        G_f = S_4 d_m^{0.76}(F_r + S_5 F_a), \\qquad
+        G_{sl} = G_{sr} + G_f \\exp[-10^{-6}(n\\nu)^{1.4} d_m]
+
+    ν [mm²/s] comes in ``extra["nu_mm2s"]`` (the flange term depends on it). Source: SKF General
+    Catalogue 6000 (RU 2006) pp. 92-95, Tables 2b and 3g.
+    """
+    nu = extra["nu_mm2s"]
+    g_rr = np.minimum(
+        c["R1"] * dm**SRT_RR_E_DM_EXP * (fr + c["R2"] * fa) ** 0.54,
+        c["R3"] * dm**SRT_RR_L_DM_EXP * (fr + c["R4"] * fa) ** 0.31,
+    )
+    g_sr = np.minimum(
+        c["S1"] * dm**SRT_SL_E_DM_EXP * (fr ** (5.0 / 3.0) + c["S2"] * fa ** (5.0 / 3.0)),
+        c["S3"] * dm**SRT_SL_L_DM_EXP * (fr + fa),
+    )
+    g_f = c["S4"] * dm**SRT_F_DM_EXP * (fr + c["S5"] * fa)
+    return g_rr, g_sr + g_f * np.exp(-SRT_F_COEFF * (n * nu) ** SRT_F_EXP * dm)
+
+
 #: Registry of bearing types → G_rr/G_sl law (SKF Tables 2a/2b).
 G_MODELS = {
     "deep_groove_ball": _g_deep_groove,
@@ -412,6 +453,7 @@ G_MODELS = {
     "thrust_ball": _g_thrust_ball,
     "cylindrical_roller_thrust": _g_cyl_thrust,
     "spherical_roller": _g_spherical,
+    "spherical_roller_thrust": _g_spherical_thrust,
 }
 
 #: Bearing types the SKF model does not cover, with what is missing (the refusal says it in one line).

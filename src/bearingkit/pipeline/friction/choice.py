@@ -3,9 +3,10 @@
 SI units (m, N, rad/s). The default friction model (``"auto"``, :data:`AUTO`) depends on the bearing:
 
 - a standard bearing the SKF model covers (deep groove, angular contact, four-point, self-aligning ball,
-  cylindrical, tapered, spherical roller, thrust ball and cylindrical roller thrust) → ``"skf"``: the
-  four-component model (rolling, sliding, seals, drag) with the constants of the bearing's own series,
-  fitted to measured torque of such bearings; it is what SKF's calculators and the commercial tools print;
+  cylindrical, tapered, spherical roller, thrust ball, cylindrical and spherical roller thrust) →
+  ``"skf"``: the four-component model (rolling, sliding, seals, drag) with the constants of the bearing's
+  own series, fitted to measured torque of such bearings; it is what SKF's calculators and the commercial
+  tools print;
 - a matched set (DB, DF, DT) of single angular contact ball or tapered roller bearings — a designation
   such as ``7209 B DB`` or ``32008 X DF``, or a file pairing two single rows — → ``"skf"`` per bearing:
   each row is one bearing, computed at the radial and axial load it carries in the paired solve (preload
@@ -51,6 +52,7 @@ SKF_TYPES = (
     "spherical_roller",
     "thrust_ball",
     "cylindrical_roller_thrust",
+    "spherical_roller_thrust",
 )
 #: Catalogue series → SKF constants key, where the two differ (``data/skf_friction_constants.csv``).
 _SERIES_KEYS = {
@@ -130,12 +132,17 @@ def skf_series(facts) -> tuple[str | None, list[str]]:
     if series is None:
         return None, []
     key = _SERIES_KEYS.get((etype, series), series)
-    if etype == "spherical_roller" and facts.entry is not None:
+    if etype in ("spherical_roller", "spherical_roller_thrust") and facts.entry is not None:
         design = facts.entry.extra.get("design", "")
         if f"{key}E" in keys and ("E" in design or "E" in facts.suffixes):
             key = f"{key}E"
     if key in keys:
         return key, []
+    if etype == "spherical_roller_thrust" and f"{key}E" in keys and facts.series_source != "[bearing] series":
+        return f"{key}E", [
+            f"series {series} of standard design ({facts.series_source}): SKF gives constants for {series} E "
+            "only (General Catalogue 6000 Table 3g), used here"
+        ]
     if facts.series_source == "[bearing] series":
         raise InputError(
             f"bearing.series ({series!r}) has no SKF friction constants for a {etype.replace('_', ' ')} "
