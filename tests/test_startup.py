@@ -214,6 +214,64 @@ def test_one_build_at_a_time(tmp_path, monkeypatch):
         assert again is True
 
 
+def test_a_lock_left_by_a_killed_build_is_broken_at_once(tmp_path, monkeypatch):
+    """A build killed with SIGKILL cannot remove its lock: by age alone, every ``bearingkit compile`` said
+    "busy" for half an hour and no background build started (the fuzz found it: a killed run's lock). A
+    lock naming a process of this host that no longer runs is broken; a live holder's is kept."""
+    import socket
+
+    monkeypatch.setattr(numba_cache, "cache_dir", lambda: tmp_path)
+    monkeypatch.setattr(numba_cache, "_DONE", {})
+    lock = tmp_path / numba_cache.BUILD_LOCK
+    dead = subprocess.Popen([sys.executable, "-c", "pass"])
+    dead.wait()  # its pid is now free (a new process taking it within the test is not expected)
+    host = socket.gethostname()
+    lock.write_text(f"{dead.pid} {host}\n")
+    with numba_cache.build_lock(wait=0.0) as mine:
+        assert mine is True
+        assert lock.read_text().split() == [str(os.getpid()), host]
+    assert not lock.exists()
+    # a live holder (this test's parent process) keeps the lock: busy, and no background build
+    lock.write_text(f"{os.getppid()} {host}\n")
+    with numba_cache.build_lock(wait=0.0) as mine:
+        assert mine is False
+    assert lock.exists()
+    # a lock of another host is judged by its age only
+    lock.write_text(f"{dead.pid} not-{host}\n")
+    with numba_cache.build_lock(wait=0.0) as mine:
+        assert mine is False
+    # the background build starts past a dead holder's lock, not past a live one's
+    calls = []
+    monkeypatch.setattr(subprocess, "Popen", lambda argv, **kw: calls.append(argv))
+    monkeypatch.setenv(numba_cache.BACKGROUND_ENV, "1")
+    lock.write_text(f"{os.getppid()} {host}\n")
+    assert numba_cache.start_background_build() is False and calls == []
+    monkeypatch.setattr(numba_cache, "_DONE", {})
+    lock.write_text(f"{dead.pid} {host}\n")
+    assert numba_cache.start_background_build() is True and len(calls) == 1
+
+
+def test_compile_says_busy_in_one_error_line_and_refuses_a_negative_wait(tmp_path, monkeypatch, capsys):
+    """``bearingkit compile --wait 0`` while another live process builds: exit 1 with one ``error:`` line
+    saying what to do (it printed only "compiled solver core busy"); ``--wait -1``: exit 2, one line."""
+    import socket
+
+    from bearingkit.cli.commands import main
+
+    monkeypatch.setattr(numba_cache, "cache_dir", lambda: tmp_path)
+    (tmp_path / numba_cache.BUILD_LOCK).write_text(f"{os.getppid()} {socket.gethostname()}\n")
+    for argv, code, words in (
+        (["compile", "--wait", "0"], 1, "being built by another process"),
+        (["compile", "--wait", "-1"], 2, "must be 0 or more seconds"),
+    ):
+        monkeypatch.setattr(sys, "argv", ["bearingkit", *argv])
+        with pytest.raises(SystemExit) as exit_:
+            main()
+        assert exit_.value.code == code
+        err = [line for line in capsys.readouterr().err.splitlines() if line.strip()]
+        assert len(err) == 1 and err[0].startswith("error: ") and words in err[0], err
+
+
 def test_compile_solves_every_kind_on_the_compiled_core_and_marks_it_built(tmp_path, monkeypatch):
     """``bearingkit compile`` (the warm-up build) in a process whose numba cache is the real one: every
     warm-up bearing converges on the compiled core, then the marker is written; a second run knows."""

@@ -20,6 +20,7 @@ import numpy as np
 
 from bearingkit.analysis.solver import SolverOptions, solve
 from bearingkit.analysis.solver.threads import PARALLEL_MIN_CASES_PER_THREAD
+from bearingkit.errors import InputError
 from bearingkit.rows import numba_cache
 
 #: Cases of the batched solve: enough for two threads to take the parallel entry point
@@ -57,6 +58,13 @@ def warmup_bearings() -> dict[str, tuple]:
     }  # fmt: skip
 
 
+#: What ``bearingkit compile`` says when another process holds the build (exit code 1).
+BUSY = (
+    "the compiled solver core is being built by another process; give --wait SECONDS to wait for it or "
+    "run again later (small jobs run on the numpy core meanwhile)"
+)
+
+
 def build(wait: float = 600.0, echo: Callable[[str], None] | None = None) -> str:
     """Compile and cache the core; what was done: ``"built"``, ``"already built"`` or ``"busy"``.
 
@@ -67,6 +75,11 @@ def build(wait: float = 600.0, echo: Callable[[str], None] | None = None) -> str
     echo : callable, optional
         Called with one line per bearing solved (``bearingkit compile`` prints them).
     """
+    if not 0.0 <= wait < float("inf"):  # NaN fails too
+        raise InputError(
+            f"wait ({wait:g} s) must be 0 or more seconds to wait for a build already running "
+            "(bearingkit compile --wait), e.g. 60"
+        )
     if numba_cache.is_built():
         return "already built"
     with numba_cache.build_lock(wait=wait) as mine:

@@ -572,7 +572,7 @@ def compile_core(
     background; `make run` and `make test` run it first."""
     import time
 
-    from bearingkit.bearings.warmup import build
+    from bearingkit.bearings.warmup import BUSY, build
     from bearingkit.rows.numba_cache import cache_dir
 
     t0 = time.perf_counter()
@@ -581,7 +581,8 @@ def compile_core(
     done = build(wait=wait, echo=None if quiet else lambda line: console.print(line, highlight=False))
     if not quiet:
         console.print(f"compiled solver core {done} ({time.perf_counter() - t0:.1f} s)", highlight=False)
-    if done == "busy":
+    if done == "busy":  # not bad input (exit 2): the core exists soon, the command may be run again
+        sys.stderr.write(error_line(BUSY) + "\n")
         raise typer.Exit(1)
 
 

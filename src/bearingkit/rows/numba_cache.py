@@ -44,8 +44,9 @@ COMPILED_SOURCES = (
 THREAD_ENV = {"OMP_WAIT_POLICY": "PASSIVE"}
 #: File written into the cache directory once every compiled kind has been compiled and cached.
 BUILT_MARKER = "built"
-#: File held (created exclusively) by the one process building the core; older than
-#: :data:`BUILD_LOCK_STALE_S` it is taken to be left by a process that died.
+#: File held (created exclusively) by the one process building the core, holding "<pid> <host>"; it is
+#: taken to be left by a process that died when that process no longer runs on this host, or when it
+#: is older than :data:`BUILD_LOCK_STALE_S` (a holder on another host sharing the cache).
 BUILD_LOCK = "building"
 #: Age [s] after which a build lock is stale (a build takes 1–3 min, 10 on a very loaded machine).
 BUILD_LOCK_STALE_S = 1800.0
@@ -113,12 +114,48 @@ def mark_built() -> None:
     (cache_dir() / BUILT_MARKER).write_text("compiled by bearingkit compile\n", encoding="utf-8")
 
 
+def _holder_dead(lock: Path) -> bool:
+    """Whether the lock file names a process of this host that no longer runs.
+
+    A build killed with SIGKILL (or by the OOM killer, or a fuzz run's timeout) cannot remove its lock;
+    by age alone every later ``bearingkit compile`` answered "busy" for :data:`BUILD_LOCK_STALE_S` and
+    no background build started. A lock of another host (a shared home), or one without a readable pid
+    (written by an older version: the pid alone), is judged by its age only when its host is not ours.
+    """
+    import socket
+
+    try:
+        fields = lock.read_text(encoding="utf-8").split()
+        pid = int(fields[0])
+    except (OSError, ValueError, IndexError):
+        return False
+    if len(fields) > 1 and fields[1] != socket.gethostname():
+        return False
+    if pid <= 0 or pid == os.getpid():
+        return False
+    try:
+        os.kill(pid, 0)  # signal 0: only asks whether the process exists
+    except ProcessLookupError:
+        return True
+    except (PermissionError, OSError):  # exists (another user's) or cannot tell: alive
+        return False
+    return False
+
+
+def _stale(lock: Path) -> bool:
+    """Whether a build lock is left by a dead build (its process gone, or older than the stale age)."""
+    try:
+        return time.time() - lock.stat().st_mtime > BUILD_LOCK_STALE_S or _holder_dead(lock)
+    except OSError:
+        return False
+
+
 @contextmanager
 def build_lock(wait: float = 0.0):
     """Hold the build lock of the cache directory; yields False when another live build holds it.
 
-    ``wait`` [s]: how long to wait for another build to finish (checked every second); a lock older
-    than :data:`BUILD_LOCK_STALE_S` is broken.
+    ``wait`` [s]: how long to wait for another build to finish (checked every second); a lock whose
+    process is gone, or older than :data:`BUILD_LOCK_STALE_S`, is broken.
     """
     folder = cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
@@ -129,18 +166,17 @@ def build_lock(wait: float = 0.0):
             fd = os.open(lock, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
             break
         except FileExistsError:
-            try:
-                if time.time() - lock.stat().st_mtime > BUILD_LOCK_STALE_S:
-                    lock.unlink(missing_ok=True)
-                    continue
-            except OSError:
+            if not lock.exists() or _stale(lock):  # gone meanwhile, or left by a dead build
+                lock.unlink(missing_ok=True)
                 continue
             if time.monotonic() >= deadline or is_built():
                 yield False
                 return
             time.sleep(1.0)
     try:
-        os.write(fd, f"{os.getpid()}\n".encode())
+        import socket
+
+        os.write(fd, f"{os.getpid()} {socket.gethostname()}\n".encode())
         os.close(fd)
         yield True
     finally:
@@ -156,7 +192,7 @@ def start_background_build() -> bool:
     """Start ``python -m bearingkit compile --quiet --wait 0`` detached, once per process; True if started.
 
     Nothing is started when :data:`BACKGROUND_ENV` is ``0``, when the core is built, or when a build
-    is already running (its lock file exists and is fresh). The child's output goes to the null
+    is already running (its lock file exists and its process runs). The child's output goes to the null
     device; it outlives this process (its own session), so a one-line command that answered on the
     numpy core leaves the compiled core built for the next one.
     """
@@ -164,11 +200,8 @@ def start_background_build() -> bool:
         return False
     _DONE["spawned"] = "1"
     lock = cache_dir() / BUILD_LOCK
-    try:
-        if lock.exists() and time.time() - lock.stat().st_mtime < BUILD_LOCK_STALE_S:
-            return False
-    except OSError:
-        pass
+    if lock.exists() and not _stale(lock):
+        return False
     import subprocess
     import sys
 
