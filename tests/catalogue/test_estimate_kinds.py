@@ -229,9 +229,10 @@ def test_series_64_against_skf():
     rated = {e.designation: e for e in find("64*") if e.C is not None}  # 6419, 6424-6430: dimensions only
     rows = {k: e for k, e in rated.items() if e.source.startswith("SKF-6000RU")}
     assert len(rows) == 16
-    # the rest are ZVL's 6420 and 6422 (ZVL Bearing Catalogue p. 089; Known deviations, not this rule check)
+    # the rest: KRW's 6419, 6420 (Lieferprogramm 2006 p. 148) and ZVL's 6422 (p. 089), rated later
     assert {k: e.source.split(" ")[0] for k, e in rated.items() if k not in rows} == {
-        "6420": "ZVL-BearingCatalogue:89",
+        "6419": "KRW-2006:148",
+        "6420": "KRW-2006:148",
         "6422": "ZVL-BearingCatalogue:89",
     }
     for name in ["6403", "6406", "6407", "6408", "6413", "6416", "6417", "6418"]:
