@@ -48,6 +48,10 @@ def _source(e) -> str:
         return "NTN ULTAGE"
     if e.source.startswith("AKE-"):
         return "AKE CSKGB072009"
+    if e.source.startswith("KRW-"):
+        return "KRW 2006"
+    if e.source.startswith("ZVL-"):
+        return "ZVL Bearing Catalogue"
     return "KOYO B2001" if e.source.startswith("KOYO-B2001") else "NSK E1102"
 
 

@@ -158,6 +158,17 @@ EXCEPTIONS = {
     "NSK's 72 A/B deviation) C0 -11…-15 %; 7328C-7332C C0 -12 %: cause not found": [
         "7304C", "7310C", "7311C", "7228C", "7230C", "7328C", "7330C", "7332C",
     ],
+    "ZVL's 6422 (ZVL Bearing Catalogue p. 089, ZVL's rating): C +13 %: ZVL prints C0 above C (C0/C 1.06 "
+    "against 0.75-0.82 at its 6415-6418 and the estimate's 0.92); for one ball set on d_m ISO 76/ISO 281 "
+    "give C0/C in proportion to Z^(1/3) D_w^0.6 / f_c, so no ball set within the ISO 15 section gives both "
+    "numbers; cause on the catalogue side not found": ["6422"],
+    "NU19 (KRW Lieferprogramm 2006 pp. 180-187, KRW's E design, the only NU19 design KRW prints): "
+    "C -16…-36 %, C0 -13…-33 %: the NU19 rule is the NU10 rule, chosen over NSK's standard-design NU10; "
+    "KRW's E-design NU10 lines are 1.17-1.49 x NSK's NU10 and the estimate sits -23…-37 % below them too": [
+        "NU1910", "NU1911", "NU1912", "NU1913", "NU1914", "NU1915", "NU1916", "NU1917", "NU1918", "NU1919",
+        "NU1920", "NU1921", "NU1922", "NU1924", "NU1926", "NU1928", "NU1930", "NU1932", "NU1934", "NU1936",
+        "NU1938", "NU1940",
+    ],
     "AKE's 72 AC (AKE CSKGB072009 p. 13, B72..ATA): 7203AC, 7204AC C +14 %, C0 +13 %; AKE's 15° rows of "
     "these bores equal NSK's 72 C: cause not found": ["7203AC", "7204AC"],
     "double row: ball size and count against those NSK's C and C0 imply (3200 ball too large; 3303, 3304, "

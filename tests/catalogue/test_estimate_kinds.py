@@ -226,8 +226,15 @@ def test_rna_twin_runs_on_the_shaft():
 def test_series_64_against_skf():
     """Series 64 (not in NSK E1102) against SKF 6000 pp. 304-312: C and C0 within 10 % for the listed
     sizes; the heavy section makes the width cap decide the ball size (0.80 B, the angular contact cap)."""
-    rows = {e.designation: e for e in find("64*") if e.C is not None}  # 6419-6430: dimensions only
-    assert len(rows) == 16 and all(e.source.startswith("SKF-6000RU") for e in rows.values())
+    rated = {e.designation: e for e in find("64*") if e.C is not None}  # 6419, 6424-6430: dimensions only
+    rows = {k: e for k, e in rated.items() if e.source.startswith("SKF-6000RU")}
+    assert len(rows) == 16
+    # the rest: KRW's 6419, 6420 (Lieferprogramm 2006 p. 148) and ZVL's 6422 (p. 089), rated later
+    assert {k: e.source.split(" ")[0] for k, e in rated.items() if k not in rows} == {
+        "6419": "KRW-2006:148",
+        "6420": "KRW-2006:148",
+        "6422": "ZVL-BearingCatalogue:89",
+    }
     for name in ["6403", "6406", "6407", "6408", "6413", "6416", "6417", "6418"]:
         c, c0 = ratings(estimate(rows[name]))
         assert c == pytest.approx(rows[name].C, rel=0.10), name

@@ -176,7 +176,7 @@ SERIES_RULES: dict[tuple[str, str], Rule] = {
     # chosen by C over the NU10 table with the roller end allowance (0.20, 0.38 B before it)
     ("cylindrical_roller", "10"): Rule(k_w=0.22, pitch=1.15, length=0.42),
     # NU19: the light-section rule of NU10 (the 19 sections are as wide for their height, B ≈ 0.5 (D − d));
-    # no stored catalogue rates NU19, nothing chosen for it
+    # nothing chosen for it (KRW's 2006 NU19 ratings, rated later, are the E design's: docs, Known deviations)
     ("cylindrical_roller", "19"): Rule(k_w=0.22, pitch=1.15, length=0.42),
     # heavy series 64: the section is deep for its width (B ≈ 0.38 (D - d)), so the width cap decides;
     # 0.80 B is the angular contact rule's cap (chosen over the 64 table: C -3 % median, see the docs)
