@@ -124,10 +124,11 @@ NOT_COVERED = {
         "searchable source, so bearingkit does not guess them)"
     ),
     "spherical_roller_thrust": (
-        "no source found for the Palmgren friction factors of spherical roller thrust bearings (f0 per "
-        "lubrication, f1 and the load P1; Harris & Kotzalas 2007 ch. 11 and Schaeffler's tables give them, "
-        "neither is in a searchable source; SKF General Catalogue 6000 gives only its four-component model "
-        "for them): use the 'skf' model"
+        "no source found for the Palmgren load factor f1 and the load P1 of spherical roller thrust bearings "
+        "(Harris & Kotzalas 2007 ch. 11 and Schaeffler's tables give them, neither is in a searchable "
+        "source; f0 alone is published: SKF Rolling bearings 2018 p. 919, minimum load F_lub = 20 M0/d with "
+        "Palmgren's M0, f0 = 3/3.5/4 (292/293/294, grease or oil bath) and 6/7/8 (oil jet or vertical "
+        "shaft), not enough for M = M0 + M1): use the 'skf' model"
     ),
 }
 
