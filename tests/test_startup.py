@@ -256,7 +256,11 @@ def test_compile_says_busy_in_one_error_line_and_refuses_a_negative_wait(tmp_pat
     saying what to do (it printed only "compiled solver core busy"); ``--wait -1``: exit 2, one line."""
     import socket
 
+    from typer.testing import CliRunner
+
+    from bearingkit.cli import app
     from bearingkit.cli.commands import main
+    from bearingkit.errors import InputError
 
     monkeypatch.setattr(numba_cache, "cache_dir", lambda: tmp_path)
     (tmp_path / numba_cache.BUILD_LOCK).write_text(f"{os.getppid()} {socket.gethostname()}\n")
@@ -270,6 +274,10 @@ def test_compile_says_busy_in_one_error_line_and_refuses_a_negative_wait(tmp_pat
         assert exit_.value.code == code
         err = [line for line in capsys.readouterr().err.splitlines() if line.strip()]
         assert len(err) == 1 and err[0].startswith("error: ") and words in err[0], err
+        # the same through the app in process (typer's runner: no traceback, the same line)
+        res = CliRunner().invoke(app, argv)
+        assert res.exit_code == code and not isinstance(res.exception, InputError), res.exception
+        assert words in res.output and "Traceback" not in res.output
 
 
 def test_compile_solves_every_kind_on_the_compiled_core_and_marks_it_built(tmp_path, monkeypatch):

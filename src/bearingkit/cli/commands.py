@@ -562,14 +562,14 @@ def serve(
 
 
 @app.command("compile")
+@one_line_errors
 def compile_core(
     quiet: bool = typer.Option(False, "--quiet", help="Print nothing (the background build runs this)."),
     wait: float = typer.Option(600.0, "--wait", help="Seconds to wait for a build already running."),
 ):
     """Build the compiled solver core once (about a minute); large jobs load it from then on.
 
-    Until it is built, small jobs run on the numpy core and the first one starts this build in the
-    background; `make run` and `make test` run it first."""
+    Until then small jobs run on the numpy core (`make run` and `make test` build it first)."""
     import time
 
     from bearingkit.bearings.warmup import BUSY, build
