@@ -41,6 +41,7 @@ from bearingkit.physics.friction import palmgren as friction_palmgren
 from bearingkit.physics.friction import skf as friction_skf
 from bearingkit.physics.friction import skf_terms
 from bearingkit.physics.life import iso76
+from bearingkit.physics.life.iso281 import RADIAL_MAX_ANGLE
 
 #: Registry of engineering friction models.
 ENGINEERING_MODELS = {
@@ -183,8 +184,9 @@ def bearing_type_of(bearing) -> str:
     """
     rows = getattr(bearing, "rows", None)
     kinds = {getattr(r, "kind", None) for r in rows or ()}
-    if kinds == {"spherical_roller"} and len(rows) == 1 and abs(float(rows[0].contact_angle)) > np.pi / 4:
-        return "spherical_roller_thrust"  # the one row of a 292/293/294 bearing (45° < α ≤ 80°)
+    one = rows[0] if rows and len(rows) == 1 else None
+    if kinds == {"spherical_roller"} and one is not None and abs(float(one.contact_angle)) > RADIAL_MAX_ANGLE:
+        return "spherical_roller_thrust"  # ISO 281's thrust bearing: the one row of a 292/293/294 (α ≈ 50°)
     if len(kinds) == 1 and next(iter(kinds)) in _TWO_ROW_KINDS:
         return _TWO_ROW_KINDS[next(iter(kinds))]
     if not rows or len(rows) != 1:

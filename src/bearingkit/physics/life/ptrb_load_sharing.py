@@ -33,6 +33,28 @@ def _arr(x, c):
     return np.broadcast_to(np.asarray(x, dtype=float), (c,)).astype(float)
 
 
+#: The coefficient arrays of :func:`tooth_load_shares`, in the order of its signature.
+_COEFFICIENTS = (
+    "hertz_inner",
+    "hertz_outer",
+    "tooth_inner",
+    "tooth_outer",
+    "body_roller",
+    "body_inner",
+    "body_outer",
+)
+
+
+def _checked(coefficients: dict, c: int) -> tuple:
+    """The (C,) coefficient arrays in :data:`_COEFFICIENTS` order, checked: a_H > 0, compliances ≥ 0."""
+    out = []
+    for k in _COEFFICIENTS:
+        v = coefficients[k]
+        ok = checks.positive(k, v, "m/N^(2/3)") if k.startswith("hertz") else checks.non_negative(k, v, "m/N")
+        out.append(_arr(ok, c))
+    return tuple(out)
+
+
 def tooth_load_shares(
     roller_load,
     n_teeth: int,
@@ -93,20 +115,11 @@ def tooth_load_shares(
     checks.one_of("support", support, SUPPORTS)
     n = checks.integer("n_teeth", n_teeth, low=1)
     f_roller = np.atleast_1d(np.asarray(checks.positive("roller_load", roller_load, "N"), dtype=float))
-    c = f_roller.size
-    ai, ao = (
-        _arr(checks.positive(k, v, "m/N^(2/3)"), c)
-        for k, v in (("hertz_inner", hertz_inner), ("hertz_outer", hertz_outer))
-    )
-    ci, co = (
-        _arr(checks.non_negative(k, v, "m/N"), c)
-        for k, v in (("tooth_inner", tooth_inner), ("tooth_outer", tooth_outer))
-    )
-    lr, li, lo = (
-        _arr(checks.non_negative(k, v, "m/N"), c)
-        for k, v in (("body_roller", body_roller), ("body_inner", body_inner), ("body_outer", body_outer))
-    )
-    return _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol)
+    given = dict(
+        hertz_inner=hertz_inner, hertz_outer=hertz_outer, tooth_inner=tooth_inner, tooth_outer=tooth_outer,
+        body_roller=body_roller, body_inner=body_inner, body_outer=body_outer,
+    )  # fmt: skip
+    return _shares(f_roller, n, *_checked(given, f_roller.size), support, max_iter, tol)
 
 
 @functools.cache
@@ -192,18 +205,6 @@ def _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol):
     return fi, fo, fa_max, converged
 
 
-#: The coefficient arrays of :func:`tooth_load_shares`, in the order of its signature.
-_COEFFICIENTS = (
-    "hertz_inner",
-    "hertz_outer",
-    "tooth_inner",
-    "tooth_outer",
-    "body_roller",
-    "body_inner",
-    "body_outer",
-)
-
-
 def max_tooth_share(roller_load, n_teeth, **coefficients):
     """f_amax [1] (C,) of designs that may differ in n: :func:`tooth_load_shares` per group of equal n.
 
@@ -225,14 +226,7 @@ def max_tooth_share(roller_load, n_teeth, **coefficients):
     # The checks of tooth_load_shares, made once for all designs (a group passes them iff all do).
     checks.one_of("support", support, SUPPORTS)
     f_roller = _arr(checks.positive("roller_load", _arr(roller_load, c), "N"), c)
-    coefs = {}
-    for k in _COEFFICIENTS:
-        v = _arr(coefficients[k], c)
-        if k.startswith("hertz"):
-            checks.positive(k, v, "m/N^(2/3)")
-        else:
-            checks.non_negative(k, v, "m/N")
-        coefs[k] = v
+    coefs = dict(zip(_COEFFICIENTS, _checked(coefficients, c), strict=True))
     out = np.empty(c)
     for n in np.unique(n_all):
         sel = n_all == n
