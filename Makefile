@@ -5,16 +5,23 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 #: Test processes (pytest-xdist): one per core.
 JOBS   ?= auto
+# Python writes the byte code of what it imports (__pycache__, ignored by git): the installed packages are
+# not byte-compiled by pip (--no-compile below), and with PYTHONDONTWRITEBYTECODE=1 (set on some
+# machines and images) every process would compile bearingkit and its imports again (~0.8 s per CLI
+# process measured, every test subprocess paying it).
+unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz ross3
 
 # One pip run installs everything `make run` and `make test` need: the tests, the docs site and the
 # optional rotordynamics extra (ross-rotordynamics; the ROSS export test, tests/systems/test_ross_export.py,
 # must run in CI). One resolver pass instead of two saves the second dependency resolution and re-check.
+# --no-compile: pip byte-compiles every module it installs, ~70 of its ~120 s here (measured with a warm
+# cache, 2 cores); Python compiles the modules a run imports on first use instead, a small part of them.
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[dev,docs,ross]'
+	$(BIN)/python -m pip install -q --no-compile -e '.[dev,docs,ross]'
 	touch $(STAMP)
 
 # The compiled solver core, once per installed copy and version (about a minute; then cached).
@@ -32,7 +39,7 @@ test: $(STAMP)
 	$(BIN)/python scripts/check_wheel.py
 	$(BIN)/bearingkit compile
 	bash scripts/ensure_chromium.sh
-	$(BIN)/python -m pytest -n $(JOBS) -m "not slow or ross"
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m "not slow or ross"
 	$(BIN)/bearingkit validate
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --n $(CI_FUZZ_N)
 
@@ -52,7 +59,7 @@ PY312 ?= python3.12
 ross3:
 	@command -v $(PY312) >/dev/null || { echo "make ross3: no $(PY312) (set PY312 to a Python >= 3.12)"; exit 2; }
 	test -x .venv-ross3/bin/python || $(PY312) -m venv .venv-ross3
-	.venv-ross3/bin/python -m pip install -q -e '.[dev,ross]'
+	.venv-ross3/bin/python -m pip install -q --no-compile -e '.[dev,ross]'
 	.venv-ross3/bin/python -c "import ross, sys; print('ROSS', ross.__version__, 'on Python', sys.version.split()[0])"
 	BEARINGKIT_BACKEND=numpy .venv-ross3/bin/python -m pytest -p no:cacheprovider -m ross tests/systems
 

@@ -19,7 +19,9 @@ from typer.testing import CliRunner
 from bearingkit.cli.commands import app
 from bearingkit.errors import InputError
 
-pytestmark = [pytest.mark.slow, pytest.mark.ross]
+# One test process runs every ROSS test (`make test`: --dist loadgroup): importing ROSS takes 12-20 s, paid
+# once instead of once per process.
+pytestmark = [pytest.mark.slow, pytest.mark.ross, pytest.mark.xdist_group("ross")]
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 _SECTIONS = """sections = [{ start = "0 mm", length = "300 mm", outer_diameter = "40 mm" }]

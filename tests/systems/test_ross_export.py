@@ -22,7 +22,9 @@ from bearingkit.systems.shaft.solver import solve
 from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
-pytestmark = [pytest.mark.slow, pytest.mark.ross]
+# One test process runs every ROSS test (`make test`: --dist loadgroup): importing ROSS takes 12-20 s, paid
+# once instead of once per process.
+pytestmark = [pytest.mark.slow, pytest.mark.ross, pytest.mark.xdist_group("ross")]
 
 
 def _ross():
