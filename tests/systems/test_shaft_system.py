@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from bearingkit.errors import InputError
 from bearingkit.io.loader import load_file
 from bearingkit.systems.shaft import beam
 from bearingkit.systems.shaft.loads import Gear, PointLoad, ShaftLoads
@@ -329,3 +330,35 @@ def test_a_load_the_bearings_cannot_carry_is_reported():
     )
     assert res.converged.tolist() == [True, False]
     assert "cannot be carried" in res.reason[1] and "F_z" in res.reason[1]
+
+
+def test_a_one_way_axial_stiffness_pushes_one_way_and_is_a_convex_potential():
+    """LinearBearing(axial_direction=±1): the axial force on the inner ring only of that sign, its energy
+    ½ K_zz q_z² there and 0 beyond, the force −∂U/∂q (central differences); a coupled axial row refused."""
+    from bearingkit.systems.shaft.supports import BearingLaw
+
+    k = np.diag([2e8, 2e8, 5e7, 1e4, 1e4])
+    q = np.array([[1e-6, -2e-6, 3e-6, 1e-5, 0.0], [1e-6, -2e-6, -3e-6, 1e-5, 0.0]])
+    both = BearingLaw(LinearBearing(k)).response(q)
+    for s in (1, -1):
+        law = BearingLaw(LinearBearing(k, axial_direction=s))
+        r = law.response(q)
+        pushing = s * both.force[:, 2] > 0
+        assert pushing.tolist() == ([False, True] if s == 1 else [True, False])
+        np.testing.assert_array_equal(r.force[:, 2], np.where(pushing, both.force[:, 2], 0.0))
+        np.testing.assert_array_equal(r.force[:, [0, 1, 3, 4]], both.force[:, [0, 1, 3, 4]])
+        idle_energy = np.where(pushing, 0.0, 0.5 * k[2, 2] * q[:, 2] ** 2)
+        np.testing.assert_allclose(r.energy, both.energy - idle_energy)
+        h = 1e-9
+        for i in range(2):
+            for d in range(5):
+                e = np.zeros((1, 5))
+                e[0, d] = h
+                up, down = law.response(q[i : i + 1] + e), law.response(q[i : i + 1] - e)
+                fd = -(up.energy - down.energy) / (2 * h)
+                assert fd[0] == pytest.approx(r.force[i, d], rel=1e-6, abs=1e-9)
+        assert (law.reach[:, 2] * s >= 0).all() and (law.reach[:, 2] * s > 0).any()
+    coupled = k.copy()
+    coupled[2, 0] = coupled[0, 2] = 1e6
+    with pytest.raises(InputError, match="one-way axial stiffness"):
+        LinearBearing(coupled, axial_direction=1)

@@ -54,6 +54,7 @@ UNITS = {
     "m": "m",
     "mum": "um",
     "deg": "deg",
+    "°": "deg",  # REXS 1.0 files (e.g. FVA Workbench 5.0) write the degree sign
     "rad": "rad",
     "N": "N",
     "kN": "kN",
@@ -192,6 +193,12 @@ def _si(attrs, key, factor_to_mm=1.0):
     scale = {"mm": 1.0, "m": 1e3, "mum": 1e-3}.get(unit, 1.0)
     return np.asarray(value, float) * scale * factor_to_mm
 
+
+#: REXS ``bearing_type`` words of the bearings whose contacts carry axial load one way only (their
+#: orientation is all ``axial_force_absorption`` needs to say).
+ONE_WAY_KINDS = ("tapered", "angular")
+#: Key of the returned dictionary holding the import's notes (not a drivetrain file field).
+REXS_NOTES = "rexs_notes"
 
 #: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` takes an axial
 #: force on its inner part (the shaft) along +u (bearingkit's +z), as a ``+z`` tapered row does; the
@@ -339,6 +346,7 @@ def read_rexs(path) -> dict:
                     "gears": [gear_names[g1], gear_names[g2]],
                 }
             )
+    notes = []
     for r in m["relations"]:
         if r["type"] != "side":
             continue
@@ -356,9 +364,19 @@ def read_rexs(path) -> dict:
         absorption = a.get("axial_force_absorption", ("both_directions", ""))[0]
         bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
         if c["type"] == "rolling_bearing_with_catalog_geometry":
-            bearing["designation"] = str(_q(a, "catalogue_designation", bw))
+            # REXS 1.0 files (FVA Workbench 5) name the catalogue bearing in a ``name`` attribute
+            key = "catalogue_designation" if "catalogue_designation" in a or "name" not in a else "name"
+            bearing["designation"] = str(_q(a, key, bw))
             if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
                 bearing["orientation"] = AXIAL_DIRECTION[absorption]
+            kind = str(a.get("bearing_type", ("", ""))[0])
+            if absorption in AXIAL_DIRECTION and not any(k in kind for k in ONE_WAY_KINDS):
+                notes.append(
+                    f"{bearing['name']}: axial_force_absorption {absorption!r} read as the bearing's "
+                    f"orientation ({AXIAL_DIRECTION[absorption]}); a bearing whose contacts carry both "
+                    "ways (e.g. a deep groove ball bearing) still does: its seat's one-sided shoulder is "
+                    "not modelled"
+                )
         elif c["type"] == "concept_bearing":
             k_r = _q(a, "radial_stiffness", bw, False) or "1e12 N/m"
             k_a = _q(a, "axial_stiffness", bw, False) or (
@@ -366,6 +384,8 @@ def read_rexs(path) -> dict:
             )
             k_t = _q(a, "bending_stiffness", bw, False) or "0 N*m/rad"
             bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
+            if absorption in AXIAL_DIRECTION:  # one way only: a shoulder on one side (LinearBearing)
+                bearing["stiffness"]["axial_direction"] = AXIAL_DIRECTION[absorption]
         else:
             raise InputError(f"{bw}: bearing type {c['type']!r} is not supported")
         if outer in by_id:
@@ -388,8 +408,14 @@ def read_rexs(path) -> dict:
         raise InputError(f"{src}: more than one shaft defines the speed; bearingkit takes one input speed")
     casing = [i for i, c in comps.items() if c["type"] == "gear_casing"]
     unit_id = next((i for i, c in comps.items() if c["type"] == "gear_unit"), None)
+    spectrum = m["load_cases"]
+    if not spectrum:  # no load_spectrum: the operating values sit on the components themselves (REXS 1.0)
+        spectrum = [{"id": 1, "components": {cid: c["attrs"] for cid, c in comps.items()}}]
+        notes.append(
+            "the model has no load_spectrum: its one load case is read from the components' attributes"
+        )
     cases = []
-    for k, lc in enumerate(m["load_cases"]):
+    for k, lc in enumerate(spectrum):
         case = {
             "name": f"load case {lc['id'] if lc['id'] is not None else k + 1}",
             "torques": {},
@@ -436,8 +462,6 @@ def read_rexs(path) -> dict:
             if key in ua:
                 case["time_fraction"] = _q(ua, key, cw)
         cases.append(case)
-    if not cases:
-        raise InputError(f"{src}: no load cases (load_spectrum) in the model")
     fractions = [c.get("time_fraction") for c in cases]
     if all(f is not None for f in fractions) and sum(fractions) > 0:
         for c in cases:
@@ -463,6 +487,8 @@ def read_rexs(path) -> dict:
         raise InputError(
             f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
         )
+    if notes:  # said on every face of the result (load_drivetrain_file takes them out of the data)
+        out[REXS_NOTES] = [f"REXS import: {n}" for n in notes]
     return {
         "drivetrain": {"name": (unit or {}).get("name") or path.stem, "held": held},
         "shafts": out_shafts,

@@ -97,9 +97,10 @@ def evaluate(cases: pd.DataFrame) -> pd.DataFrame:
         path = Path(str(row["file"]))
         if path not in loaded:
             if path.suffix.lower() in (".rexs", ".rexsj", ".json", ".xml"):
-                from bearingkit.io.rexs.reader import read_rexs
+                from bearingkit.io.rexs.reader import REXS_NOTES, read_rexs
 
                 loaded[path] = read_rexs(path)
+                loaded[path].pop(REXS_NOTES, None)  # a study's table has no notes column
             else:
                 loaded[path] = load_toml(path)
         inp = drivetrain_from_dict(_edit(loaded[path], row), str(path), base=path.parent)

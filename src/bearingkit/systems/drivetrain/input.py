@@ -228,14 +228,15 @@ def load_drivetrain_file(path, cases=None) -> DrivetrainInput:
     path = Path(path)
     name = path.name.lower()
     if name.endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml")):
-        from bearingkit.io.rexs.reader import read_rexs
+        from bearingkit.io.rexs.reader import REXS_NOTES, read_rexs
 
         data = read_rexs(path)
+        imported = tuple(data.pop(REXS_NOTES, ()))
     else:
-        data = load_toml(path)
+        data, imported = load_toml(path), ()
     if cases:
         data = _keep_cases(data, list(cases), str(path))
-    return drivetrain_from_dict(data, str(path), base=path.parent)
+    return drivetrain_from_dict(data, str(path), base=path.parent, notes=imported)
 
 
 def _keep_cases(data, names: list, source: str):
@@ -251,8 +252,9 @@ def _keep_cases(data, names: list, source: str):
     return {**data, "load_cases": kept}
 
 
-def drivetrain_from_dict(data: dict, source: str = "<dict>", base=None) -> DrivetrainInput:
-    """Validate a parsed drivetrain file; bearing files are read relative to ``base`` (default cwd)."""
+def drivetrain_from_dict(data: dict, source: str = "<dict>", base=None, notes=()) -> DrivetrainInput:
+    """Validate a parsed drivetrain file; bearing files are read relative to ``base`` (default cwd).
+    ``notes``: lines the reader of the file adds (a REXS import's), shown with the result's notes."""
     base = Path(base) if base is not None else Path.cwd()
     cases = data.get("load_cases") if isinstance(data, dict) else None
     budget = (data.get("budget") or {}) if isinstance(data, dict) else {}
@@ -268,7 +270,7 @@ def drivetrain_from_dict(data: dict, source: str = "<dict>", base=None) -> Drive
     except ValidationError as exc:
         raise one_line(source, exc, (), _MODELS) from None
     try:
-        return _build(spec, source, base, data)
+        return _build(spec, source, base, data, tuple(notes))
     except InputError as exc:
         text = str(exc)
         raise InputError(text if text.startswith(f"{source}:") else f"{source}: {text}") from None
@@ -434,7 +436,7 @@ def _loads(spec: DrivetrainFile, shafts: list[DriveShaft]) -> dict:
     }
 
 
-def _build(spec: DrivetrainFile, source: str, base: Path, data: dict) -> DrivetrainInput:
+def _build(spec: DrivetrainFile, source: str, base: Path, data: dict, notes=()) -> DrivetrainInput:
     from bearingkit.systems.drivetrain.planetary import expand_stages
 
     shafts = [_shaft(i, s) for i, s in enumerate(spec.shafts)]
@@ -483,7 +485,8 @@ def _build(spec: DrivetrainFile, source: str, base: Path, data: dict) -> Drivetr
     _check_contamination(spec.lubrication)
     notes = [
         "shafts are rigid in torsion (one rotation per shaft); mesh forces follow the lossless torque "
-        "balance, losses are taken from the output power"
+        "balance, losses are taken from the output power",
+        *notes,
     ]
     options = SystemOptions(**opts)
     return DrivetrainInput(

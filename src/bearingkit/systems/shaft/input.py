@@ -49,7 +49,7 @@ from bearingkit.systems.shaft.loads import (
 )
 from bearingkit.systems.shaft.shaft import SHAFT_STEEL, Section, Shaft
 from bearingkit.systems.shaft.solver import ShaftSystem, SystemOptions
-from bearingkit.systems.shaft.supports import BearingSeat, LinearBearing
+from bearingkit.systems.shaft.supports import AXIAL_DIRECTIONS, BearingSeat, LinearBearing
 
 Stiffness = schema.quantity("stiffness", "non_negative")
 RotationalStiffness = schema.quantity("rotational_stiffness", "non_negative")
@@ -84,6 +84,11 @@ class LinearStiffnessSpec(schema.Strict):
     radial: Stiffness
     axial: Stiffness = 0.0
     tilt: RotationalStiffness = 0.0
+    axial_direction: Literal["both", "+z", "-z"] = Field(
+        "both",
+        description="Which way the axial stiffness holds the shaft: 'both', or one way only (a shoulder on "
+        "one side): '+z' pushes the shaft along +z and never pulls, '-z' the opposite.",
+    )
 
 
 class BearingSpec(schema.Strict):
@@ -369,7 +374,11 @@ def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingS
     else:
         k = b.stiffness
         source = None
-        bearing = LinearBearing(np.diag([k.radial, k.radial, k.axial, k.tilt, k.tilt]), name=b.name)
+        bearing = LinearBearing(
+            np.diag([k.radial, k.radial, k.axial, k.tilt, k.tilt]),
+            name=b.name,
+            axial_direction=AXIAL_DIRECTIONS[k.axial_direction],
+        )
     housing = None
     if b.housing is not None:
         h = b.housing

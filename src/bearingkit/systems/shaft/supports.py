@@ -46,6 +46,9 @@ ORIENTATIONS = {
     "+z": np.eye(N_DOF),
     "-z": np.diag([1.0, -1.0, -1.0, 1.0, -1.0]),
 }
+#: ``axial_direction`` of a linear bearing's stiffness → the sign of the only axial force it gives the shaft
+#: (0: both ways).
+AXIAL_DIRECTIONS = {"both": 0, "+z": 1, "-z": -1}
 #: Deflection scale [m] of a linear bearing law: the Newton step cap is 2 % of the smallest scale of
 #: the bearings, and a linear law needs none (one Newton step solves it).
 LINEAR_DEFLECTION_SCALE = 1.0
@@ -60,10 +63,18 @@ class LinearBearing:
     stiffness : array_like (5, 5) [N/m, N, N·m/rad …]
         K = −∂f/∂q in the bearing frame, symmetric positive semi-definite.
     name : str
+    axial_direction : {0, 1, -1}
+        0: the axial stiffness acts both ways. ±1: it acts one way only, as a shoulder on one side of the
+        ring: the axial force on the inner ring, f_z = −K_zz q_z, is kept where its sign is this one and
+        is zero otherwise (energy ½ K_zz q_z² there, 0 elsewhere: convex and continuously differentiable,
+        so the Newton's active set settles in a few steps). Needs an axial row and column of K without
+        coupling to the other DOFs (a REXS ``concept_bearing`` with ``axial_force_absorption``
+        ``positive``/``negative``).
     """
 
     stiffness: np.ndarray
     name: str = "linear bearing"
+    axial_direction: int = 0
 
     def __post_init__(self):
         k = np.asarray(self.stiffness, dtype=float)
@@ -74,6 +85,13 @@ class LinearBearing:
             raise InputError("stiffness must be symmetric (a conservative elastic support)")
         if np.linalg.eigvalsh(k).min() < -1e-12 * np.abs(k).max():
             raise InputError("stiffness must be positive semi-definite (a support that resists displacement)")
+        if self.axial_direction not in (0, 1, -1):
+            raise InputError(f"axial_direction ({self.axial_direction!r}) must be 0 (both ways), 1 or -1")
+        if self.axial_direction and np.any(np.delete(k[2], 2) != 0.0):
+            raise InputError(
+                "a one-way axial stiffness (axial_direction) needs an axial row of the stiffness without "
+                "coupling to the radial and tilt DOFs"
+            )
         object.__setattr__(self, "stiffness", k)
 
 
@@ -100,13 +118,21 @@ class BearingLaw:
             self.deflection_scale = LINEAR_DEFLECTION_SCALE
             self.char_length = 0.0
             self.start_terms = [(bearing.stiffness, 1.0)]
-            lam, vec = np.linalg.eigh(bearing.stiffness)
-            live = vec[:, lam > 1e-12 * max(lam.max(), 1e-300)].T
-            self.reach = np.concatenate([live, -live]) if len(live) else np.zeros((0, N_DOF))
+            self.one_way = bearing.axial_direction
+            k = bearing.stiffness
+            keep = np.arange(N_DOF) != 2 if self.one_way else np.ones(N_DOF, bool)
+            lam, vec = np.linalg.eigh(k[np.ix_(keep, keep)])
+            live = np.zeros((int((lam > 1e-12 * max(lam.max(), 1e-300)).sum()), N_DOF))
+            live[:, keep] = vec[:, lam > 1e-12 * max(lam.max(), 1e-300)].T
+            reach = [live, -live]
+            if self.one_way and k[2, 2] > 0.0:  # K's axial row is uncoupled: it pushes along one sign only
+                reach.append(self.one_way * np.eye(N_DOF)[2:3])
+            self.reach = np.concatenate(reach)
             return
         if not isinstance(bearing, BearingModel):
             raise InputError(f"bearing ({bearing!r}) must be a BearingModel or a LinearBearing")
         self.linear = None
+        self.one_way = 0
         self.kernels = tuple(kernels if kernels is not None else bearing.kernels)
         self.deflection_scale = min(k.deflection_scale for k in self.kernels)
         self.char_length = max(k.char_length for k in self.kernels)
@@ -122,6 +148,10 @@ class BearingLaw:
         if self.linear is not None:
             force = -q @ self.linear
             jac = np.broadcast_to(-self.linear, (q.shape[0], N_DOF, N_DOF)).copy()
+            if self.one_way:  # a shoulder on one side: no axial force the other way (LinearBearing)
+                idle = self.one_way * force[:, 2] <= 0.0
+                force[idle, 2] = 0.0
+                jac[idle, 2, 2] = 0.0
             return RowResponse(force, jac, 0.5 * np.einsum("ci,ci->c", q, -force))
         force = np.zeros_like(q)
         jac = np.zeros((*q.shape, N_DOF))

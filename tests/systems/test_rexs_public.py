@@ -1,0 +1,134 @@
+"""Public REXS models written by other tools (examples/rexs/SOURCES.md): read, and solved where we can.
+
+* ``FVA-Industriegetriebe_2stufig_1-4.rexs``: the FVA two-stage industrial gearbox, REXS 1.4, written by
+  Bearinx 12 (Schaeffler's REXSapi test models). Three shafts, the input and output shafts coaxial (a
+  needle cage K 50x58x25 between them, a concept bearing), the countershaft on two tapered roller bearings
+  33016 given as concept bearings that carry axial load one way each, the output shaft on 33014/33012,
+  four load cases with time fractions.
+* ``SEW_3-stage_cylindrical_gearbox_1.0.rexs``: a three-stage SEW gearbox, REXS 1.0, FVA Workbench 5.0
+  (FVA's rexs-api-java test models); no load spectrum, catalogue designations in a ``name`` attribute.
+* ``FVA_Planetary_stage_-_Minus_gearing_1.1.rexsj``: a planetary stage, REXS 1.1 JSON: refused in one line.
+
+No tool's results travel with these files, so the checks are the ones that hold whatever the tool: the
+speeds and torques of the tooth counts, the power balance, and the one-way concept bearings.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from bearingkit.errors import InputError
+from bearingkit.io.rexs.reader import REXS_NOTES, read_rexs
+from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+from bearingkit.systems.drivetrain.input import drivetrain_from_dict, load_drivetrain_file
+
+PUBLIC = Path(__file__).resolve().parents[2] / "examples" / "rexs"
+FVA = PUBLIC / "FVA-Industriegetriebe_2stufig_1-4.rexs"
+SEW = PUBLIC / "SEW_3-stage_cylindrical_gearbox_1.0.rexs"
+PLANETARY = PUBLIC / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexsj"
+
+
+@pytest.fixture(scope="module")
+def fva():
+    return DrivetrainAnalysis(load_drivetrain_file(FVA)).to_dict()
+
+
+def test_the_fva_gearbox_solves_every_load_case_with_the_speeds_and_torques_of_its_teeth(fva):
+    # tooth counts of the file: 27/51 (m_n 4.5 mm), 23/34 (m_n 6.5 mm); input torques 567, 345, 456, … N·m
+    ratio = (51 / 27) * (34 / 23)
+    assert len(fva["cases"]) == 4 and all(c["converged"] for c in fva["cases"])
+    for case in fva["cases"]:
+        w = case["power"]["speeds_rad_s"]
+        assert w["Shaft [25]"] == pytest.approx(-w["Shaft [6]"] * 27 / 51, rel=1e-12)
+        assert w["Shaft [42]"] == pytest.approx(w["Shaft [6]"] / ratio, rel=1e-12)
+        t_in = case["meshes"][0]["on_a"]["torque_Nm"]
+        assert case["held_torque_Nm"] == pytest.approx(t_in * ratio, rel=1e-9)
+        p = case["power"]
+        assert p["input_W"] == pytest.approx(-t_in * w["Shaft [6]"], rel=1e-9)
+        assert p["output_W"] + p["loss_W"] == pytest.approx(p["input_W"], rel=1e-9)
+        assert 0 < p["loss_W"] < 0.01 * p["input_W"]
+
+
+def test_the_fva_countershaft_s_one_way_bearings_carry_its_axial_load_on_one_side(fva):
+    """The two 33016 of the countershaft are concept bearings with axial_force_absorption 'negative' (at
+    u = 20 mm) and 'positive' (at u = 250 mm): the net axial mesh force on the shaft goes to the one that
+    pushes back, the other carries none (both-way springs would share it by the shaft's axial stretch)."""
+    for case in fva["cases"]:
+        meshes = {m["name"]: m for m in case["meshes"]}
+        # the countershaft is gear b of the first stage and gear a of the second
+        net = (
+            meshes["Cylindrical stage [24]"]["on_b"]["axial_N"]
+            + meshes["Cylindrical stage [41]"]["on_a"]["axial_N"]
+        )
+        bearings = {b["name"]: b for b in case["bearings"]}
+        neg = bearings["not a catalogue bearing: 33016 (Rolling bearing [35])"]["reaction_on_inner_body"][
+            "F_z_N"
+        ]
+        pos = bearings["not a catalogue bearing: 33016 (Rolling bearing [60])"]["reaction_on_inner_body"][
+            "F_z_N"
+        ]
+        assert net < 0  # every load case pushes the countershaft along -z
+        assert neg == 0.0 and pos == pytest.approx(-net, rel=1e-9)
+
+
+def test_the_fva_import_keeps_what_the_file_says():
+    data = read_rexs(FVA)
+    notes = data.pop(REXS_NOTES, [])
+    shafts = {s["name"]: s for s in data["shafts"]}
+    assert sorted(shafts) == ["Shaft [25]", "Shaft [42]", "Shaft [6]"]
+    cage = next(b for b in shafts["Shaft [6]"]["bearings"] if "K 50x58x25" in b["name"])
+    assert cage["outer"] == "Shaft [42]" and cage["axial"] == "floating"  # shaft in shaft, radial only
+    counter = {b["name"]: b["stiffness"] for b in shafts["Shaft [25]"]["bearings"]}
+    assert sorted(k["axial_direction"] for k in counter.values()) == ["+z", "-z"]
+    assert [c["time_fraction"] for c in data["load_cases"]] == pytest.approx(
+        [0.2, 0.3, 0.35, 0.15]
+    )  # the file: 20, 30, 35, 15 %
+    assert notes == []  # the tapered bearings' one-way absorption is their orientation: nothing to say
+    designations = sorted(b.get("designation", "") for s in data["shafts"] for b in s["bearings"])
+    assert designations == ["", "", "", "33012", "33014", "6210-2Z"]
+
+
+def test_the_sew_gearbox_reads_its_rexs_1_0_spelling():
+    """REXS 1.0: the degree sign as a unit, the designation in a ``name`` attribute, no load spectrum."""
+    data = read_rexs(SEW)
+    notes = data.pop(REXS_NOTES)
+    inp = drivetrain_from_dict(data, str(SEW), base=PUBLIC)
+    dt = inp.drivetrain
+    assert [s.name for s in dt.shafts] == ["ANW [4]", "RW3 [5]", "RW5 [36]", "ABW [54]"]
+    assert len(dt.meshes) == 3 and len(dt.bearings) == 9
+    names = [b["designation"] for s in data["shafts"] for b in s["bearings"]]
+    assert names == [
+        "6305-2Z",
+        "6205",
+        "6202",
+        "6202",
+        "6302",
+        "NUP204-E-XL-TVP2",
+        "6303-C",
+        "6207",
+        "6308-2Z",
+    ]
+    case = data["load_cases"][0]
+    assert case["torques"] == {"ANW [4]": "4.724562306435156 N*m"} and case["speed"] == {
+        "ANW [4]": "1400.0 rpm"
+    }
+    assert any("no load_spectrum" in n for n in notes)
+    # the cross-located 6202 pair and 6302/6303: one-way absorption on deep groove bearings is said
+    one_way = [n for n in notes if "seat's one-sided shoulder is not modelled" in n]
+    assert len(one_way) == 4
+    assert inp.loads["given_speeds"]["ANW [4]"][0] == pytest.approx(1400 * np.pi / 30, rel=1e-12)
+    assert inp.loads["torques"]["ANW [4]"][0] == pytest.approx(4.724562306435156, rel=1e-15)
+
+
+def test_a_one_way_concept_bearing_is_said_on_every_face_only_where_it_matters(fva):
+    assert not any("REXS import" in n for n in fva["notes"])
+
+
+def test_the_public_planetary_stage_is_refused_in_one_line():
+    with pytest.raises(InputError) as err:
+        read_rexs(PLANETARY)
+    line = str(err.value)
+    assert "\n" not in line and "Planetenstufe [9]" in line and "planetary stage" in line
