@@ -123,6 +123,33 @@ def test_the_sew_gearbox_reads_its_rexs_1_0_spelling():
     assert inp.loads["torques"]["ANW [4]"][0] == pytest.approx(4.724562306435156, rel=1e-15)
 
 
+def test_the_sew_gearbox_solves_though_its_input_shaft_winds_up_far():
+    """Three stages of 105.8 : 1 amplify the output's deflections at the input: its rotation about its
+    axis is ~0.3 rad at 4.72 N·m. The Newton neither caps nor watches that rotation (a drivetrain's wind-up
+    is no bearing deflection): before, it walked there one capped step at a time and was stopped as
+    "displacement diverged"."""
+    from typer.testing import CliRunner
+
+    from bearingkit.cli.commands import app
+
+    da = DrivetrainAnalysis(load_drivetrain_file(SEW))
+    res = da.result
+    assert res.converged.tolist() == [True]
+    ratio = (67 / 23) * (76 / 13) * (87 / 14)
+    # three external meshes: the output turns against the input, its held torque has the input's sign
+    assert float(res.held_torque()[0]) == pytest.approx(4.724562306435156 * ratio, rel=1e-9)
+    blk = res.assembly.blocks["ANW [4]"]
+    wind_up = abs(float(res.unknowns[0, blk.theta_z]))
+    limit = da.input.options.divergence_limit * min(law.deflection_scale for law in res.laws)
+    assert wind_up * da.drivetrain.char_length > limit  # what the old test called divergence
+    out = CliRunner().invoke(app, ["system", str(SEW), "--json"])
+    assert out.exit_code == 0, out.output
+    power = __import__("json").loads(out.stdout)["cases"][0]["power"]
+    # no lubricant in the file: no bearing friction, so the losses and the output are unknown (null)
+    assert power["loss_W"] is None and power["output_W"] is None
+    assert power["output_lossless_W"] == pytest.approx(power["input_W"], rel=1e-9)
+
+
 def test_a_one_way_concept_bearing_is_said_on_every_face_only_where_it_matters(fva):
     assert not any("REXS import" in n for n in fva["notes"])
 

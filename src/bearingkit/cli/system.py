@@ -113,9 +113,10 @@ def case_tables(c: dict) -> list:
         out.append(f"  speeds [rpm]: {speeds}")
         meshes_loss = sum(m["loss_W"] for m in p["mesh"].values())
         out.append(
-            f"  power: in {p['input_W']:.1f} W, out {p['output_W']:.1f} W, "
+            f"  power: in {p['input_W']:.1f} W, out {_num(p['output_W'], 1.0, '.1f')} W, "
             f"losses {_num(p['loss_W'], 1.0, '.4g')} W "
-            f"(bearings {_num((p['loss_W'] or 0) - meshes_loss, 1.0, '.4g')}, meshes {meshes_loss:.4g}), "
+            f"(bearings {_num(None if p['loss_W'] is None else p['loss_W'] - meshes_loss, 1.0, '.4g')}, "
+            f"meshes {meshes_loss:.4g}), "
             f"efficiency {_num(p['efficiency'], 100.0, '.3f')} %"
         )
     for w in c["warnings"]:

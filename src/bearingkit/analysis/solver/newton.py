@@ -224,6 +224,10 @@ def newton(problem: Problem, q, load, active, iterations, effort: Effort | None 
     """
     opts = problem.options
     idx, s = problem.idx, problem.scale
+    # DOFs the step cap and the divergence test watch (None: all). A drivetrain leaves out each shaft's
+    # rotation about its axis: the wind-up of the gear train, which the gear ratios amplify (a 0.1 mm
+    # deflection at a 100:1 output turns the input shaft by ~0.2 rad) and no bearing limits.
+    bounded = getattr(problem, "bounded", None)
     n = len(idx)
     q = q.copy()
     started = time.thread_time()
@@ -267,14 +271,14 @@ def newton(problem: Problem, q, load, active, iterations, effort: Effort | None 
         # norm = max|g| / load scale: components of g below rtol × load scale are round-off.
         noise = opts.rtol * np.abs(g).max(axis=1) / np.maximum(stw["norm"], 1e-300)
         step = without_idle_mechanisms(h, g, step, noise)
-        big = np.abs(step).max(axis=1)
+        big = np.abs(step if bounded is None else step[:, bounded[idx]]).max(axis=1, initial=0.0)
         step *= np.minimum(1.0, problem.max_step / np.maximum(big, 1e-300))[:, None]
         if it == opts.max_iterations - 1 and getattr(problem, "blind_last", False):
             # The coarse stage's last step is taken unevaluated (the full model evaluates its end).
             new_q = q[cases].copy()
             new_q[:, idx] += step * s[idx]
             q[cases] = new_q
-            diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
+            diverged[cases] |= _excursion(new_q / s, bounded) > problem.limit
             break
         slope = np.einsum("ci,ci->c", g, step)  # < 0 for a descent direction
         new_q, trial, moved = _line_search(sp, qw, lw, stw, step, slope, effort, cases)
@@ -282,7 +286,7 @@ def newton(problem: Problem, q, load, active, iterations, effort: Effort | None 
         for k in st:
             st[k][cases] = trial[k]
         converged[cases] |= trial["norm"] <= opts.rtol
-        diverged[cases] |= np.abs(new_q / s).max(axis=1) > problem.limit
+        diverged[cases] |= _excursion(new_q / s, bounded) > problem.limit
         stuck = cases[~moved & ~converged[cases] & ~diverged[cases]]
         if len(stuck) and it < CONE_CHECK_ITERATION:
             # It would have met the cone check still stuck: a load outside the cone is refused as then.
@@ -292,6 +296,11 @@ def newton(problem: Problem, q, load, active, iterations, effort: Effort | None 
                 refused[outside] = diverged[outside] = True
         stalled[stuck] = True
     return q, converged, st, diverged, refused
+
+
+def _excursion(scaled_q: np.ndarray, bounded) -> np.ndarray:
+    """Largest scaled displacement (C,) over the DOFs the divergence test watches (all when None)."""
+    return np.abs(scaled_q if bounded is None else scaled_q[:, bounded]).max(axis=1, initial=0.0)
 
 
 def _line_search(sp: Problem, qw, lw, stw, step, slope, effort: Effort | None = None, cases=None):

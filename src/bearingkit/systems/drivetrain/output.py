@@ -63,7 +63,7 @@ def power_dict(da, case: int) -> dict | None:
         return None
     return {
         "input_W": float(p["input_W"][case]),
-        "output_W": float(p["output_W"][case]),
+        "output_W": _f(p["output_W"][case]),  # unknown (None) where a bearing has no friction model
         "output_lossless_W": float(p["output_lossless_W"][case]),
         "loss_W": _f(p["loss_W"][case]),
         "efficiency": _f(p["efficiency"][case]),

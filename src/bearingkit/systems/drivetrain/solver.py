@@ -380,6 +380,10 @@ def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None
         options.divergence_limit * d_min,
         options.max_step if options.max_step is not None else 0.02 * d_min,
     )
+    # The shafts' rotations about their axes (the gear train's wind-up) are not capped or watched by
+    # the divergence test (analysis.solver.newton.newton): the ratios amplify them without bound.
+    problem.bounded = np.ones(asm.n, bool)
+    problem.bounded[[b.theta_z for b in asm.blocks.values() if b.theta_z is not None]] = False
     load = asm.load
     n_cases = load.shape[0]
     iterations = np.zeros(n_cases, int)
