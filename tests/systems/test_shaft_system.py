@@ -362,3 +362,32 @@ def test_a_one_way_axial_stiffness_pushes_one_way_and_is_a_convex_potential():
     coupled[2, 0] = coupled[0, 2] = 1e6
     with pytest.raises(InputError, match="one-way axial stiffness"):
         LinearBearing(coupled, axial_direction=1)
+
+
+def test_two_one_way_stiffness_bearings_cross_locate_a_shaft():
+    """A shaft file with two constant-stiffness bearings set against each other (axial_direction "+z" at A,
+    "-z" at B): a thrust along +z goes wholly to B, one along −z wholly to A (the shaft's axial balance to
+    1e-9), whichever way the Newton starts."""
+    import copy
+    import tomllib
+
+    from bearingkit.systems.shaft.input import shaft_from_dict
+    from bearingkit.systems.shaft.shaft_analysis import ShaftAnalysis
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    data = tomllib.loads((examples / "shaft_countershaft.toml").read_text(encoding="utf-8"))
+    for thrust, carrier in ((800.0, "B"), (-800.0, "A")):
+        d = copy.deepcopy(data)
+        d["shaft"]["bearings"] = [
+            {"name": "A", "position": "12.5 mm", "stiffness": {"radial": "3e8 N/m", "axial": "2e8 N/m",
+                                                                 "axial_direction": "+z"}},
+            {"name": "B", "position": "237.5 mm", "stiffness": {"radial": "3e8 N/m", "axial": "2e8 N/m",
+                                                                  "axial_direction": "-z"}},
+        ]  # fmt: skip
+        for case in d["load_cases"]:
+            case["forces"] = [{"name": "thrust", "position": "120 mm", "F_z": f"{thrust} N"}]
+        res = ShaftAnalysis(shaft_from_dict(d, "cross-located", base=examples)).result
+        assert res.converged.all()
+        idle = "A" if carrier == "B" else "B"
+        np.testing.assert_array_equal(res.reaction(idle)[:, 2], 0.0)
+        np.testing.assert_allclose(res.reaction(carrier)[:, 2], -thrust, rtol=1e-9)
