@@ -31,7 +31,7 @@ def _attr(i, unit, value):
 
 def _source_components(source) -> tuple[list, list, dict]:
     """(components, relations, bearing name → id) of a source REXS model, as JSON."""
-    from bearingkit.io.rexs.reader import parse
+    from bearingkit.io.rexs.parse import parse
 
     m = parse(source)
     comps, ids = [], {}

@@ -39,14 +39,12 @@ gear types (bevel, worm), more than one input speed.
 
 from __future__ import annotations
 
-import json
-import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.io.reading import read_text
+from bearingkit.io.rexs.parse import _number, _vector, parse
 
 #: REXS unit names → the unit text bearingkit parses.
 UNITS = {
@@ -86,91 +84,6 @@ _REFUSED_TYPES = {
 }
 
 
-def _value_xml(el):
-    arr = el.find("array")
-    if arr is not None:
-        return [float(c.text) for c in arr.findall("c")]
-    text = (el.text or "").strip()
-    if text.lower() in ("true", "false"):
-        return text.lower() == "true"
-    return text  # numbers stay text until read (a designation like "6208" is a string)
-
-
-def _attrs_xml(comp) -> dict:
-    return {a.get("id"): (_value_xml(a), a.get("unit") or "") for a in comp.findall("attribute")}
-
-
-def _attrs_json(comp) -> dict:
-    out = {}
-    for a in comp.get("attributes", []):
-        value = None
-        for key, v in a.items():
-            if key not in ("id", "unit"):
-                value = v
-        out[a["id"]] = (value, a.get("unit", "") or "")
-    return out
-
-
-def parse(path) -> dict:
-    """A REXS file as {version, components: {id: {type, name, attrs}}, relations: [{type, refs}],
-    load_cases: [{id, components: {id: attrs}}]} (XML or JSON)."""
-    path = Path(path)
-    text = read_text(path).lstrip("\ufeff")
-    model = {"components": {}, "relations": [], "load_cases": []}
-    if text.lstrip().startswith("{"):
-        try:
-            root = json.loads(text)["model"]
-        except (ValueError, KeyError, TypeError):
-            raise InputError(f'{path}: not a REXS JSON model (expected {{"model": {{...}}}})') from None
-        model["version"] = str(root.get("version", ""))
-        for c in root.get("components", []):
-            model["components"][int(c["id"])] = {
-                "type": c.get("type"),
-                "name": c.get("name", ""),
-                "attrs": _attrs_json(c),
-            }
-        for r in root.get("relations", []):
-            model["relations"].append(
-                {"type": r.get("type"), "refs": [(int(x["id"]), x.get("role")) for x in r.get("refs", [])]}
-            )
-        for lc in (root.get("load_spectrum") or {}).get("load_cases", []):
-            model["load_cases"].append(
-                {
-                    "id": lc.get("id"),
-                    "components": {int(c["id"]): _attrs_json(c) for c in lc.get("components", [])},
-                }
-            )
-        return model
-    try:
-        root = ET.fromstring(text)
-    except ET.ParseError as exc:
-        raise InputError(f"{path}: not a REXS XML model ({exc})") from None
-    if root.tag != "model":
-        raise InputError(f"{path}: not a REXS model (root element {root.tag!r}, expected 'model')")
-    model["version"] = root.get("version", "")
-    components = root.find("components")
-    for c in [] if components is None else components.findall("component"):
-        model["components"][int(c.get("id"))] = {
-            "type": c.get("type"),
-            "name": c.get("name", ""),
-            "attrs": _attrs_xml(c),
-        }
-    for r in root.iter("relation"):
-        model["relations"].append(
-            {"type": r.get("type"), "refs": [(int(x.get("id")), x.get("role")) for x in r.findall("ref")]}
-        )
-    spectrum = root.find("load_spectrum")
-    if spectrum is not None:
-        for lc in spectrum.findall("load_case"):
-            model["load_cases"].append(
-                {
-                    "id": lc.get("id"),
-                    "components": {int(c.get("id")): _attrs_xml(c) for c in lc.findall("component")},
-                }
-            )
-    return model
-
-
 def _q(attrs: dict, key: str, where: str, required: bool = True):
     if key not in attrs:
         if required:
@@ -188,10 +101,10 @@ def _q(attrs: dict, key: str, where: str, required: bool = True):
     return f"{value} {UNITS[unit]}".strip() if UNITS[unit] else value
 
 
-def _si(attrs, key, factor_to_mm=1.0):
+def _si(attrs, key, where: str, factor_to_mm=1.0):
     value, unit = attrs[key]
     scale = {"mm": 1.0, "m": 1e3, "mum": 1e-3}.get(unit, 1.0)
-    return np.asarray(value, float) * scale * factor_to_mm
+    return _vector(value, f"{where}.{key}") * scale * factor_to_mm
 
 
 #: REXS ``bearing_type`` words of the bearings whose contacts carry axial load one way only (their
@@ -231,9 +144,17 @@ def read_rexs(path) -> dict:
     if not shafts:
         raise InputError(f"{src}: no shaft component")
     unit = next((c for c in comps.values() if c["type"] == "gear_unit"), None)
-    u = np.asarray(comps[shafts[0]]["attrs"].get("u_axis_vector", ([1.0, 0.0, 0.0], ""))[0], float)
+    u = _vector(
+        comps[shafts[0]]["attrs"].get("u_axis_vector", ([1.0, 0.0, 0.0], ""))[0],
+        f"{src}: shaft {shafts[0]}.u_axis_vector",
+    )
+    if np.linalg.norm(u) == 0.0:
+        raise InputError(f"{src}: shaft {shafts[0]}.u_axis_vector is zero")
     u /= np.linalg.norm(u)
-    w_ref = np.asarray((unit or {"attrs": {}})["attrs"].get("w_axis_vector", ([0.0, 0.0, 1.0], ""))[0], float)
+    w_ref = _vector(
+        (unit or {"attrs": {}})["attrs"].get("w_axis_vector", ([0.0, 0.0, 1.0], ""))[0],
+        f"{src}: gear_unit.w_axis_vector",
+    )
     w = w_ref - (w_ref @ u) * u
     if np.linalg.norm(w) < 1e-9:
         w = np.array([0.0, 1.0, 0.0]) - u[1] * u
@@ -249,16 +170,20 @@ def read_rexs(path) -> dict:
     for i in shafts:
         c = comps[i]
         where = f"{src}: shaft {i} ({c['name']})"
-        ax = np.asarray(c["attrs"].get("u_axis_vector", (u.tolist(), ""))[0], float)
+        ax = _vector(c["attrs"].get("u_axis_vector", (u.tolist(), ""))[0], f"{where}.u_axis_vector")
         if abs(abs(ax @ u) / np.linalg.norm(ax) - 1.0) > 1e-9:
             raise InputError(
                 f"{where}: its axis {ax.tolist()} is not parallel to the others' {u.tolist()}: "
                 "non-parallel shafts (bevel, worm stages) are not supported"
             )
-        support = _si(c["attrs"], "support_vector") if "support_vector" in c["attrs"] else np.zeros(3)
+        support = _si(c["attrs"], "support_vector", where) if "support_vector" in c["attrs"] else np.zeros(3)
         sections = []
         for p in sorted(
-            parts.get(i, []), key=lambda p: float(comps[p]["attrs"].get("u_coordinate_on_shaft", (0, ""))[0])
+            parts.get(i, []),
+            key=lambda p: _number(
+                comps[p]["attrs"].get("u_coordinate_on_shaft", (0, ""))[0],
+                f"{where}: part {p}.u_coordinate_on_shaft",
+            ),
         ):
             s = comps[p]
             if s["type"] != "shaft_section":
@@ -294,7 +219,7 @@ def read_rexs(path) -> dict:
             mw = f"{where}: material {mat}"
             shaft["material"] = {
                 "youngs_modulus": _q(a, "elastic_modulus", mw),
-                "poisson_ratio": float(a["poisson_ratio"][0]),
+                "poisson_ratio": _number(a.get("poisson_ratio", (None, ""))[0], f"{mw}.poisson_ratio"),
                 "density": _q(a, "density", mw),
             }
         for p in parts.get(i, []):
@@ -311,10 +236,14 @@ def read_rexs(path) -> dict:
     for gid, sid in gear_shaft.items():
         a = comps[gid]["attrs"]
         gw = f"{src}: cylindrical_gear {gid} ({gear_names[gid]})"
-        teeth = int(float(a["number_of_teeth"][0])) if "number_of_teeth" in a else None
+        teeth = (
+            int(_number(a["number_of_teeth"][0], f"{gw}.number_of_teeth")) if "number_of_teeth" in a else None
+        )
         if teeth is None:
             raise InputError(f"{gw}: attribute 'number_of_teeth' missing")
-        beta = float(a.get("helix_angle_reference_diameter", (0.0, "deg"))[0])  # noqa: RUF100
+        beta = _number(
+            a.get("helix_angle_reference_diameter", (0.0, "deg"))[0], f"{gw}.helix_angle_reference_diameter"
+        )
         fa = comps[flank[gid]]["attrs"] if gid in flank else {}
         gear = {
             "name": gear_names[gid],
@@ -329,7 +258,9 @@ def read_rexs(path) -> dict:
         if "normal_pressure_angle" in fa:
             gear["pressure_angle"] = _q(fa, "normal_pressure_angle", gw)
         if "addendum_modification_coefficient" in fa:
-            gear["profile_shift"] = float(fa["addendum_modification_coefficient"][0])
+            gear["profile_shift"] = _number(
+                fa["addendum_modification_coefficient"][0], f"{gw}: flank.addendum_modification_coefficient"
+            )
         by_id[sid]["gears"].append(gear)
     meshes = []
     for r in m["relations"]:
@@ -438,7 +369,7 @@ def read_rexs(path) -> dict:
                 )
                 if key in a
             }
-            if any(float(x[0]) != 0.0 for x in vals.values()):
+            if any(_number(x[0], f"{cw}: external_load {p}.{k}") != 0.0 for k, x in vals.items()):
                 f = {"shaft": by_id[sid]["name"], "name": comps[p]["name"] or f"load {p}", "position": pos}
                 for key, field in (
                     ("force_v_direction", "F_x"),
@@ -460,7 +391,11 @@ def read_rexs(path) -> dict:
         ua = lc["components"].get(unit_id, {})
         for key in ("load_duration_fraction", "custom_load_duration_fraction"):
             if key in ua:
-                case["time_fraction"] = _q(ua, key, cw)
+                value, share_unit = ua[key]
+                if share_unit not in ("%", "none", ""):
+                    raise InputError(f"{cw}: {key} in {share_unit!r}; expected % (or a fraction without unit)")
+                share = _number(value, f"{cw}: {key}")
+                case["time_fraction"] = share / 100.0 if share_unit == "%" else share
         cases.append(case)
     fractions = [c.get("time_fraction") for c in cases]
     if all(f is not None for f in fractions) and sum(fractions) > 0:
@@ -472,12 +407,18 @@ def read_rexs(path) -> dict:
     out = {}
     for c in comps.values():  # an ISO VG oil: bearingkit's preset of that grade (friction, κ, L_nm)
         if c["type"] == "lubricant" and "viscosity_at_40_degree_celsius" in c["attrs"]:
-            nu40 = float(c["attrs"]["viscosity_at_40_degree_celsius"][0])
+            nu40 = _number(
+                c["attrs"]["viscosity_at_40_degree_celsius"][0],
+                f"{src}: lubricant.viscosity_at_40_degree_celsius",
+            )
             grade = min((32, 46, 68, 100, 150, 220), key=lambda g: abs(g - nu40))
             if abs(grade - nu40) <= 0.1 * grade:  # ISO 3448: a grade spans ±10 % of its mid-point
                 out["lubricant"] = {"name": f"ISO_VG{grade}"}
     e_c = {
-        float(c["attrs"]["contamination_factor_according_to_iso_281_2007"][0])
+        _number(
+            c["attrs"]["contamination_factor_according_to_iso_281_2007"][0],
+            f"{src}: {c['name']}.contamination_factor",
+        )
         for c in comps.values()
         if "contamination_factor_according_to_iso_281_2007" in c["attrs"]
     }
