@@ -211,3 +211,22 @@ def test_mutated_public_models_load_or_are_refused_in_one_line(tmp_path):
         except Exception as exc:  # what this test looks for
             escaped.append((i, kind, type(exc).__name__, str(exc)[:120]))
     assert escaped == []
+
+
+@pytest.mark.parametrize("model", [FVA, SEW], ids=["fva", "sew"])
+def test_the_results_model_written_reads_again_to_the_same_results(model, tmp_path):
+    """`--rexs` writes the source model plus the results: its load cases keep their inputs (speeds, torques,
+    forces, time shares), so the file written solves again to the same bearing loads (before, its load
+    spectrum held the results only and read back as an unloaded gearbox)."""
+    from bearingkit.io.rexs.export import write_rexs_results
+
+    first = DrivetrainAnalysis(load_drivetrain_file(model)).to_dict()
+    path = write_rexs_results(first, tmp_path / "results.rexsj", source=model)
+    again = DrivetrainAnalysis(load_drivetrain_file(path)).to_dict()
+    assert len(again["cases"]) == len(first["cases"])
+    for a, b in zip(first["cases"], again["cases"], strict=True):
+        assert b["converged"] and b["held_torque_Nm"] == pytest.approx(a["held_torque_Nm"], rel=1e-12)
+        for x, y in zip(a["bearings"], b["bearings"], strict=True):
+            scale = max(abs(x["radial_load_N"]), abs(x["axial_load_N"]), 1.0)
+            assert y["radial_load_N"] == pytest.approx(x["radial_load_N"], abs=1e-9 * scale)
+            assert y["axial_load_N"] == pytest.approx(x["axial_load_N"], abs=1e-9 * scale)

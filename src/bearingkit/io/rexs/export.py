@@ -29,40 +29,56 @@ def _attr(i, unit, value):
     return {"id": i, "unit": unit, "floating_point": value}
 
 
-def _source_components(source) -> tuple[list, list, dict]:
-    """(components, relations, bearing name → id) of a source REXS model, as JSON."""
+def _json_attrs(attrs: dict) -> list:
+    """Parsed attributes {id: (value, unit)} back as REXS JSON attributes."""
+    out = []
+    for key, (value, unit) in attrs.items():
+        kind = (
+            "boolean"
+            if isinstance(value, bool)
+            else "floating_point_array"
+            if isinstance(value, list)
+            else "string"
+        )
+        out.append({"id": key, "unit": unit, kind: value})
+    return out
+
+
+def _source_components(source) -> tuple[list, list, dict, dict]:
+    """(components, relations, bearing name → id, load-case name → its input components) of a source REXS
+    model, as JSON. The load cases are named as the reader names them (``load case ID``); a model without
+    a load spectrum has one, of the components' own attributes, as the reader reads it."""
     from bearingkit.io.rexs.parse import parse
 
     m = parse(source)
     comps, ids = [], {}
     for cid, c in m["components"].items():
-        attrs = []
-        for key, (value, unit) in c["attrs"].items():
-            kind = (
-                "boolean"
-                if isinstance(value, bool)
-                else "floating_point_array"
-                if isinstance(value, list)
-                else "string"
-            )
-            attrs.append({"id": key, "unit": unit, kind: value})
-        comps.append({"id": cid, "name": c["name"], "type": c["type"], "attributes": attrs})
+        comps.append({"id": cid, "name": c["name"], "type": c["type"], "attributes": _json_attrs(c["attrs"])})
         if "bearing" in (c["type"] or ""):
             ids[c["name"]] = cid
     rels = [
         {"id": k + 1, "type": r["type"], "refs": [{"id": i, "role": role} for i, role in r["refs"]]}
         for k, r in enumerate(m["relations"])
     ]
-    return comps, rels, ids
+    spectrum = m["load_cases"] or [
+        {"id": 1, "components": {cid: c["attrs"] for cid, c in m["components"].items()}}
+    ]
+    inputs = {
+        f"load case {lc['id'] if lc['id'] is not None else k + 1}": {
+            cid: _json_attrs(attrs) for cid, attrs in lc["components"].items()
+        }
+        for k, lc in enumerate(spectrum)
+    }
+    return comps, rels, ids, inputs
 
 
 def write_rexs_results(data: dict, path, source=None) -> Path:
     """Write the results of ``data`` (a DrivetrainAnalysis dict) as a REXS JSON model to ``path``."""
     path = Path(path)
     src = source if source is not None else data.get("file")
-    comps, rels, ids = [], [], {}
+    comps, rels, ids, inputs = [], [], {}, {}
     if src is not None and str(src).lower().endswith((".rexs", ".rexsj", ".rexs.json", ".rexs.xml")):
-        comps, rels, ids = _source_components(src)
+        comps, rels, ids, inputs = _source_components(src)
     next_id = max([c["id"] for c in comps], default=0) + 1
     for b in data["inputs"]["bearings"]:
         if b["name"] not in ids:
@@ -71,6 +87,9 @@ def write_rexs_results(data: dict, path, source=None) -> Path:
             next_id += 1
     cases = []
     for k, c in enumerate(data["cases"]):
+        # the case's inputs (speeds, torques, forces, temperatures, time share) stay, so that the model
+        # written is the model read plus the results: read again, it solves to the same results
+        given = {cid: list(attrs) for cid, attrs in inputs.get(c["case"], {}).items()}
         entries = []
         for b in c["bearings"]:
             s, q = b["summary"], b["relative_displacement"]
@@ -90,7 +109,8 @@ def write_rexs_results(data: dict, path, source=None) -> Path:
             ):
                 if s.get(key) is not None:
                     attrs.append(_attr(rid, unit, s[key] * scale))
-            entries.append({"id": ids[b["name"]], "attributes": attrs})
+            entries.append({"id": ids[b["name"]], "attributes": given.pop(ids[b["name"]], []) + attrs})
+        entries += [{"id": cid, "attributes": attrs} for cid, attrs in given.items()]
         cases.append({"id": k + 1, "components": entries})
     model = {
         "model": {

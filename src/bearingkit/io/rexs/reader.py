@@ -393,7 +393,7 @@ def read_rexs(path) -> dict:
             if key in ua:
                 value, share_unit = ua[key]
                 if share_unit not in ("%", "none", ""):
-                    raise InputError(f"{cw}: {key} in {share_unit!r}; expected % (or a fraction without unit)")
+                    raise InputError(f"{cw}: {key} in {share_unit!r}; expected % (or a fraction, no unit)")
                 share = _number(value, f"{cw}: {key}")
                 case["time_fraction"] = share / 100.0 if share_unit == "%" else share
         cases.append(case)
