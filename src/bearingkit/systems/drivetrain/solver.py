@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import cho_factor, cho_solve
 
-from bearingkit.analysis.solver.quasistatic import _merge, _newton
+from bearingkit.analysis.solver.quasistatic import _blas_serial, _merge, _newton
 from bearingkit.errors import InputError
 from bearingkit.rows.base import N_DOF
 from bearingkit.systems.drivetrain.model import HOUSING, Drivetrain
@@ -356,7 +356,16 @@ def solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None
     """Solve the drivetrain for a batch of load cases (one Newton); returns a DrivetrainResult.
 
     ``laws``: per bearing the :class:`~bearingkit.systems.shaft.supports.BearingLaw` at the cases' speeds.
+    BLAS runs on one thread meanwhile: its threads on these small systems (50–100 unknowns) only wait for
+    one another, and on a busy machine for a core (measured with two busy processes on this 2-core
+    machine: the two-stage gearbox 2.4–3.1 s with OpenBLAS's threads, 1.0–1.4 s with one; the planetary
+    stage 1.4–2.9 s against 0.5–0.7 s; idle, the same within the scatter of 0.7–1.0 s and 0.4–0.6 s).
     """
+    with _blas_serial():
+        return _solve(dt, loads, laws, options)
+
+
+def _solve(dt: Drivetrain, loads: dict, laws: list, options: SystemOptions | None):
     from bearingkit.systems.drivetrain.result import DrivetrainResult
 
     options = options or SystemOptions()
