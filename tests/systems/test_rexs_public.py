@@ -15,6 +15,7 @@ speeds and torques of the tooth counts, the power balance, and the one-way conce
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -144,13 +145,17 @@ def test_the_sew_gearbox_solves_though_its_input_shaft_winds_up_far():
     assert wind_up * da.drivetrain.char_length > limit  # what the old test called divergence
     out = CliRunner().invoke(app, ["system", str(SEW), "--json"])
     assert out.exit_code == 0, out.output
-    power = __import__("json").loads(out.stdout)["cases"][0]["power"]
+    data = json.loads(out.stdout)
+    power = data["cases"][0]["power"]
     # no lubricant in the file: no bearing friction, so the losses and the output are unknown (null)
     assert power["loss_W"] is None and power["output_W"] is None
     assert power["output_lossless_W"] == pytest.approx(power["input_W"], rel=1e-9)
+    # the import's notes reach the JSON (the CLI and report print the same notes list)
+    assert sum(n.startswith("REXS import: ") for n in data["notes"]) == 5  # 4 one-way deep groove, 1 spectrum
 
 
-def test_a_one_way_concept_bearing_is_said_on_every_face_only_where_it_matters(fva):
+def test_the_fva_import_has_nothing_to_note(fva):
+    """Its one-way bearings are tapered (their orientation says it) or concept bearings (modelled)."""
     assert not any("REXS import" in n for n in fva["notes"])
 
 

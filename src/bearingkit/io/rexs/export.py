@@ -46,9 +46,9 @@ def _json_attrs(attrs: dict) -> list:
 
 def _source_components(source) -> tuple[list, list, dict, dict]:
     """(components, relations, bearing name → id, load-case name → its input components) of a source REXS
-    model, as JSON. The load cases are named as the reader names them (``load case ID``); a model without
-    a load spectrum has one, of the components' own attributes, as the reader reads it."""
-    from bearingkit.io.rexs.parse import parse
+    model, as JSON; the load cases as :func:`bearingkit.io.rexs.parse.load_cases` names them (the reader's
+    names, so that each result finds its case's inputs)."""
+    from bearingkit.io.rexs.parse import load_cases, parse
 
     m = parse(source)
     comps, ids = [], {}
@@ -60,14 +60,8 @@ def _source_components(source) -> tuple[list, list, dict, dict]:
         {"id": k + 1, "type": r["type"], "refs": [{"id": i, "role": role} for i, role in r["refs"]]}
         for k, r in enumerate(m["relations"])
     ]
-    spectrum = m["load_cases"] or [
-        {"id": 1, "components": {cid: c["attrs"] for cid, c in m["components"].items()}}
-    ]
     inputs = {
-        f"load case {lc['id'] if lc['id'] is not None else k + 1}": {
-            cid: _json_attrs(attrs) for cid, attrs in lc["components"].items()
-        }
-        for k, lc in enumerate(spectrum)
+        name: {cid: _json_attrs(attrs) for cid, attrs in given.items()} for name, given in load_cases(m)
     }
     return comps, rels, ids, inputs
 

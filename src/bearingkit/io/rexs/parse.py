@@ -179,3 +179,19 @@ def _parse(path) -> dict:
                 }
             )
     return model
+
+
+def load_cases(model: dict) -> list[tuple[str, dict]]:
+    """The model's load cases as (name, {component id: attrs}), the one place that names them.
+
+    Named ``load case ID`` (``load case K`` by position when a case has no id). A model without a
+    ``load_spectrum`` (REXS 1.0 files write the operating values on the components) has one case: the
+    components' own attributes. The reader solves these cases; the export writes their inputs back.
+    """
+    spectrum = model["load_cases"] or [
+        {"id": 1, "components": {cid: c["attrs"] for cid, c in model["components"].items()}}
+    ]
+    return [
+        (f"load case {lc['id'] if lc['id'] is not None else k + 1}", lc["components"])
+        for k, lc in enumerate(spectrum)
+    ]

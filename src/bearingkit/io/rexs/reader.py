@@ -44,7 +44,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.io.rexs.parse import _number, _vector, parse
+from bearingkit.io.rexs.parse import _number, _vector, load_cases, parse
 
 #: REXS unit names → the unit text bearingkit parses.
 UNITS = {
@@ -339,25 +339,23 @@ def read_rexs(path) -> dict:
         raise InputError(f"{src}: more than one shaft defines the speed; bearingkit takes one input speed")
     casing = [i for i, c in comps.items() if c["type"] == "gear_casing"]
     unit_id = next((i for i, c in comps.items() if c["type"] == "gear_unit"), None)
-    spectrum = m["load_cases"]
-    if not spectrum:  # no load_spectrum: the operating values sit on the components themselves (REXS 1.0)
-        spectrum = [{"id": 1, "components": {cid: c["attrs"] for cid, c in comps.items()}}]
+    if not m["load_cases"]:  # the operating values sit on the components themselves (REXS 1.0)
         notes.append(
             "the model has no load_spectrum: its one load case is read from the components' attributes"
         )
     cases = []
-    for k, lc in enumerate(spectrum):
+    for name, given in load_cases(m):
         case = {
-            "name": f"load case {lc['id'] if lc['id'] is not None else k + 1}",
+            "name": name,
             "torques": {},
             "forces": [],
         }
-        cw = f"{src}: load case {lc['id']}"
+        cw = f"{src}: {name}"
         for p, sid in inputs.items():
-            if p in lc["components"] and "torque_around_u_axis" in lc["components"][p]:
-                case["torques"][by_id[sid]["name"]] = _q(lc["components"][p], "torque_around_u_axis", cw)
+            if p in given and "torque_around_u_axis" in given[p]:
+                case["torques"][by_id[sid]["name"]] = _q(given[p], "torque_around_u_axis", cw)
         for p, (sid, pos) in loads_at.items():
-            a = lc["components"].get(p, {})
+            a = given.get(p, {})
             vals = {
                 key: a[key]
                 for key in (
@@ -369,7 +367,7 @@ def read_rexs(path) -> dict:
                 )
                 if key in a
             }
-            if any(_number(x[0], f"{cw}: external_load {p}.{k}") != 0.0 for k, x in vals.items()):
+            if any(_number(x[0], f"{cw}: external_load {p}.{key}") != 0.0 for key, x in vals.items()):
                 f = {"shaft": by_id[sid]["name"], "name": comps[p]["name"] or f"load {p}", "position": pos}
                 for key, field in (
                     ("force_v_direction", "F_x"),
@@ -381,14 +379,12 @@ def read_rexs(path) -> dict:
                     if key in vals:
                         f[field] = _q(vals, key, cw)
                 case["forces"].append(f)
-        if speed_shaft and "rotational_speed" in lc["components"].get(speed_shaft[0], {}):
-            case["speed"] = {
-                by_id[speed_shaft[0]]["name"]: _q(lc["components"][speed_shaft[0]], "rotational_speed", cw)
-            }
+        if speed_shaft and "rotational_speed" in given.get(speed_shaft[0], {}):
+            case["speed"] = {by_id[speed_shaft[0]]["name"]: _q(given[speed_shaft[0]], "rotational_speed", cw)}
         for cid in casing:
-            if "temperature_lubricant" in lc["components"].get(cid, {}):
-                case["temperature"] = _q(lc["components"][cid], "temperature_lubricant", cw)
-        ua = lc["components"].get(unit_id, {})
+            if "temperature_lubricant" in given.get(cid, {}):
+                case["temperature"] = _q(given[cid], "temperature_lubricant", cw)
+        ua = given.get(unit_id, {})
         for key in ("load_duration_fraction", "custom_load_duration_fraction"):
             if key in ua:
                 value, share_unit = ua[key]
