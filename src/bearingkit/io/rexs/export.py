@@ -49,6 +49,7 @@ def _source_components(source) -> tuple[list, list, dict, dict]:
     model, as JSON; the load cases as :func:`bearingkit.io.rexs.parse.load_cases` names them (the reader's
     names, so that each result finds its case's inputs)."""
     from bearingkit.io.rexs.parse import load_cases, parse
+    from bearingkit.io.rexs.planetary import planet_bearing_ids
 
     m = parse(source)
     comps, ids = [], {}
@@ -56,6 +57,7 @@ def _source_components(source) -> tuple[list, list, dict, dict]:
         comps.append({"id": cid, "name": c["name"], "type": c["type"], "attributes": _json_attrs(c["attrs"])})
         if "bearing" in (c["type"] or ""):
             ids[c["name"]] = cid
+    ids.update(planet_bearing_ids(m))  # a planet bearing per planet: bearingkit's stage names them
     rels = [
         {"id": k + 1, "type": r["type"], "refs": [{"id": i, "role": role} for i, role in r["refs"]]}
         for k, r in enumerate(m["relations"])

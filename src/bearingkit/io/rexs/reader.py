@@ -15,8 +15,9 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
 - bearings (``side`` relation: ``inner_part`` a shaft, ``outer_part`` a shaft or the ``gear_casing``):
   ``rolling_bearing_with_catalog_geometry`` (``catalogue_designation``: bearingkit's catalogue
   estimate, docs/catalogue.md) and ``concept_bearing`` (``radial_stiffness``, ``axial_stiffness``,
-  ``bending_stiffness``: a linear bearing); ``u_coordinate_on_shaft_inner_side``/``_outer_side``;
-  ``axial_force_absorption`` (``no_direction``: floating, else locating).
+  ``bending_stiffness``: a linear bearing, at most bearingkit's rigid, :mod:`~bearingkit.io.rexs.parts`);
+  ``u_coordinate_on_shaft_inner_side``/``_outer_side``; ``axial_force_absorption`` (``no_direction``:
+  floating, else locating).
 - ``cylindrical_gear`` on a shaft: ``u_coordinate_on_shaft``, ``number_of_teeth`` (negative: internal),
   ``normal_module``, ``helix_angle_reference_diameter`` (signed: positive right hand [from memory]),
   ``face_width``; its flank (``flank`` relation, the left one): ``normal_pressure_angle``,
@@ -32,9 +33,14 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
 - load cases: ``rotational_speed`` of the shaft that ``defines_speed``, the casing's
   ``temperature_lubricant``, the gear unit's ``load_duration_fraction`` (or its ``custom_`` form).
 
-Axes: u (the shafts' axis) is bearingkit's z; v = w × u and w of the gear unit are x and y.
-Refused: non-parallel shafts, conical sections, bearings with detailed geometry, planetary and other
-gear types (bevel, worm), more than one input speed.
+- a ``planetary_stage``: a ``[[planetary]]`` table (:mod:`bearingkit.io.rexs.planetary`); its planets,
+  pins, side plates, held ring shaft and their couplings and meshes are the stage's, not shafts.
+- the gear unit's ``account_for_gravity`` and ``direction_vector_gravity_u/v/w`` (along an axis).
+
+Axes: u (the shafts' axis) is bearingkit's z; v = w × u and w of the gear unit are x and y. A shaft joined
+to nothing (no bearing, coupling, gear or load) is left out, with a note.
+Refused: non-parallel shafts, conical sections, bearings with detailed geometry, gear types other than
+cylindrical (bevel, worm), more than one input speed, a planetary stage bearingkit's cannot stand for.
 """
 
 from __future__ import annotations
@@ -44,79 +50,31 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.io.rexs.parse import _number, _vector, load_cases, parse
+from bearingkit.io.rexs.parse import _number, load_cases, parse
+from bearingkit.io.rexs.parts import bearing_table, direction, q_text, rigid_note, section_tables, vector_mm
+from bearingkit.io.rexs.planetary import read_stage
 
-#: REXS unit names → the unit text bearingkit parses.
-UNITS = {
-    "mm": "mm",
-    "m": "m",
-    "mum": "um",
-    "deg": "deg",
-    "°": "deg",  # REXS 1.0 files (e.g. FVA Workbench 5.0) write the degree sign
-    "rad": "rad",
-    "N": "N",
-    "kN": "kN",
-    "N m": "N*m",
-    "N mm": "N*mm",
-    "1 / min": "rpm",
-    "C": "degC",
-    "N / mm^2": "N/mm^2",
-    "kg / dm^3": "kg/dm^3",
-    "kg / m^3": "kg/m^3",
-    "N / m": "N/m",
-    "N / mm": "N/mm",
-    "N / mum": "N/um",
-    "N mm / rad": "N*mm/rad",
-    "N m / rad": "N*m/rad",
-    "%": "%",
-    "": "",
-    "none": "",
-    "mm^2 / s": "mm^2/s",
-}
 SUPPORTED_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6")
 _REFUSED_TYPES = {
     "rolling_bearing_with_detailed_geometry": "a bearing with detailed geometry (give its designation, or "
     "write a bearing file and a drivetrain TOML)",
-    "planetary_stage": "a planetary stage (write it as a [[planetary]] table of a drivetrain TOML)",
     "bevel_gear": "a bevel gear (only cylindrical gears are modelled)",
     "worm_gear": "a worm gear (only cylindrical gears are modelled)",
     "worm_wheel": "a worm wheel (only cylindrical gears are modelled)",
 }
 
 
-def _q(attrs: dict, key: str, where: str, required: bool = True):
-    if key not in attrs:
-        if required:
-            raise InputError(f"{where}: attribute {key!r} missing")
-        return None
-    value, unit = attrs[key]
-    if unit not in UNITS:
-        raise InputError(
-            f"{where}.{key}: unit {unit!r} is not one bearingkit reads ({', '.join(k for k in UNITS if k)})"
-        )
-    if isinstance(value, list):
-        return value
-    if unit == "%":
-        return float(value) / 100.0
-    return f"{value} {UNITS[unit]}".strip() if UNITS[unit] else value
-
-
-def _si(attrs, key, where: str, factor_to_mm=1.0):
-    value, unit = attrs[key]
-    scale = {"mm": 1.0, "m": 1e3, "mum": 1e-3}.get(unit, 1.0)
-    return _vector(value, f"{where}.{key}") * scale * factor_to_mm
-
-
-#: REXS ``bearing_type`` words of the bearings whose contacts carry axial load one way only (their
-#: orientation is all ``axial_force_absorption`` needs to say).
-ONE_WAY_KINDS = ("tapered", "angular")
 #: Key of the returned dictionary holding the import's notes (not a drivetrain file field).
 REXS_NOTES = "rexs_notes"
-
-#: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` takes an axial
-#: force on its inner part (the shaft) along +u (bearingkit's +z), as a ``+z`` tapered row does; the
-#: reading of the attribute's sign is bearingkit's [from memory of the REXS attribute list, not confirmed].
-AXIAL_DIRECTION = {"positive": "+z", "negative": "-z"}
+#: REXS gravity direction (u, v, w components) → the drivetrain file's ``gravity`` axis.
+GRAVITY_AXES = {
+    (0, 1, 0): "+x",
+    (0, -1, 0): "-x",
+    (0, 0, 1): "+y",
+    (0, 0, -1): "-y",
+    (1, 0, 0): "+z",
+    (-1, 0, 0): "-z",
+}
 
 
 def read_rexs(path) -> dict:
@@ -140,21 +98,32 @@ def read_rexs(path) -> dict:
         if r["type"] == "assembly":
             roles = dict((role, i) for i, role in r["refs"])
             parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
-    shafts = [i for i, c in comps.items() if c["type"] == "shaft"]
+    notes = []
+    rigid_ones = []  # concept bearings stiffer than bearingkit's rigid (one note, at the end)
+    stage = read_stage(
+        m, src, notes, rigid_ones
+    )  # a planetary stage: its planets, pins, ring shaft … are taken
+    taken = stage["taken"] if stage else set()
+    joined = set()  # parts of a relation besides their own sections: bearings, couplings, gears, loads
+    for r in m["relations"]:
+        if r["type"] != "assembly":
+            joined |= {i for i, _ in r["refs"]}
+    shafts = []
+    for i, c in comps.items():
+        if c["type"] != "shaft" or i in taken:
+            continue
+        if i not in joined and not any(comps[p]["type"] != "shaft_section" for p in parts.get(i, [])):
+            notes.append(f"shaft {i} ({c['name']}) is joined to nothing (no bearing, gear or load): left out")
+            continue
+        shafts.append(i)
     if not shafts:
         raise InputError(f"{src}: no shaft component")
     unit = next((c for c in comps.values() if c["type"] == "gear_unit"), None)
-    u = _vector(
-        comps[shafts[0]]["attrs"].get("u_axis_vector", ([1.0, 0.0, 0.0], ""))[0],
-        f"{src}: shaft {shafts[0]}.u_axis_vector",
-    )
+    u = direction(comps[shafts[0]]["attrs"], "u_axis_vector", f"{src}: shaft {shafts[0]}", [1.0, 0.0, 0.0])
     if np.linalg.norm(u) == 0.0:
         raise InputError(f"{src}: shaft {shafts[0]}.u_axis_vector is zero")
     u /= np.linalg.norm(u)
-    w_ref = _vector(
-        (unit or {"attrs": {}})["attrs"].get("w_axis_vector", ([0.0, 0.0, 1.0], ""))[0],
-        f"{src}: gear_unit.w_axis_vector",
-    )
+    w_ref = direction((unit or {"attrs": {}})["attrs"], "w_axis_vector", f"{src}: gear_unit", [0.0, 0.0, 1.0])
     w = w_ref - (w_ref @ u) * u
     if np.linalg.norm(w) < 1e-9:
         w = np.array([0.0, 1.0, 0.0]) - u[1] * u
@@ -170,38 +139,19 @@ def read_rexs(path) -> dict:
     for i in shafts:
         c = comps[i]
         where = f"{src}: shaft {i} ({c['name']})"
-        ax = _vector(c["attrs"].get("u_axis_vector", (u.tolist(), ""))[0], f"{where}.u_axis_vector")
+        ax = direction(c["attrs"], "u_axis_vector", where, u)
         if abs(abs(ax @ u) / np.linalg.norm(ax) - 1.0) > 1e-9:
             raise InputError(
                 f"{where}: its axis {ax.tolist()} is not parallel to the others' {u.tolist()}: "
                 "non-parallel shafts (bevel, worm stages) are not supported"
             )
-        support = _si(c["attrs"], "support_vector", where) if "support_vector" in c["attrs"] else np.zeros(3)
-        sections = []
-        for p in sorted(
-            parts.get(i, []),
-            key=lambda p: _number(
-                comps[p]["attrs"].get("u_coordinate_on_shaft", (0, ""))[0],
-                f"{where}: part {p}.u_coordinate_on_shaft",
-            ),
-        ):
-            s = comps[p]
-            if s["type"] != "shaft_section":
-                continue
-            a = s["attrs"]
-            sw = f"{where}: section {p}"
-            for key in ("outer_diameter", "inner_diameter"):
-                if key + "_begin" in a and a[key + "_begin"][0] != a.get(key + "_end", a[key + "_begin"])[0]:
-                    raise InputError(
-                        f"{sw}: a conical section ({key} changes) is not supported; split it into steps"
-                    )
-            sections.append(
-                {
-                    "start": _q(a, "u_coordinate_on_shaft", sw),
-                    "length": _q(a, "length", sw),
-                    "outer_diameter": _q(a, "outer_diameter_begin", sw),
-                    "inner_diameter": _q(a, "inner_diameter_begin", sw, False) or "0 mm",
-                }
+        support = vector_mm(c["attrs"], "support_vector", where)
+        if support is None:  # placed by its relations (a planetary stage), else at the origin
+            support = u * (stage["offsets"].get(i, 0.0) if stage else 0.0)
+        sections = section_tables(comps, parts, i, 0.0, where)
+        if stage and i == stage["carrier"]:
+            sections = sorted(
+                sections + stage["carrier_sections"], key=lambda s: float(s["start"].split()[0])
             )
         if not sections:
             raise InputError(f"{where}: no shaft_section parts")
@@ -218,9 +168,9 @@ def read_rexs(path) -> dict:
             a = comps[mat]["attrs"]
             mw = f"{where}: material {mat}"
             shaft["material"] = {
-                "youngs_modulus": _q(a, "elastic_modulus", mw),
+                "youngs_modulus": q_text(a, "elastic_modulus", mw),
                 "poisson_ratio": _number(a.get("poisson_ratio", (None, ""))[0], f"{mw}.poisson_ratio"),
-                "density": _q(a, "density", mw),
+                "density": q_text(a, "density", mw),
             }
         for p in parts.get(i, []):
             if comps[p]["type"] == "cylindrical_gear":
@@ -247,16 +197,16 @@ def read_rexs(path) -> dict:
         fa = comps[flank[gid]]["attrs"] if gid in flank else {}
         gear = {
             "name": gear_names[gid],
-            "position": _q(a, "u_coordinate_on_shaft", gw),
+            "position": q_text(a, "u_coordinate_on_shaft", gw),
             "teeth": abs(teeth),
-            "normal_module": _q(a, "normal_module", gw),
+            "normal_module": q_text(a, "normal_module", gw),
             "helix_angle": f"{abs(beta)} deg",
             "hand": "right" if beta >= 0 else "left",
-            "face_width": _q(a, "face_width", gw),
+            "face_width": q_text(a, "face_width", gw),
             "internal": teeth < 0,
         }
         if "normal_pressure_angle" in fa:
-            gear["pressure_angle"] = _q(fa, "normal_pressure_angle", gw)
+            gear["pressure_angle"] = q_text(fa, "normal_pressure_angle", gw)
         if "addendum_modification_coefficient" in fa:
             gear["profile_shift"] = _number(
                 fa["addendum_modification_coefficient"][0], f"{gw}: flank.addendum_modification_coefficient"
@@ -267,6 +217,8 @@ def read_rexs(path) -> dict:
         if r["type"] == "stage":
             roles = {role: i for i, role in r["refs"]}
             g1, g2 = roles.get("gear_1"), roles.get("gear_2")
+            if roles.get("stage") in taken:  # a planetary stage's mesh: the stage makes its own
+                continue
             if g1 not in gear_names or g2 not in gear_names:
                 raise InputError(
                     f"{src}: stage {roles.get('stage')}: gears {g1}, {g2} are not cylindrical gears on shafts"
@@ -277,59 +229,41 @@ def read_rexs(path) -> dict:
                     "gears": [gear_names[g1], gear_names[g2]],
                 }
             )
-    notes = []
     for r in m["relations"]:
         if r["type"] != "side":
             continue
         roles = {role: i for i, role in r["refs"]}
         bid, inner, outer = roles.get("assembly"), roles.get("inner_part"), roles.get("outer_part")
+        if bid in taken:  # a planet bearing, or a coupling of a planetary stage's carrier or ring
+            continue
         c = comps[bid]
-        a = c["attrs"]
         bw = f"{src}: bearing {bid} ({c['name']})"
         if inner not in by_id:
             raise InputError(f"{bw}: its inner part {inner} is not a shaft")
-        bearing = {
-            "name": c["name"] or f"bearing {bid}",
-            "position": _q(a, "u_coordinate_on_shaft_inner_side", bw),
-        }
-        absorption = a.get("axial_force_absorption", ("both_directions", ""))[0]
-        bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
-        if c["type"] == "rolling_bearing_with_catalog_geometry":
-            # REXS 1.0 files (FVA Workbench 5) name the catalogue bearing in a ``name`` attribute
-            key = "catalogue_designation" if "catalogue_designation" in a or "name" not in a else "name"
-            bearing["designation"] = str(_q(a, key, bw))
-            if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
-                bearing["orientation"] = AXIAL_DIRECTION[absorption]
-            kind = str(a.get("bearing_type", ("", ""))[0])
-            if absorption in AXIAL_DIRECTION and not any(k in kind for k in ONE_WAY_KINDS):
-                notes.append(
-                    f"{bearing['name']}: axial_force_absorption {absorption!r} read as the bearing's "
-                    f"orientation ({AXIAL_DIRECTION[absorption]}); a bearing whose contacts carry both "
-                    "ways (e.g. a deep groove ball bearing) still does: its seat's one-sided shoulder is "
-                    "not modelled"
-                )
-        elif c["type"] == "concept_bearing":
-            k_r = _q(a, "radial_stiffness", bw, False) or "1e12 N/m"
-            k_a = _q(a, "axial_stiffness", bw, False) or (
-                "0 N/m" if absorption == "no_direction" else "1e12 N/m"
-            )
-            k_t = _q(a, "bending_stiffness", bw, False) or "0 N*m/rad"
-            bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
-            if absorption in AXIAL_DIRECTION:  # one way only: a shoulder on one side (LinearBearing)
-                bearing["stiffness"]["axial_direction"] = AXIAL_DIRECTION[absorption]
-        else:
-            raise InputError(f"{bw}: bearing type {c['type']!r} is not supported")
+        position = q_text(c["attrs"], "u_coordinate_on_shaft_inner_side", bw)
+        bearing = bearing_table(c, c["name"] or f"bearing {bid}", bw, position, notes, rigid_ones)
         if outer in by_id:
             bearing["outer"] = by_id[outer]["name"]
-            bearing["outer_position"] = _q(a, "u_coordinate_on_shaft_outer_side", bw)
+            bearing["outer_position"] = q_text(c["attrs"], "u_coordinate_on_shaft_outer_side", bw)
         by_id[inner]["bearings"].append(bearing)
     held, inputs, loads_at = None, {}, {}
+    for sid in taken:
+        for p in parts.get(sid, []):
+            if comps[p]["type"] == "external_load":
+                raise InputError(
+                    f"{src}: external_load {p} ({comps[p]['name']}) sits on {comps[sid]['type']} {sid} "
+                    f"({comps[sid]['name']}), a part of the planetary stage bearingkit does not model as a "
+                    "shaft (a planet, pin or the held ring)"
+                )
     for sid in shafts:
         for p in parts.get(sid, []):
             if comps[p]["type"] != "external_load":
                 continue
             a = comps[p]["attrs"]
-            loads_at[p] = (sid, _q(a, "u_coordinate_on_shaft", f"{src}: external_load {p}", False) or "0 mm")
+            loads_at[p] = (
+                sid,
+                q_text(a, "u_coordinate_on_shaft", f"{src}: external_load {p}", False) or "0 mm",
+            )
             if a.get("defines_torque", (False, ""))[0] is True:
                 inputs[p] = sid
             elif a.get("transmits_torque", (False, ""))[0] is True:
@@ -353,7 +287,7 @@ def read_rexs(path) -> dict:
         cw = f"{src}: {name}"
         for p, sid in inputs.items():
             if p in given and "torque_around_u_axis" in given[p]:
-                case["torques"][by_id[sid]["name"]] = _q(given[p], "torque_around_u_axis", cw)
+                case["torques"][by_id[sid]["name"]] = q_text(given[p], "torque_around_u_axis", cw)
         for p, (sid, pos) in loads_at.items():
             a = given.get(p, {})
             vals = {
@@ -377,13 +311,15 @@ def read_rexs(path) -> dict:
                     ("torque_around_w_axis", "M_y"),
                 ):
                     if key in vals:
-                        f[field] = _q(vals, key, cw)
+                        f[field] = q_text(vals, key, cw)
                 case["forces"].append(f)
         if speed_shaft and "rotational_speed" in given.get(speed_shaft[0], {}):
-            case["speed"] = {by_id[speed_shaft[0]]["name"]: _q(given[speed_shaft[0]], "rotational_speed", cw)}
+            case["speed"] = {
+                by_id[speed_shaft[0]]["name"]: q_text(given[speed_shaft[0]], "rotational_speed", cw)
+            }
         for cid in casing:
             if "temperature_lubricant" in given.get(cid, {}):
-                case["temperature"] = _q(given[cid], "temperature_lubricant", cw)
+                case["temperature"] = q_text(given[cid], "temperature_lubricant", cw)
         ua = given.get(unit_id, {})
         for key in ("load_duration_fraction", "custom_load_duration_fraction"):
             if key in ua:
@@ -424,10 +360,27 @@ def read_rexs(path) -> dict:
         raise InputError(
             f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
         )
+    notes += rigid_note(rigid_ones)
     if notes:  # said on every face of the result (load_drivetrain_file takes them out of the data)
         out[REXS_NOTES] = [f"REXS import: {n}" for n in notes]
+    drivetrain = {"name": (unit or {}).get("name") or path.stem, "held": held}
+    ua = (unit or {"attrs": {}})["attrs"]
+    if ua.get("account_for_gravity", (False, ""))[0] is True:
+        g = tuple(
+            _number(ua.get(f"direction_vector_gravity_{k}", (0.0, ""))[0], f"{src}: gear_unit gravity {k}")
+            for k in "uvw"
+        )
+        if g not in GRAVITY_AXES:
+            raise InputError(
+                f"{src}: gear_unit direction_vector_gravity {g} (u, v, w) is not along an axis; bearingkit's "
+                "gravity acts along x (v), y (w) or z (u)"
+            )
+        drivetrain["gravity"] = GRAVITY_AXES[g]
+    if stage:  # the sun and carrier by their names in the drivetrain file
+        table = dict(stage["table"], sun=gear_names[stage["table"]["sun"]], carrier=names[stage["carrier"]])
+        out["planetary"] = [table]
     return {
-        "drivetrain": {"name": (unit or {}).get("name") or path.stem, "held": held},
+        "drivetrain": drivetrain,
         "shafts": out_shafts,
         "meshes": meshes,
         "load_cases": cases,

@@ -1,0 +1,210 @@
+"""REXS attributes read as drivetrain-file values: units, lengths, vectors and one bearing's table.
+
+Shared by the gearbox reader (:mod:`bearingkit.io.rexs.reader`) and the planetary-stage reader
+(:mod:`bearingkit.io.rexs.planetary`). Values keep their units as text (``"25.0 mm"``) so that the
+drivetrain file's own validation reads them; a unit bearingkit does not read is one InputError line.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearingkit.errors import InputError
+from bearingkit.io.rexs.parse import _number, _vector
+
+#: REXS unit names → the unit text bearingkit parses.
+UNITS = {
+    "mm": "mm",
+    "m": "m",
+    "mum": "um",
+    "deg": "deg",
+    "°": "deg",  # REXS 1.0 files (e.g. FVA Workbench 5.0) write the degree sign
+    "rad": "rad",
+    "N": "N",
+    "kN": "kN",
+    "N m": "N*m",
+    "N mm": "N*mm",
+    "1 / min": "rpm",
+    "C": "degC",
+    "N / mm^2": "N/mm^2",
+    "kg / dm^3": "kg/dm^3",
+    "kg / m^3": "kg/m^3",
+    "N / m": "N/m",
+    "N / mm": "N/mm",
+    "N / mum": "N/um",
+    "N mm / rad": "N*mm/rad",
+    "N m / rad": "N*m/rad",
+    "%": "%",
+    "": "",
+    "none": "",
+    "mm^2 / s": "mm^2/s",
+}
+#: Length units of positions and vectors → millimetres.
+TO_MM = {"mm": 1.0, "m": 1e3, "mum": 1e-3}
+
+#: Stiffness units → SI (N/m, N·m/rad).
+STIFFNESS_SI = {"N / m": 1.0, "N / mm": 1e3, "N / mum": 1e6, "N m / rad": 1.0, "N mm / rad": 1e-3}
+#: The stiffest concept bearing the import keeps [N/m]: bearingkit's "rigid" (the value given where a
+#: concept bearing leaves its stiffness out). FVA Workbench writes 1e20 N/m for rigid; the drivetrain
+#: Newton, whose residual is taken against the load scale, does not converge with it (the public planetary
+#: stage: residual 0.9 % of the load scale at 1e20 N/m, converged at 1e12–1e16 N/m). 1e12 N/m is 1000×
+#: a mesh's stiffness (about 1e9 N/m), so a rigid support stays rigid in every load share.
+RIGID_N_PER_M = 1e12
+#: The stiffest tilt the import keeps [N·m/rad]: the public two-stage FVA gearbox's concept bearings give
+#: 1e15 N·mm/rad (1e12 N·m/rad) and converge; stiffer is untried and read as this.
+RIGID_N_M_PER_RAD = 1e12
+
+#: REXS ``bearing_type`` words of the bearings whose contacts carry axial load one way only (their
+#: orientation is all ``axial_force_absorption`` needs to say).
+ONE_WAY_KINDS = ("tapered", "angular")
+
+#: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` takes an axial
+#: force on its inner part (the shaft) along +u (bearingkit's +z), as a ``+z`` tapered row does; the
+#: reading of the attribute's sign is bearingkit's [from memory of the REXS attribute list, not confirmed].
+AXIAL_DIRECTION = {"positive": "+z", "negative": "-z"}
+
+
+def q_text(attrs: dict, key: str, where: str, required: bool = True):
+    """An attribute as the drivetrain file writes it (``"25.0 mm"``), a fraction for %, None if absent."""
+    if key not in attrs:
+        if required:
+            raise InputError(f"{where}: attribute {key!r} missing")
+        return None
+    value, unit = attrs[key]
+    if unit not in UNITS:
+        raise InputError(
+            f"{where}.{key}: unit {unit!r} is not one bearingkit reads ({', '.join(k for k in UNITS if k)})"
+        )
+    if isinstance(value, list):
+        return value
+    if unit == "%":
+        return float(value) / 100.0
+    return f"{value} {UNITS[unit]}".strip() if UNITS[unit] else value
+
+
+def mm(attrs: dict, key: str, where: str, default: float | None = None) -> float:
+    """A length attribute (a position on a shaft, a diameter) in millimetres."""
+    if key not in attrs:
+        if default is None:
+            raise InputError(f"{where}: attribute {key!r} missing")
+        return default
+    value, unit = attrs[key]
+    if unit not in TO_MM:
+        raise InputError(f"{where}.{key}: unit {unit!r} is not a length unit (mm, m, mum)")
+    return _number(value, f"{where}.{key}") * TO_MM[unit]
+
+
+def number(attrs: dict, key: str, where: str) -> float:
+    """A number attribute (no unit read), or one InputError line: missing, or not a finite number."""
+    if key not in attrs:
+        raise InputError(f"{where}: attribute {key!r} missing")
+    return _number(attrs[key][0], f"{where}.{key}")
+
+
+def vector_mm(attrs: dict, key: str, where: str) -> np.ndarray | None:
+    """A position vector in millimetres, or None where the model leaves it out: absent, or written as the
+    boolean ``false`` (FVA Workbench writes ``support_vector`` so when the gear unit places the part)."""
+    if key not in attrs or isinstance(attrs[key][0], bool):
+        return None
+    value, unit = attrs[key]
+    return _vector(value, f"{where}.{key}") * TO_MM.get(unit, 1.0)
+
+
+def direction(attrs: dict, key: str, where: str, default) -> np.ndarray:
+    """An axis vector (``u_axis_vector``, ``w_axis_vector``); ``default`` where left out (module doc)."""
+    if key not in attrs or isinstance(attrs[key][0], bool):
+        return np.asarray(default, dtype=float)
+    return _vector(attrs[key][0], f"{where}.{key}")
+
+
+def bearing_table(comp: dict, name: str, where: str, position: str, notes: list, rigid_ones: list) -> dict:
+    """The ``[[shafts.bearings]]`` table of a REXS bearing component (``position``: its place as text).
+
+    ``rolling_bearing_with_catalog_geometry``: the designation (bearingkit's catalogue estimate);
+    ``concept_bearing``: a linear bearing of its ``radial_stiffness``, ``axial_stiffness``,
+    ``bending_stiffness`` (rigid, 10¹² N/m, where left out); ``axial_force_absorption``
+    ``no_direction``: floating, ``positive``/``negative``: one way (module constants), else locating.
+    A concept bearing stiffer than :data:`RIGID_N_PER_M` (:data:`RIGID_N_M_PER_RAD` in tilt) gets that
+    value; its name and the values it gave go to ``rigid_ones`` (:func:`rigid_note` says them once).
+    """
+    a = comp["attrs"]
+    bearing = {"name": name, "position": position}
+    absorption = a.get("axial_force_absorption", ("both_directions", ""))[0]
+    bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
+    if comp["type"] == "rolling_bearing_with_catalog_geometry":
+        # REXS 1.0 files (FVA Workbench 5) name the catalogue bearing in a ``name`` attribute
+        key = "catalogue_designation" if "catalogue_designation" in a or "name" not in a else "name"
+        bearing["designation"] = str(q_text(a, key, where))
+        if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
+            bearing["orientation"] = AXIAL_DIRECTION[absorption]
+        kind = str(a.get("bearing_type", ("", ""))[0])
+        if absorption in AXIAL_DIRECTION and not any(k in kind for k in ONE_WAY_KINDS):
+            notes.append(
+                f"{bearing['name']}: axial_force_absorption {absorption!r} read as the bearing's "
+                f"orientation ({AXIAL_DIRECTION[absorption]}); a bearing whose contacts carry both "
+                "ways (e.g. a deep groove ball bearing) still does: its seat's one-sided shoulder is "
+                "not modelled"
+            )
+    elif comp["type"] == "concept_bearing":
+        capped = []
+
+        def stiffness(key, default, cap, unit):
+            if key not in a:
+                return default
+            value, given = a[key]
+            k = _number(value, f"{where}.{key}") * STIFFNESS_SI.get(given, np.nan)
+            if k > cap:  # FVA's "rigid" (1e20): bearingkit's rigid, which its Newton converges with
+                capped.append(f"{key} {k / STIFFNESS_SI[given]:g} {given}")
+                return f"{cap} {unit}"
+            return q_text(a, key, where)
+
+        rigid = f"{RIGID_N_PER_M} N/m"
+        k_r = stiffness("radial_stiffness", rigid, RIGID_N_PER_M, "N/m")
+        k_a = stiffness(
+            "axial_stiffness", "0 N/m" if absorption == "no_direction" else rigid, RIGID_N_PER_M, "N/m"
+        )
+        k_t = stiffness("bending_stiffness", "0 N*m/rad", RIGID_N_M_PER_RAD, "N*m/rad")
+        if capped:
+            rigid_ones.append((name, capped))
+        bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
+        if absorption in AXIAL_DIRECTION:  # one way only: a shoulder on one side (LinearBearing)
+            bearing["stiffness"]["axial_direction"] = AXIAL_DIRECTION[absorption]
+    else:
+        raise InputError(f"{where}: bearing type {comp['type']!r} is not supported")
+    return bearing
+
+
+def rigid_note(rigid_ones: list) -> list:
+    """One note naming the concept bearings read as rigid (:func:`bearing_table`), or none."""
+    names = list(dict.fromkeys(name for name, _ in rigid_ones))
+    if not names:
+        return []
+    given = sorted({v for _, values in rigid_ones for v in values})
+    return [
+        f"concept bearings {', '.join(names)}: {'; '.join(given)} read as rigid ({RIGID_N_PER_M:g} N/m, "
+        f"{RIGID_N_M_PER_RAD:g} N·m/rad): stiffer supports stop the drivetrain Newton short of its tolerance"
+    ]
+
+
+def section_tables(comps, parts, body, shift: float, where: str) -> list:
+    """The ``shaft_section`` parts of a body as section tables in mm, u shifted by ``shift`` [mm]; a conical
+    section is one InputError line."""
+    out = []
+    for p in parts.get(body, []):
+        if comps[p]["type"] != "shaft_section":
+            continue
+        a, sw = comps[p]["attrs"], f"{where}: section {p}"
+        for key in ("outer_diameter", "inner_diameter"):
+            if key + "_begin" in a and a[key + "_begin"][0] != a.get(key + "_end", a[key + "_begin"])[0]:
+                raise InputError(
+                    f"{sw}: a conical section ({key} changes) is not supported; split it into steps"
+                )
+        out.append(
+            {
+                "start": f"{mm(a, 'u_coordinate_on_shaft', sw) - shift} mm",
+                "length": f"{mm(a, 'length', sw)} mm",
+                "outer_diameter": f"{mm(a, 'outer_diameter_begin', sw)} mm",
+                "inner_diameter": f"{mm(a, 'inner_diameter_begin', sw, 0.0)} mm",
+            }
+        )
+    return sorted(out, key=lambda s: float(s["start"].split()[0]))
