@@ -117,13 +117,23 @@ def direction(attrs: dict, key: str, where: str, default) -> np.ndarray:
     return _vector(attrs[key][0], f"{where}.{key}")
 
 
-def bearing_table(comp: dict, name: str, where: str, position: str, notes: list, rigid_ones: list) -> dict:
+def bearing_table(
+    comp: dict,
+    name: str,
+    where: str,
+    position: str,
+    notes: list,
+    rigid_ones: list,
+    tables: dict | None = None,
+) -> dict:
     """The ``[[shafts.bearings]]`` table of a REXS bearing component (``position``: its place as text).
 
     ``rolling_bearing_with_catalog_geometry``: the designation (bearingkit's catalogue estimate);
     ``concept_bearing``: a linear bearing of its ``radial_stiffness``, ``axial_stiffness``,
     ``bending_stiffness`` (rigid, 10¹² N/m, where left out); ``axial_force_absorption``
     ``no_direction``: floating, ``positive``/``negative``: one way (module constants), else locating.
+    ``rolling_bearing_with_detailed_geometry``: ``tables`` (its bearing file's tables, from
+    :func:`bearingkit.io.rexs.detailed.detailed_bearing`) inline, else its ``catalogue_designation``.
     A concept bearing stiffer than :data:`RIGID_N_PER_M` (:data:`RIGID_N_M_PER_RAD` in tilt) gets that
     value; its name and the values it gave go to ``rigid_ones`` (:func:`rigid_note` says them once).
     """
@@ -144,6 +154,23 @@ def bearing_table(comp: dict, name: str, where: str, position: str, notes: list,
                 f"orientation ({AXIAL_DIRECTION[absorption]}); a bearing whose contacts carry both "
                 "ways (e.g. a deep groove ball bearing) still does: its seat's one-sided shoulder is "
                 "not modelled"
+            )
+    elif comp["type"] == "rolling_bearing_with_detailed_geometry":
+        if tables is not None:
+            bearing["bearing"] = tables
+        elif "catalogue_designation" in a:
+            bearing["designation"] = str(q_text(a, "catalogue_designation", where))
+            notes.append(
+                f"{name}: a bearing with detailed geometry of a kind or row count not read from geometry "
+                f"({a.get('bearing_type', ('?', ''))[0]}): read by its designation, bearingkit's catalogue "
+                "estimate"
+            )
+        else:
+            raise InputError(
+                f"{where}: a bearing with detailed geometry of kind {a.get('bearing_type', ('?', ''))[0]!r} "
+                "and no catalogue_designation: bearingkit reads one-row deep groove and angular contact "
+                "ball, cylindrical and needle roller bearings from geometry; give its designation or write "
+                "a bearing file"
             )
     elif comp["type"] == "concept_bearing":
         capped = []

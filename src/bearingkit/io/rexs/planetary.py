@@ -32,8 +32,9 @@ from __future__ import annotations
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number
-from bearingkit.io.rexs.parts import bearing_table, mm, number, q_text, section_tables, vector_mm
+from bearingkit.io.rexs.parts import mm, number, q_text, section_tables, vector_mm
 
 #: Component types that are bodies with their own u coordinate (placed by the relations).
 BODIES = ("shaft", "side_plate")
@@ -356,9 +357,7 @@ def read_stage(m, src: str, notes: list, rigid_ones: list) -> dict | None:
                     "(from the planet's mid-plane)"
                 )
             name = comps[a]["name"].split(" @ ")[0] or f"bearing {a}"  # FVA names planet copies "… @ angle"
-            rows.append(
-                (on_planet, a, bearing_table(comps[a], name, bw, f"{on_planet} mm", notes, rigid_ones))
-            )
+            rows.append((on_planet, a, rexs_bearing(m, a, name, bw, f"{on_planet} mm", notes, rigid_ones)))
             taken |= {a, pin}
         if not rows:
             raise InputError(f"{pw}: planet shaft {p} ({comps[p]['name']}) turns on no bearing")

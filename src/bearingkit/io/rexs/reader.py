@@ -14,10 +14,11 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
   ``material`` (reference relation): ``elastic_modulus``, ``poisson_ratio``, ``density``.
 - bearings (``side`` relation: ``inner_part`` a shaft, ``outer_part`` a shaft or the ``gear_casing``):
   ``rolling_bearing_with_catalog_geometry`` (``catalogue_designation``: bearingkit's catalogue
-  estimate, docs/catalogue.md) and ``concept_bearing`` (``radial_stiffness``, ``axial_stiffness``,
-  ``bending_stiffness``: a linear bearing, at most bearingkit's rigid, :mod:`~bearingkit.io.rexs.parts`);
-  ``u_coordinate_on_shaft_inner_side``/``_outer_side``; ``axial_force_absorption`` (``no_direction``:
-  floating, else locating).
+  estimate, docs/catalogue.md), ``rolling_bearing_with_detailed_geometry`` (its rows and elements as
+  an inline bearing file, :mod:`bearingkit.io.rexs.detailed`) and ``concept_bearing``
+  (``radial_stiffness``, ``axial_stiffness``, ``bending_stiffness``: a linear bearing, at most
+  bearingkit's rigid, :mod:`~bearingkit.io.rexs.parts`); ``u_coordinate_on_shaft_inner_side``/
+  ``_outer_side``; ``axial_force_absorption`` (``no_direction``: floating, else locating).
 - ``cylindrical_gear`` on a shaft: ``u_coordinate_on_shaft``, ``number_of_teeth`` (negative: internal),
   ``normal_module``, ``helix_angle_reference_diameter`` (signed: positive right hand [from memory]),
   ``face_width``; its flank (``flank`` relation, the left one): ``normal_pressure_angle``,
@@ -39,7 +40,7 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
 
 Axes: u (the shafts' axis) is bearingkit's z; v = w × u and w of the gear unit are x and y. A shaft joined
 to nothing (no bearing, coupling, gear or load) is left out, with a note.
-Refused: non-parallel shafts, conical sections, bearings with detailed geometry, gear types other than
+Refused: non-parallel shafts, conical sections, gear types other than
 cylindrical (bevel, worm), more than one input speed, a planetary stage bearingkit's cannot stand for.
 """
 
@@ -50,14 +51,13 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number, load_cases, parse
-from bearingkit.io.rexs.parts import bearing_table, direction, q_text, rigid_note, section_tables, vector_mm
+from bearingkit.io.rexs.parts import direction, q_text, rigid_note, section_tables, vector_mm
 from bearingkit.io.rexs.planetary import read_stage
 
 SUPPORTED_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6")
 _REFUSED_TYPES = {
-    "rolling_bearing_with_detailed_geometry": "a bearing with detailed geometry (give its designation, or "
-    "write a bearing file and a drivetrain TOML)",
     "bevel_gear": "a bevel gear (only cylindrical gears are modelled)",
     "worm_gear": "a worm gear (only cylindrical gears are modelled)",
     "worm_wheel": "a worm wheel (only cylindrical gears are modelled)",
@@ -241,7 +241,7 @@ def read_rexs(path) -> dict:
         if inner not in by_id:
             raise InputError(f"{bw}: its inner part {inner} is not a shaft")
         position = q_text(c["attrs"], "u_coordinate_on_shaft_inner_side", bw)
-        bearing = bearing_table(c, c["name"] or f"bearing {bid}", bw, position, notes, rigid_ones)
+        bearing = rexs_bearing(m, bid, c["name"] or f"bearing {bid}", bw, position, notes, rigid_ones)
         if outer in by_id:
             bearing["outer"] = by_id[outer]["name"]
             bearing["outer_position"] = q_text(c["attrs"], "u_coordinate_on_shaft_outer_side", bw)

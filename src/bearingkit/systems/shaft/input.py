@@ -97,6 +97,11 @@ class BearingSpec(schema.Strict):
     name: str
     file: str | None = Field(None, description="Bearing input file (TOML), relative to the shaft file.")
     designation: str | None = Field(None, description="A standard bearing (docs/catalogue.md), e.g. '6209'.")
+    bearing: dict | None = Field(
+        None,
+        description="A bearing file's tables inline ({bearing = {...}, geometry = {...}}, "
+        "docs/input-format.md).",
+    )
     stiffness: LinearStiffnessSpec | None = None
     position: schema.Length
     orientation: Literal["+z", "-z"] = "+z"
@@ -347,12 +352,20 @@ def _sections(specs: list[SectionSpec]) -> tuple:
 
 def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingSeat:
     where = f"shaft.bearings[{i}] ({b.name})"
-    if sum(v is not None for v in (b.file, b.designation, b.stiffness)) != 1:
+    if sum(v is not None for v in (b.file, b.designation, b.bearing, b.stiffness)) != 1:
         raise InputError(
-            f"{where}: give exactly one of file (a bearing input file), designation (e.g. '6209') "
-            "and stiffness"
+            f"{where}: give exactly one of file (a bearing input file), designation (e.g. '6209'), "
+            "bearing (a bearing file's tables inline) and stiffness"
         )
-    if b.designation is not None:
+    if b.bearing is not None:
+        from bearingkit.io.loader import from_dict
+
+        try:
+            source = from_dict(b.bearing, source=f"{where}.bearing")
+        except InputError as exc:
+            raise InputError(f"{where}.bearing: {exc}") from None
+        bearing = source.model
+    elif b.designation is not None:
         from bearingkit.io.loader import from_dict
 
         try:
