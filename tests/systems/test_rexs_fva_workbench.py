@@ -72,3 +72,21 @@ def test_the_gear_forces_are_fva_workbench_s_at_its_gear_torques(solved):
         x, y, z = res.mesh_vector(mesh, "a")[0]  # on gear a ([27], [44]); bearingkit x, y, z = v, w, u
         ours = np.array([z, x, y]) * torque / lossless[mesh]
         assert np.linalg.norm(ours - force) < 1e-7 * np.linalg.norm(force)
+
+
+def test_the_one_way_bearings_push_as_fva_workbench_s(solved):
+    """REXS axial_force_absorption: FVA Workbench's solution pushes the countershaft back along −u at the
+    'positive' 33016 [60] (−3669.7 N on the shaft) and along +u at the 'negative' [35] (+2121.1 N: the
+    induced axial force of its tapered row). The Bearinx copy's concept bearings have no induced force:
+    the gear forces (+1511 N along u on the shaft, net) press it against [60] alone, and [35], which can
+    only push along +u, carries nothing where a both-way spring would pull."""
+    res = solved.result
+    names = {b.name.split("(")[-1].rstrip(")"): b.name for b in res.drivetrain.bearings}
+    f35 = res.reaction(names["Rolling bearing [35]"])[0, 2]
+    f60 = res.reaction(names["Rolling bearing [60]"])[0, 2]
+    net = sum(
+        res.mesh_vector(m, side)[0, 2]
+        for m, side in (("Cylindrical stage [24]", "b"), ("Cylindrical stage [41]", "a"))
+    )
+    assert f35 == 0.0
+    assert f60 == pytest.approx(-net, rel=1e-9) and f60 < 0  # as FVA Workbench's −3669.7 N: along −u

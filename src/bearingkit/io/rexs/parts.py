@@ -58,10 +58,15 @@ RIGID_N_M_PER_RAD = 1e12
 #: orientation is all ``axial_force_absorption`` needs to say).
 ONE_WAY_KINDS = ("tapered", "angular")
 
-#: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` takes an axial
-#: force on its inner part (the shaft) along +u (bearingkit's +z), as a ``+z`` tapered row does; the
-#: reading of the attribute's sign is bearingkit's [from memory of the REXS attribute list, not confirmed].
+#: ``axial_force_absorption`` of a one-direction bearing → its orientation: ``positive`` supports an axial
+#: force on its inner part (the shaft) along +u (bearingkit's +z) and so pushes the shaft back along −u, as
+#: a ``+z`` tapered row does. Confirmed by FVA Workbench 8.1's solution of the FVA two-stage gearbox
+#: (tests/systems/test_rexs_fva_workbench.py): its four tapered bearings labelled so push the shafts
+#: that way (the ``positive`` 33012 and 33016 along −u, the ``negative`` 33014 and 33016 along +u).
 AXIAL_DIRECTION = {"positive": "+z", "negative": "-z"}
+#: The same for a concept bearing's one-way spring, named by the way it pushes the shaft
+#: (``stiffness.axial_direction``): ``positive`` pushes along −u.
+SPRING_PUSH = {"positive": "-z", "negative": "+z"}
 
 
 def q_text(attrs: dict, key: str, where: str, required: bool = True):
@@ -194,8 +199,8 @@ def bearing_table(
         if capped:
             rigid_ones.append((name, capped))
         bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
-        if absorption in AXIAL_DIRECTION:  # one way only: a shoulder on one side (LinearBearing)
-            bearing["stiffness"]["axial_direction"] = AXIAL_DIRECTION[absorption]
+        if absorption in SPRING_PUSH:  # one way only: a shoulder on one side (LinearBearing)
+            bearing["stiffness"]["axial_direction"] = SPRING_PUSH[absorption]
     else:
         raise InputError(f"{where}: bearing type {comp['type']!r} is not supported")
     return bearing

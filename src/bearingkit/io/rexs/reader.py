@@ -20,7 +20,8 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
   bearingkit's rigid, :mod:`~bearingkit.io.rexs.parts`); ``u_coordinate_on_shaft_inner_side``/
   ``_outer_side``; ``axial_force_absorption`` (``no_direction``: floating, else locating).
 - ``cylindrical_gear`` on a shaft: ``u_coordinate_on_shaft``, ``number_of_teeth`` (negative: internal),
-  ``normal_module``, ``helix_angle_reference_diameter`` (signed: positive right hand [from memory]),
+  ``normal_module``, ``helix_angle_reference_diameter`` (signed: positive right hand; the axial
+  gear forces this gives are FVA Workbench's, tests/systems/test_rexs_fva_workbench.py),
   ``face_width``; its flank (``flank`` relation, the left one): ``normal_pressure_angle``,
   ``addendum_modification_coefficient``; ``cylindrical_stage`` (``stage`` relation ``gear_1``,
   ``gear_2``) makes a mesh.
