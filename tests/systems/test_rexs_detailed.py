@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 
+from bearingkit.catalogue import parse, tables
 from bearingkit.catalogue.resolve import resolve
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.reader import REXS_NOTES, read_rexs
@@ -40,7 +41,7 @@ def _relation(
     ET.SubElement(rel, "ref", {"hint": hints[1], "id": str(part), "role": "part"})
 
 
-def _detailed(tmp_path, kinds=None, drop=None) -> Path:
+def _detailed(tmp_path, kinds=None, drop=None, ratings=False) -> Path:
     """The two-stage gearbox with input_A (6208) and input_B (NU 208) as detailed-geometry bearings."""
     tree = ET.parse(GEARBOX)
     root = tree.getroot()
@@ -63,7 +64,11 @@ def _detailed(tmp_path, kinds=None, drop=None) -> Path:
         _attribute(comp, "outer_diameter", "mm", g["outer_diameter"] * 1e3)
         _attribute(comp, "number_of_bearing_rows", "", 1)
         _attribute(comp, "radial_bearing_clearance", "mum", g["clearance_radial"] * 1e6)
-        _attribute(comp, "radial_dynamic_load_rating", "kN", 32.5)  # a maker's value: noted, not used
+        if ratings:  # the catalogue's own C and C0 of the designation, as a maker's file would give them
+            des = parse(designation)
+            entry = tables.entries(des.family)[des.base]
+            _attribute(comp, "radial_dynamic_load_rating", "kN", entry.C / 1e3)
+            _attribute(comp, "radial_static_load_rating", "kN", entry.C0 / 1e3)
         row = ET.SubElement(
             comps, "component", {"id": str(next_id), "name": "row", "type": "rolling_bearing_row"}
         )
@@ -98,7 +103,7 @@ def _detailed(tmp_path, kinds=None, drop=None) -> Path:
 
 def test_bearings_given_by_rows_and_elements_read_as_bearing_files(tmp_path):
     data = read_rexs(_detailed(tmp_path))
-    notes = data.pop(REXS_NOTES)
+    notes = data.pop(REXS_NOTES, [])
     bearings = {b["name"]: b for s in data["shafts"] for b in s["bearings"]}
     ball, roller = bearings["input_A"]["bearing"], bearings["input_B"]["bearing"]
     assert (ball["bearing"]["type"], roller["bearing"]["type"]) == ("deep_groove_ball", "cylindrical_roller")
@@ -106,7 +111,7 @@ def test_bearings_given_by_rows_and_elements_read_as_bearing_files(tmp_path):
         0.53, rel=1e-12
     )
     assert roller["geometry"]["profile"] == {"name": "iso16281"}  # no crowning radius in the file
-    assert sum("ratings (C = 32.5 kN) are not used" in n for n in notes) == 2
+    assert not any("file's ratings" in n for n in notes)  # none given: the geometry is rated
 
 
 def test_the_detailed_gearbox_solves_to_the_designation_gearbox(tmp_path):
@@ -114,8 +119,6 @@ def test_the_detailed_gearbox_solves_to_the_designation_gearbox(tmp_path):
     the catalogue's published C (docs/catalogue.md), a bearing given by its geometry with the ISO 281 C
     of that geometry; so L(designation)/L(geometry) = (C_cat/C_geometry)^p, p = 10/3 for the NU 208's
     ISO 281 life (P = F_r, radial only) and 4 and 3 for the ISO/TS 16281 lives of roller and ball rows."""
-    from bearingkit.catalogue import parse, tables
-
     by_name = DrivetrainAnalysis(load_drivetrain_file(GEARBOX)).to_dict()
     by_geometry = DrivetrainAnalysis(load_drivetrain_file(_detailed(tmp_path))).to_dict()
     ratio = {}
@@ -175,3 +178,19 @@ def test_a_row_without_its_groove_radius_is_refused_in_one_line(tmp_path):
         read_rexs(_detailed(tmp_path, drop="raceway_radius_of_outer_ring"))
     line = str(err.value)
     assert "\n" not in line and "raceway_radius_of_outer_ring" in line and "input_A" in line
+
+
+def test_with_the_catalogue_s_ratings_in_the_file_the_lives_are_the_designation_s(tmp_path):
+    """A detailed bearing whose file gives radial_dynamic/static_load_rating is rated with them, as a
+    designation is with its catalogue's: with the catalogue's own C and C0 written in, the geometry model's
+    lives equal the designation model's (1e-9), and one note names the ratings used."""
+    path = _detailed(tmp_path, ratings=True)
+    notes = read_rexs(path)[REXS_NOTES]
+    assert sum("the lives use the file's ratings" in n for n in notes) == 1
+    assert any("input_B (C 55.5 kN, C0 55.5 kN)" in n for n in notes)
+    by_name = DrivetrainAnalysis(load_drivetrain_file(GEARBOX)).to_dict()
+    by_geometry = DrivetrainAnalysis(load_drivetrain_file(path)).to_dict()
+    for a, b in zip(by_name["cases"], by_geometry["cases"], strict=True):
+        for x, y in zip(a["bearings"], b["bearings"], strict=True):
+            for key in ("L10h_h", "L10h_iso281_h"):
+                assert y["summary"][key] == pytest.approx(x["summary"][key], rel=1e-9)

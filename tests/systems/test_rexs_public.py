@@ -156,7 +156,10 @@ def test_the_sew_gearbox_solves_though_its_input_shaft_winds_up_far():
     assert power["loss_W"] is None and power["output_W"] is None
     assert power["output_lossless_W"] == pytest.approx(power["input_W"], rel=1e-9)
     # the import's notes reach the JSON (the CLI and report print the same notes list)
-    assert sum(n.startswith("REXS import: ") for n in data["notes"]) == 5  # 4 one-way deep groove, 1 spectrum
+    # 4 one-way deep groove, 1 spectrum, 1 the FAG ratings the lives use
+    assert sum(n.startswith("REXS import: ") for n in data["notes"]) == 6
+    rated = [n for n in data["notes"] if "the lives use the file's ratings" in n]
+    assert len(rated) == 1 and "Lager NUP204E [50] (C 32.5 kN, C0 24.7 kN)" in rated[0]
 
 
 def test_the_fva_import_has_nothing_to_note(fva):

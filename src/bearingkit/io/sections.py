@@ -52,6 +52,15 @@ class BearingHeader(Strict):
     C: PositiveForce | None = Field(
         None, description="Catalogue C the estimated element size is scaled to (with designation)."
     )
+    rating_C: PositiveForce | None = Field(
+        None,
+        description="A maker's basic dynamic load rating C the lives use, as a catalogue's (ISO 281 with it; "
+        "ISO/TS 16281's raceway ratings scaled to it); the geometry is kept (with a designation or a "
+        "geometry).",
+    )
+    rating_C0: PositiveForce | None = Field(
+        None, description="A maker's basic static load rating C0 (ISO 281's X, Y and ISO 76's s0 with it)."
+    )
     clearance_position: Literal["min", "mean", "max"] | Dimensionless = Field(
         "mean",
         description="Where in the clearance class of the designation the clearance is taken: min, mean, "
@@ -119,6 +128,13 @@ class BearingHeader(Strict):
             raise InputError("type: missing required field (or give designation = '6205-2RS C3')")
         if self.C is not None and self.designation is None:
             raise InputError("C: calibrates an estimated geometry; give it together with designation")
+        if self.C is not None and self.rating_C is not None:
+            raise InputError(
+                "rating_C: C scales the estimated geometry to a rating, rating_C rates the geometry as it "
+                "is; give one of them"
+            )
+        if self.rating_C0 is not None and self.rating_C is None:
+            raise InputError("rating_C0: give it with rating_C (a maker's C and C0)")
         if self.preload is not None and self.designation is None:
             raise InputError(
                 "preload: sets the preload of a pair named by designation ('7014 C DB'); for a bearing "

@@ -294,11 +294,16 @@ class Analysis(AnalysisOutput):
         return truncation_of(self)
 
     def _catalogue_rating(self):
-        """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C),
-        None for a bearing given by its geometry or a catalogue row without ratings."""
+        """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C), or a
+        maker's ``rating_C``/``rating_C0`` given with a designation or a geometry; None for a bearing given
+        by its geometry alone or a catalogue row without ratings."""
         spec = getattr(self.input, "spec", None)
         header = getattr(spec, "bearing", None)
         designation = getattr(header, "designation", None)
+        maker = getattr(header, "rating_C", None)
+        if maker is not None and not designation:  # a geometry with a maker's ratings
+            c0 = getattr(header, "rating_C0", None)
+            return float(maker), None if c0 is None else float(c0)
         if not designation:
             return None
         from bearingkit.catalogue import parse, tables
@@ -306,7 +311,11 @@ class Analysis(AnalysisOutput):
         des = parse(designation)
         entry = tables.entries(des.family).get(des.base)
         given = getattr(header, "C", None)
-        if given is not None:
+        if maker is not None:  # a maker's ratings in place of the catalogue's (one bearing, radial)
+            given = maker
+            c0 = getattr(header, "rating_C0", None)
+            c, c0 = float(maker), float(c0) if c0 is not None else (None if entry is None else entry.C0)
+        elif given is not None:
             c, c0 = float(given), None if entry is None else entry.C0
         elif entry is None or entry.C is None:
             return None

@@ -233,6 +233,9 @@ def bearing_facts(bearing, lubricant=None) -> BearingFacts:
         c, c0 = entry.C, entry.C0
     if getattr(header, "C", None) is not None:
         c = float(header.C)
+    if getattr(header, "rating_C", None) is not None:  # a maker's ratings (io.sections.BearingHeader)
+        c = float(header.rating_C)
+        c0 = float(header.rating_C0) if getattr(header, "rating_C0", None) is not None else c0
     return BearingFacts(
         engineering_type=etype,
         single=single,

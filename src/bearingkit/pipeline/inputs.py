@@ -122,6 +122,9 @@ class _ModelHeader:
     source: str | None = None
     designation: str | None = None
     name: str = ""
+    C: float | None = None  # the bearing file's [bearing] ratings, where the model came from one
+    rating_C: float | None = None
+    rating_C0: float | None = None
 
 
 @dataclass(frozen=True)

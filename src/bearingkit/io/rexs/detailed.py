@@ -30,15 +30,16 @@ The radial clearance is ``radial_bearing_clearance`` (before mounting), else the
 ``minimum_``/``maximum_radial_bearing_clearance``, else zero (said in a note); the mounted and operating
 clearances are results of the writing tool and are not read. One row only (a bearing of several rows,
 or another kind, is read by its ``catalogue_designation`` where bearingkit knows it, else refused in one
-line). The file's load ratings are not used: bearingkit rates the geometry (ISO 281, ISO 76), as for
-every bearing file; a note gives both.
+line). The file's radial ratings (``radial_dynamic_load_rating``, ``radial_static_load_rating``; REXS 1.0
+``dynamic_capacity``, ``static_capacity``) are the lives' C and C0 (``[bearing] rating_C``, ``rating_C0``),
+as a designation's catalogue ratings are; without them bearingkit rates the geometry (ISO 281, ISO 76).
 """
 
 from __future__ import annotations
 
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.parse import _number
-from bearingkit.io.rexs.parts import bearing_table, mm, number
+from bearingkit.io.rexs.parts import bearing_table, file_ratings, mm, number
 
 #: REXS ``bearing_type`` → (bearingkit ``type``, whether its rows are rollers).
 KINDS = {
@@ -52,8 +53,6 @@ OLD_NAMES = {
     "raceway_radius_of_inner_ring": "running_path_radius_of_inner_ring",
     "raceway_radius_of_outer_ring": "running_path_radius_of_outer_ring",
     "roller_crowning_radius": "roller_shell_radius",
-    "radial_dynamic_load_rating": "dynamic_capacity",
-    "radial_static_load_rating": "static_capacity",
 }
 
 
@@ -85,7 +84,7 @@ def _parts(m, owner, kind) -> list:
     return out
 
 
-def detailed_bearing(m, bid, where: str, notes: list) -> dict | None:
+def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict | None:
     """A bearing file's tables ({"bearing": …, "geometry": …}) for the detailed bearing ``bid``, or None
     where its kind or rows are not read from geometry (the caller then tries its designation)."""
     comp = m["components"][bid]
@@ -138,23 +137,12 @@ def detailed_bearing(m, bid, where: str, notes: list) -> dict | None:
                     f"{comp['name']}: its radial clearance ({clearance:g} µm) is not read: an angular "
                     "contact row's clearance is along its contact line (taken as zero)"
                 )
-    given = [
-        f"{label} = {number(a, key, where):g} kN"
-        for label, key in (
-            ("C", _get(a, "radial_dynamic_load_rating")),
-            ("C0", _get(a, "radial_static_load_rating")),
-        )
-        if key is not None
-    ]
-    if given:
-        notes.append(
-            f"{comp['name']}: read from its detailed geometry; the file's ratings ({', '.join(given)}) "
-            "are not used: bearingkit rates the geometry (ISO 281, ISO 76)"
-        )
-    return {
-        "bearing": {"type": btype, "name": comp["name"], "source": f"REXS detailed geometry ({where})"},
-        "geometry": geometry,
-    }
+    header = {"type": btype, "name": comp["name"], "source": f"REXS detailed geometry ({where})"}
+    ratings = file_ratings(a, where)
+    if ratings is not None:  # the maker's ratings the file gives: the lives use them
+        header["rating_C"], header["rating_C0"] = f"{ratings[0]} kN", f"{ratings[1]} kN"
+        collected.append(("rated", comp["name"], ratings))
+    return {"bearing": header, "geometry": geometry}
 
 
 def _clearance(a: dict, where: str, notes: list, name: str) -> float:
@@ -178,11 +166,11 @@ def _micro(a: dict, key: str, where: str) -> float:
     return _number(value, f"{where}.{key}") * scale
 
 
-def rexs_bearing(m, bid, name: str, where: str, position: str, notes: list, rigid_ones: list) -> dict:
+def rexs_bearing(m, bid, name: str, where: str, position: str, notes: list, collected: list) -> dict:
     """The drivetrain file's table of the REXS bearing ``bid`` (:func:`bearing_table`), a bearing with
     detailed geometry read from its rows where it can be (:func:`detailed_bearing`)."""
     comp = m["components"][bid]
     tables = None
     if comp["type"] == "rolling_bearing_with_detailed_geometry":
-        tables = detailed_bearing(m, bid, where, notes)
-    return bearing_table(comp, name, where, position, notes, rigid_ones, tables)
+        tables = detailed_bearing(m, bid, where, notes, collected)
+    return bearing_table(comp, name, where, position, notes, collected, tables)

@@ -122,13 +122,37 @@ def direction(attrs: dict, key: str, where: str, default) -> np.ndarray:
     return _vector(attrs[key][0], f"{where}.{key}")
 
 
+#: REXS attribute names of a bearing's radial ratings (C, C0) [kN]: REXS 1.1+ and REXS 1.0.
+RATING_KEYS = (
+    ("radial_dynamic_load_rating", "radial_static_load_rating"),
+    ("dynamic_capacity", "static_capacity"),
+)
+
+
+def file_ratings(attrs: dict, where: str) -> tuple[float, float] | None:
+    """The bearing's radial (C, C0) [kN] as the file gives them (both, positive), else None."""
+    for keys in RATING_KEYS:
+        if all(k in attrs for k in keys):
+            values = []
+            for k in keys:
+                value, unit = attrs[k]
+                scale = {"kN": 1.0, "N": 1e-3}.get(unit)
+                if scale is None:
+                    raise InputError(f"{where}.{k}: unit {unit!r} is not a force unit (kN, N)")
+                values.append(_number(value, f"{where}.{k}") * scale)
+            if min(values) <= 0.0:
+                raise InputError(f"{where}.{keys[0]}: ratings {values} kN must be positive")
+            return values[0], values[1]
+    return None
+
+
 def bearing_table(
     comp: dict,
     name: str,
     where: str,
     position: str,
     notes: list,
-    rigid_ones: list,
+    collected: list,
     tables: dict | None = None,
 ) -> dict:
     """The ``[[shafts.bearings]]`` table of a REXS bearing component (``position``: its place as text).
@@ -137,10 +161,12 @@ def bearing_table(
     ``concept_bearing``: a linear bearing of its ``radial_stiffness``, ``axial_stiffness``,
     ``bending_stiffness`` (rigid, 10¹² N/m, where left out); ``axial_force_absorption``
     ``no_direction``: floating, ``positive``/``negative``: one way (module constants), else locating.
+    A catalogue bearing that gives its radial ratings (:func:`file_ratings`) is rated with them
+    (``ratings``, the lives; the geometry stays the catalogue's estimate).
     ``rolling_bearing_with_detailed_geometry``: ``tables`` (its bearing file's tables, from
     :func:`bearingkit.io.rexs.detailed.detailed_bearing`) inline, else its ``catalogue_designation``.
     A concept bearing stiffer than :data:`RIGID_N_PER_M` (:data:`RIGID_N_M_PER_RAD` in tilt) gets that
-    value; its name and the values it gave go to ``rigid_ones`` (:func:`rigid_note` says them once).
+    value; its name and the values it gave go to ``collected`` (:func:`collected_notes` says them once).
     """
     a = comp["attrs"]
     bearing = {"name": name, "position": position}
@@ -150,6 +176,10 @@ def bearing_table(
         # REXS 1.0 files (FVA Workbench 5) name the catalogue bearing in a ``name`` attribute
         key = "catalogue_designation" if "catalogue_designation" in a or "name" not in a else "name"
         bearing["designation"] = str(q_text(a, key, where))
+        ratings = file_ratings(a, where)
+        if ratings is not None:  # the maker's ratings the file gives: the lives use them
+            bearing["ratings"] = {"C": f"{ratings[0]} kN", "C0": f"{ratings[1]} kN"}
+            collected.append(("rated", name, ratings))
         if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
             bearing["orientation"] = AXIAL_DIRECTION[absorption]
         kind = str(a.get("bearing_type", ("", ""))[0])
@@ -197,7 +227,7 @@ def bearing_table(
         )
         k_t = stiffness("bending_stiffness", "0 N*m/rad", RIGID_N_M_PER_RAD, "N*m/rad")
         if capped:
-            rigid_ones.append((name, capped))
+            collected.append(("rigid", name, capped))
         bearing["stiffness"] = {"radial": k_r, "axial": k_a, "tilt": k_t}
         if absorption in SPRING_PUSH:  # one way only: a shoulder on one side (LinearBearing)
             bearing["stiffness"]["axial_direction"] = SPRING_PUSH[absorption]
@@ -206,16 +236,26 @@ def bearing_table(
     return bearing
 
 
-def rigid_note(rigid_ones: list) -> list:
-    """One note naming the concept bearings read as rigid (:func:`bearing_table`), or none."""
-    names = list(dict.fromkeys(name for name, _ in rigid_ones))
-    if not names:
-        return []
-    given = sorted({v for _, values in rigid_ones for v in values})
-    return [
-        f"concept bearings {', '.join(names)}: {'; '.join(given)} read as rigid ({RIGID_N_PER_M:g} N/m, "
-        f"{RIGID_N_M_PER_RAD:g} N·m/rad): stiffer supports stop the drivetrain Newton short of its tolerance"
-    ]
+def collected_notes(collected: list) -> list:
+    """One note naming the concept bearings read as rigid and one naming the bearings rated with the
+    file's ratings (:func:`bearing_table`), each only when there are some."""
+    out = []
+    rigid = [item for item in collected if item[0] == "rigid"]
+    names = list(dict.fromkeys(name for _, name, _ in rigid))
+    if names:
+        given = sorted({v for _, _, values in rigid for v in values})
+        out.append(
+            f"concept bearings {', '.join(names)}: {'; '.join(given)} read as rigid ({RIGID_N_PER_M:g} N/m, "
+            f"{RIGID_N_M_PER_RAD:g} N·m/rad): stiffer supports stop the drivetrain Newton short of its "
+            "tolerance"
+        )
+    rated = [item for item in collected if item[0] == "rated"]
+    if rated:
+        each = ", ".join(dict.fromkeys(f"{name} (C {c:g} kN, C0 {c0:g} kN)" for _, name, (c, c0) in rated))
+        out.append(
+            f"the lives use the file's ratings in place of bearingkit's catalogue or geometry ratings: {each}"
+        )
+    return out
 
 
 def section_tables(comps, parts, body, shift: float, where: str) -> list:

@@ -204,7 +204,7 @@ def _carrier_extension(comps, parts, carrier, offsets, plates, webs, position, h
     return out
 
 
-def read_stage(m, src: str, notes: list, rigid_ones: list) -> dict | None:
+def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
     """The model's planetary stage as a ``[[planetary]]`` table and what it takes from the model.
 
     Returns None without a ``planetary_stage``, else a dictionary: ``table`` (the ``[[planetary]]``
@@ -357,7 +357,7 @@ def read_stage(m, src: str, notes: list, rigid_ones: list) -> dict | None:
                     "(from the planet's mid-plane)"
                 )
             name = comps[a]["name"].split(" @ ")[0] or f"bearing {a}"  # FVA names planet copies "… @ angle"
-            rows.append((on_planet, a, rexs_bearing(m, a, name, bw, f"{on_planet} mm", notes, rigid_ones)))
+            rows.append((on_planet, a, rexs_bearing(m, a, name, bw, f"{on_planet} mm", notes, collected)))
             taken |= {a, pin}
         if not rows:
             raise InputError(f"{pw}: planet shaft {p} ({comps[p]['name']}) turns on no bearing")

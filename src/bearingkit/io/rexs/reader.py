@@ -54,7 +54,7 @@ import numpy as np
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number, load_cases, parse
-from bearingkit.io.rexs.parts import direction, q_text, rigid_note, section_tables, vector_mm
+from bearingkit.io.rexs.parts import collected_notes, direction, q_text, section_tables, vector_mm
 from bearingkit.io.rexs.planetary import read_stage
 
 SUPPORTED_VERSIONS = ("1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6")
@@ -100,9 +100,9 @@ def read_rexs(path) -> dict:
             roles = dict((role, i) for i, role in r["refs"])
             parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
     notes = []
-    rigid_ones = []  # concept bearings stiffer than bearingkit's rigid (one note, at the end)
+    collected = []  # concept bearings stiffer than bearingkit's rigid (one note, at the end)
     stage = read_stage(
-        m, src, notes, rigid_ones
+        m, src, notes, collected
     )  # a planetary stage: its planets, pins, ring shaft … are taken
     taken = stage["taken"] if stage else set()
     joined = set()  # parts of a relation besides their own sections: bearings, couplings, gears, loads
@@ -242,7 +242,7 @@ def read_rexs(path) -> dict:
         if inner not in by_id:
             raise InputError(f"{bw}: its inner part {inner} is not a shaft")
         position = q_text(c["attrs"], "u_coordinate_on_shaft_inner_side", bw)
-        bearing = rexs_bearing(m, bid, c["name"] or f"bearing {bid}", bw, position, notes, rigid_ones)
+        bearing = rexs_bearing(m, bid, c["name"] or f"bearing {bid}", bw, position, notes, collected)
         if outer in by_id:
             bearing["outer"] = by_id[outer]["name"]
             bearing["outer_position"] = q_text(c["attrs"], "u_coordinate_on_shaft_outer_side", bw)
@@ -361,7 +361,7 @@ def read_rexs(path) -> dict:
         raise InputError(
             f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
         )
-    notes += rigid_note(rigid_ones)
+    notes += collected_notes(collected)
     if notes:  # said on every face of the result (load_drivetrain_file takes them out of the data)
         out[REXS_NOTES] = [f"REXS import: {n}" for n in notes]
     drivetrain = {"name": (unit or {}).get("name") or path.stem, "held": held}

@@ -55,6 +55,7 @@ Stiffness = schema.quantity("stiffness", "non_negative")
 RotationalStiffness = schema.quantity("rotational_stiffness", "non_negative")
 LineLoadValue = schema.quantity("line_load")
 Mass = schema.quantity("mass", "non_negative")
+PositiveForce = schema.quantity("force", "positive")
 PositiveMass = schema.quantity("mass", "positive")
 
 
@@ -91,6 +92,13 @@ class LinearStiffnessSpec(schema.Strict):
     )
 
 
+class RatingsSpec(schema.Strict):
+    """``ratings``: a maker's basic load ratings the bearing's lives use (``[bearing] rating_C``)."""
+
+    C: PositiveForce
+    C0: PositiveForce | None = None
+
+
 class BearingSpec(schema.Strict):
     """``[[shaft.bearings]]``: a bearing and where it sits."""
 
@@ -103,6 +111,11 @@ class BearingSpec(schema.Strict):
         "docs/input-format.md).",
     )
     stiffness: LinearStiffnessSpec | None = None
+    ratings: RatingsSpec | None = Field(
+        None,
+        description="A maker's C (and C0) for the lives, with designation or bearing (docs/catalogue.md: "
+        "how a catalogue's ratings enter ISO 281 and ISO/TS 16281).",
+    )
     position: schema.Length
     orientation: Literal["+z", "-z"] = "+z"
     axial: Literal["locating", "floating"] = "locating"
@@ -357,11 +370,25 @@ def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingS
             f"{where}: give exactly one of file (a bearing input file), designation (e.g. '6209'), "
             "bearing (a bearing file's tables inline) and stiffness"
         )
+    rated = {}
+    if b.ratings is not None:
+        if b.designation is None and b.bearing is None:
+            raise InputError(
+                f"{where}.ratings: give them with designation or bearing (a bearing file's [bearing] takes "
+                "rating_C and rating_C0 itself; a stiffness has no lives)"
+            )
+        rated = {"rating_C": f"{b.ratings.C} N"}
+        if b.ratings.C0 is not None:
+            rated["rating_C0"] = f"{b.ratings.C0} N"
     if b.bearing is not None:
         from bearingkit.io.loader import from_dict
 
+        tables = dict(b.bearing)
+        if rated:
+            header = tables.get("bearing")
+            tables["bearing"] = {**(header if isinstance(header, dict) else {}), **rated}
         try:
-            source = from_dict(b.bearing, source=f"{where}.bearing")
+            source = from_dict(tables, source=f"{where}.bearing")
         except InputError as exc:
             raise InputError(f"{where}.bearing: {exc}") from None
         bearing = source.model
@@ -369,7 +396,7 @@ def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingS
         from bearingkit.io.loader import from_dict
 
         try:
-            source = from_dict({"bearing": {"designation": b.designation}}, source=b.designation)
+            source = from_dict({"bearing": {"designation": b.designation, **rated}}, source=b.designation)
         except InputError as exc:
             raise InputError(f"{where}.designation: {exc}") from None
         bearing = source.model

@@ -140,7 +140,8 @@ class SeatInput(ModelInput):
             base.bearing,
             type=self.bearing_type,
             source=b.spec.bearing.source,
-            designation=getattr(b.spec.bearing, "designation", None),
+            # the designation and the file's ratings the lives use (pipeline.analysis._catalogue_rating)
+            **{k: getattr(b.spec.bearing, k, None) for k in ("designation", "C", "rating_C", "rating_C0")},
         )
         return dataclasses.replace(base, bearing=header, geometry=dict(b.spec.geometry))
 
