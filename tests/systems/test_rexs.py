@@ -192,3 +192,29 @@ def test_one_direction_bearings_face_the_way_axial_force_absorption_says(tmp_pat
     assert orientations == [("-z", "+z"), ("+z", "-z")]
     res = DrivetrainAnalysis(load_drivetrain_file(tmp_path / "negative.rexs")).result
     assert res.converged.all()
+
+
+def test_the_export_types_the_values_an_xml_model_gave_as_text(tmp_path):
+    """XML gives every value as text; the JSON written types them: a number with a unit is a
+    floating_point, a tooth count an integer, a designation (no unit) stays a string."""
+    import json
+
+    from bearingkit.io.rexs.export import write_rexs_results
+    from bearingkit.systems.drivetrain.analysis import DrivetrainAnalysis
+    from bearingkit.systems.drivetrain.input import load_drivetrain_file
+
+    source = EXAMPLES / "gearbox_two_stage.rexs"
+    data = DrivetrainAnalysis(load_drivetrain_file(source)).to_dict()
+    model = json.loads(
+        write_rexs_results(data, tmp_path / "out.rexsj", source=source).read_text(encoding="utf-8-sig")
+    )["model"]
+    attrs = {(c["id"], a["id"]): a for c in model["components"] for a in c["attributes"]}
+    kinds = {key: next(k for k in a if k not in ("id", "unit")) for key, a in attrs.items()}
+    assert (
+        kinds[(40, "catalogue_designation")] == "string"
+        and attrs[(40, "catalogue_designation")]["string"] == "6208"
+    )
+    assert kinds[(40, "u_coordinate_on_shaft_inner_side")] == "floating_point"
+    assert attrs[(40, "u_coordinate_on_shaft_inner_side")]["floating_point"] == 10.0
+    teeth = [a for (cid, key), a in attrs.items() if key == "number_of_teeth"]
+    assert teeth and all(isinstance(a.get("integer"), int) for a in teeth)

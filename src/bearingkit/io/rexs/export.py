@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import datetime
 import json
+import math
 from pathlib import Path
 
 from bearingkit.io.export import to_json, write_atomic
@@ -29,18 +30,33 @@ def _attr(i, unit, value):
     return {"id": i, "unit": unit, "floating_point": value}
 
 
+def _typed(key: str, value, unit: str) -> tuple[str, object]:
+    """REXS JSON's typed value of a parsed attribute: XML gives text, so a number with a unit is a
+    ``floating_point``, a whole ``number_of_…`` an ``integer``, other text a ``string`` (a designation
+    such as "6208" has no unit and stays text)."""
+    if isinstance(value, bool):
+        return "boolean", value
+    if isinstance(value, list):
+        return "floating_point_array", value
+    if isinstance(value, (int, float)):
+        return ("integer", value) if isinstance(value, int) else ("floating_point", value)
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return "string", value
+    if unit not in ("", "none") and math.isfinite(number):
+        return "floating_point", number
+    if key.startswith("number_of") and number.is_integer():
+        return "integer", int(number)
+    return "string", value
+
+
 def _json_attrs(attrs: dict) -> list:
-    """Parsed attributes {id: (value, unit)} back as REXS JSON attributes."""
+    """Parsed attributes {id: (value, unit)} back as REXS JSON attributes (:func:`_typed`)."""
     out = []
     for key, (value, unit) in attrs.items():
-        kind = (
-            "boolean"
-            if isinstance(value, bool)
-            else "floating_point_array"
-            if isinstance(value, list)
-            else "string"
-        )
-        out.append({"id": key, "unit": unit, kind: value})
+        kind, typed = _typed(key, value, unit)
+        out.append({"id": key, "unit": unit, kind: typed})
     return out
 
 
