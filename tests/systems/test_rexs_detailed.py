@@ -12,6 +12,7 @@ carries every number the statics use.
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -41,9 +42,10 @@ def _relation(
     ET.SubElement(rel, "ref", {"hint": hints[1], "id": str(part), "role": "part"})
 
 
-def _detailed(tmp_path, kinds=None, drop=None, ratings=False) -> Path:
-    """The two-stage gearbox with input_A (6208) and input_B (NU 208) as detailed-geometry bearings."""
-    tree = ET.parse(GEARBOX)
+def _detailed(tmp_path, kinds=None, drop=None, ratings=False, source=GEARBOX) -> Path:
+    """The two-stage gearbox with input_A (6208) and input_B (NU 208) as detailed-geometry bearings (or
+    ``kinds``: component name → (designation, REXS bearing_type) of ``source``)."""
+    tree = ET.parse(source)
     root = tree.getroot()
     comps = root.find("components")
     kinds = kinds or {
@@ -57,13 +59,16 @@ def _detailed(tmp_path, kinds=None, drop=None, ratings=False) -> Path:
         designation, kind = kinds[comp.get("name")]
         g = resolve(designation).geometry
         comp.set("type", "rolling_bearing_with_detailed_geometry")
-        for el in [a for a in comp.findall("attribute") if a.get("id") == "catalogue_designation"]:
+        for el in [
+            a for a in comp.findall("attribute") if a.get("id") in ("catalogue_designation", "bearing_type")
+        ]:
             comp.remove(el)
         _attribute(comp, "bearing_type", "", kind)
         _attribute(comp, "inner_diameter", "mm", g["bore"] * 1e3)
         _attribute(comp, "outer_diameter", "mm", g["outer_diameter"] * 1e3)
         _attribute(comp, "number_of_bearing_rows", "", 1)
-        _attribute(comp, "radial_bearing_clearance", "mum", g["clearance_radial"] * 1e6)
+        if "clearance_radial" in g:
+            _attribute(comp, "radial_bearing_clearance", "mum", g["clearance_radial"] * 1e6)
         if ratings:  # the catalogue's own C and C0 of the designation, as a maker's file would give them
             des = parse(designation)
             entry = tables.entries(des.family)[des.base]
@@ -74,11 +79,20 @@ def _detailed(tmp_path, kinds=None, drop=None, ratings=False) -> Path:
         )
         _attribute(row, "number_of_rolling_elements", "", g["n_elements"])
         _attribute(row, "reference_diameter", "mm", g["pitch_diameter"] * 1e3)
-        _attribute(row, "pressure_angle", "deg", 0.0)
+        _attribute(row, "pressure_angle", "deg", math.degrees(g.get("contact_angle_outer", 0.0)))
         element = ET.SubElement(
             comps, "component", {"id": str(next_id + 1), "name": "element", "type": "rolling_element"}
         )
-        _attribute(element, "diameter_of_rolling_element", "mm", g["element_diameter"] * 1e3)
+        if "small_diameter" in g:  # a tapered roller: its mean diameter, length and half cone angle
+            _attribute(
+                element,
+                "diameter_of_rolling_element",
+                "mm",
+                (g["small_diameter"] + g["large_diameter"]) * 5e2,
+            )
+            _attribute(element, "roller_angle", "deg", math.degrees(g["roller_angle"]))
+        else:
+            _attribute(element, "diameter_of_rolling_element", "mm", g["element_diameter"] * 1e3)
         if "conformity_inner" in g:
             for side in ("inner", "outer"):
                 _attribute(
@@ -194,3 +208,26 @@ def test_with_the_catalogue_s_ratings_in_the_file_the_lives_are_the_designation_
         for x, y in zip(a["bearings"], b["bearings"], strict=True):
             for key in ("L10h_h", "L10h_iso281_h"):
                 assert y["summary"][key] == pytest.approx(x["summary"][key], rel=1e-9)
+
+
+def test_tapered_rows_read_from_geometry_solve_to_their_designations(tmp_path):
+    """The public FVA two-stage gearbox's 33014 and 33012 (one-way tapered rows facing each other on the
+    output shaft) written as rows and elements of bearingkit's estimate (mean roller diameter, effective
+    length, cup angle, half cone angle): same statics as the designations (1e-9), and the rows face the
+    same way (their axial_force_absorption)."""
+    fva = EXAMPLES / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs"
+    names = {"33014 (Rolling bearing [90])": "33014", "33012 (Rolling bearing [49])": "33012"}
+    kinds = {k: (v, "radial_tapered_roller_bearing") for k, v in names.items()}
+    path = _detailed(tmp_path, kinds=kinds, source=fva)
+    data = read_rexs(path)
+    tapered = [b for s in data["shafts"] for b in s["bearings"] if b["name"] in names]
+    assert [b["bearing"]["bearing"]["type"] for b in tapered] == ["tapered_roller", "tapered_roller"]
+    assert sorted(b["orientation"] for b in tapered) == ["+z", "-z"]
+    by_name = DrivetrainAnalysis(load_drivetrain_file(fva)).to_dict()
+    by_geometry = DrivetrainAnalysis(load_drivetrain_file(path)).to_dict()
+    for a, b in zip(by_name["cases"], by_geometry["cases"], strict=True):
+        assert b["converged"]
+        for x, y in zip(a["bearings"], b["bearings"], strict=True):
+            scale = max(abs(x["radial_load_N"]), abs(x["axial_load_N"]), 1.0)
+            assert y["radial_load_N"] == pytest.approx(x["radial_load_N"], abs=1e-9 * scale)
+            assert y["axial_load_N"] == pytest.approx(x["axial_load_N"], abs=1e-9 * scale)

@@ -24,6 +24,8 @@ REXS ``bearing_type``              bearingkit ``type``    geometry read
                                                           of the crowning radius (else ISO/TS 16281's
                                                           logarithmic profile)
 ``radial_needle_roller_bearing``   ``needle_roller``      as cylindrical
+``radial_tapered_roller_bearing``  ``tapered_roller``     Z, D_w ∓ L tan γ, L, D_pw, α_o, α_i = α_o −
+                                                          2γ (:func:`_tapered`), clearance zero
 =================================  =====================  ========================================
 
 The radial clearance is ``radial_bearing_clearance`` (before mounting), else the middle of
@@ -37,6 +39,9 @@ as a designation's catalogue ratings are; without them bearingkit rates the geom
 
 from __future__ import annotations
 
+import math
+
+from bearingkit.catalogue.resolve import CATALOGUE_TAPERED_SLICES
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.parse import _number
 from bearingkit.io.rexs.parts import bearing_table, file_ratings, mm, number
@@ -47,6 +52,7 @@ KINDS = {
     "angular_contact_ball_bearing": ("angular_contact_ball", False),
     "radial_roller_bearing": ("cylindrical_roller", True),
     "radial_needle_roller_bearing": ("needle_roller", True),
+    "radial_tapered_roller_bearing": ("tapered_roller", True),
 }
 #: REXS 1.0 names of attributes REXS 1.1 renamed (the changelog 1.0 → 1.1).
 OLD_NAMES = {
@@ -112,7 +118,15 @@ def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict |
         "pitch_diameter": f"{_length(ra, 'reference_diameter', rw)} mm",
     }
     clearance = _clearance(a, where, notes, comp["name"])
-    if rollers:
+    if btype == "tapered_roller":
+        geometry.update(_tapered(ra, rw, ea, ew, d_w))
+        geometry.pop("element_diameter")
+        if clearance:
+            notes.append(
+                f"{comp['name']}: its radial clearance ({clearance:g} µm) is not read: a tapered row's "
+                "clearance is along its cup normal (taken as zero)"
+            )
+    elif rollers:
         geometry["effective_length"] = f"{_length(ea, 'length_of_rolling_element', ew)} mm"
         geometry["clearance_radial"] = f"{clearance} um"
         crown = _get(ea, "roller_crowning_radius")
@@ -174,3 +188,30 @@ def rexs_bearing(m, bid, name: str, where: str, position: str, notes: list, coll
     if comp["type"] == "rolling_bearing_with_detailed_geometry":
         tables = detailed_bearing(m, bid, where, notes, collected)
     return bearing_table(comp, name, where, position, notes, collected, tables)
+
+
+def _tapered(ra: dict, rw: str, ea: dict, ew: str, d_w: float) -> dict:
+    """A tapered row's geometry: the cup angle α_o = ``pressure_angle`` (ISO 281's nominal contact angle),
+    the roller's half cone angle γ = ``roller_angle``, its mean diameter D_w = ``diameter_of_rolling_element``
+    and effective length L = ``length_of_rolling_element`` [the database does not say which diameter and
+    length: mean and effective are read, as ISO 281's D_we and L_we], so the ends are D_w ∓ L tan γ and the
+    cone angle α_i = α_o − 2γ; the crown ISO/TS 16281's (``iso16281_tapered``)."""
+    length = _length(ea, "length_of_rolling_element", ew)
+    gamma = math.radians(number(ea, "roller_angle", ew))
+    alpha = math.radians(number(ra, "pressure_angle", rw))
+    if not 0.0 <= gamma < alpha:
+        raise InputError(f"{ew}.roller_angle: {math.degrees(gamma):g} deg must lie in [0, pressure_angle)")
+    half = length * math.tan(gamma)
+    if half >= d_w:
+        raise InputError(f"{ew}: the roller's ends D_w ∓ L tan γ reach zero; check its diameter and angle")
+    return {
+        "small_diameter": f"{d_w - half} mm",
+        "large_diameter": f"{d_w + half} mm",
+        "effective_length": f"{length} mm",
+        "contact_angle_outer": f"{math.degrees(alpha)} deg",
+        "contact_angle_inner": f"{math.degrees(alpha - 2.0 * gamma)} deg",
+        "roller_angle": f"{math.degrees(gamma)} deg",
+        "clearance": "0 um",
+        "profile": {"name": "iso16281_tapered"},
+        "n_slices": CATALOGUE_TAPERED_SLICES,  # as a catalogue tapered row (the builder's default is 1)
+    }

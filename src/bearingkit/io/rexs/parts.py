@@ -193,6 +193,11 @@ def bearing_table(
     elif comp["type"] == "rolling_bearing_with_detailed_geometry":
         if tables is not None:
             bearing["bearing"] = tables
+            if absorption in AXIAL_DIRECTION and tables["bearing"]["type"] in (
+                "tapered_roller",
+                "angular_contact_ball",
+            ):
+                bearing["orientation"] = AXIAL_DIRECTION[absorption]  # which way the one-way row faces
         elif "catalogue_designation" in a:
             bearing["designation"] = str(q_text(a, "catalogue_designation", where))
             notes.append(
