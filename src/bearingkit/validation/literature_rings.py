@@ -138,7 +138,9 @@ def _couples(theta: float) -> tuple[float, float, float]:
 _COUPLES = (
     "Closed form by least work written here (thin ring, bending only; the method of " + _ROARK + "); "
     "the load of Roark's in-plane couple case (M_A = −(M0/π)(π − θ − 2 sin θ), N_A = 2M0 sin θ/(πR), "
-    "Roark's signs; Roark's own table from memory: the search tool could not show it)"
+    "Roark's signs; the same M_A and N_A as Roark & Young's Table 9.2 case 3, 7th ed., with k1 = k2 = 1, "
+    "read in its transcription in the open steelpy library, roarks/formulas/circular_ring.py ring_3: the "
+    "book's page itself could not be shown)"
 )
 for _i, _name in enumerate(("M_A", "M_C", "N_A")):
     register(
