@@ -236,3 +236,35 @@ def test_the_results_model_written_reads_again_to_the_same_results(model, tmp_pa
             scale = max(abs(x["radial_load_N"]), abs(x["axial_load_N"]), 1.0)
             assert y["radial_load_N"] == pytest.approx(x["radial_load_N"], abs=1e-9 * scale)
             assert y["axial_load_N"] == pytest.approx(x["axial_load_N"], abs=1e-9 * scale)
+
+
+def test_an_input_given_by_its_power_is_the_torque_p_over_omega(tmp_path):
+    """FVA Workbench writes an input's power beside (or instead of) its torque: with the torques of the
+    FVA gearbox's four cases replaced by P = T ω [kW] at the case's input speed, the import reads the same
+    torques (1e-12); a power on a shaft whose speed the case does not give is one line."""
+    import xml.etree.ElementTree as ET
+
+    tree = ET.parse(FVA)
+    for case in tree.getroot().iter("load_case"):
+        speed = next(float(a.text) for a in case.iter("attribute") if a.get("id") == "rotational_speed")
+        for a in case.iter("attribute"):
+            if a.get("id") == "torque_around_u_axis":
+                a.set("id", "power")
+                a.set("unit", "kW")
+                a.text = repr(float(a.text) * speed * 2 * np.pi / 60 / 1e3)
+    path = tmp_path / "power.rexs"
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    by_power = read_rexs(path)["load_cases"]
+    by_torque = read_rexs(FVA)["load_cases"]
+    for a, b in zip(by_torque, by_power, strict=True):
+        (shaft, torque), (shaft_b, text) = *a["torques"].items(), *b["torques"].items()
+        assert shaft == shaft_b
+        assert float(text.split()[0]) == pytest.approx(float(torque.split()[0]), rel=1e-12)
+    for case in tree.getroot().iter("load_case"):  # no speed in the cases: no ω to divide by
+        for comp in case.findall("component"):
+            for a in [a for a in comp.findall("attribute") if a.get("id") == "rotational_speed"]:
+                comp.remove(a)
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    with pytest.raises(InputError) as err:
+        read_rexs(path)
+    assert "rotational_speed" in str(err.value) and "\n" not in str(err.value)

@@ -26,7 +26,8 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
   ``addendum_modification_coefficient``; ``cylindrical_stage`` (``stage`` relation ``gear_1``,
   ``gear_2``) makes a mesh.
 - ``external_load`` on a shaft: ``u_coordinate_on_shaft``; ``defines_torque`` true: its
-  ``torque_around_u_axis`` is the input torque; ``transmits_torque`` true and ``defines_torque``
+  ``torque_around_u_axis`` is the input torque (or, without it, ``power``/ω of the shaft's
+  ``rotational_speed``: REXS's P = T ω); ``transmits_torque`` true and ``defines_torque``
   false: its shaft is the held output; ``force_u/v/w_direction``, ``torque_around_v/w_axis``.
 - the bearings' ``contamination_factor_according_to_iso_281_2007`` when they share one value (the
   ISO 281 e_C of every bearing: a_ISO and L_nm).
@@ -76,6 +77,30 @@ GRAVITY_AXES = {
     (1, 0, 0): "+z",
     (-1, 0, 0): "-z",
 }
+
+
+#: Power units → W.
+POWER_W = {"W": 1.0, "kW": 1e3, "MW": 1e6}
+
+
+def _torque_of_power(given: dict, load, shaft, speed_shaft: list, where: str) -> float:
+    """T = P/ω [N·m] of an input given by its ``power`` (REXS: P = T ω, signed), on the shaft whose
+    ``rotational_speed`` the load case gives; one InputError line otherwise."""
+    value, unit = given[load]["power"]
+    if unit not in POWER_W:
+        raise InputError(f"{where}.power: unit {unit!r} is not a power unit ({', '.join(POWER_W)})")
+    if shaft not in speed_shaft or "rotational_speed" not in given.get(shaft, {}):
+        raise InputError(
+            f"{where}: an input power without torque_around_u_axis needs its shaft's rotational_speed "
+            "(T = P/ω): give the torque, or the speed on that shaft"
+        )
+    speed, speed_unit = given[shaft]["rotational_speed"]
+    if speed_unit != "1 / min":
+        raise InputError(f"{where}: rotational_speed in {speed_unit!r}; expected 1 / min")
+    omega = _number(speed, f"{where}: rotational_speed") * 2.0 * np.pi / 60.0
+    if omega == 0.0:
+        raise InputError(f"{where}: an input power at zero speed gives no torque; give torque_around_u_axis")
+    return _number(value, f"{where}.power") * POWER_W[unit] / omega
 
 
 def read_rexs(path) -> dict:
@@ -289,6 +314,9 @@ def read_rexs(path) -> dict:
         for p, sid in inputs.items():
             if p in given and "torque_around_u_axis" in given[p]:
                 case["torques"][by_id[sid]["name"]] = q_text(given[p], "torque_around_u_axis", cw)
+            elif p in given and "power" in given[p]:  # FVA Workbench writes the input power as well
+                torque = _torque_of_power(given, p, sid, speed_shaft, f"{cw}: external_load {p}")
+                case["torques"][by_id[sid]["name"]] = f"{torque} N*m"
         for p, (sid, pos) in loads_at.items():
             a = given.get(p, {})
             vals = {
