@@ -33,6 +33,7 @@ def test_a_maker_s_ratings_replace_the_catalogue_s_for_a_designation():
     base = _system({"designation": "NU 208"})
     maker = _system({"designation": "NU 208", "rating_C": "70 kN", "rating_C0": "66 kN"})
     assert base["C_iso281_N"] == 55500.0 and maker["C_iso281_N"] == 70000.0  # NSK E-design row: 55.5 kN
+    assert (base["C_source"], maker["C_source"], maker["C0_source"]) == ("catalogue", "rating_C", "rating_C")
     ratio = 70.0 / 55.5
     assert maker["L10h_iso281_h"] / base["L10h_iso281_h"] == pytest.approx(ratio ** (10 / 3), rel=1e-9)
     assert maker["L10h_h"] / base["L10h_h"] == pytest.approx(ratio**4, rel=1e-9)
@@ -53,6 +54,7 @@ def test_a_maker_s_rating_rates_a_bearing_given_by_its_geometry():
     own = _system({"type": "deep_groove_ball"}, geometry)
     maker = _system({"type": "deep_groove_ball", "rating_C": "35 kN"}, geometry)
     assert maker["C_iso281_N"] == 35000.0 and own["C_iso281_N"] != 35000.0
+    assert (own["C_source"], maker["C_source"]) == ("computed", "rating_C")
     ratio = 35000.0 / own["C_iso281_N"]
     assert maker["L10h_iso281_h"] / own["L10h_iso281_h"] == pytest.approx(ratio**3, rel=1e-9)
     assert maker["L10h_h"] / own["L10h_h"] == pytest.approx(ratio**3, rel=1e-9)

@@ -294,16 +294,16 @@ class Analysis(AnalysisOutput):
         return truncation_of(self)
 
     def _catalogue_rating(self):
-        """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C), or a
-        maker's ``rating_C``/``rating_C0`` given with a designation or a geometry; None for a bearing given
-        by its geometry alone or a catalogue row without ratings."""
+        """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C), or
+        (C, C0, "rating_C") for a maker's ``rating_C``/``rating_C0`` given with a designation or a geometry;
+        None for a bearing given by its geometry alone or a catalogue row without ratings."""
         spec = getattr(self.input, "spec", None)
         header = getattr(spec, "bearing", None)
         designation = getattr(header, "designation", None)
         maker = getattr(header, "rating_C", None)
         if maker is not None and not designation:  # a geometry with a maker's ratings
             c0 = getattr(header, "rating_C0", None)
-            return float(maker), None if c0 is None else float(c0)
+            return float(maker), None if c0 is None else float(c0), "rating_C"
         if not designation:
             return None
         from bearingkit.catalogue import parse, tables
@@ -330,7 +330,7 @@ class Analysis(AnalysisOutput):
 
             element = tables.FAMILIES[des.family][2]
             c, c0 = (None if x is None else float(x) for x in paired_unit_ratings(c, c0, element, 2))
-        return c, c0
+        return (c, c0, "rating_C") if maker is not None else (c, c0)  # the label: what the notes name
 
     def _shoulder_heights(self):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""

@@ -417,12 +417,13 @@ def rate(
         ISO/TS 16281 eq. (60) slice factor use ("auto": rollers without a profile).
     load_ratings : Mapping[str, float], optional
         C [N] per row name, replacing ISO 281 (catalogue values; thrust roller rows).
-    catalogue_rating : (float, float or None), optional
+    catalogue_rating : (float, float or None[, str]), optional
         The published (C, C0) [N] of the bearing (a designation): the C of the whole-bearing ISO 281
         basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry) and,
         divided over the rows as ISO 281 combines them, the C the rows' ISO/TS 16281 raceway ratings start
-        from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so).
-        basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry).
+        from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so). A third
+        item ``"rating_C"`` says they are a maker's given in ``[bearing] rating_C``/``rating_C0`` (the
+        notes and ``C_source`` name them so).
     static_limit_factor : float
         Multiplies ISO 76's limit pressures in s0 [-] (the raceway material's; 1 for rings of ≥ 58 HRC).
 
@@ -472,7 +473,8 @@ def rate(
         per_row = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in from_catalogue.items())
         computed = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in geometry_c.items())
         rating_notes.append(
-            f"ISO/TS 16281 raceway ratings from the catalogue C = {float(catalogue_rating[0]) / 1e3:.4g} kN "
+            f"ISO/TS 16281 raceway ratings from {_rating_label(catalogue_rating)} C = "
+            f"{float(catalogue_rating[0]) / 1e3:.4g} kN "
             f"(per row: {per_row}), the C ISO 281 uses; the estimated geometry's ISO 281 C would be "
             f"{computed or 'unavailable'}"
         )
@@ -534,6 +536,12 @@ def rate(
     )
 
 
+def _rating_label(catalogue_rating) -> str:
+    """How the notes name the published ratings: a catalogue's, or a maker's given as [bearing] rating_C."""
+    given = len(catalogue_rating) > 2 and catalogue_rating[2] == "rating_C"
+    return "the given rating_C/rating_C0:" if given else "the catalogue"
+
+
 def _catalogue_static(model, rows, catalogue_rating, notes) -> float | None:
     """Replace the rows' C0 by the catalogue's (ISO 76: C0_row = C0 / i) where it prints one; the first
     row's geometry C0 [N] before (the C0 C_u is estimated from), None when nothing was replaced."""
@@ -553,7 +561,8 @@ def _catalogue_static(model, rows, catalogue_rating, notes) -> float | None:
             r.static_rating = np.ma.masked_array(np.full(n, per_row[r.name]), mask=np.zeros(n, bool))
     text = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in per_row.items())
     notes.append(
-        f"C0 from the catalogue C0 = {float(catalogue_rating[1]) / 1e3:.4g} kN (per row: {text}; ISO 76 "
+        f"C0 from {_rating_label(catalogue_rating)} C0 = {float(catalogue_rating[1]) / 1e3:.4g} kN "
+        f"(per row: {text}; ISO 76 "
         f"C0 is linear in the rows); the estimated geometry's ISO 76 C0 would be {computed or 'unavailable'}"
     )
     return geometry
