@@ -101,3 +101,14 @@ def test_a_drivetrain_bearing_s_ratings_reach_its_lives():
     with pytest.raises(InputError) as err:
         drivetrain_from_dict(rated, str(path), base=path.parent)
     assert "ratings" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_four_point_row_s_maker_rating_is_radial_and_keeps_the_radial_c0():
+    """QJ rows print axial ratings (NSK's C_a, C_0a); bearingkit rates on the radial basis (C_r = 1.07 C_a,
+    C_0r = 0.58 C_0a): rating_C is a radial C, and without rating_C0 the catalogue's C0 enters on the same
+    radial basis (not its axial figure, which would make s0 1.7x too high)."""
+    base = _system({"designation": "QJ 208"})
+    maker = _system({"designation": "QJ 208", "rating_C": f"{base['C_iso281_N'] * 1.1} N"})
+    assert maker["C0_iso76_N"] == pytest.approx(base["C0_iso76_N"], rel=1e-12)
+    assert maker["s0_iso76"] == pytest.approx(base["s0_iso76"], rel=1e-12)
+    assert maker["L10h_iso281_h"] / base["L10h_iso281_h"] == pytest.approx(1.1**3, rel=1e-9)

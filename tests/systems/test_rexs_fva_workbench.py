@@ -12,8 +12,9 @@ the two tools' bearing models: the speeds of the tooth counts, and the gear forc
 follow from the gear geometry (working pitch radii, pressure and helix angles and their signs, the axes)
 and the torque each gear carries. FVA Workbench's gear torques include its losses (998.18 N·m at gear
 [27], 1868.08 N·m at gear [44] against the lossless 1000 and 1888.89): bearingkit's lossless mesh forces
-scaled by those torques equal FVA Workbench's to 1e-7 (7e-8 measured). The bearing reactions are not
-compared here: the two models differ there (docs/drivetrains.md gives the table and the causes).
+scaled by those torques equal FVA Workbench's to 1e-7 (7e-8 measured). The bearing reactions' sizes are
+not compared: the two models differ there (docs/drivetrains.md gives the table and the causes); the one-way
+bearings' push directions are, as they confirm how ``axial_force_absorption`` reads.
 """
 
 from __future__ import annotations

@@ -188,16 +188,16 @@ def test_a_load_on_a_planet_is_refused_in_one_line(tmp_path):
 
 def test_mutated_planetary_models_load_or_are_refused_in_one_line(tmp_path):
     """40 mutants of the JSON model (a dropped or retyped attribute value, a foreign unit, a removed or
-    retyped component, a removed relation, a relation pointing elsewhere): each builds a drivetrain or is
-    refused with one InputError line (0 of 2 200 mutants escaped before this test was written; 3 had, a
-    missing tooth count and a sun retyped, before the reader checked them)."""
+    retyped component, a removed relation, a relation pointing elsewhere, a role renamed or a reference
+    dropped): each builds a drivetrain or is refused with one InputError line (before the readers checked
+    them: a missing tooth count, a sun retyped, and every relation missing a role raised KeyError)."""
     rng = random.Random(20261129)
     base = _model()
     escaped = []
-    for i in range(40):
+    for i in range(60):
         model = copy.deepcopy(base)
         m = model["model"]
-        kind = rng.choice(["drop", "value", "unit", "component", "relation", "ref", "type"])
+        kind = rng.choice(["drop", "value", "unit", "component", "relation", "ref", "type", "role", "unref"])
         if kind in ("drop", "value", "unit"):
             c = rng.choice([c for c in m["components"] if c.get("attributes")])
             a = rng.choice(c["attributes"])
@@ -214,6 +214,11 @@ def test_mutated_planetary_models_load_or_are_refused_in_one_line(tmp_path):
             m["relations"].remove(rng.choice(m["relations"]))
         elif kind == "ref":
             rng.choice(rng.choice(m["relations"])["refs"])["id"] = rng.choice(m["components"])["id"]
+        elif kind == "role":  # a role renamed: the relation misses one it needs
+            rng.choice(rng.choice(m["relations"])["refs"])["role"] = rng.choice(["part", "inner_part", "x"])
+        elif kind == "unref":  # a reference dropped
+            relation = rng.choice(m["relations"])
+            relation["refs"].remove(rng.choice(relation["refs"]))
         else:
             rng.choice(m["components"])["type"] = rng.choice(
                 ["shaft", "coupling", "concept_bearing", "side_plate", "cylindrical_gear", "ring_gear"]
@@ -251,3 +256,23 @@ def test_the_results_model_puts_each_planet_bearing_s_results_on_its_own_rexs_co
         assert force[first] == by_name[f"Planetenstufe [9].planet{k}.Planetenlager [44]"]
         assert force[second] == by_name[f"Planetenstufe [9].planet{k}.Planetenlager [45]"]
     assert len(force) == 10  # six planet bearings, two sun and two carrier bearings
+
+
+@pytest.mark.parametrize("name", ["gearbox_two_stage.rexs", "rexs/SEW_3-stage_cylindrical_gearbox_1.0.rexs"])
+def test_bodies_with_support_vectors_keep_their_place_along_the_shaft_axis(name):
+    """The placement seeds every body with a support_vector with its component along the shafts' axis
+    (u = z in the two-stage gearbox, not the vector's first component), and meshes of ordinary stages,
+    whose mid-planes may differ, place nothing: neither model is refused, every shaft keeps support · u."""
+    from bearingkit.io.rexs.parse import parse
+    from bearingkit.io.rexs.parts import vector_mm
+    from bearingkit.io.rexs.planetary import axial_offsets, shaft_axis
+
+    path = PUBLIC.parent / name
+    m = parse(path)
+    shafts = [i for i, c in m["components"].items() if c["type"] == "shaft"]
+    offsets = axial_offsets(m, str(path), shafts[0], mesh_gears=set())
+    u = shaft_axis(m, str(path), shafts[0])
+    for i in shafts:
+        assert offsets[i] == pytest.approx(
+            float(vector_mm(m["components"][i]["attrs"], "support_vector", "") @ u)
+        )

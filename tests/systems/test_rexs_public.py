@@ -182,7 +182,7 @@ def test_mutated_public_models_load_or_are_refused_in_one_line(tmp_path):
         tree = ET.parse(source)
         root = tree.getroot()
         attribute = rng.choice(list(root.iter("attribute")))
-        kind = rng.choice(["drop", "text", "unit", "vector", "component", "relation"])
+        kind = rng.choice(["drop", "text", "unit", "vector", "component", "relation", "role"])
         if kind == "drop":
             next(p for p in root.iter() if attribute in list(p)).remove(attribute)
         elif kind == "text":
@@ -204,6 +204,13 @@ def test_mutated_public_models_load_or_are_refused_in_one_line(tmp_path):
                 components.remove(component)
             else:
                 component.set("type", rng.choice(["shaft", "cylindrical_gear", "concept_bearing", "foo"]))
+        elif kind == "role":  # a role renamed, or a reference dropped: the relation misses one it needs
+            relation = rng.choice(list(root.find("relations")))
+            ref = rng.choice(list(relation))
+            if rng.random() < 0.5:
+                ref.set("role", rng.choice(["part", "inner_part", "x"]))
+            else:
+                relation.remove(ref)
         else:
             relation = rng.choice(list(root.find("relations")))
             rng.choice(list(relation)).set("id", rng.choice(["9999", "x", "-1"]))

@@ -311,10 +311,14 @@ class Analysis(AnalysisOutput):
         des = parse(designation)
         entry = tables.entries(des.family).get(des.base)
         given = getattr(header, "C", None)
-        if maker is not None:  # a maker's ratings in place of the catalogue's (one bearing, radial)
+        if maker is not None:  # a maker's ratings in place of the catalogue's (one bearing, radial basis)
             given = maker
             c0 = getattr(header, "rating_C0", None)
-            c, c0 = float(maker), float(c0) if c0 is not None else (None if entry is None else entry.C0)
+            if c0 is None and entry is not None and entry.C0 is not None:  # the catalogue's, radial basis
+                from bearingkit.catalogue.iso_ratings import radial_basis
+
+                c0 = radial_basis(des.family, entry.C, entry.C0)[1]
+            c, c0 = float(maker), None if c0 is None else float(c0)
         elif given is not None:
             c, c0 = float(given), None if entry is None else entry.C0
         elif entry is None or entry.C is None:

@@ -44,7 +44,7 @@ import math
 from bearingkit.catalogue.resolve import CATALOGUE_TAPERED_SLICES
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.parse import _number
-from bearingkit.io.rexs.parts import bearing_table, file_ratings, mm, number
+from bearingkit.io.rexs.parts import angle_deg, bearing_table, file_ratings, mm, number
 
 #: REXS ``bearing_type`` → (bearingkit ``type``, whether its rows are rollers).
 KINDS = {
@@ -107,6 +107,8 @@ def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict |
         raise InputError(f"{rw}: no rolling_element part (its diameter and length)")
     ea, ew = m["components"][elements[0]]["attrs"], f"{where}: rolling_element {elements[0]}"
     d_w = _length(ea, "diameter_of_rolling_element", ew)
+    if not d_w > 0.0:
+        raise InputError(f"{ew}.diameter_of_rolling_element: {d_w:g} mm must be positive")
     count = number(ra, "number_of_rolling_elements", rw)
     if count != int(count) or count < 3:
         raise InputError(f"{rw}.number_of_rolling_elements: {count:g} is not a count of 3 or more")
@@ -145,7 +147,7 @@ def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict |
         if btype == "deep_groove_ball":
             geometry["clearance_radial"] = f"{clearance} um"
         else:
-            geometry["contact_angle"] = f"{number(ra, 'pressure_angle', rw)} deg"
+            geometry["contact_angle"] = f"{angle_deg(ra, 'pressure_angle', rw)} deg"
             if clearance:
                 notes.append(
                     f"{comp['name']}: its radial clearance ({clearance:g} µm) is not read: an angular "
@@ -197,8 +199,8 @@ def _tapered(ra: dict, rw: str, ea: dict, ew: str, d_w: float) -> dict:
     length: mean and effective are read, as ISO 281's D_we and L_we], so the ends are D_w ∓ L tan γ and the
     cone angle α_i = α_o − 2γ; the crown ISO/TS 16281's (``iso16281_tapered``)."""
     length = _length(ea, "length_of_rolling_element", ew)
-    gamma = math.radians(number(ea, "roller_angle", ew))
-    alpha = math.radians(number(ra, "pressure_angle", rw))
+    gamma = math.radians(angle_deg(ea, "roller_angle", ew))
+    alpha = math.radians(angle_deg(ra, "pressure_angle", rw))
     if not 0.0 <= gamma < alpha:
         raise InputError(f"{ew}.roller_angle: {math.degrees(gamma):g} deg must lie in [0, pressure_angle)")
     half = length * math.tan(gamma)

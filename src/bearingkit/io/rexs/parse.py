@@ -78,6 +78,33 @@ def _id(value, where: str) -> int:
         raise InputError(f"{where}: id {value!r} is not an integer (REXS ids are integers)") from None
 
 
+#: Roles each relation type must have (REXS 1.1–1.6 relation types the readers follow): a relation
+#: missing one is one InputError line, not a KeyError deep in a reader. ``flank`` needs its gear and one
+#: of ``left``/``right`` (checked below).
+REQUIRED_ROLES = {
+    "assembly": ("assembly", "part"),
+    "ordered_assembly": ("assembly", "part"),
+    "side": ("assembly", "inner_part", "outer_part"),
+    "stage": ("stage", "gear_1", "gear_2"),
+    "stage_gear_data": ("stage", "gear", "stage_gear_data"),
+    "reference": ("origin", "referenced"),
+    "flank": ("gear",),
+    "central_shaft": ("planetary_stage", "shaft"),
+    "planet_shaft": ("planetary_stage", "shaft"),
+    "planet_carrier_shaft": ("planetary_stage", "shaft"),
+}
+
+
+def _check_roles(path, r) -> None:
+    roles = [role for _, role in r["refs"]]
+    missing = [role for role in REQUIRED_ROLES.get(r["type"], ()) if role not in roles]
+    if r["type"] == "flank" and not {"left", "right"} & set(roles):
+        missing.append("left or right")
+    if missing or (r["type"] in REQUIRED_ROLES and len(roles) != len(set(roles))):
+        what = f"no {missing[0]!r} reference" if missing else "a role given twice"
+        raise InputError(f"{path}: relation {r.get('id')!r} ({r['type']}): {what}")
+
+
 def parse(path) -> dict:
     """A REXS file as {version, components: {id: {type, name, attrs}}, relations: [{type, refs}],
     load_cases: [{id, components: {id: attrs}}]} (XML or JSON)."""
@@ -87,6 +114,7 @@ def parse(path) -> dict:
         raise InputError(f"{path}: not a REXS model bearingkit reads ({type(exc).__name__}: {exc})") from None
     known = model["components"]
     for r in model["relations"]:
+        _check_roles(path, r)
         for cid, role in r["refs"]:
             if cid not in known:
                 raise InputError(

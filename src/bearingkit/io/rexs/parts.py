@@ -106,6 +106,22 @@ def number(attrs: dict, key: str, where: str) -> float:
     return _number(attrs[key][0], f"{where}.{key}")
 
 
+#: Angle units → degrees.
+TO_DEG = {"deg": 1.0, "°": 1.0, "rad": 180.0 / np.pi}
+
+
+def angle_deg(attrs: dict, key: str, where: str, default: float | None = None) -> float:
+    """An angle attribute in degrees (deg, ° or rad), or one InputError line."""
+    if key not in attrs:
+        if default is None:
+            raise InputError(f"{where}: attribute {key!r} missing")
+        return default
+    value, unit = attrs[key]
+    if unit not in TO_DEG:
+        raise InputError(f"{where}.{key}: unit {unit!r} is not an angle unit (deg, rad)")
+    return _number(value, f"{where}.{key}") * TO_DEG[unit]
+
+
 def vector_mm(attrs: dict, key: str, where: str) -> np.ndarray | None:
     """A position vector in millimetres, or None where the model leaves it out: absent, or written as the
     boolean ``false`` (FVA Workbench writes ``support_vector`` so when the gear unit places the part)."""
@@ -159,8 +175,9 @@ def bearing_table(
 
     ``rolling_bearing_with_catalog_geometry``: the designation (bearingkit's catalogue estimate);
     ``concept_bearing``: a linear bearing of its ``radial_stiffness``, ``axial_stiffness``,
-    ``bending_stiffness`` (rigid, 10¹² N/m, where left out); ``axial_force_absorption``
-    ``no_direction``: floating, ``positive``/``negative``: one way (module constants), else locating.
+    ``bending_stiffness`` (left out: radial rigid, 10¹² N/m; axial rigid, or 0 when floating; tilt 0);
+    ``axial_force_absorption`` ``no_direction``: floating, ``positive``/``negative``: one way (module
+    constants), else locating.
     A catalogue bearing that gives its radial ratings (:func:`file_ratings`) is rated with them
     (``ratings``, the lives; the geometry stays the catalogue's estimate).
     ``rolling_bearing_with_detailed_geometry``: ``tables`` (its bearing file's tables, from
@@ -209,8 +226,8 @@ def bearing_table(
             raise InputError(
                 f"{where}: a bearing with detailed geometry of kind {a.get('bearing_type', ('?', ''))[0]!r} "
                 "and no catalogue_designation: bearingkit reads one-row deep groove and angular contact "
-                "ball, cylindrical and needle roller bearings from geometry; give its designation or write "
-                "a bearing file"
+                "ball, cylindrical, needle and tapered roller bearings from geometry; give its designation "
+                "or write a bearing file"
             )
     elif comp["type"] == "concept_bearing":
         capped = []

@@ -34,7 +34,7 @@ import numpy as np
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number
-from bearingkit.io.rexs.parts import mm, number, q_text, section_tables, vector_mm
+from bearingkit.io.rexs.parts import angle_deg, direction, mm, number, q_text, section_tables, vector_mm
 
 #: Component types that are bodies with their own u coordinate (placed by the relations).
 BODIES = ("shaft", "side_plate")
@@ -52,11 +52,25 @@ def _type(comps, i) -> str:
     return (comps.get(i) or {}).get("type") or ""
 
 
-def axial_offsets(m, src: str, root) -> dict:
+def shaft_axis(m, src: str, root) -> np.ndarray:
+    """The unit u axis of the shafts (``root``'s ``u_axis_vector``, else the gear unit's, else x)."""
+    comps = m["components"]
+    unit = next((c for c in comps.values() if c["type"] == "gear_unit"), {"attrs": {}})
+    u = direction(unit["attrs"], "u_axis_vector", f"{src}: gear_unit", [1.0, 0.0, 0.0])
+    u = direction(comps[root]["attrs"], "u_axis_vector", f"{src}: shaft {root}", u)
+    norm = float(np.linalg.norm(u))
+    if norm == 0.0:
+        raise InputError(f"{src}: shaft {root}.u_axis_vector is zero")
+    return u / norm
+
+
+def axial_offsets(m, src: str, root, mesh_gears=None) -> dict:
     """u offset [mm] of every body reachable through bearings, couplings and meshes (module docstring).
 
-    Bodies with a ``support_vector`` are seeded with its u (``root`` at 0 where none has one); one
-    InputError line where two paths place a body differently.
+    Bodies with a ``support_vector`` are seeded with its u component (``root`` at 0 where none has one)
+    and keep it; the others take the place the relations give. Meshes place only where one gear is in
+    ``mesh_gears`` (a planetary stage's; ordinary stages may have offset mid-planes); one InputError
+    line where two paths place a body differently.
     """
     comps = m["components"]
     part_of = {}
@@ -83,6 +97,8 @@ def axial_offsets(m, src: str, root) -> dict:
         elif r["type"] == "stage":
             g1, g2 = ro.get("gear_1"), ro.get("gear_2")
             b1, b2 = part_of.get(g1), part_of.get(g2)
+            if mesh_gears is not None and not {g1, g2} & set(mesh_gears):
+                continue
             if _type(comps, b1) in BODIES and _type(comps, b2) in BODIES:
                 where = f"{src}: stage {ro.get('stage')}"
                 join(
@@ -92,12 +108,14 @@ def axial_offsets(m, src: str, root) -> dict:
                     mm(comps[g2]["attrs"], "u_coordinate_on_shaft", f"{where}: gear {g2}"),
                     where,
                 )
+    axis = shaft_axis(m, src, root)
     offsets = {}
     for i, c in comps.items():
         if c["type"] in BODIES:
             v = vector_mm(c["attrs"], "support_vector", f"{src}: {c['type']} {i}")
             if v is not None:
-                offsets[i] = float(v[0])  # the u part (the stage's shafts lie along u)
+                offsets[i] = float(v @ axis)  # the u part (the stage's shafts lie along u)
+    seeded = set(offsets)
     if not offsets:
         offsets[root] = 0.0
     queue = list(offsets)
@@ -108,12 +126,22 @@ def axial_offsets(m, src: str, root) -> dict:
             if other not in offsets:
                 offsets[other] = o
                 queue.append(other)
-            elif abs(offsets[other] - o) > PLACE_TOL_MM:
+            elif other not in seeded and abs(offsets[other] - o) > PLACE_TOL_MM:
                 raise InputError(
                     f"{where}: places {comps[other]['type']} {other} ({comps[other]['name']}) at u = "
                     f"{o:.6g} mm where other relations put it at {offsets[other]:.6g} mm"
                 )
     return offsets
+
+
+def _alike(table):
+    """A planet's table without what names it (its bearings' names and sources: FVA names each planet's
+    copy "… @ angle", an unnamed bearing is named by its id), to compare the planets."""
+    if isinstance(table, dict):
+        return {k: _alike(v) for k, v in table.items() if k not in ("name", "source")}
+    if isinstance(table, (list, tuple)):
+        return [_alike(v) for v in table]
+    return table
 
 
 def _flank_shift(m, gear) -> float:
@@ -142,7 +170,11 @@ def _carrier_extension(comps, parts, carrier, offsets, plates, webs, position, h
     pieces = []  # (start, end, outer, inner) [mm] of each side plate
     for p in plates:
         a, pw = comps[p]["attrs"], f"{cw}: side plate {p}"
-        start = offsets.get(p, lo) - offsets[carrier]
+        if p not in offsets:
+            raise InputError(
+                f"{pw} ({comps[p]['name']}): joined to nothing that places it (couplings at given u)"
+            )
+        start = offsets[p] - offsets[carrier]
         pieces.append(
             (
                 start,
@@ -209,7 +241,8 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
 
     Returns None without a ``planetary_stage``, else a dictionary: ``table`` (the ``[[planetary]]``
     table; ``sun`` and ``carrier`` hold component ids, the reader puts the names in), ``carrier`` (its
-    id), ``sun_shaft``, ``carrier_sections`` (tables to add to the carrier shaft), ``offsets`` (u [mm]
+    id), ``sun_shaft``, ``carrier_sections`` (tables to add to the carrier shaft), ``across`` (where the
+    stage's axis passes across u [mm], from a placed sun or carrier), ``offsets`` (u [mm]
     of the bodies), ``taken`` (ids of the components the stage stands for: planets, pins, ring shaft,
     side plates, other carrier shafts, planet bearings, couplings, meshes) and ``planet_bearing_ids``
     (per planet in bearingkit's order, the REXS ids of its bearings in the table's order).
@@ -272,14 +305,21 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
         else:
             sun = other
             sa = comps[sid]["attrs"]
-            a = _number(sa.get("rotating_angle_around_neg_u_axis", (0.0, "deg"))[0], f"{pw}: stage {sid}")
+            a = angle_deg(sa, "rotating_angle_around_neg_u_axis", f"{pw}: stage {sid}", 0.0)
             angle[part_of[(pair & on_planets).pop()]] = (-a) % 360.0
     if sun is None or ring is None or _type(comps, sun) != "cylindrical_gear":
         raise InputError(f"{pw}: needs a sun (a cylindrical_gear) and a ring gear meshing with the planets")
     sun_shaft, ring_body = part_of.get(sun), part_of.get(ring)
     if sun_shaft not in rel["central_shaft"]:
         raise InputError(f"{pw}: the sun gear {sun} is not on a central shaft of the stage")
-    offsets = axial_offsets(m, src, sun_shaft)
+    offsets = axial_offsets(m, src, sun_shaft, on_planets | {ring})
+    axis = shaft_axis(m, src, sun_shaft)
+    across = np.zeros(3)  # where the stage's axis passes (a placed sun or carrier says)
+    for body in [sun_shaft, *rel["planet_carrier_shaft"]]:
+        v = vector_mm(comps[body]["attrs"], "support_vector", pw)
+        if v is not None:
+            across = v - (v @ axis) * axis
+            break
     taken = set(planets) | {sid for sid, g1, g2 in stages if {g1, g2} & on_planets}
 
     # the ring: held in the housing by couplings only
@@ -333,7 +373,7 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
         g = planet_gear[p]
         ga, gw = comps[g]["attrs"], f"{pw}: planet gear {g} ({comps[g]['name']})"
         for key, ref in (("normal_module", comps[sun]["attrs"]), ("normal_module", ra)):
-            if key in ref and _number(ga[key][0], gw) != _number(ref[key][0], f"{pw}: {key}"):
+            if key in ref and number(ga, key, gw) != _number(ref[key][0], f"{pw}: {key}"):
                 raise InputError(
                     f"{gw}: mismatched modules: {ga[key][0]} against the sun's or ring's {ref[key][0]}"
                 )
@@ -374,7 +414,7 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
         bearing_ids.append([row[1] for row in rows])
         psi.append(angle.get(p, 0.0))
         planes.append(offsets[p] + u_gear)
-    if any(t != tables[0] for t in tables):
+    if any(_alike(t) != _alike(tables[0]) for t in tables):
         raise InputError(
             f"{pw}: the planets differ (teeth, body or bearings); bearingkit's planets are alike"
         )
@@ -428,9 +468,9 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
         "table": stage,
         "carrier": carrier,
         "sun_shaft": sun_shaft,
-        "coaxial": {sun_shaft, carrier},
         "carrier_sections": added,
         "offsets": offsets,
+        "across": across,
         "taken": taken,
         "planet_bearing_ids": bearing_ids,
     }

@@ -41,9 +41,10 @@ What is read (everything else is ignored; a part that cannot be modelled is refu
 - the gear unit's ``account_for_gravity`` and ``direction_vector_gravity_u/v/w`` (along an axis).
 
 Axes: u (the shafts' axis) is bearingkit's z; v = w × u and w of the gear unit are x and y. A shaft joined
-to nothing (no bearing, coupling, gear or load) is left out, with a note.
+to nothing (no bearing, coupling, gear or load) is left out, with a note; two coaxial shafts joined end to
+end by a rigid coupling are read as one (:mod:`bearingkit.io.rexs.couplings`).
 Refused: non-parallel shafts, conical sections, gear types other than
-cylindrical (bevel, worm), more than one input speed, a planetary stage bearingkit's cannot stand for.
+cylindrical (bevel, worm), more than one input speed, a planetary stage bearingkit's stage cannot stand for.
 """
 
 from __future__ import annotations
@@ -53,6 +54,7 @@ from pathlib import Path
 import numpy as np
 
 from bearingkit.errors import InputError
+from bearingkit.io.rexs.couplings import merge_coupled_shafts
 from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number, load_cases, parse
 from bearingkit.io.rexs.parts import collected_notes, direction, q_text, section_tables, vector_mm
@@ -119,20 +121,21 @@ def read_rexs(path) -> dict:
             raise InputError(
                 f"{src}: component {cid} ({c['name']}): {_REFUSED_TYPES[c['type']]} is not supported"
             )
+    notes = []
+    collected = []  # concept bearings stiffer than bearingkit's rigid (one note, at the end)
+    stage = read_stage(m, src, notes, collected)  # a planetary stage: its planets, pins, ring … are taken
+    taken = stage["taken"] if stage else set()
+    keep = {stage["carrier"], stage["sun_shaft"]} if stage else set()
+    m = merge_coupled_shafts(m, src, taken, notes, keep)  # shafts joined by rigid couplings: one shaft
+    comps = m["components"]
     parts = {}
     for r in m["relations"]:
         if r["type"] == "assembly":
             roles = dict((role, i) for i, role in r["refs"])
             parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
-    notes = []
-    collected = []  # concept bearings stiffer than bearingkit's rigid (one note, at the end)
-    stage = read_stage(
-        m, src, notes, collected
-    )  # a planetary stage: its planets, pins, ring shaft … are taken
-    taken = stage["taken"] if stage else set()
     joined = set()  # parts of a relation besides their own sections: bearings, couplings, gears, loads
     for r in m["relations"]:
-        if r["type"] != "assembly":
+        if r["type"] not in ("assembly", "ordered_assembly", "reference"):  # a material joins nothing
             joined |= {i for i, _ in r["refs"]}
     shafts = []
     for i, c in comps.items():
@@ -172,8 +175,10 @@ def read_rexs(path) -> dict:
                 "non-parallel shafts (bevel, worm stages) are not supported"
             )
         support = vector_mm(c["attrs"], "support_vector", where)
-        if support is None:  # placed by its relations (a planetary stage), else at the origin
-            support = u * (stage["offsets"].get(i, 0.0) if stage else 0.0)
+        if support is None:  # placed by its relations (a planetary stage: on its axis), else at the origin
+            support = (
+                stage["across"] + u * stage["offsets"][i] if stage and i in stage["offsets"] else 0.0 * u
+            )
         sections = section_tables(comps, parts, i, 0.0, where)
         if stage and i == stage["carrier"]:
             sections = sorted(
@@ -395,16 +400,23 @@ def read_rexs(path) -> dict:
     drivetrain = {"name": (unit or {}).get("name") or path.stem, "held": held}
     ua = (unit or {"attrs": {}})["attrs"]
     if ua.get("account_for_gravity", (False, ""))[0] is True:
-        g = tuple(
-            _number(ua.get(f"direction_vector_gravity_{k}", (0.0, ""))[0], f"{src}: gear_unit gravity {k}")
-            for k in "uvw"
+        g = np.array(
+            [
+                _number(
+                    ua.get(f"direction_vector_gravity_{k}", (0.0, ""))[0], f"{src}: gear_unit gravity {k}"
+                )
+                for k in "uvw"
+            ]
         )
-        if g not in GRAVITY_AXES:
+        unit_g = g / np.linalg.norm(g) if np.linalg.norm(g) > 0 else g
+        along = np.abs(unit_g).max(initial=0.0) > 1 - 1e-9  # an axis, whatever the vector's length
+        axis = tuple(int(np.rint(x)) for x in unit_g) if along else None
+        if axis not in GRAVITY_AXES:
             raise InputError(
-                f"{src}: gear_unit direction_vector_gravity {g} (u, v, w) is not along an axis; bearingkit's "
-                "gravity acts along x (v), y (w) or z (u)"
+                f"{src}: gear_unit direction_vector_gravity {tuple(g.tolist())} (u, v, w) is not along an "
+                "axis; bearingkit's gravity acts along x (v), y (w) or z (u)"
             )
-        drivetrain["gravity"] = GRAVITY_AXES[g]
+        drivetrain["gravity"] = GRAVITY_AXES[axis]
     if stage:  # the sun and carrier by their names in the drivetrain file
         table = dict(stage["table"], sun=gear_names[stage["table"]["sun"]], carrier=names[stage["carrier"]])
         out["planetary"] = [table]

@@ -385,12 +385,17 @@ def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingS
 
         tables = dict(b.bearing)
         if rated:
-            header = tables.get("bearing")
-            tables["bearing"] = {**(header if isinstance(header, dict) else {}), **rated}
+            header = tables.get("bearing") if isinstance(tables.get("bearing"), dict) else {}
+            if {"rating_C", "rating_C0", "C"} & set(header):
+                raise InputError(
+                    f"{where}.ratings: its bearing table gives its own ratings ([bearing] rating_C or C); "
+                    "give them in one place"
+                )
+            tables["bearing"] = {**header, **rated}
         try:
             source = from_dict(tables, source=f"{where}.bearing")
-        except InputError as exc:
-            raise InputError(f"{where}.bearing: {exc}") from None
+        except InputError as exc:  # from_dict names the source itself
+            raise InputError(str(exc)) from None
         bearing = source.model
     elif b.designation is not None:
         from bearingkit.io.loader import from_dict
