@@ -275,3 +275,17 @@ def test_an_input_given_by_its_power_is_the_torque_p_over_omega(tmp_path):
     with pytest.raises(InputError) as err:
         read_rexs(path)
     assert "rotational_speed" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_dynamic_rating_alone_rates_the_lives_and_is_named(tmp_path):
+    """A bearing giving only its dynamic rating (no static one) is rated with that C; its C0 stays
+    bearingkit's, and the note says no C0 was given."""
+    text = SEW.read_text(encoding="utf-8")
+    changed = text.replace('<attribute id="static_capacity" unit="kN">24.7</attribute>', "", 1)
+    assert changed != text
+    path = tmp_path / "c_only.rexs"
+    path.write_text(changed, encoding="utf-8")
+    data = read_rexs(path)
+    bearing = next(b for s in data["shafts"] for b in s["bearings"] if "NUP204E" in b["name"])
+    assert bearing["ratings"] == {"C": "32.5 kN"}
+    assert any("Lager NUP204E [50] (C 32.5 kN, no C0 given)" in n for n in data[REXS_NOTES])

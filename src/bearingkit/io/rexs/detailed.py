@@ -156,7 +156,9 @@ def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict |
     header = {"type": btype, "name": comp["name"], "source": f"REXS detailed geometry ({where})"}
     ratings = file_ratings(a, where)
     if ratings is not None:  # the maker's ratings the file gives: the lives use them
-        header["rating_C"], header["rating_C0"] = f"{ratings[0]} kN", f"{ratings[1]} kN"
+        header["rating_C"] = f"{ratings[0]} kN"
+        if ratings[1] is not None:
+            header["rating_C0"] = f"{ratings[1]} kN"
         collected.append(("rated", comp["name"], ratings))
     return {"bearing": header, "geometry": geometry}
 

@@ -145,18 +145,21 @@ RATING_KEYS = (
 )
 
 
-def file_ratings(attrs: dict, where: str) -> tuple[float, float] | None:
-    """The bearing's radial (C, C0) [kN] as the file gives them (both, positive), else None."""
+def file_ratings(attrs: dict, where: str) -> tuple[float, float | None] | None:
+    """The bearing's radial (C, C0) [kN] as the file gives them (C0 None when only C is given), else None."""
     for keys in RATING_KEYS:
-        if all(k in attrs for k in keys):
+        if keys[0] in attrs:
             values = []
             for k in keys:
+                if k not in attrs:
+                    values.append(None)
+                    continue
                 value, unit = attrs[k]
                 scale = {"kN": 1.0, "N": 1e-3}.get(unit)
                 if scale is None:
                     raise InputError(f"{where}.{k}: unit {unit!r} is not a force unit (kN, N)")
                 values.append(_number(value, f"{where}.{k}") * scale)
-            if min(values) <= 0.0:
+            if min(v for v in values if v is not None) <= 0.0:
                 raise InputError(f"{where}.{keys[0]}: ratings {values} kN must be positive")
             return values[0], values[1]
     return None
@@ -195,7 +198,9 @@ def bearing_table(
         bearing["designation"] = str(q_text(a, key, where))
         ratings = file_ratings(a, where)
         if ratings is not None:  # the maker's ratings the file gives: the lives use them
-            bearing["ratings"] = {"C": f"{ratings[0]} kN", "C0": f"{ratings[1]} kN"}
+            bearing["ratings"] = {"C": f"{ratings[0]} kN"}
+            if ratings[1] is not None:
+                bearing["ratings"]["C0"] = f"{ratings[1]} kN"
             collected.append(("rated", name, ratings))
         if absorption in AXIAL_DIRECTION:  # a one-direction bearing (a tapered row): which way it faces
             bearing["orientation"] = AXIAL_DIRECTION[absorption]
@@ -273,7 +278,12 @@ def collected_notes(collected: list) -> list:
         )
     rated = [item for item in collected if item[0] == "rated"]
     if rated:
-        each = ", ".join(dict.fromkeys(f"{name} (C {c:g} kN, C0 {c0:g} kN)" for _, name, (c, c0) in rated))
+        each = ", ".join(
+            dict.fromkeys(
+                f"{name} (C {c:g} kN, " + (f"C0 {c0:g} kN)" if c0 is not None else "no C0 given)")
+                for _, name, (c, c0) in rated
+            )
+        )
         out.append(
             f"the lives use the file's ratings in place of bearingkit's catalogue or geometry ratings: {each}"
         )

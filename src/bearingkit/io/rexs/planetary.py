@@ -445,7 +445,8 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
     if carrier not in offsets:
         raise InputError(f"{cw}: joined to no planet (couplings to side plates and pins)")
     position = z_plane - offsets[carrier]
-    half = mm(ga, "face_width", gw) / 2.0
+    first = planet_gear[planets[0]]
+    half = mm(comps[first]["attrs"], "face_width", f"{pw}: planet gear {first}") / 2.0
     added = _carrier_extension(
         comps, parts, carrier, offsets, plates, sorted(webs), position, half, cw, notes
     )

@@ -394,7 +394,7 @@ def read_rexs(path) -> dict:
         raise InputError(
             f"{src}: no output: give an external_load with transmits_torque true and defines_torque false"
         )
-    notes += collected_notes(collected)
+    notes = list(dict.fromkeys(notes + collected_notes(collected)))  # a planet's note once, not per planet
     if notes:  # said on every face of the result (load_drivetrain_file takes them out of the data)
         out[REXS_NOTES] = [f"REXS import: {n}" for n in notes]
     drivetrain = {"name": (unit or {}).get("name") or path.stem, "held": held}
