@@ -191,6 +191,11 @@ def bearing_table(
     a = comp["attrs"]
     bearing = {"name": name, "position": position}
     absorption = a.get("axial_force_absorption", ("both_directions", ""))[0]
+    if not isinstance(absorption, (str, bool)):
+        raise InputError(
+            f"{where}.axial_force_absorption: {absorption!r} is not one of both_directions, positive, "
+            "negative, no_direction"
+        )
     bearing["axial"] = "floating" if absorption == "no_direction" else "locating"
     if comp["type"] == "rolling_bearing_with_catalog_geometry":
         # REXS 1.0 files (FVA Workbench 5) name the catalogue bearing in a ``name`` attribute
