@@ -19,7 +19,7 @@ import copy
 import numpy as np
 
 from bearingkit.errors import InputError
-from bearingkit.io.rexs.parse import _number
+from bearingkit.io.rexs.parse import _number, roles
 from bearingkit.io.rexs.parts import (
     RIGID_N_M_PER_RAD,
     RIGID_N_PER_M,
@@ -41,15 +41,11 @@ RIGID_KEYS = {
 POSITION_KEYS = ("u_coordinate_on_shaft",)
 
 
-def _roles(r) -> dict:
-    return {role: i for i, role in r["refs"]}
-
-
 def _span(m, shaft, where) -> tuple[float, float] | None:
     """(start, end) [mm] of a shaft's sections, None when it has none."""
     ends = []
     for r in m["relations"]:
-        ro = _roles(r)
+        ro = roles(r)
         part = ro.get("part")
         if (
             r["type"] == "assembly"
@@ -79,7 +75,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
     other is read into."""
     couplings = []
     for r in m["relations"]:
-        ro = _roles(r)
+        ro = roles(r)
         a, inner, outer = ro.get("assembly"), ro.get("inner_part"), ro.get("outer_part")
         kind = (m["components"].get(a) or {}).get("type")
         if r["type"] != "side" or kind not in ("coupling", "switchable_coupling") or a in taken:
@@ -147,7 +143,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
     for outer, (inner, delta) in merged.items():
         where = f"{src}: shaft {outer}"
         for r in m["relations"]:
-            ro = _roles(r)
+            ro = roles(r)
             if r["type"] == "assembly" and ro.get("assembly") == outer:
                 part = ro.get("part")
                 for key in POSITION_KEYS:
@@ -158,7 +154,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
             if (
                 r["type"] == "reference"
                 and ro.get("origin") == outer
-                and any(q["type"] == "reference" and _roles(q).get("origin") == inner for q in m["relations"])
+                and any(q["type"] == "reference" and roles(q).get("origin") == inner for q in m["relations"])
             ):
                 continue  # the shaft read into keeps its own material
             r["refs"] = [(inner if i == outer else i, role) for i, role in r["refs"]]

@@ -43,8 +43,8 @@ import math
 
 from bearingkit.catalogue.resolve import CATALOGUE_TAPERED_SLICES
 from bearingkit.errors import InputError
-from bearingkit.io.rexs.parse import _number
-from bearingkit.io.rexs.parts import angle_deg, bearing_table, file_ratings, mm, number
+from bearingkit.io.rexs.parse import roles
+from bearingkit.io.rexs.parts import TO_UM, angle_deg, bearing_table, file_ratings, mm, number, scaled
 
 #: REXS ``bearing_type`` → (bearingkit ``type``, whether its rows are rollers).
 KINDS = {
@@ -83,9 +83,9 @@ def _parts(m, owner, kind) -> list:
     out = []
     for r in m["relations"]:
         if r["type"] in ("assembly", "ordered_assembly"):
-            roles = {role: i for i, role in r["refs"]}
-            part = roles.get("part")
-            if roles.get("assembly") == owner and (m["components"].get(part) or {}).get("type") == kind:
+            ro = roles(r)
+            part = ro.get("part")
+            if ro.get("assembly") == owner and (m["components"].get(part) or {}).get("type") == kind:
                 out.append(part)
     return out
 
@@ -166,22 +166,16 @@ def detailed_bearing(m, bid, where: str, notes: list, collected: list) -> dict |
 def _clearance(a: dict, where: str, notes: list, name: str) -> float:
     """Radial (diametral) clearance before mounting [µm] (module docstring)."""
     if "radial_bearing_clearance" in a:
-        return _micro(a, "radial_bearing_clearance", where)
+        return scaled(a, "radial_bearing_clearance", where, TO_UM, "a length")
     keys = [
         _get(a, f"{k}_radial_bearing_clearance") or f"{k}_bearing_clearance" for k in ("minimum", "maximum")
     ]
     if all(k in a for k in keys):
-        return 0.5 * (_micro(a, keys[0], where) + _micro(a, keys[1], where))
+        return 0.5 * (
+            scaled(a, keys[0], where, TO_UM, "a length") + scaled(a, keys[1], where, TO_UM, "a length")
+        )
     notes.append(f"{name}: no radial clearance before mounting in the file: zero")
     return 0.0
-
-
-def _micro(a: dict, key: str, where: str) -> float:
-    value, unit = a[key]
-    scale = {"mum": 1.0, "mm": 1e3, "m": 1e6}.get(unit)
-    if scale is None:
-        raise InputError(f"{where}.{key}: unit {unit!r} is not a length unit (mum, mm, m)")
-    return _number(value, f"{where}.{key}") * scale
 
 
 def rexs_bearing(m, bid, name: str, where: str, position: str, notes: list, collected: list) -> dict:

@@ -95,6 +95,11 @@ REQUIRED_ROLES = {
 }
 
 
+def roles(relation: dict) -> dict:
+    """A relation's references as {role: component id}."""
+    return {role: i for i, role in relation["refs"]}
+
+
 def _check_roles(path, r) -> None:
     roles = [role for _, role in r["refs"]]
     missing = [role for role in REQUIRED_ROLES.get(r["type"], ()) if role not in roles]

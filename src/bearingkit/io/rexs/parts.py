@@ -87,16 +87,22 @@ def q_text(attrs: dict, key: str, where: str, required: bool = True):
     return f"{value} {UNITS[unit]}".strip() if UNITS[unit] else value
 
 
-def mm(attrs: dict, key: str, where: str, default: float | None = None) -> float:
-    """A length attribute (a position on a shaft, a diameter) in millimetres."""
+def scaled(attrs: dict, key: str, where: str, units: dict, kind: str, default: float | None = None) -> float:
+    """An attribute in the unit ``units`` scale to (``units``: REXS unit → factor), ``default`` where left out
+    (None: required); one InputError line for a missing value, another unit or a non-finite number."""
     if key not in attrs:
         if default is None:
             raise InputError(f"{where}: attribute {key!r} missing")
         return default
     value, unit = attrs[key]
-    if unit not in TO_MM:
-        raise InputError(f"{where}.{key}: unit {unit!r} is not a length unit (mm, m, mum)")
-    return _number(value, f"{where}.{key}") * TO_MM[unit]
+    if unit not in units:
+        raise InputError(f"{where}.{key}: unit {unit!r} is not {kind} unit ({', '.join(units)})")
+    return _number(value, f"{where}.{key}") * units[unit]
+
+
+def mm(attrs: dict, key: str, where: str, default: float | None = None) -> float:
+    """A length attribute (a position on a shaft, a diameter) in millimetres."""
+    return scaled(attrs, key, where, TO_MM, "a length", default)
 
 
 def number(attrs: dict, key: str, where: str) -> float:
@@ -106,20 +112,17 @@ def number(attrs: dict, key: str, where: str) -> float:
     return _number(attrs[key][0], f"{where}.{key}")
 
 
+#: Length units → micrometres (clearances).
+TO_UM = {"mum": 1.0, "mm": 1e3, "m": 1e6}
+#: Force units → kN (load ratings).
+TO_KN = {"kN": 1.0, "N": 1e-3}
 #: Angle units → degrees.
 TO_DEG = {"deg": 1.0, "°": 1.0, "rad": 180.0 / np.pi}
 
 
 def angle_deg(attrs: dict, key: str, where: str, default: float | None = None) -> float:
     """An angle attribute in degrees (deg, ° or rad), or one InputError line."""
-    if key not in attrs:
-        if default is None:
-            raise InputError(f"{where}: attribute {key!r} missing")
-        return default
-    value, unit = attrs[key]
-    if unit not in TO_DEG:
-        raise InputError(f"{where}.{key}: unit {unit!r} is not an angle unit (deg, rad)")
-    return _number(value, f"{where}.{key}") * TO_DEG[unit]
+    return scaled(attrs, key, where, TO_DEG, "an angle", default)
 
 
 def vector_mm(attrs: dict, key: str, where: str) -> np.ndarray | None:
@@ -149,16 +152,7 @@ def file_ratings(attrs: dict, where: str) -> tuple[float, float | None] | None:
     """The bearing's radial (C, C0) [kN] as the file gives them (C0 None when only C is given), else None."""
     for keys in RATING_KEYS:
         if keys[0] in attrs:
-            values = []
-            for k in keys:
-                if k not in attrs:
-                    values.append(None)
-                    continue
-                value, unit = attrs[k]
-                scale = {"kN": 1.0, "N": 1e-3}.get(unit)
-                if scale is None:
-                    raise InputError(f"{where}.{k}: unit {unit!r} is not a force unit (kN, N)")
-                values.append(_number(value, f"{where}.{k}") * scale)
+            values = [scaled(attrs, k, where, TO_KN, "a force") if k in attrs else None for k in keys]
             if min(v for v in values if v is not None) <= 0.0:
                 raise InputError(f"{where}.{keys[0]}: ratings {values} kN must be positive")
             return values[0], values[1]

@@ -33,7 +33,7 @@ import numpy as np
 
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.detailed import rexs_bearing
-from bearingkit.io.rexs.parse import _number
+from bearingkit.io.rexs.parse import _number, roles
 from bearingkit.io.rexs.parts import angle_deg, direction, mm, number, q_text, section_tables, vector_mm
 
 #: Component types that are bodies with their own u coordinate (placed by the relations).
@@ -42,10 +42,6 @@ BODIES = ("shaft", "side_plate")
 COUPLINGS = ("coupling", "switchable_coupling")
 #: Places that must agree when two paths of relations reach one part [mm].
 PLACE_TOL_MM = 1e-3
-
-
-def _roles(r) -> dict:
-    return {role: i for i, role in r["refs"]}
 
 
 def _type(comps, i) -> str:
@@ -76,7 +72,7 @@ def axial_offsets(m, src: str, root, mesh_gears=None) -> dict:
     part_of = {}
     for r in m["relations"]:
         if r["type"] == "assembly":
-            ro = _roles(r)
+            ro = roles(r)
             part_of[ro.get("part")] = ro.get("assembly")
     edges = {}
 
@@ -85,7 +81,7 @@ def axial_offsets(m, src: str, root, mesh_gears=None) -> dict:
         edges.setdefault(b, []).append((a, ub - ua, where))
 
     for r in m["relations"]:
-        ro = _roles(r)
+        ro = roles(r)
         if r["type"] == "side":
             a, inner, outer = ro.get("assembly"), ro.get("inner_part"), ro.get("outer_part")
             if _type(comps, inner) in BODIES and _type(comps, outer) in BODIES:
@@ -146,7 +142,7 @@ def _alike(table):
 
 def _flank_shift(m, gear) -> float:
     for r in m["relations"]:
-        ro = _roles(r)
+        ro = roles(r)
         if r["type"] == "flank" and ro.get("gear") == gear:
             fa = m["components"][ro.get("left") or ro.get("right")]["attrs"]
             if "addendum_modification_coefficient" in fa:
@@ -261,7 +257,7 @@ def read_stage(m, src: str, notes: list, collected: list) -> dict | None:
     rel = {"central_shaft": [], "planet_shaft": [], "planet_carrier_shaft": []}
     parts, part_of, sides, stages = {}, {}, [], []
     for r in m["relations"]:
-        ro = _roles(r)
+        ro = roles(r)
         if r["type"] in rel and ro.get("planetary_stage") == pid:
             rel[r["type"]].append(ro.get("shaft"))
         elif r["type"] == "assembly":

@@ -57,6 +57,7 @@ from bearingkit.errors import InputError
 from bearingkit.io.rexs.couplings import merge_coupled_shafts
 from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number, load_cases, parse
+from bearingkit.io.rexs.parse import roles as refs_of
 from bearingkit.io.rexs.parts import collected_notes, direction, q_text, section_tables, vector_mm
 from bearingkit.io.rexs.planetary import read_stage
 
@@ -131,7 +132,7 @@ def read_rexs(path) -> dict:
     parts = {}
     for r in m["relations"]:
         if r["type"] == "assembly":
-            roles = dict((role, i) for i, role in r["refs"])
+            roles = refs_of(r)
             parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
     joined = set()  # parts of a relation besides their own sections: bearings, couplings, gears, loads
     for r in m["relations"]:
@@ -161,7 +162,7 @@ def read_rexs(path) -> dict:
     materials = {}
     for r in m["relations"]:
         if r["type"] == "reference":
-            roles = dict((role, i) for i, role in r["refs"])
+            roles = refs_of(r)
             materials[roles.get("origin")] = roles.get("referenced")
     names = {i: comps[i]["name"] or f"shaft {i}" for i in shafts}
     out_shafts, gear_names, gear_shaft = [], {}, {}
@@ -212,7 +213,7 @@ def read_rexs(path) -> dict:
     flank = {}
     for r in m["relations"]:
         if r["type"] == "flank":
-            roles = {role: i for i, role in r["refs"]}
+            roles = refs_of(r)
             flank[roles.get("gear")] = roles.get("left") or roles.get("right")
     for gid, sid in gear_shaft.items():
         a = comps[gid]["attrs"]
@@ -246,7 +247,7 @@ def read_rexs(path) -> dict:
     meshes = []
     for r in m["relations"]:
         if r["type"] == "stage":
-            roles = {role: i for i, role in r["refs"]}
+            roles = refs_of(r)
             g1, g2 = roles.get("gear_1"), roles.get("gear_2")
             if roles.get("stage") in taken:  # a planetary stage's mesh: the stage makes its own
                 continue
@@ -263,7 +264,7 @@ def read_rexs(path) -> dict:
     for r in m["relations"]:
         if r["type"] != "side":
             continue
-        roles = {role: i for i, role in r["refs"]}
+        roles = refs_of(r)
         bid, inner, outer = roles.get("assembly"), roles.get("inner_part"), roles.get("outer_part")
         if bid in taken:  # a planet bearing, or a coupling of a planetary stage's carrier or ring
             continue
