@@ -33,7 +33,7 @@ def test_a_maker_s_ratings_replace_the_catalogue_s_for_a_designation():
     base = _system({"designation": "NU 208"})
     maker = _system({"designation": "NU 208", "rating_C": "70 kN", "rating_C0": "66 kN"})
     assert base["C_iso281_N"] == 55500.0 and maker["C_iso281_N"] == 70000.0  # NSK E-design row: 55.5 kN
-    assert (base["C_source"], maker["C_source"], maker["C0_source"]) == ("catalogue", "rating_C", "rating_C")
+    assert (base["C_source"], maker["C_source"], maker["C0_source"]) == ("catalogue", "rating_C", "rating_C0")
     ratio = 70.0 / 55.5
     assert maker["L10h_iso281_h"] / base["L10h_iso281_h"] == pytest.approx(ratio ** (10 / 3), rel=1e-9)
     assert maker["L10h_h"] / base["L10h_h"] == pytest.approx(ratio**4, rel=1e-9)
@@ -110,5 +110,9 @@ def test_a_four_point_row_s_maker_rating_is_radial_and_keeps_the_radial_c0():
     base = _system({"designation": "QJ 208"})
     maker = _system({"designation": "QJ 208", "rating_C": f"{base['C_iso281_N'] * 1.1} N"})
     assert maker["C0_iso76_N"] == pytest.approx(base["C0_iso76_N"], rel=1e-12)
+    assert (maker["C_source"], maker["C0_source"]) == (
+        "rating_C",
+        "catalogue",
+    )  # C0 not given: the catalogue's
     assert maker["s0_iso76"] == pytest.approx(base["s0_iso76"], rel=1e-12)
     assert maker["L10h_iso281_h"] / base["L10h_iso281_h"] == pytest.approx(1.1**3, rel=1e-9)

@@ -295,7 +295,8 @@ class Analysis(AnalysisOutput):
 
     def _catalogue_rating(self):
         """(C, C0) [N] the catalogue publishes for the input's designation (or the file's bearing.C), or
-        (C, C0, "rating_C") for a maker's ``rating_C``/``rating_C0`` given with a designation or a geometry;
+        (C, C0, (C's source, C0's source)) for a maker's ``rating_C`` (``rating_C0`` or the catalogue's C0)
+        given with a designation or a geometry;
         None for a bearing given by its geometry alone or a catalogue row without ratings."""
         spec = getattr(self.input, "spec", None)
         header = getattr(spec, "bearing", None)
@@ -303,7 +304,7 @@ class Analysis(AnalysisOutput):
         maker = getattr(header, "rating_C", None)
         if maker is not None and not designation:  # a geometry with a maker's ratings
             c0 = getattr(header, "rating_C0", None)
-            return float(maker), None if c0 is None else float(c0), "rating_C"
+            return float(maker), None if c0 is None else float(c0), ("rating_C", "rating_C0")
         if not designation:
             return None
         from bearingkit.catalogue import parse, tables
@@ -334,7 +335,14 @@ class Analysis(AnalysisOutput):
 
             element = tables.FAMILIES[des.family][2]
             c, c0 = (None if x is None else float(x) for x in paired_unit_ratings(c, c0, element, 2))
-        return (c, c0, "rating_C") if maker is not None else (c, c0)  # the label: what the notes name
+        if maker is None:
+            return c, c0
+        # what the notes name: the maker's C, and its C0 or the catalogue's
+        return (
+            c,
+            c0,
+            ("rating_C", "rating_C0" if getattr(header, "rating_C0", None) is not None else "catalogue"),
+        )
 
     def _shoulder_heights(self):
         """The file's groove shoulder heights per row (io.shoulders), or None (a model built in code)."""

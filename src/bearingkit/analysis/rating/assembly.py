@@ -422,8 +422,9 @@ def rate(
         basic rating life :attr:`RatingResult.iso281` (otherwise computed from the rows' geometry) and,
         divided over the rows as ISO 281 combines them, the C the rows' ISO/TS 16281 raceway ratings start
         from (rows named in ``load_ratings`` keep theirs; :attr:`RatingResult.notes` says so). A third
-        item ``"rating_C"`` says they are a maker's given in ``[bearing] rating_C``/``rating_C0`` (the
-        notes and ``C_source`` name them so).
+        item (C's source, C0's source), ``("rating_C", "rating_C0")`` or ``("rating_C", "catalogue")``,
+        says they are a maker's given in ``[bearing] rating_C``/``rating_C0`` (the notes and
+        ``C_source``/``C0_source`` name them so).
     static_limit_factor : float
         Multiplies ISO 76's limit pressures in s0 [-] (the raceway material's; 1 for rings of ≥ 58 HRC).
 
@@ -473,7 +474,7 @@ def rate(
         per_row = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in from_catalogue.items())
         computed = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in geometry_c.items())
         rating_notes.append(
-            f"ISO/TS 16281 raceway ratings from {_rating_label(catalogue_rating)} C = "
+            f"ISO/TS 16281 raceway ratings from {_rating_label(catalogue_rating, 0)} C = "
             f"{float(catalogue_rating[0]) / 1e3:.4g} kN "
             f"(per row: {per_row}), the C ISO 281 uses; the estimated geometry's ISO 281 C would be "
             f"{computed or 'unavailable'}"
@@ -536,10 +537,11 @@ def rate(
     )
 
 
-def _rating_label(catalogue_rating) -> str:
-    """How the notes name the published ratings: a catalogue's, or a maker's given as [bearing] rating_C."""
-    given = len(catalogue_rating) > 2 and catalogue_rating[2] == "rating_C"
-    return "the given rating_C/rating_C0:" if given else "the catalogue"
+def _rating_label(catalogue_rating, which: int) -> str:
+    """How the notes name the published C (``which`` 0) or C0 (1): a catalogue's, or a maker's given as
+    [bearing] rating_C / rating_C0 (the rating's third item, :func:`rate`)."""
+    source = catalogue_rating[2][which] if len(catalogue_rating) > 2 else "catalogue"
+    return "the catalogue" if source == "catalogue" else f"the given {source}:"
 
 
 def _catalogue_static(model, rows, catalogue_rating, notes) -> float | None:
@@ -561,7 +563,7 @@ def _catalogue_static(model, rows, catalogue_rating, notes) -> float | None:
             r.static_rating = np.ma.masked_array(np.full(n, per_row[r.name]), mask=np.zeros(n, bool))
     text = ", ".join(f"{k} {v / 1e3:.4g} kN" for k, v in per_row.items())
     notes.append(
-        f"C0 from {_rating_label(catalogue_rating)} C0 = {float(catalogue_rating[1]) / 1e3:.4g} kN "
+        f"C0 from {_rating_label(catalogue_rating, 1)} C0 = {float(catalogue_rating[1]) / 1e3:.4g} kN "
         f"(per row: {text}; ISO 76 "
         f"C0 is linear in the rows); the estimated geometry's ISO 76 C0 would be {computed or 'unavailable'}"
     )

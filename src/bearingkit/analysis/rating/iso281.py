@@ -49,8 +49,8 @@ class Iso281Life:
     load_rating : float or None [N]
         C of the bearing.
     rating_source : str or None
-        ``"catalogue"`` (the designation's published C), ``"rating_C"`` (a maker's, ``[bearing]
-        rating_C``), ``"given"`` (``load_ratings``) or ``"computed"`` (ISO 281 from the geometry).
+        ``"catalogue"`` (the designation's published C), ``"rating_C"`` / ``"rating_C0"`` (a maker's,
+        ``[bearing] rating_C``), ``"given"`` (``load_ratings``) or ``"computed"`` (ISO 281 from the geometry).
     life, modified_life_n : MaskedArray [rev]
         L10 = (C/P)^p 10⁶ and L_nm = a1 a_ISO L10 (masked without lubrication inputs).
     life_modification : MaskedArray [-]
@@ -276,10 +276,11 @@ def bearing_life(
     c0_cu = c0 if geometry_static_rating is None else float(geometry_static_rating) * n_rows
     c0_source = None if c0 is None else "computed"
     if catalogue is not None and catalogue[0] is not None:
-        label = catalogue[2] if len(catalogue) > 2 else "catalogue"  # "rating_C": a maker's, given
-        c, source = float(catalogue[0]), label
+        # (C's source, C0's source): "rating_C"/"rating_C0" a maker's, given; else the catalogue's
+        sources = catalogue[2] if len(catalogue) > 2 else ("catalogue", "catalogue")
+        c, source = float(catalogue[0]), sources[0]
         if catalogue[1] is not None:
-            c0, c0_source = float(catalogue[1]), label
+            c0, c0_source = float(catalogue[1]), sources[1]
     if c is None:
         return _none(
             n, "ISO 281 basic rating life not computed: the bearing has no ISO 281 C (see the row notes)"
