@@ -7,6 +7,7 @@ import dataclasses
 import io
 import os
 import re
+import xml.etree.ElementTree as ET
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -71,6 +72,15 @@ def decode(src: str) -> np.ndarray:
     head, _, data = src.partition(",")
     assert head == "data:image/png;base64"
     return mpimg.imread(io.BytesIO(base64.b64decode(data, validate=True)), format="png")
+
+
+def decode_svg(src: str) -> ET.Element:
+    """The root element of an inline SVG image (it must parse as XML)."""
+    head, _, data = src.partition(",")
+    assert head == "data:image/svg+xml;base64"
+    text = base64.b64decode(data, validate=True).decode("utf-8")
+    assert "<script" not in text and "href" not in text  # nothing to run, nothing fetched
+    return ET.fromstring(text)
 
 
 def distinct_colours(img: np.ndarray) -> int:
@@ -149,10 +159,20 @@ def test_images_decode_and_are_not_blank(flagship):
     page = Page(html)
     # polar, slice pressure map (roller rows), friction, rating, stress against depth (subsurface)
     assert len(page.images) == 5
+    kinds = []
     for img in page.images:
-        pix = decode(img["src"])
-        assert pix.ndim == 3 and pix.shape[0] > 100 and pix.shape[1] > 500
-        assert distinct_colours(pix) > 20, img["alt"]
+        if img["src"].startswith("data:image/svg+xml"):  # polar, friction, rating: drawn as SVG
+            root = decode_svg(img["src"])
+            assert float(root.get("height")) > 100 and float(root.get("width")) > 300
+            fills = {e.get("fill") for e in root.iter() if e.tag.endswith(("rect", "path"))}
+            assert len(fills - {"white", "none", None}) >= 1 and len(list(root.iter())) > 20, img["alt"]
+            kinds.append("svg")
+        else:  # the slice pressure map and the stresses below the surface: matplotlib PNGs
+            pix = decode(img["src"])
+            assert pix.ndim == 3 and pix.shape[0] > 100 and pix.shape[1] > 500
+            assert distinct_colours(pix) > 20, img["alt"]
+            kinds.append("png")
+    assert kinds.count("svg") == 3
 
 
 def test_no_network_resources(flagship, dgbb):
@@ -160,10 +180,14 @@ def test_no_network_resources(flagship, dgbb):
         page = Page(html)
         assert not page.tags & {"script", "link", "iframe", "object", "embed"}
         before_refs = html.split('<section id="references"')[0]
-        text = re.sub(r"data:image/png;base64,[A-Za-z0-9+/=]+", "", before_refs)
+        text = re.sub(r"data:image/(png|svg\+xml);base64,[A-Za-z0-9+/=]+", "", before_refs)
         assert "data:" not in text and "http" not in text.lower() and "//" not in text
         assert "url(" not in html
-        assert all(i["src"].startswith("data:image/png;base64,") for i in page.images)
+        for i in page.images:
+            if i["src"].startswith("data:image/svg+xml;base64,"):
+                decode_svg(i["src"])  # parses, no script, no link
+            else:
+                assert i["src"].startswith("data:image/png;base64,")
 
 
 def test_references_are_full_citations(flagship):

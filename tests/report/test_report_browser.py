@@ -82,6 +82,9 @@ def test_dom_holds_the_inline_images(report):
     srcs = re.findall(r'<img[^>]*\ssrc="([^"]*)"', dom)
     html = path.read_text(encoding="utf-8")
     assert len(srcs) == html.count("<img ") == 5  # polar, slice map, friction, rating, stress against depth
-    assert all(s.startswith("data:image/png;base64,") and len(s) > 10_000 for s in srcs)
+    # polar, friction and rating as SVG, the slice map and the stresses as PNG
+    assert sum(s.startswith("data:image/svg+xml;base64,") for s in srcs) == 3
+    assert all(s.startswith(("data:image/png;base64,", "data:image/svg+xml;base64,")) for s in srcs)
+    assert all(len(s) > 5_000 for s in srcs)
     for section in ('id="inputs"', 'id="case-0"', 'id="warnings"', 'id="references"'):
         assert section in dom

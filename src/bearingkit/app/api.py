@@ -309,11 +309,12 @@ def _warm_up(lock: threading.Lock) -> None:
     try:
         with lock:
             from bearingkit.pipeline import analyze
-            from bearingkit.report.plots import png_bytes, polar_load_figure
+            from bearingkit.report.plots import polar_load_figure
 
             example = EXAMPLES_DIR / "dgbb_6209.toml"
             a = analyze(str(example) if example.is_file() else "6209", load={"F_x": "1 kN"}, speed="1000 rpm")
             a.to_dict()
-            png_bytes(polar_load_figure(a.statics, 0))
+            polar_load_figure(a.statics, 0).to_svg()
+            import matplotlib.backends.backend_agg  # noqa: F401  (the slice pressure map's backend)
     except Exception:  # a failed warm-up only costs time later; the request will report the real error
         log.debug("warm-up failed", exc_info=True)

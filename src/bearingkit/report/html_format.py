@@ -100,7 +100,7 @@ def _figure_html(fig, alt: str, caption: str) -> str:
         return ""
     width, height = (int(v * plots.DPI + 0.5) for v in fig.get_size_inches())
     return (
-        f'<figure><img alt="{_e(alt)}" width="{width}" height="{height}" src="{plots.png_data_uri(fig)}">'
+        f'<figure><img alt="{_e(alt)}" width="{width}" height="{height}" src="{plots.data_uri(fig)}">'
         f"<figcaption>{_e(caption)}</figcaption></figure>"
     )
 

@@ -1,19 +1,21 @@
-"""Figures of the HTML report (matplotlib, Agg backend, no pyplot global state).
+"""Figures of the HTML report: the per-case charts as SVG (report/svg.py), the slice pressure map with
+matplotlib (Agg backend, no pyplot global state).
 
 SI inside: every function reads SI result arrays (N, Pa, m, rad, N·m) and converts only for the axis
 labels (kN, MPa, mm, degrees, N·mm). Faces never recompute physics: these functions only read
 :class:`~bearingkit.analysis.solver.quasistatic.QuasiStaticResult`,
 :class:`~bearingkit.analysis.friction.components.FrictionResult` and
 :class:`~bearingkit.analysis.rating.assembly.RatingResult`
-objects. Each ``*_figure`` returns a :class:`matplotlib.figure.Figure` (or None when there is nothing
-to draw); :func:`png_data_uri` turns one into an inline ``data:image/png;base64,…`` URI.
+objects. Each ``*_figure`` returns a :class:`~bearingkit.report.svg.SvgFigure` or a
+:class:`matplotlib.figure.Figure` (or None when there is nothing to draw); :func:`data_uri` turns either
+into an inline ``data:`` URI for an ``<img>``.
 
 Figures:
 
-- :func:`polar_load_figure` — element loads at their azimuth, one polar panel per row;
+- :func:`polar_load_figure` — element loads at their azimuth, one polar panel per row (SVG);
 - :func:`slice_pressure_figure` — roller rows: contact pressure per element (azimuth) × slice (position);
-- :func:`friction_figure` — friction torque by component and by row;
-- :func:`rating_figure` — static safety s0 and ISO/TS 16281 life L10r per row.
+- :func:`friction_figure` — friction torque by component and by row (SVG);
+- :func:`rating_figure` — static safety s0 and ISO/TS 16281 life L10r per row (SVG).
 """
 
 from __future__ import annotations
@@ -25,11 +27,13 @@ import math
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from matplotlib.ticker import LogLocator, MaxNLocator, NullFormatter
 
-#: Resolution of the inline PNGs [dots per inch]; with the figure widths below (≤ 11 in) the images
-#: stay ≤ 1100 px wide, the width of the report's text column.
-DPI = 100
+from bearingkit.report import svg
+from bearingkit.report.svg import SvgFigure
+
+#: Resolution of the inline PNGs [dots per inch], the SVG figures' pixels per inch too; with the figure
+#: widths below (≤ 11 in) the images stay ≤ 1100 px wide, the width of the report's text column.
+DPI = svg.DPI
 #: Width of a full-width figure [in].
 FIGURE_WIDTH = 11.0
 #: Polar panels per figure line.
@@ -61,12 +65,17 @@ def png_data_uri(fig: Figure) -> str:
     return "data:image/png;base64," + base64.b64encode(png_bytes(fig)).decode("ascii")
 
 
+def data_uri(fig) -> str:
+    """The inline ``data:`` URI of an SVG figure or a matplotlib one (PNG)."""
+    return fig.data_uri() if isinstance(fig, SvgFigure) else png_data_uri(fig)
+
+
 def _finite(a) -> np.ndarray:
     return np.nan_to_num(np.asarray(a, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
 
 
-def polar_load_figure(result, case: int) -> Figure:
-    """Element loads Q [kN] at their azimuth ψ, one polar panel per row.
+def polar_load_figure(result, case: int) -> SvgFigure:
+    """Element loads Q [kN] at their azimuth, one polar panel per row (an SVG figure, report/svg.py).
 
     Parameters
     ----------
@@ -78,55 +87,34 @@ def polar_load_figure(result, case: int) -> Figure:
     Notes
     -----
     ψ is measured from +x towards +y (design.md §3): 0° points right, angles grow counter-clockwise.
-    Bar colour and length are the element load; unloaded elements show as a grey dot on the pitch circle.
+    Bar colour and length are the element load; unloaded elements show as a grey dot on the rim.
     """
     states = list(result.rows)
     n = len(states)
     cols = min(POLAR_COLUMNS, n)
     lines = math.ceil(n / cols)
-    height = 3.6 * lines + 0.4
-    fig = _figure(
-        FIGURE_WIDTH * cols / POLAR_COLUMNS,
-        height,
-        top=0.95,
-        bottom=0.3,
-        left=0.04,
-        right=0.96,
-        wspace=0.3,
-        hspace=0.55,
-    )
-    from matplotlib import colormaps
-
-    cmap = colormaps[COLORMAP]
+    cell_w, cell_h, top = FIGURE_WIDTH * DPI / POLAR_COLUMNS, 3.6 * DPI, 0.4 * DPI
+    fig = SvgFigure(cell_w * cols, top + cell_h * lines)
     for i, s in enumerate(states):
-        ax = fig.add_subplot(lines, cols, i + 1, projection="polar")
         psi = np.mod(np.broadcast_to(s.azimuth, s.load.shape)[case], 2 * np.pi)
         q = _finite(s.load[case]) / 1e3
         q_max = float(q.max()) if q.size else 0.0
         scale = q_max if q_max > 0 else 1.0
-        width = 2 * np.pi / max(len(psi), 1) * 0.8
-        ax.bar(psi, q, width=width, bottom=0.0, color=cmap(q / scale), edgecolor="none")
-        ax.scatter(psi[q <= 0], np.zeros(int(np.sum(q <= 0))), s=6, color=_NEUTRAL, zorder=3)
-        ax.set_ylim(0, scale * 1.1)
-        if q_max <= 0:
-            ax.text(
-                0,
-                0,
-                "no loaded element",
-                ha="center",
-                va="center",
-                fontsize=9,
-                color=_WARN,
-                bbox={"facecolor": "white", "edgecolor": "none"},
-            )
-        ax.set_rlabel_position(112.5)
-        ax.set_thetagrids(np.arange(0, 360, 45), [f"{a}°" for a in range(0, 360, 45)])
-        ax.yaxis.set_major_locator(MaxNLocator(3))
-        ax.tick_params(labelsize=7)
         loaded = int(np.count_nonzero(q > 0))
-        ax.set_title(
-            f"{s.name} ({s.kind})\n{loaded}/{len(q)} loaded, Q_max = {q_max:.3g} kN", fontsize=9, pad=14
+        centre = (cell_w * (i % cols + 0.5), top + cell_h * (i // cols) + 0.55 * cell_h)
+        svg.polar_panel(
+            fig,
+            centre,
+            min(0.5 * cell_w - 40, 0.5 * cell_h - 60),
+            psi,
+            q,
+            scale=scale * 1.1,
+            colors=svg.colour(COLORMAP, q / scale),
+            title=[f"{s.name} ({s.kind})", f"{loaded}/{len(q)} loaded, Q_max = {q_max:.3g} kN"],
+            unloaded_colour=_NEUTRAL,
         )
+        if q_max <= 0:
+            fig.text(*centre, "no loaded element", size=9, anchor="middle", color=_WARN)
     return fig
 
 
@@ -220,23 +208,17 @@ def slice_pressure_figure(result, case: int) -> Figure | None:
     return fig
 
 
-def _hbar(ax, labels, values_nmm, title):
-    y = np.arange(len(labels))
-    v = _finite(values_nmm)
-    ax.barh(y, v, color=_OK)
-    ax.set_yticks(y, labels, fontsize=8)
-    ax.invert_yaxis()
-    ax.set_xlabel("friction torque [N·mm]", fontsize=8)
-    ax.tick_params(axis="x", labelsize=7)
-    ax.set_title(title, fontsize=9)
-    top = float(v.max()) if v.size and v.max() > 0 else 1.0
-    ax.set_xlim(0, top * 1.25)
-    for yi, vi in zip(y, v, strict=True):
-        ax.text(vi + top * 0.01, yi, f"{vi:.4g}", va="center", fontsize=7)
+def _hbar_panels(fig: SvgFigure, panels: list[dict], top: float, bottom: float) -> None:
+    """Side-by-side horizontal bar panels (svg.hbar_panel), each with room for its longest label."""
+    width = fig.width / len(panels)
+    for i, p in enumerate(panels):
+        margin = max((svg.text_width(label, 8) for label in p["labels"]), default=0.0) + 12
+        x0 = i * width + min(margin, 0.45 * width)
+        svg.hbar_panel(fig, (x0, top, (i + 1) * width - x0 - 60, fig.height - top - bottom), **p)
 
 
-def friction_figure(friction, case: int) -> Figure:
-    """Friction torque [N·mm] of one case by component and by row (horizontal bars).
+def friction_figure(friction, case: int) -> SvgFigure:
+    """Friction torque [N·mm] of one case by component and by row (horizontal bars, SVG).
 
     Parameters
     ----------
@@ -244,18 +226,35 @@ def friction_figure(friction, case: int) -> Figure:
         ``components`` and ``by_row``: dict name → (C,) [N·m]; each sums to ``total``.
     case : int
     """
-    height = 1.3 + 0.26 * max(len(friction.components), len(friction.by_row), 3)
-    fig = _figure(FIGURE_WIDTH, height, top=0.65, left=0.15, right=0.98, wspace=0.5)
-    comp = list(friction.components.items())
-    rows = list(friction.by_row.items())
-    _hbar(fig.add_subplot(1, 2, 1), [k for k, _ in comp], [v[case] * 1e3 for _, v in comp], "by component")
-    _hbar(fig.add_subplot(1, 2, 2), [k for k, _ in rows], [v[case] * 1e3 for _, v in rows], "by row")
-    fig.suptitle(f"Friction torque M = {float(friction.total[case]) * 1e3:.5g} N·mm", fontsize=10)
+    height = (1.3 + 0.26 * max(len(friction.components), len(friction.by_row), 3)) * DPI
+    fig = SvgFigure(FIGURE_WIDTH * DPI, height)
+    fig.text(
+        fig.width / 2,
+        16,
+        f"Friction torque M = {float(friction.total[case]) * 1e3:.5g} N·mm",
+        size=10,
+        anchor="middle",
+    )
+    panels = []
+    for title, parts in (("by component", friction.components), ("by row", friction.by_row)):
+        v = _finite([x[case] * 1e3 for x in parts.values()])
+        top = float(v.max()) if v.size and v.max() > 0 else 1.0
+        panels.append(
+            dict(
+                labels=list(parts),
+                values=v,
+                colors=[_OK] * len(v),
+                xlim=(0.0, top * 1.25),
+                title=title,
+                xlabel="friction torque [N·mm]",
+            )
+        )
+    _hbar_panels(fig, panels, top=52, bottom=40)
     return fig
 
 
-def rating_figure(rating, case: int) -> Figure:
-    """Static safety s0 and basic reference rating life L10r [rev] per row (log scales).
+def rating_figure(rating, case: int) -> SvgFigure:
+    """Static safety s0 and basic reference rating life L10r [rev] per row (log scales, SVG).
 
     Parameters
     ----------
@@ -269,40 +268,34 @@ def rating_figure(rating, case: int) -> Figure:
     The dashed line is s0 = 1 (ISO 76: the limit contact pressure is reached); rows below it are red.
     """
     names = [r.name for r in rating.rows]
-    fig = _figure(FIGURE_WIDTH, 1.2 + 0.3 * max(len(names), 3), top=0.35, left=0.12, right=0.98, wspace=0.45)
-    y = np.arange(len(names))
-    for k, (attr, xlabel, title) in enumerate(
-        (
-            ("static_safety", "static safety s0 [-]", "static safety (ISO 76, from p_max)"),
-            ("life", "L10r [revolutions]", "basic reference rating life (ISO/TS 16281)"),
-        )
+    fig = SvgFigure(FIGURE_WIDTH * DPI, (1.2 + 0.3 * max(len(names), 3)) * DPI)
+    panels = []
+    for attr, xlabel, title in (
+        ("static_safety", "static safety s0 [-]", "static safety (ISO 76, from p_max)"),
+        ("life", "L10r [revolutions]", "basic reference rating life (ISO/TS 16281)"),
     ):
-        ax = fig.add_subplot(1, 2, k + 1)
         vals = [getattr(r, attr)[case] for r in rating.rows]
         ok = np.array([v is not np.ma.masked and np.isfinite(float(v)) and float(v) > 0 for v in vals])
         data = np.array([float(v) if o else 0.0 for v, o in zip(vals, ok, strict=True)])
-        colors = [
-            _WARN if attr == "static_safety" and o and d < S0_REQUIRED else _OK
-            for d, o in zip(data, ok, strict=True)
-        ]
-        ax.barh(y[ok], data[ok], color=[c for c, o in zip(colors, ok, strict=True) if o])
-        ax.set_xscale("log")
         lo = float(data[ok].min()) if ok.any() else 1.0
         hi = float(data[ok].max()) if ok.any() else 10.0
         if attr == "static_safety":
             lo, hi = min(lo, S0_REQUIRED), max(hi, S0_REQUIRED)
-            ax.axvline(S0_REQUIRED, color=_WARN, ls="--", lw=1)
-        left = lo / 10**0.5
-        ax.set_xlim(left, hi * 10**0.8)
-        for yi, d, o in zip(y, data, ok, strict=True):
-            ax.text(d * 1.08 if o else left * 1.1, yi, f"{d:.3g}" if o else "n/a", va="center", fontsize=7)
-        ax.set_yticks(y, names, fontsize=8)
-        ax.invert_yaxis()
-        ax.set_xlabel(xlabel, fontsize=8)
-        # decade labels only: matplotlib labels the minor ticks of a short log span ("3×10⁴ 4×10⁴ …"),
-        # which run into each other on a narrow panel
-        ax.xaxis.set_major_locator(LogLocator(base=10.0, numticks=6))
-        ax.xaxis.set_minor_formatter(NullFormatter())
-        ax.tick_params(axis="x", labelsize=7)
-        ax.set_title(title, fontsize=9)
+        panels.append(
+            dict(
+                labels=names,
+                values=np.where(ok, data, np.nan),
+                colors=[
+                    _WARN if attr == "static_safety" and o and d < S0_REQUIRED else _OK
+                    for d, o in zip(data, ok, strict=True)
+                ],
+                xlim=(lo / 10**0.5, hi * 10**0.8),
+                log=True,
+                shown=[f"{d:.3g}" if o else "n/a" for d, o in zip(data, ok, strict=True)],
+                title=title,
+                xlabel=xlabel,
+                vline=(S0_REQUIRED, _WARN) if attr == "static_safety" else None,
+            )
+        )
+    _hbar_panels(fig, panels, top=30, bottom=40)
     return fig

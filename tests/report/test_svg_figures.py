@@ -1,0 +1,133 @@
+"""The report's SVG figures (report/svg.py) draw what the results say: one wedge per loaded element at its
+azimuth with a length proportional to its load, one bar per friction component and row with its value,
+s0 below 1 in the warning colour, "n/a" for a missing life; row names escaped; equal data, equal bytes."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import bearingkit as bk
+from bearingkit.report import plots, svg
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+@pytest.fixture(scope="module")
+def composite():
+    """Seed 000's five-row turntable (rollers and balls, friction by component and by row)."""
+    return bk.analyze("examples/seed000_composite.toml")
+
+
+def _root(fig) -> ET.Element:
+    return ET.fromstring(fig.to_svg())
+
+
+def test_polar_wedges_are_the_loaded_elements_at_their_azimuth(composite):
+    st = composite.statics
+    fig = plots.polar_load_figure(st, 0)
+    root = _root(fig)
+    wedges = [e for e in root.iter(SVG + "path") if e.get("data-value")]
+    rows = list(st.rows)
+    loads = [np.asarray(r.load[0]) / 1e3 for r in rows]
+    assert len(wedges) == sum(int(np.count_nonzero(q > 0)) for q in loads)
+    # panel by panel (in row order): the wedge values are the loaded elements' Q [kN], in azimuth order
+    k = 0
+    for row, q in zip(rows, loads, strict=True):
+        psi = np.mod(np.broadcast_to(row.azimuth, row.load.shape)[0], 2 * np.pi)
+        loaded = q > 0
+        got = wedges[k : k + int(loaded.sum())]
+        k += int(loaded.sum())
+        np.testing.assert_allclose([float(w.get("data-value")) for w in got], q[loaded], rtol=1e-5)
+        np.testing.assert_allclose([float(w.get("data-psi")) for w in got], psi[loaded], rtol=1e-5, atol=1e-6)
+        # wedge length ∝ Q: the arc's radius over the largest one is Q/Q_max
+        radii = np.array([float(re.search(r"A([0-9.]+) ", w.get("d")).group(1)) for w in got])
+        np.testing.assert_allclose(radii / radii.max(), q[loaded] / q.max(), atol=2e-3)
+        # the longest wedge points at its ψ (counter-clockwise from +x, SVG y downwards)
+        longest = int(np.argmax(radii))
+        m = re.match(
+            r"M([-0-9.]+) ([-0-9.]+)L([-0-9.]+) ([-0-9.]+)A[^ ]+ [^ ]+ 0 0 0 ([-0-9.]+) ([-0-9.]+)Z",
+            got[longest].get("d"),
+        )
+        cx, cy, x1, y1, x2, y2 = (float(v) for v in m.groups())
+        mid = math.atan2(-((y1 + y2) / 2 - cy), (x1 + x2) / 2 - cx)
+        assert abs(math.remainder(mid - psi[loaded][longest], 2 * math.pi)) < 0.01
+    # titles carry the loaded count and Q_max of each row
+    texts = [t.text for t in root.iter(SVG + "text")]
+    for q in loads:
+        assert f"{int(np.count_nonzero(q > 0))}/{len(q)} loaded, Q_max = {q.max():.3g} kN" in texts
+
+
+def test_friction_bars_are_the_components_and_rows(composite):
+    from bearingkit.report import _shown
+
+    fr = _shown(composite.friction)  # what the report draws: components and rows
+    root = _root(plots.friction_figure(fr, 0))
+    bars = [float(e.get("data-value")) for e in root.iter(SVG + "rect") if e.get("data-value")]
+    expected = [v[0] * 1e3 for v in fr.components.values()] + [v[0] * 1e3 for v in fr.by_row.values()]
+    np.testing.assert_allclose(bars, expected, rtol=1e-5)
+    texts = [t.text for t in root.iter(SVG + "text")]
+    assert f"Friction torque M = {float(fr.total[0]) * 1e3:.5g} N·mm" in texts
+    assert set(fr.components) <= set(texts) and set(fr.by_row) <= set(texts)
+
+
+def test_rating_bars_warn_below_s0_1_and_say_na(composite):
+    rating = composite.rating
+    rows = [dataclasses.replace(r) for r in rating.rows]
+    rows[0].static_safety = np.ma.array([0.5])  # below ISO 76's s0 = 1
+    rows[1].life = np.ma.masked_all(1)  # no life
+    fig = plots.rating_figure(dataclasses.replace(rating, rows=rows), 0)
+    root = _root(fig)
+    bars = [e for e in root.iter(SVG + "rect") if e.get("data-value")]
+    s0 = bars[: len(rows)]
+    assert s0[0].get("fill") == plots._WARN and all(b.get("fill") == plots._OK for b in s0[1:])
+    assert float(s0[0].get("data-value")) == 0.5
+    assert len(bars) == 2 * len(rows) - 1  # the masked life is not drawn
+    assert [t.text for t in root.iter(SVG + "text")].count("n/a") == 1
+    dashed = [e for e in root.iter(SVG + "line") if e.get("stroke-dasharray")]
+    assert len(dashed) == 1  # s0 = 1
+
+
+def test_names_are_escaped_and_equal_data_give_equal_bytes():
+    fig = svg.SvgFigure(400, 200)
+    svg.hbar_panel(
+        fig,
+        (150, 30, 200, 120),
+        ["<row&1>", "b"],
+        [2.0, 5.0],
+        colors=["#2e86c1"] * 2,
+        xlim=(0.0, 6.0),
+        title="t",
+        xlabel="x [-]",
+    )
+    text = fig.to_svg()
+    assert "<row&1>" not in text and "&lt;row&amp;1&gt;" in text
+    root = ET.fromstring(text)
+    assert "<row&1>" in [t.text for t in root.iter(SVG + "text")]
+    again = svg.SvgFigure(400, 200)
+    svg.hbar_panel(
+        again,
+        (150, 30, 200, 120),
+        ["<row&1>", "b"],
+        [2.0, 5.0],
+        colors=["#2e86c1"] * 2,
+        xlim=(0.0, 6.0),
+        title="t",
+        xlabel="x [-]",
+    )
+    assert again.to_svg() == text
+    # bar lengths are the values on the axis: 2 and 5 of 0…6 over 200 px
+    widths = [float(e.get("width")) for e in root.iter(SVG + "rect") if e.get("data-value")]
+    np.testing.assert_allclose(widths, [200 * 2 / 6, 200 * 5 / 6], atol=0.06)
+
+
+def test_log_axis_labels_every_decade_in_range():
+    fig = svg.SvgFigure(600, 150)
+    svg.hbar_panel(fig, (100, 20, 400, 80), ["a"], [3e5], colors=["#000"], xlim=(1e3, 1e7), log=True)
+    texts = [t.text for t in ET.fromstring(fig.to_svg()).iter(SVG + "text")]
+    assert {"10³", "10⁵", "10⁷"} <= set(texts)
