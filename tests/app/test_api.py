@@ -405,3 +405,20 @@ def test_form_values_are_short_text(client):
     data = error_of(analyze(client, loads={"F_x": "1" * 65 + " N"}), 422)
     assert data["error"].startswith("loads.F_x:")
     assert error_of(analyze(client, speed="1" * 65), 422)["error"].startswith("speed:")
+
+
+def test_the_pressure_map_is_an_svg_of_the_roller_rows(client):
+    """``pressure_map`` true for a roller bearing, and its figure an SVG image (false, and a 404, for balls)."""
+    import xml.etree.ElementTree as ET
+
+    r = client.post("/api/analyze", json={"source": {"kind": "example", "name": "crb_nu209.toml"}})
+    assert r.status_code == 200, r.text
+    data = r.json()
+    assert data["pressure_map"] is True
+    fig = client.get(f"/api/figure/{data['id']}/pressure.svg")
+    assert fig.status_code == 200 and fig.headers["content-type"].startswith("image/svg+xml")
+    root = ET.fromstring(fig.text)
+    assert root.tag.endswith("svg") and "script" not in fig.text
+    balls = analyze(client).json()
+    assert balls["pressure_map"] is False
+    assert client.get(f"/api/figure/{balls['id']}/pressure.svg").status_code == 404

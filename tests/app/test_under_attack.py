@@ -209,7 +209,7 @@ TRAVERSAL = [
     "/api/download/..%252F..%252Fetc%252Fpasswd",
     "/api/download/0123456789abcdef.toml%00.html",
     "/api/download/..%5C..%5Cwindows%5Cwin.ini",
-    "/api/figure/..%2F..%2Fetc%2Fpasswd/pressure.png",
+    "/api/figure/..%2F..%2Fetc%2Fpasswd/pressure.svg",
     "/api/figure/system/..%2F..%2F/..%2Fetc%2Fpasswd",
     "/api/study/..%2F..%2Fetc%2Fpasswd",
     "/api/study/0123456789abcdef/figure/..%2Fstudy.toml",

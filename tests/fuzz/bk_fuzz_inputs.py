@@ -428,7 +428,7 @@ def app_requests() -> list[tuple[str, str, dict | None]]:
             {"base": form, "factor": "speed", "start": "100 rpm", "stop": "3000 rpm", "n": 3},
         ),
         ("GET", "/api/download/0123456789abcdef.json", None),
-        ("GET", "/api/figure/0123456789abcdef/pressure.png", None),
+        ("GET", "/api/figure/0123456789abcdef/pressure.svg", None),
     ]
 
 

@@ -161,18 +161,18 @@ def test_images_decode_and_are_not_blank(flagship):
     assert len(page.images) == 5
     kinds = []
     for img in page.images:
-        if img["src"].startswith("data:image/svg+xml"):  # polar, friction, rating: drawn as SVG
+        if img["src"].startswith("data:image/svg+xml"):  # polar, slice map, friction, rating: SVG
             root = decode_svg(img["src"])
             assert float(root.get("height")) > 100 and float(root.get("width")) > 300
             fills = {e.get("fill") for e in root.iter() if e.tag.endswith(("rect", "path"))}
             assert len(fills - {"white", "none", None}) >= 1 and len(list(root.iter())) > 20, img["alt"]
             kinds.append("svg")
-        else:  # the slice pressure map and the stresses below the surface: matplotlib PNGs
+        else:  # the stresses below the surface: a matplotlib PNG
             pix = decode(img["src"])
             assert pix.ndim == 3 and pix.shape[0] > 100 and pix.shape[1] > 500
             assert distinct_colours(pix) > 20, img["alt"]
             kinds.append("png")
-    assert kinds.count("svg") == 3
+    assert kinds.count("svg") == 4
 
 
 def test_no_network_resources(flagship, dgbb):

@@ -82,8 +82,8 @@ def test_dom_holds_the_inline_images(report):
     srcs = re.findall(r'<img[^>]*\ssrc="([^"]*)"', dom)
     html = path.read_text(encoding="utf-8")
     assert len(srcs) == html.count("<img ") == 5  # polar, slice map, friction, rating, stress against depth
-    # polar, friction and rating as SVG, the slice map and the stresses as PNG
-    assert sum(s.startswith("data:image/svg+xml;base64,") for s in srcs) == 3
+    # polar, slice map, friction and rating as SVG, the stresses as PNG
+    assert sum(s.startswith("data:image/svg+xml;base64,") for s in srcs) == 4
     assert all(s.startswith(("data:image/png;base64,", "data:image/svg+xml;base64,")) for s in srcs)
     assert all(len(s) > 5_000 for s in srcs)
     for section in ('id="inputs"', 'id="case-0"', 'id="warnings"', 'id="references"'):

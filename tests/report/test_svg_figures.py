@@ -131,3 +131,20 @@ def test_log_axis_labels_every_decade_in_range():
     svg.hbar_panel(fig, (100, 20, 400, 80), ["a"], [3e5], colors=["#000"], xlim=(1e3, 1e7), log=True)
     texts = [t.text for t in ET.fromstring(fig.to_svg()).iter(SVG + "text")]
     assert {"10³", "10⁵", "10⁷"} <= set(texts)
+
+
+def test_slice_map_has_one_cell_per_element_and_slice_coloured_by_pressure():
+    a = bk.analyze("examples/crb_nu209.toml")
+    st = a.statics
+    (row,) = plots.roller_rows(st)
+    values, _, scale = plots._slice_pressure(row, 0)
+    root = _root(plots.slice_pressure_figure(st, 0))
+    group = next(g for g in root.iter(SVG + "g"))  # the map's cells (the colour bar is the second group)
+    cells = [e.get("fill") for e in group.iter(SVG + "rect")]
+    z, n_s = values.shape
+    assert len(cells) == z * n_s
+    top, bottom = svg.colour(plots.COLORMAP, [1.0, 0.0])
+    assert cells.count(top) >= 1 and cells.count(bottom) == int(np.count_nonzero(values <= 0))
+    texts = [t.text for t in root.iter(SVG + "text")]
+    assert f"{row.name}: max. slice pressure (inner/outer) [MPa]" in texts and "slice position [mm]" in texts
+    assert scale == 1e-6

@@ -10,7 +10,7 @@ reads the :class:`~bearingkit.pipeline.Analysis`; it computes no physics. Routes
 - ``POST /api/analyze`` the page's state → ``{"id", "analysis": Analysis.to_dict(), …}``;
 - ``POST /api/sweep`` a one-factor sweep (:mod:`bearingkit.app.sweep`);
 - ``GET /api/download/<id>.toml|json|html`` the input, the JSON and the HTML report of an analysis;
-- ``GET /api/figure/<id>/pressure.png`` the slice-pressure map of roller rows
+- ``GET /api/figure/<id>/pressure.svg`` the slice-pressure map of roller rows
   (:mod:`bearingkit.report.plots`);
 - the workbench's routes (catalogue, comparison, shaft, drivetrain, studies, duty cycles):
   :mod:`bearingkit.app.workbench.routes`.
@@ -264,9 +264,9 @@ def create_app(
             ) from None
         return FileResponse(path, media_type=media, filename=filename)
 
-    @app.get("/api/figure/{key}/pressure.png")
+    @app.get("/api/figure/{key}/pressure.svg")
     def pressure_map(key: str):
-        from bearingkit.report.plots import png_bytes, slice_pressure_figure
+        from bearingkit.report.plots import slice_pressure_figure
 
         kept = store.get(key) if len(key) == 16 else None
         if kept is None:
@@ -275,8 +275,8 @@ def create_app(
             fig = slice_pressure_figure(kept.analysis.statics, 0)
             if fig is None:
                 raise HTTPException(404, "no roller row with slices: no pressure map")
-            png = png_bytes(fig)
-        return Response(png, media_type="image/png", headers={"Cache-Control": "no-store"})
+            image = fig.to_svg().encode("utf-8")
+        return Response(image, media_type="image/svg+xml", headers={"Cache-Control": "no-store"})
 
     # the workbench's pages: catalogue, shaft, drivetrain, studies, duty cycles (same middleware)
     bench = register_workbench(app, store, compute, analyze_document)

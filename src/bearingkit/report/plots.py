@@ -1,5 +1,5 @@
-"""Figures of the HTML report: the per-case charts as SVG (report/svg.py), the slice pressure map with
-matplotlib (Agg backend, no pyplot global state).
+"""Figures of the HTML report, drawn for every bearing and load case: SVG (report/svg.py); the PNG
+helpers serve the matplotlib figures of the other report modules (Agg backend, no pyplot global state).
 
 SI inside: every function reads SI result arrays (N, Pa, m, rad, N·m) and converts only for the axis
 labels (kN, MPa, mm, degrees, N·mm). Faces never recompute physics: these functions only read
@@ -13,7 +13,7 @@ into an inline ``data:`` URI for an ``<img>``.
 Figures:
 
 - :func:`polar_load_figure` — element loads at their azimuth, one polar panel per row (SVG);
-- :func:`slice_pressure_figure` — roller rows: contact pressure per element (azimuth) × slice (position);
+- :func:`slice_pressure_figure` — roller rows: contact pressure per element (azimuth) × slice (SVG);
 - :func:`friction_figure` — friction torque by component and by row (SVG);
 - :func:`rating_figure` — static safety s0 and ISO/TS 16281 life L10r per row (SVG).
 """
@@ -138,7 +138,7 @@ def _edges(centres: np.ndarray) -> np.ndarray:
     return np.concatenate([[2 * centres[0] - mid[0]], mid, [2 * centres[-1] - mid[-1]]])
 
 
-def slice_pressure_figure(result, case: int) -> Figure | None:
+def slice_pressure_figure(result, case: int) -> SvgFigure | None:
     """Slice pressure map of every sliced roller row (n_s ≥ 2): element (azimuth) × slice; else None.
 
     Parameters
@@ -158,9 +158,9 @@ def slice_pressure_figure(result, case: int) -> Figure | None:
     states = roller_rows(result)
     if not states:
         return None
-    fig = _figure(FIGURE_WIDTH, 2.5 * len(states) + 0.3, top=0.35, left=0.07, right=1.0, hspace=0.75)
+    row_h, top = 2.5 * DPI, 0.3 * DPI
+    fig = SvgFigure(FIGURE_WIDTH * DPI, row_h * len(states) + top)
     for i, s in enumerate(states):
-        ax = fig.add_subplot(len(states), 1, i + 1)
         values, label, scale = _slice_pressure(s, case)
         psi = np.degrees(np.mod(np.broadcast_to(s.azimuth, s.load.shape)[case], 2 * np.pi))
         order = np.argsort(psi)
@@ -172,39 +172,20 @@ def slice_pressure_figure(result, case: int) -> Figure | None:
         else:
             y = np.arange(n_s, dtype=float)
             ylabel = "slice"
-        x = np.arange(len(psi) + 1, dtype=float) - 0.5
-        shown = (values[order] * scale).T
-        top = float(shown.max()) if shown.size else 0.0
-        mesh = ax.pcolormesh(
-            x,
-            _edges(np.asarray(y, dtype=float)),
-            shown,
-            shading="flat",
-            cmap=COLORMAP,
-            vmin=0.0,
-            vmax=top if top > 0 else 1.0,
-            rasterized=True,
-        )
-        if top <= 0:
-            ax.text(
-                0.5,
-                0.5,
-                "no loaded roller",
-                transform=ax.transAxes,
-                ha="center",
-                va="center",
-                fontsize=9,
-                color=_WARN,
-                bbox={"facecolor": "white", "edgecolor": "none"},
-            )
         ticks = np.linspace(0, len(psi) - 1, min(len(psi), 9)).round().astype(int)
-        ax.set_xticks(ticks, [f"{psi[order][t]:.0f}°" for t in ticks], fontsize=7)
-        ax.tick_params(axis="y", labelsize=7)
-        ax.set_xlabel("element, sorted by azimuth ψ", fontsize=8)
-        ax.set_ylabel(ylabel, fontsize=8)
-        ax.set_title(f"{s.name}: {label}", fontsize=9)
-        cb = fig.colorbar(mesh, ax=ax, pad=0.01)
-        cb.ax.tick_params(labelsize=7)
+        svg.heatmap_panel(
+            fig,
+            (77.0, top + i * row_h + 22, FIGURE_WIDTH * DPI - 77 - 75, row_h - 22 - 48),
+            (values[order] * scale).T,
+            _edges(np.asarray(y, dtype=float)),
+            cmap=COLORMAP,
+            x_labels=[(int(t), f"{psi[order][t]:.0f}°") for t in ticks],
+            title=f"{s.name}: {label}",
+            xlabel="element, sorted by azimuth ψ",
+            ylabel=ylabel,
+            empty="no loaded roller",
+            empty_colour=_WARN,
+        )
     return fig
 
 

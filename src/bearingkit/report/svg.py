@@ -76,11 +76,14 @@ class SvgFigure:
     def path(self, d: str, fill: str, data: str = "") -> None:
         self.parts.append(f'<path d="{d}" fill="{fill}"{data}/>')
 
-    def text(self, x, y, text: str, size=8.0, anchor="start", color=_TEXT, bold=False, baseline="middle"):
+    def text(
+        self, x, y, text: str, size=8.0, anchor="start", color=_TEXT, bold=False, baseline="middle", rotate=0
+    ):
         w = ' font-weight="bold"' if bold else ""
+        r = f' transform="rotate({_n(rotate)} {_n(x)} {_n(y)})"' if rotate else ""
         self.parts.append(
             f'<text x="{_n(x)}" y="{_n(y)}" font-size="{_n(size)}" text-anchor="{anchor}" '
-            f'dominant-baseline="{baseline}" fill="{color}"{w}>{escape(text, quote=False)}</text>'
+            f'dominant-baseline="{baseline}" fill="{color}"{w}{r}>{escape(text, quote=False)}</text>'
         )
 
     def to_svg(self) -> str:
@@ -253,3 +256,71 @@ def polar_panel(
         fig.path(d, c, data=f' data-psi="{p:.6g}" data-value="{v:.6g}"')
     for i, line in enumerate(title):
         fig.text(cx, cy - radius - 34 + 12 * i - 12 * (len(title) - 1), line, size=9, anchor="middle")
+
+
+def heatmap_panel(
+    fig: SvgFigure,
+    box: tuple[float, float, float, float],
+    values,
+    y_edges,
+    *,
+    cmap: str,
+    x_labels: list[tuple[int, str]],
+    title: str,
+    xlabel: str,
+    ylabel: str,
+    empty: str,
+    empty_colour: str,
+) -> None:
+    """A colour map of ``values`` (n_y, n_x): column j spans x ∈ [j, j+1] of the ``box``, row i spans
+    ``y_edges[i]…y_edges[i+1]`` (increasing, drawn upwards); a colour bar from 0 to the largest value
+    on the right; ``x_labels`` (column index, text) under the columns."""
+    x0, y0, w, h = box
+    v = np.asarray(values, dtype=float)
+    edges = np.asarray(y_edges, dtype=float)
+    n_y, n_x = v.shape
+    top = float(v.max()) if v.size else 0.0
+    vmax = top if top > 0 else 1.0
+    colours = np.asarray(colour(cmap, (v / vmax).ravel())).reshape(v.shape)
+    span = edges[-1] - edges[0] if edges[-1] != edges[0] else 1.0
+
+    def py(e):
+        return y0 + h - (e - edges[0]) / span * h
+
+    dx = w / max(n_x, 1)
+    fig.parts.append('<g shape-rendering="crispEdges">')  # no anti-aliased seams between the cells
+    for i in range(n_y):
+        ya, yb = py(edges[i + 1]), py(edges[i])
+        for j in range(n_x):
+            # each cell a little wider than its pitch: no hairline gaps between neighbours when scaled
+            fig.rect(x0 + j * dx, ya, dx + 0.3, yb - ya + 0.3, colours[i, j])
+    fig.parts.append("</g>")
+    fig.line(x0, y0, x0, y0 + h)
+    fig.line(x0, y0 + h, x0 + w, y0 + h)
+    fig.line(x0, y0, x0 + w, y0, color=_GRID)
+    fig.line(x0 + w, y0, x0 + w, y0 + h, color=_GRID)
+    for j, label in x_labels:
+        x = x0 + (j + 0.5) * dx
+        fig.line(x, y0 + h, x, y0 + h + 4, width=0.8)
+        fig.text(x, y0 + h + 12, label, size=7, anchor="middle")
+    for t in _linear_ticks(float(edges[0]), float(edges[-1]), 5):
+        y = py(t)
+        fig.line(x0 - 4, y, x0, y, width=0.8)
+        fig.text(x0 - 6, y, f"{t:g}", size=7, anchor="end")
+    fig.text(x0 + w / 2, y0 + h + 26, xlabel, size=8, anchor="middle")
+    fig.text(x0 - 44, y0 + h / 2, ylabel, size=8, anchor="middle", rotate=-90)
+    fig.text(x0 + w / 2, y0 - 9, title, size=9, anchor="middle")
+    if top <= 0:
+        fig.text(x0 + w / 2, y0 + h / 2, empty, size=9, anchor="middle", color=empty_colour)
+    # colour bar
+    bx, bw, steps = x0 + w + 12, 14, 64
+    ramp = colour(cmap, (np.arange(steps) + 0.5) / steps)
+    fig.parts.append('<g shape-rendering="crispEdges">')
+    for k, c in enumerate(ramp):
+        fig.rect(bx, y0 + h - (k + 1) * h / steps, bw, h / steps + 0.3, c)
+    fig.parts.append("</g>")
+    fig.rect(bx, y0, bw, h, "none", stroke=_AXIS)
+    for t in _linear_ticks(0.0, vmax, 5):
+        y = y0 + h - t / vmax * h
+        fig.line(bx + bw, y, bx + bw + 4, y, width=0.8)
+        fig.text(bx + bw + 6, y, f"{t:g}", size=7)

@@ -522,7 +522,7 @@ function renderFriction(c) {
 function renderPressure(data, c) {
   const box = $("pressure");
   if (data.pressure_map) {
-    box.replaceChildren(el("img", { src: `/api/figure/${data.id}/pressure.png`, alt: "slice pressure map", id: "pressure-map" }));
+    box.replaceChildren(el("img", { src: `/api/figure/${data.id}/pressure.svg`, alt: "slice pressure map", id: "pressure-map" }));
   } else {
     const p = c.rows.map((r) => `${r.name}: p_max ${fmt(r.max_pressure_Pa / 1e6, 4)} MPa`).join("; ");
     box.replaceChildren(el("p", { class: "muted" }, `No roller row with slices in this bearing (${p}).`));
