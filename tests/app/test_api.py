@@ -408,7 +408,7 @@ def test_form_values_are_short_text(client):
 
 
 def test_the_pressure_map_is_an_svg_of_the_roller_rows(client):
-    """``pressure_map`` true for a roller bearing, and its figure an SVG image (false, and a 404, for balls)."""
+    """``pressure_map`` true for a roller bearing, its figure an SVG image (false and a 404 for balls)."""
     import xml.etree.ElementTree as ET
 
     r = client.post("/api/analyze", json={"source": {"kind": "example", "name": "crb_nu209.toml"}})
