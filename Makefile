@@ -31,15 +31,14 @@ compile: $(STAMP)
 run: compile
 	$(BIN)/bearingkit run-flagship
 
-# ruff; the wheel built, installed in a fresh venv and used from outside the tree; the compiled core
-# built once before the parallel tests (their processes then load it); the tests (the ROSS export
-# among them) on every core; every published number.
+# ruff; the compiled core built once before the parallel tests (their processes then load it); the tests
+# on every core (the ROSS export among them), except the cases marked slow (make test-slow; .ci/run runs
+# both); every published number; 300 fuzz mutants.
 test: $(STAMP)
 	$(BIN)/ruff check .
-	$(BIN)/python scripts/check_wheel.py
 	$(BIN)/bearingkit compile
 	bash scripts/ensure_chromium.sh
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m "not slow or ross"
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m "not slow"
 	$(BIN)/bearingkit validate
 	$(BIN)/python tests/fuzz/bk_fuzz_run.py --n $(CI_FUZZ_N)
 
@@ -63,9 +62,15 @@ ross3:
 	.venv-ross3/bin/python -c "import ross, sys; print('ROSS', ross.__version__, 'on Python', sys.version.split()[0])"
 	BEARINGKIT_BACKEND=numpy .venv-ross3/bin/python -m pytest -p no:cacheprovider -m ross tests/systems
 
+# The cases marked slow: larger repeats of what `make test` checks, process kills, every workbench page in
+# Chromium, the ROSS drivetrain rotors (each marker's comment says why it is slow and what stays fast).
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -n $(JOBS) -m slow
+	$(BIN)/bearingkit compile
+	bash scripts/ensure_chromium.sh
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m slow
 
+# The sdist and the wheel built, the wheel installed without extras in a fresh venv and used from outside
+# the tree (scripts/check_wheel.py; .ci/run runs it after the tests).
 wheel: $(STAMP)
 	$(BIN)/python scripts/check_wheel.py
 

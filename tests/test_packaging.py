@@ -1,6 +1,6 @@
 """Packaging (issue 42): what a wheel installed outside the source tree needs from the code itself.
 
-``scripts/check_wheel.py`` (run by ``make test``) builds and installs the wheel and uses it from another
+``scripts/check_wheel.py`` (``make wheel``, in CI) builds and installs the wheel and uses it from another
 folder; these tests catch the same faults in seconds, without a build:
 
 - an example file looked up relative to a module's own file (``Path(__file__).parents … / "examples"``)

@@ -12,6 +12,9 @@ from pathlib import Path
 
 import pytest
 
+# the structure card in Chromium: ~16 s; the same numbers through the API: test_structure_api.py
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 #: Page against CLI: round-off of one case solved alone against a batch of the file's cases (seen ≤ 1e-13).

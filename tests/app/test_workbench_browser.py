@@ -24,6 +24,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+# every workbench page in Chromium: ~60 s; the same numbers through the API: test_workbench_api.py
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 

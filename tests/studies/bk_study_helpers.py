@@ -1,5 +1,6 @@
 """Evaluators used by the study tests (importable as ``bk_study_helpers:NAME`` in subprocesses too)."""
 
+import multiprocessing
 import os
 import time
 
@@ -14,7 +15,11 @@ def _slow(cases):
 
     ``$BK_FAIL_AT``: a chunk whose first x is this value raises after 0.5 s (a study that fails
     mid-run). ``$BK_DONE_LOG``: each chunk that finishes appends its first x there.
+    ``$BK_WORKERS_ONLY``: in the study's own process (the probe of bearingkit.studies.run.probe, before
+    any worker starts) no log, no sleep and no failure: the logs then count the pool workers' chunks.
     """
+    if os.environ.get("BK_WORKERS_ONLY") and multiprocessing.parent_process() is None:
+        return pd.DataFrame({"y": cases["x"].to_numpy(float) ** 2 + 1.0})
     log = os.environ.get("BK_CALL_LOG")
     first = float(cases["x"].iloc[0])
     if log:

@@ -19,6 +19,7 @@ import time
 from pathlib import Path
 
 import pandas as pd
+import pytest
 
 from bearingkit.studies.definition import load as sd
 from bearingkit.studies.run.cases import plan_study
@@ -82,6 +83,7 @@ def _log(path: Path) -> list[tuple[float, int]]:
     return [(float(a), int(b)) for a, b in (line.split() for line in path.read_text().splitlines() if line)]
 
 
+@pytest.mark.slow  # a dask-scheduler and two workers started, one killed: ~13 s
 def test_external_scheduler_survives_a_killed_worker(tmp_path):
     d = _study()
     log = tmp_path / "calls.log"

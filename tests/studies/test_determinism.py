@@ -105,6 +105,7 @@ def test_in_process_pool_and_dask_agree_bit_for_bit():
     pd.testing.assert_frame_equal(dask, ref, check_exact=True)
 
 
+@pytest.mark.slow  # ~12 s; the two determinism tests above stay in make test
 def test_a_chunk_runs_on_one_core_whatever_the_process_solved_before():
     """``auto`` runs a small job on the numpy core and switches to the compiled one after 0.5 s of numpy
     solves (issue 42); the cores agree to 1e-12, not bit for bit. A chunk therefore loads the compiled

@@ -20,6 +20,7 @@ from pathlib import Path
 import pandas as pd
 import psutil
 import pyarrow.parquet as pq
+import pytest
 
 from bearingkit.errors import RUN_INTERRUPTED_EXIT, RunInterrupted
 from bearingkit.studies import evaluators
@@ -117,6 +118,7 @@ def _no_process_left(procs: list[psutil.Process]) -> None:
     assert not alive, f"{len(alive)} process(es) outlived the study"
 
 
+@pytest.mark.slow  # a pool worker killed mid-study: ~7 s; the full-disk fault below stays in make test
 def test_a_killed_pool_worker_stops_the_study_in_one_line_and_resume_finishes_it(tmp_path, monkeypatch):
     study = tmp_path / "study.toml"
     study.write_text(STUDY)
@@ -146,6 +148,7 @@ def test_a_killed_pool_worker_stops_the_study_in_one_line_and_resume_finishes_it
     _resume_and_compare(study, out, finished, monkeypatch)
 
 
+@pytest.mark.slow  # SIGKILL of a study and its pool, then resume: ~8 s
 def test_kill_9_of_the_command_with_its_pool_then_resume_is_bit_for_bit(tmp_path, monkeypatch):
     study = tmp_path / "study.toml"
     study.write_text(STUDY)

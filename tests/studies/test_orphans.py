@@ -39,6 +39,7 @@ def test_kill_9_of_the_parent_leaves_no_worker(tmp_path):
         **os.environ,
         "PYTHONPATH": os.pathsep.join([str(HERE), os.environ.get("PYTHONPATH", "")]),
         "BK_CALL_LOG": str(log),
+        "BK_WORKERS_ONLY": "1",  # the probe's chunks in the parent are neither logged nor slow
         "BK_SLEEP": "3",  # every chunk takes 3 s: the workers are busy when the parent dies
     }
     cmd = [sys.executable, "-m", "bearingkit.studies", str(study), "--out", str(tmp_path / "out")]

@@ -107,6 +107,7 @@ std = "0.5 kN"
 """
 
 
+@pytest.mark.slow  # ~11 s; test_kill_and_resume above stays in make test
 def test_kill_and_resume_the_generic_evaluator(tmp_path, monkeypatch):
     """kill -9 of `bearingkit study` on a bearing file, then --resume: only the missing chunks run."""
     from bearingkit.studies.generic.evaluator import GenericModel

@@ -3,8 +3,8 @@ and a drivetrain's shaft gives the critical speeds of the same shaft exported by
 
 The same shaft (a 40 mm bar on a 6208 and an NU 208, a 6 kg disc of 120 mm, a force at mid-span) is
 written once as a shaft file and once as a one-shaft drivetrain; two load cases at 1000 and 6000 rpm give
-speed-indexed bearing elements. ROSS's start-up (~40 s) makes this slow: marked ``slow`` and ``ross`` as
-tests/systems/test_ross_export.py, which it follows.
+speed-indexed bearing elements. Marked ``slow`` (``make test-slow``, CI): ~35 s with ROSS's start-up;
+tests/systems/test_ross_export.py, which runs in ``make test``, checks the export's critical speeds.
 """
 
 from __future__ import annotations

@@ -2,8 +2,8 @@
 with that stiffness typed in by hand.
 
 Needs ross-rotordynamics (the ``[ross]`` extra, ROSS 2.3+ or 3). ``make test`` installs it and runs this
-file in its parallel run (``-m "not slow or ross"``; ROSS's start-up, numba compilation included, takes
-~40 s, so a plain ``pytest`` leaves it out as slow). Under CI a missing ROSS is a failure, not a skip.
+file in its parallel run (ROSS's start-up, numba compilation included, takes 12-20 s, once per test
+process). Under CI a missing ROSS is a failure, not a skip; elsewhere it is skipped.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tabl
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
 # One test process runs every ROSS test (`make test`: --dist loadgroup): importing ROSS takes 12-20 s, paid
 # once instead of once per process.
-pytestmark = [pytest.mark.slow, pytest.mark.ross, pytest.mark.xdist_group("ross")]
+pytestmark = [pytest.mark.ross, pytest.mark.xdist_group("ross")]
 
 
 def _ross():

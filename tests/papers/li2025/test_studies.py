@@ -112,6 +112,7 @@ def test_housing_study_from_free_ring_to_rigid_housing():
     assert np.all(np.diff(spread) < 0) and spread[-1] == pytest.approx(0.0, abs=1e-15)
 
 
+@pytest.mark.slow  # three studies on the flexible ring: ~9 s; the rigid trends above stay in make test
 def test_trends_hold_with_the_flexible_ring():
     """§3.3–3.5 trends with the paper's flexible ring at the identified scale (diagnostics)."""
     s = seed002.IDENTIFIED_SCALE
