@@ -27,6 +27,9 @@ UM = 1e-6
         # Table 9.14 (cylindrical roller, cylindrical bore, interchangeable), rows "24-30", "40-50"
         ("cylindrical_roller", 30, "CN", (20, 45)),
         ("cylindrical_roller", 45, "C4", (70, 100)),
+        # SKF's cylindrical-bore table (same groups), rows "500-560", "900-1 000"
+        ("cylindrical_roller", 530, "CN", (240, 360)),
+        ("cylindrical_roller", 1000, "C5", (1215, 1405)),
         # Table 9.15 (spherical roller, cylindrical bore), rows "40-50", "560-630", "1 250-1 400"
         ("spherical_roller", 45, "C3", (55, 75)),
         ("spherical_roller", 600, "C3", (480, 650)),
@@ -72,6 +75,21 @@ def test_default_is_class_mean_and_position_interpolates():
     assert clearance("deep_groove_ball", 0.025, "CN", 1.0) == pytest.approx(hi)
 
 
+def test_cylindrical_groups_grow_with_the_bore_and_the_class():
+    """Every class's limits grow with the bore, the rows above 500 mm included, and within a row each
+    class starts above the one before (the cylindrical classes overlap: C2 5-30, CN 25-50 um at 30-40)."""
+    from bearingkit.catalogue.clearances import clearance_rows
+
+    rows = [r for r in clearance_rows() if r.element == "cylindrical_roller"]
+    assert rows[-1].bore_incl == pytest.approx(1.0)
+    for cls in ("C2", "CN", "C3", "C4", "C5"):
+        limits = [r.groups[cls] for r in rows if cls in r.groups]
+        assert all(a[0] <= b[0] and a[1] <= b[1] for a, b in itertools.pairwise(limits)), cls
+    for r in rows:
+        starts = [r.groups[c][0] for c in ("C2", "CN", "C3", "C4", "C5") if c in r.groups]
+        assert all(a < b for a, b in itertools.pairwise(starts)), r
+
+
 def test_classes_grow_from_c2_to_c5():
     means = [clearance("deep_groove_ball", 0.060, c) for c in ("C2", "CN", "C3", "C4", "C5")]
     assert all(a < b for a, b in itertools.pairwise(means))
@@ -82,6 +100,7 @@ def test_classes_grow_from_c2_to_c5():
     [
         (("deep_groove_ball", 0.025, "C7"), "must be one of C2"),
         (("deep_groove_ball", 0.9, "CN"), "outside the deep_groove_ball clearance table"),
+        (("cylindrical_roller", 1.05, "CN"), r"outside the cylindrical_roller clearance table \(0–1000 mm\)"),
         (("needle", 0.025, "CN"), "clearance group"),
         # SKF 6000 p. 477 lists no C5 for tapered-bore self-aligning ball bearings: say which classes exist
         # (nor NSK E1102 Table 9.15 for spherical roller bearings above 1 000 mm)
