@@ -9,6 +9,7 @@ import json
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -114,3 +115,16 @@ def test_life_chart_labels_decades_only():
     assert len(ticks) >= 2  # a decade on each panel at least
     # every one a power of ten (1, 10, 10², …): no "3×10⁴"-style minor labels
     assert all(t in ("1", "10") or (t[:2] == "10" and set(t[2:]) <= set("⁻⁰¹²³⁴⁵⁶⁷⁸⁹")) for t in ticks), ticks
+    # placed as a log axis places them: the life panel's decades evenly spaced, growing to the right
+    sup = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+    life = [
+        (float(t.get("x")), t.text)
+        for t in root.iter("{http://www.w3.org/2000/svg}text")
+        if t.get("text-anchor") == "middle" and t.get("font-size") == "7" and float(t.get("x")) > 550
+    ]
+    exps = [0 if s == "1" else 1 if s == "10" else int(s[2:].translate(sup)) for _, s in sorted(life)]
+    xs = [x for x, _ in sorted(life)]
+    assert exps == sorted(exps) and len(set(exps)) == len(exps)
+    if len(xs) >= 3:
+        steps = np.diff(xs) / np.diff(exps)
+        assert np.ptp(steps) < 0.5, steps

@@ -414,7 +414,6 @@ def test_study_runs_in_the_background_stops_resumes_and_equals_the_cli(client, t
         assert np.array_equal(ours[col].to_numpy(float), theirs[col].to_numpy(float)), col
 
 
-@pytest.mark.slow  # ~6 s; the optimiser itself: tests/studies/test_optimize.py
 def test_an_optimisation_draws_its_pareto_front(client):
     body = {
         "subject": "bearing",

@@ -15,7 +15,6 @@ from bearingkit.app import create_app
 from bearingkit.cli import app
 
 
-@pytest.mark.slow  # ~9 s; make test runs the 300-mutant fuzz itself
 def test_each_finding_class_is_found_in_a_planted_app():
     """Every command of the planted app breaks one promise; the fuzz names each.
 

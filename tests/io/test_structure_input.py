@@ -128,7 +128,7 @@ def test_structure_numbers_are_study_factors():
     assert stiff.structure.outer.stiffness_scale == 1e6
 
 
-@pytest.mark.slow  # ~8 s; test_structure_numbers_are_study_factors stays in make test
+@pytest.mark.slow  # ~8 s; make test keeps the factor parsing (test_structure_numbers_are_study_factors)
 def test_a_study_over_the_housing_wall(tmp_path):
     """examples/studies/dgbb_6209_housing_wall.toml: the peak ball load rises with the wall's thickness
     towards the rigid solve's (2084.5 N at 4 kN), s0 and the life fall with it (the flexible rating)."""

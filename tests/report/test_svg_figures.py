@@ -51,7 +51,7 @@ def test_polar_wedges_are_the_loaded_elements_at_their_azimuth(composite):
         # the longest wedge points at its ψ (counter-clockwise from +x, SVG y downwards)
         longest = int(np.argmax(radii))
         m = re.match(
-            r"M([-0-9.]+) ([-0-9.]+)L([-0-9.]+) ([-0-9.]+)A[^ ]+ [^ ]+ 0 0 0 ([-0-9.]+) ([-0-9.]+)Z",
+            r"M([-0-9.]+) ([-0-9.]+)L([-0-9.]+) ([-0-9.]+)A[^ ]+ [^ ]+ 0 [01] 0 ([-0-9.]+) ([-0-9.]+)Z",
             got[longest].get("d"),
         )
         cx, cy, x1, y1, x2, y2 = (float(v) for v in m.groups())
@@ -133,18 +133,90 @@ def test_log_axis_labels_every_decade_in_range():
     assert {"10³", "10⁵", "10⁷"} <= set(texts)
 
 
-def test_slice_map_has_one_cell_per_element_and_slice_coloured_by_pressure():
+def _map_grid(group: ET.Element) -> list[list[str]]:
+    """The colour of every column of every row of a map's cells, read back from its rectangles (a run of
+    equal neighbours is one rectangle); rows top to bottom."""
+    rects = [(float(e.get("x")), float(e.get("y")), float(e.get("width")), e.get("fill")) for e in group]
+    x0 = min(r[0] for r in rects)
+    x1 = max(r[0] + r[2] - 0.3 for r in rects)
+    rows: dict[float, list] = {}
+    for x, y, w, fill in rects:
+        rows.setdefault(y, []).append((x, x + w - 0.3, fill))
+    return [[(a, b, f) for a, b, f in sorted(runs)] for _, runs in sorted(rows.items())], x0, x1
+
+
+def test_slice_map_shows_each_element_and_slice_in_its_pressure_colour():
     a = bk.analyze("examples/crb_nu209.toml")
     st = a.statics
     (row,) = plots.roller_rows(st)
     values, _, scale = plots._slice_pressure(row, 0)
+    psi = np.mod(np.broadcast_to(row.azimuth, row.load.shape)[0], 2 * np.pi)
+    shown = (values[np.argsort(psi)] * scale).T  # (slices, elements), elements by azimuth
     root = _root(plots.slice_pressure_figure(st, 0))
     group = next(g for g in root.iter(SVG + "g"))  # the map's cells (the colour bar is the second group)
-    cells = [e.get("fill") for e in group.iter(SVG + "rect")]
-    z, n_s = values.shape
-    assert len(cells) == z * n_s
-    top, bottom = svg.colour(plots.COLORMAP, [1.0, 0.0])
-    assert cells.count(top) >= 1 and cells.count(bottom) == int(np.count_nonzero(values <= 0))
+    rows, x0, x1 = _map_grid(group)
+    n_s, z = shown.shape
+    assert len(rows) == n_s
+    expected = np.asarray(svg.colour(plots.COLORMAP, (shown / shown.max()).ravel())).reshape(shown.shape)
+    dx = (x1 - x0) / z
+    for i, runs in enumerate(rows):  # top row first = the last slice
+        got = []
+        for a_, b_, fill in runs:
+            got += [fill] * round((b_ - a_) / dx)
+        assert got == list(expected[n_s - 1 - i]), i
     texts = [t.text for t in root.iter(SVG + "text")]
     assert f"{row.name}: max. slice pressure (inner/outer) [MPa]" in texts and "slice position [mm]" in texts
     assert scale == 1e-6
+
+
+def test_a_map_finer_than_the_plot_is_shown_in_blocks_of_their_peak():
+    """2,000 elements × 200 slices (a large slewing ring): blocks of 5 × 4, each its largest value; the
+    figure stays bounded (one rectangle per run of equal blocks)."""
+    v = np.zeros((200, 2000))
+    v[123, 1234] = 7.0  # one peak: its block shows the top colour
+    fig = svg.SvgFigure(1100, 300)
+    svg.heatmap_panel(
+        fig,
+        (77, 22, 948, 180),
+        v,
+        np.linspace(0.0, 10.0, 201),
+        cmap="viridis",
+        x_labels=[(0, "0°")],
+        title="t",
+        xlabel="x",
+        ylabel="y",
+        empty="none",
+        empty_colour="#f00",
+    )
+    root = _root(fig)
+    rows, x0, x1 = _map_grid(next(g for g in root.iter(SVG + "g")))
+    assert len(rows) == 50
+    top = svg.colour("viridis", [1.0])[0]
+    hot = [(i, a_, b_) for i, runs in enumerate(rows) for a_, b_, f in runs if f == top]
+    assert len(hot) == 1
+    i, a_, b_ = hot[0]
+    dx = (x1 - x0) / 2000
+    assert round((a_ - x0) / dx) == 1230 and round((b_ - x0) / dx) == 1235  # elements 1230-1234
+    assert 49 - i == 123 // 4  # slices 120-123, counted from the bottom
+    assert "t (each cell the largest of 5 elements × 4 slices)" in [t.text for t in root.iter(SVG + "text")]
+    assert len(fig.to_svg()) < 20_000
+
+
+def test_a_single_element_wedge_takes_the_long_way_round():
+    """One element: its wedge spans 0.8 × 360° (the large-arc flag set), two elements: 0.8 × 180° each."""
+    for n, flag in ((1, "1"), (2, "0")):
+        fig = svg.SvgFigure(300, 300)
+        psi = np.arange(n) * 2 * np.pi / n
+        svg.polar_panel(
+            fig,
+            (150, 150),
+            100,
+            psi,
+            np.ones(n),
+            scale=1.0,
+            colors=["#000"] * n,
+            title=["t"],
+            unloaded_colour="#999",
+        )
+        wedges = [e.get("d") for e in _root(fig).iter(SVG + "path")]
+        assert len(wedges) == n and all(re.search(rf"A100 100 0 {flag} 0 ", d) for d in wedges)

@@ -118,7 +118,7 @@ def _no_process_left(procs: list[psutil.Process]) -> None:
     assert not alive, f"{len(alive)} process(es) outlived the study"
 
 
-@pytest.mark.slow  # a pool worker killed mid-study: ~7 s; the full-disk fault below stays in make test
+@pytest.mark.slow  # a pool worker killed mid-study: ~7 s (make test keeps another fault: the full disk below)
 def test_a_killed_pool_worker_stops_the_study_in_one_line_and_resume_finishes_it(tmp_path, monkeypatch):
     study = tmp_path / "study.toml"
     study.write_text(STUDY)

@@ -19,9 +19,10 @@ from typer.testing import CliRunner
 from bearingkit.cli.commands import app
 from bearingkit.errors import InputError
 
-# One test process runs every ROSS test (`make test`: --dist loadgroup): importing ROSS takes 12-20 s, paid
-# once instead of once per process.
-pytestmark = [pytest.mark.slow, pytest.mark.ross, pytest.mark.xdist_group("ross")]
+# One test process runs every ROSS test (--dist loadgroup): importing ROSS takes 12-20 s, paid once instead
+# of once per process. The two rotor tests are slow (make test-slow); the refusals and the speed table
+# need no ROSS and run in make test.
+pytestmark = [pytest.mark.ross, pytest.mark.xdist_group("ross")]
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 _SECTIONS = """sections = [{ start = "0 mm", length = "300 mm", outer_diameter = "40 mm" }]
@@ -82,6 +83,7 @@ def _critical(rotor):
     return np.sort(rotor.run_critical_speed(num_modes=6).wn())[:2]
 
 
+@pytest.mark.slow  # ROSS's start-up and two rotors: ~24 s; test_ross_export.py checks the export in make test
 def test_system_ross_rotors_load_and_match_the_shaft_export(tmp_path):
     rs = _ross()
     (tmp_path / "shaft.toml").write_text(SHAFT, encoding="utf-8")
@@ -129,6 +131,7 @@ def test_cases_by_speed_keeps_the_first_case_of_each_speed():
     assert cases_by_speed([0.0, 0.0]) == [0]
 
 
+@pytest.mark.slow  # four rotors loaded by ROSS: ~11 s
 def test_every_shaft_of_the_two_stage_gearbox_becomes_a_rotor_ross_loads(tmp_path):
     rs = _ross()
     out = CliRunner().invoke(

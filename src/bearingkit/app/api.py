@@ -315,6 +315,6 @@ def _warm_up(lock: threading.Lock) -> None:
             a = analyze(str(example) if example.is_file() else "6209", load={"F_x": "1 kN"}, speed="1000 rpm")
             a.to_dict()
             polar_load_figure(a.statics, 0).to_svg()
-            import matplotlib.backends.backend_agg  # noqa: F401  (the slice pressure map's backend)
+            import matplotlib.backends.backend_agg  # noqa: F401  (the system and study figures' backend)
     except Exception:  # a failed warm-up only costs time later; the request will report the real error
         log.debug("warm-up failed", exc_info=True)

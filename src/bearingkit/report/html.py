@@ -7,7 +7,7 @@ recompute physics: the page reads :class:`~bearingkit.io.loader.BearingInput`,
 :class:`~bearingkit.analysis.friction.components.FrictionResult` and
 :class:`~bearingkit.analysis.rating.assembly.RatingResult`.
 
-The file needs no network: figures are inline PNG data URIs (:mod:`bearingkit.report.plots`), the style
+The file needs no network: figures are inline SVG or PNG data URIs (:mod:`bearingkit.report.plots`), the style
 sheet is inline, and there is no script. The only web addresses a report may hold are inside the
 citation texts of its reference list.
 
@@ -397,7 +397,7 @@ def build_report(
     Returns
     -------
     str
-        HTML5 text, no external resources (figures are inline PNG data URIs).
+        HTML5 text, no external resources (figures are inline SVG or PNG data URIs).
     """
     from bearingkit import __version__
 

@@ -133,7 +133,7 @@ def roller_rows(result) -> list:
 
 
 def _edges(centres: np.ndarray) -> np.ndarray:
-    """Cell edges around increasing centres (n ≥ 2) for ``pcolormesh(shading="flat")``."""
+    """Cell edges around increasing centres (n ≥ 2): the slice map's row boundaries."""
     mid = 0.5 * (centres[1:] + centres[:-1])
     return np.concatenate([[2 * centres[0] - mid[0]], mid, [2 * centres[-1] - mid[-1]]])
 

@@ -1,21 +1,24 @@
 """Charts written as SVG text: the report's figures that repeat for every bearing and load case.
 
 Why not matplotlib for these: a shaft or drivetrain report draws the element loads, the friction
-breakdown and the ratings of every bearing in every load case (54 of the 67 figures of the two-stage
-gearbox example). Matplotlib's Agg backend took 100–150 ms for each (axis ticks and glyph rendering,
-most of the report's 20 s); written as SVG they take well under a millisecond, stay sharp at any zoom,
-their text can be searched, and equal data give equal bytes. Tick positions still come from
-matplotlib's locators (no drawing); colours from its colour maps.
+breakdown, the ratings and the slice pressure map of every bearing in every load case (63 of the 67
+figures of the two-stage gearbox example). Matplotlib's Agg backend took 100–150 ms for each (axis
+ticks and glyph rendering, most of the report's 20 s); written as SVG they take well under a
+millisecond, stay sharp at any zoom, their text can be searched, and equal data give equal bytes. Tick
+positions still come from matplotlib's locators (no drawing); colours from its colour maps.
 
 Coordinates are pixels of the figure (``DPI`` per inch), y downwards as in SVG. Every text is XML-escaped
-(row names come from the user's file). The figures are inline ``<img>`` data URIs: an SVG image cannot
-run scripts or fetch anything.
+and its control characters replaced (row names come from the user's file); no user text reaches an
+attribute. The report embeds the figures as ``<img>`` data URIs (an SVG image cannot run scripts or
+fetch anything); the app serves the slice map as a document under its content security policy.
 """
 
 from __future__ import annotations
 
 import base64
+import itertools
 import math
+import re
 from html import escape
 
 import numpy as np
@@ -28,6 +31,11 @@ FONT = "DejaVu Sans, Helvetica, Arial, sans-serif"
 #: Mean advance of a glyph of the sans-serif fonts above per unit font size [-]: sizes the label margins
 #: (DejaVu Sans: 0.55–0.63 for lower case and digits, measured on its metrics; a margin estimate only).
 CHAR_WIDTH = 0.6
+#: Cells of a colour map at most (elements × slices beyond are shown in blocks, each its largest value):
+#: the plot is ~950 × 180 px, so 400 columns are ≥ 2 px wide, 50 rows ≥ 3.6 px tall.
+HEATMAP_MAX_COLUMNS, HEATMAP_MAX_ROWS = 400, 50
+REPLACEMENT = "\ufffd"  # what a control character in a name is shown as
+_CONTROL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f]")  # not allowed in XML 1.0
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 _AXIS, _GRID, _TEXT = "#333333", "#d5d8dc", "#222222"
 
@@ -81,9 +89,10 @@ class SvgFigure:
     ):
         w = ' font-weight="bold"' if bold else ""
         r = f' transform="rotate({_n(rotate)} {_n(x)} {_n(y)})"' if rotate else ""
+        shown = escape(_CONTROL.sub(REPLACEMENT, text), quote=False)
         self.parts.append(
             f'<text x="{_n(x)}" y="{_n(y)}" font-size="{_n(size)}" text-anchor="{anchor}" '
-            f'dominant-baseline="{baseline}" fill="{color}"{w}{r}>{escape(text, quote=False)}</text>'
+            f'dominant-baseline="{baseline}" fill="{color}"{w}{r}>{shown}</text>'
         )
 
     def to_svg(self) -> str:
@@ -111,11 +120,9 @@ def _decade(k: int) -> str:
 
 
 def _linear_ticks(lo: float, hi: float, n: int) -> list[float]:
-    return [
-        float(t)
-        for t in MaxNLocator(n).tick_values(lo, hi)
-        if lo - 1e-9 * abs(hi - lo) <= t <= hi * (1 + 1e-9)
-    ]
+    lo, hi = min(lo, hi), max(lo, hi)
+    tol = 1e-9 * (hi - lo)
+    return [float(t) for t in MaxNLocator(n).tick_values(lo, hi) if lo - tol <= t <= hi + tol]
 
 
 def hbar_panel(
@@ -146,7 +153,12 @@ def hbar_panel(
         A dashed reference line at that value, in that colour.
     """
     x0, y0, w, h = box
-    lo, hi = xlim
+    lo, hi = (float(x) for x in xlim)
+    if log:  # a log axis needs 0 < lo < hi, both finite
+        lo = min(max(lo, 1e-300), 1e299)
+        hi = min(hi, 1e300) if hi > lo else lo * 10
+    elif not hi > lo:
+        hi = lo + 1.0
     v = np.asarray(values, dtype=float)
     if log:
         a, b = math.log10(lo), math.log10(hi)
@@ -251,7 +263,8 @@ def polar_panel(
         a1, a2 = p - half, p + half
         d = (
             f"M{_n(cx)} {_n(cy)}L{_n(cx + r * math.cos(a1))} {_n(cy - r * math.sin(a1))}"
-            f"A{_n(r)} {_n(r)} 0 0 0 {_n(cx + r * math.cos(a2))} {_n(cy - r * math.sin(a2))}Z"
+            f"A{_n(r)} {_n(r)} 0 {int(2 * half > math.pi)} 0 {_n(cx + r * math.cos(a2))} "
+            f"{_n(cy - r * math.sin(a2))}Z"
         )
         fig.path(d, c, data=f' data-psi="{p:.6g}" data-value="{v:.6g}"')
     for i, line in enumerate(title):
@@ -276,25 +289,39 @@ def heatmap_panel(
     ``y_edges[i]…y_edges[i+1]`` (increasing, drawn upwards); a colour bar from 0 to the largest value
     on the right; ``x_labels`` (column index, text) under the columns."""
     x0, y0, w, h = box
-    v = np.asarray(values, dtype=float)
+    v = np.nan_to_num(np.asarray(values, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
     edges = np.asarray(y_edges, dtype=float)
     n_y, n_x = v.shape
     top = float(v.max()) if v.size else 0.0
     vmax = top if top > 0 else 1.0
-    colours = np.asarray(colour(cmap, (v / vmax).ravel())).reshape(v.shape)
     span = edges[-1] - edges[0] if edges[-1] != edges[0] else 1.0
+    dx = w / max(n_x, 1)  # one element's width; labels and blocks are placed by element index
 
     def py(e):
         return y0 + h - (e - edges[0]) / span * h
 
-    dx = w / max(n_x, 1)
+    # A map finer than the plot's pixels (a slewing ring of 2,000 elements × 200 slices) is shown in
+    # blocks of bx elements × by slices, each the largest value in it (the peak stays visible).
+    bx, by = -(-n_x // HEATMAP_MAX_COLUMNS), -(-n_y // HEATMAP_MAX_ROWS)
+    if bx > 1:
+        v = np.maximum.reduceat(v, np.arange(0, n_x, bx), axis=1)
+    if by > 1:
+        v = np.maximum.reduceat(v, np.arange(0, n_y, by), axis=0)
+        edges = np.append(edges[:-1][::by], edges[-1])
+    colours = np.asarray(colour(cmap, (v / vmax).ravel())).reshape(v.shape)
     fig.parts.append('<g shape-rendering="crispEdges">')  # no anti-aliased seams between the cells
-    for i in range(n_y):
+    for i in range(v.shape[0]):
         ya, yb = py(edges[i + 1]), py(edges[i])
-        for j in range(n_x):
-            # each cell a little wider than its pitch: no hairline gaps between neighbours when scaled
-            fig.rect(x0 + j * dx, ya, dx + 0.3, yb - ya + 0.3, colours[i, j])
+        row = colours[i]
+        # neighbours of one colour are one rectangle (a whole unloaded stretch is one)
+        cuts = [0, *(np.flatnonzero(row[1:] != row[:-1]) + 1).tolist(), len(row)]
+        for a, b in itertools.pairwise(cuts):
+            xa, xb = x0 + a * bx * dx, x0 + min(b * bx, n_x) * dx
+            # a little wider and taller than the pitch: no hairline gaps between neighbours when scaled
+            fig.rect(xa, ya, xb - xa + 0.3, yb - ya + 0.3, row[a])
     fig.parts.append("</g>")
+    if bx > 1 or by > 1:
+        title = f"{title} (each cell the largest of {bx} elements × {by} slices)"
     fig.line(x0, y0, x0, y0 + h)
     fig.line(x0, y0 + h, x0 + w, y0 + h)
     fig.line(x0, y0, x0 + w, y0, color=_GRID)
