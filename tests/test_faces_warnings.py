@@ -106,11 +106,14 @@ def test_life_chart_labels_decades_only():
 
     a = analyze(DGBB, cases=["radial_4kN"], speed="1000 rpm")
     root = ET.fromstring(plots.rating_figure(a.rating, 0).to_svg())
-    # the tick labels: centred under the axis, 7 px (the bar values are left-aligned beside the bars)
+    # the tick labels: centred under the axis, 7 pt (the bar values are left-aligned beside the bars)
+    from bearingkit.report import svg
+
+    tick_size = svg._n(7 * svg.PT)
     ticks = [
         t.text
         for t in root.iter("{http://www.w3.org/2000/svg}text")
-        if t.get("text-anchor") == "middle" and t.get("font-size") == "7"
+        if t.get("text-anchor") == "middle" and t.get("font-size") == tick_size
     ]
     assert len(ticks) >= 2  # a decade on each panel at least
     # every one a power of ten (1, 10, 10², …): no "3×10⁴"-style minor labels
@@ -120,7 +123,7 @@ def test_life_chart_labels_decades_only():
     life = [
         (float(t.get("x")), t.text)
         for t in root.iter("{http://www.w3.org/2000/svg}text")
-        if t.get("text-anchor") == "middle" and t.get("font-size") == "7" and float(t.get("x")) > 550
+        if t.get("text-anchor") == "middle" and t.get("font-size") == tick_size and float(t.get("x")) > 550
     ]
     exps = [0 if s == "1" else 1 if s == "10" else int(s[2:].translate(sup)) for _, s in sorted(life)]
     xs = [x for x, _ in sorted(life)]

@@ -26,6 +26,8 @@ from matplotlib.ticker import LogLocator, MaxNLocator
 
 #: Pixels per inch of the figure sizes (the report's PNG figures use the same, plots.DPI).
 DPI = 100
+#: Pixels per point: font sizes are given in points, as matplotlib's (7 pt = 9.7 px at 100 px per inch).
+PT = DPI / 72.0
 #: Fonts the browser picks from (the first one present).
 FONT = "DejaVu Sans, Helvetica, Arial, sans-serif"
 #: Mean advance of a glyph of the sans-serif fonts above per unit font size [-]: sizes the label margins
@@ -46,8 +48,8 @@ def _n(v: float) -> str:
 
 
 def text_width(text: str, size: float) -> float:
-    """Estimated width [px] of ``text`` at font ``size`` [px] (:data:`CHAR_WIDTH`)."""
-    return CHAR_WIDTH * size * len(text)
+    """Estimated width [px] of ``text`` at font ``size`` [pt] (:data:`CHAR_WIDTH`)."""
+    return CHAR_WIDTH * size * PT * len(text)
 
 
 class SvgFigure:
@@ -87,11 +89,12 @@ class SvgFigure:
     def text(
         self, x, y, text: str, size=8.0, anchor="start", color=_TEXT, bold=False, baseline="middle", rotate=0
     ):
+        """``text`` at (x, y) [px], ``size`` in points (:data:`PT`), ``rotate`` in degrees about (x, y)."""
         w = ' font-weight="bold"' if bold else ""
         r = f' transform="rotate({_n(rotate)} {_n(x)} {_n(y)})"' if rotate else ""
         shown = escape(_CONTROL.sub(REPLACEMENT, text), quote=False)
         self.parts.append(
-            f'<text x="{_n(x)}" y="{_n(y)}" font-size="{_n(size)}" text-anchor="{anchor}" '
+            f'<text x="{_n(x)}" y="{_n(y)}" font-size="{_n(size * PT)}" text-anchor="{anchor}" '
             f'dominant-baseline="{baseline}" fill="{color}"{w}{r}>{shown}</text>'
         )
 
@@ -238,12 +241,6 @@ def polar_panel(
     ticks = [t for t in _linear_ticks(0.0, scale, rticks) if 0 < t < scale * 0.999]
     for t in ticks:
         fig.circle(cx, cy, t / scale * radius, stroke=_GRID)
-    label_angle = math.radians(112.5)
-    for t in ticks:
-        r = t / scale * radius
-        fig.text(
-            cx + r * math.cos(label_angle), cy - r * math.sin(label_angle), f"{t:g}", size=7, anchor="middle"
-        )
     for deg in range(0, 360, 45):
         a = math.radians(deg)
         fig.line(cx, cy, cx + radius * math.cos(a), cy - radius * math.sin(a), color=_GRID, width=0.6)
@@ -267,8 +264,14 @@ def polar_panel(
             f"{_n(cy - r * math.sin(a2))}Z"
         )
         fig.path(d, c, data=f' data-psi="{p:.6g}" data-value="{v:.6g}"')
+    label_angle = math.radians(112.5)  # the radial scale, drawn over the wedges so that none hides it
+    for t in ticks:
+        r = t / scale * radius
+        fig.text(
+            cx + r * math.cos(label_angle), cy - r * math.sin(label_angle), f"{t:g}", size=7, anchor="middle"
+        )
     for i, line in enumerate(title):
-        fig.text(cx, cy - radius - 34 + 12 * i - 12 * (len(title) - 1), line, size=9, anchor="middle")
+        fig.text(cx, cy - radius - 34 + 14 * i - 14 * (len(title) - 1), line, size=9, anchor="middle")
 
 
 def heatmap_panel(
