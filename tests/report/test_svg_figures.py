@@ -93,34 +93,19 @@ def test_rating_bars_warn_below_s0_1_and_say_na(composite):
     assert len(dashed) == 1  # s0 = 1
 
 
-def test_names_are_escaped_and_equal_data_give_equal_bytes():
+def _two_bars() -> str:
     fig = svg.SvgFigure(400, 200)
-    svg.hbar_panel(
-        fig,
-        (150, 30, 200, 120),
-        ["<row&1>", "b"],
-        [2.0, 5.0],
-        colors=["#2e86c1"] * 2,
-        xlim=(0.0, 6.0),
-        title="t",
-        xlabel="x [-]",
-    )
-    text = fig.to_svg()
+    bars = (["<row&1>", "b"], [2.0, 5.0])
+    svg.hbar_panel(fig, (150, 30, 200, 120), *bars, colors=["#2e86c1"] * 2, xlim=(0.0, 6.0), title="t")
+    return fig.to_svg()
+
+
+def test_names_are_escaped_and_equal_data_give_equal_bytes():
+    text = _two_bars()
     assert "<row&1>" not in text and "&lt;row&amp;1&gt;" in text
     root = ET.fromstring(text)
     assert "<row&1>" in [t.text for t in root.iter(SVG + "text")]
-    again = svg.SvgFigure(400, 200)
-    svg.hbar_panel(
-        again,
-        (150, 30, 200, 120),
-        ["<row&1>", "b"],
-        [2.0, 5.0],
-        colors=["#2e86c1"] * 2,
-        xlim=(0.0, 6.0),
-        title="t",
-        xlabel="x [-]",
-    )
-    assert again.to_svg() == text
+    assert _two_bars() == text
     # bar lengths are the values on the axis: 2 and 5 of 0…6 over 200 px
     widths = [float(e.get("width")) for e in root.iter(SVG + "rect") if e.get("data-value")]
     np.testing.assert_allclose(widths, [200 * 2 / 6, 200 * 5 / 6], atol=0.06)

@@ -31,7 +31,7 @@ PT = DPI / 72.0
 #: Fonts the browser picks from (the first one present).
 FONT = "DejaVu Sans, Helvetica, Arial, sans-serif"
 #: Mean advance of a glyph of the sans-serif fonts above per unit font size [-]: sizes the label margins
-#: (DejaVu Sans: 0.55–0.63 for lower case and digits, measured on its metrics; a margin estimate only).
+#: (DejaVu Sans: about 0.55–0.63 for lower case and digits [from memory]; a margin estimate only).
 CHAR_WIDTH = 0.6
 #: Cells of a colour map at most (elements × slices beyond are shown in blocks, each its largest value):
 #: the plot is ~950 × 180 px, so 400 columns are ≥ 2 px wide, 50 rows ≥ 3.6 px tall.
