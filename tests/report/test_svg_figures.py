@@ -118,9 +118,9 @@ def test_log_axis_labels_every_decade_in_range():
     assert {"10³", "10⁵", "10⁷"} <= set(texts)
 
 
-def _map_grid(group: ET.Element) -> list[list[str]]:
-    """The colour of every column of every row of a map's cells, read back from its rectangles (a run of
-    equal neighbours is one rectangle); rows top to bottom."""
+def _map_grid(group: ET.Element) -> tuple[list[list[tuple]], float, float]:
+    """A map's cells read back from its rectangles (a run of equal neighbours is one rectangle): per row,
+    top to bottom, its (start, end, fill) runs; and the map's x range."""
     rects = [(float(e.get("x")), float(e.get("y")), float(e.get("width")), e.get("fill")) for e in group]
     x0 = min(r[0] for r in rects)
     x1 = max(r[0] + r[2] - 0.3 for r in rects)

@@ -302,9 +302,9 @@ class Analysis(AnalysisOutput):
         header = getattr(spec, "bearing", None)
         designation = getattr(header, "designation", None)
         maker = getattr(header, "rating_C", None)
+        maker_c0 = getattr(header, "rating_C0", None)
         if maker is not None and not designation:  # a geometry with a maker's ratings
-            c0 = getattr(header, "rating_C0", None)
-            return float(maker), None if c0 is None else float(c0), ("rating_C", "rating_C0")
+            return float(maker), None if maker_c0 is None else float(maker_c0), ("rating_C", "rating_C0")
         if not designation:
             return None
         from bearingkit.catalogue import parse, tables
@@ -313,8 +313,7 @@ class Analysis(AnalysisOutput):
         entry = tables.entries(des.family).get(des.base)
         given = getattr(header, "C", None)
         if maker is not None:  # a maker's ratings in place of the catalogue's (one bearing, radial basis)
-            given = maker
-            c0 = getattr(header, "rating_C0", None)
+            given, c0 = maker, maker_c0
             if c0 is None and entry is not None and entry.C0 is not None:  # the catalogue's, radial basis
                 from bearingkit.catalogue.iso_ratings import radial_basis
 
@@ -341,7 +340,7 @@ class Analysis(AnalysisOutput):
         return (
             c,
             c0,
-            ("rating_C", "rating_C0" if getattr(header, "rating_C0", None) is not None else "catalogue"),
+            ("rating_C", "catalogue" if maker_c0 is None else "rating_C0"),
         )
 
     def _shoulder_heights(self):

@@ -24,9 +24,8 @@ from bearingkit.io.rexs.parts import (
     RIGID_N_M_PER_RAD,
     RIGID_N_PER_M,
     STIFFNESS_SI,
-    TO_MM,
-    direction,
     mm,
+    shaft_axis,
     vector_mm,
 )
 
@@ -62,10 +61,7 @@ def _span(m, shaft, where) -> tuple[float, float] | None:
 
 def _shift(attrs: dict, key: str, delta: float, where: str) -> None:
     if key in attrs:
-        value, unit = attrs[key]
-        if unit not in TO_MM:
-            raise InputError(f"{where}.{key}: unit {unit!r} is not a length unit (mm, m, mum)")
-        attrs[key] = (_number(value, f"{where}.{key}") * TO_MM[unit] + delta, "mm")
+        attrs[key] = (mm(attrs, key, where) + delta, "mm")
 
 
 def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozenset()) -> dict:
@@ -115,10 +111,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
             raise InputError(
                 f"{where}: joins shaft {outer}, already joined to another: a loop or a shaft coupled twice"
             )
-        axis = np.array([1.0, 0.0, 0.0])  # the shafts' axis: the first one that gives it
-        for x in (outer, inner):
-            axis = direction(comps[x]["attrs"], "u_axis_vector", where, axis)
-        axis = axis / np.linalg.norm(axis) if np.linalg.norm(axis) > 0 else np.array([1.0, 0.0, 0.0])
+        axis = shaft_axis(m, where, inner)
         centres = []
         for x in (inner, outer):  # where the shaft's axis passes, across it
             v = vector_mm(comps[x]["attrs"], "support_vector", where)
@@ -140,6 +133,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
         )
     if not merged:
         return m
+    with_material = {roles(r).get("origin") for r in m["relations"] if r["type"] == "reference"}
     for outer, (inner, delta) in merged.items():
         where = f"{src}: shaft {outer}"
         for r in m["relations"]:
@@ -151,11 +145,7 @@ def merge_coupled_shafts(m: dict, src: str, taken: set, notes: list, keep=frozen
             if r["type"] == "side" and outer in (ro.get("inner_part"), ro.get("outer_part")):
                 side = "inner" if ro.get("inner_part") == outer else "outer"
                 _shift(comps[ro["assembly"]]["attrs"], f"u_coordinate_on_shaft_{side}_side", delta, where)
-            if (
-                r["type"] == "reference"
-                and ro.get("origin") == outer
-                and any(q["type"] == "reference" and roles(q).get("origin") == inner for q in m["relations"])
-            ):
+            if r["type"] == "reference" and ro.get("origin") == outer and inner in with_material:
                 continue  # the shaft read into keeps its own material
             r["refs"] = [(inner if i == outer else i, role) for i, role in r["refs"]]
         for key in ("defines_speed", "rotational_speed"):

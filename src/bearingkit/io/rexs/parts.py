@@ -141,6 +141,18 @@ def direction(attrs: dict, key: str, where: str, default) -> np.ndarray:
     return _vector(attrs[key][0], f"{where}.{key}")
 
 
+def shaft_axis(m, src: str, root) -> np.ndarray:
+    """The unit u axis of the shafts (``root``'s ``u_axis_vector``, else the gear unit's, else x)."""
+    comps = m["components"]
+    unit = next((c for c in comps.values() if c["type"] == "gear_unit"), {"attrs": {}})
+    u = direction(unit["attrs"], "u_axis_vector", f"{src}: gear_unit", [1.0, 0.0, 0.0])
+    u = direction(comps[root]["attrs"], "u_axis_vector", f"{src}: shaft {root}", u)
+    norm = float(np.linalg.norm(u))
+    if norm == 0.0:
+        raise InputError(f"{src}: shaft {root}.u_axis_vector is zero")
+    return u / norm
+
+
 #: REXS attribute names of a bearing's radial ratings (C, C0) [kN]: REXS 1.1+ and REXS 1.0.
 RATING_KEYS = (
     ("radial_dynamic_load_rating", "radial_static_load_rating"),

@@ -34,7 +34,7 @@ import numpy as np
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.detailed import rexs_bearing
 from bearingkit.io.rexs.parse import _number, roles
-from bearingkit.io.rexs.parts import angle_deg, direction, mm, number, q_text, section_tables, vector_mm
+from bearingkit.io.rexs.parts import angle_deg, mm, number, q_text, section_tables, shaft_axis, vector_mm
 
 #: Component types that are bodies with their own u coordinate (placed by the relations).
 BODIES = ("shaft", "side_plate")
@@ -46,18 +46,6 @@ PLACE_TOL_MM = 1e-3
 
 def _type(comps, i) -> str:
     return (comps.get(i) or {}).get("type") or ""
-
-
-def shaft_axis(m, src: str, root) -> np.ndarray:
-    """The unit u axis of the shafts (``root``'s ``u_axis_vector``, else the gear unit's, else x)."""
-    comps = m["components"]
-    unit = next((c for c in comps.values() if c["type"] == "gear_unit"), {"attrs": {}})
-    u = direction(unit["attrs"], "u_axis_vector", f"{src}: gear_unit", [1.0, 0.0, 0.0])
-    u = direction(comps[root]["attrs"], "u_axis_vector", f"{src}: shaft {root}", u)
-    norm = float(np.linalg.norm(u))
-    if norm == 0.0:
-        raise InputError(f"{src}: shaft {root}.u_axis_vector is zero")
-    return u / norm
 
 
 def axial_offsets(m, src: str, root, mesh_gears=None) -> dict:

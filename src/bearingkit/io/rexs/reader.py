@@ -56,8 +56,7 @@ import numpy as np
 from bearingkit.errors import InputError
 from bearingkit.io.rexs.couplings import merge_coupled_shafts
 from bearingkit.io.rexs.detailed import rexs_bearing
-from bearingkit.io.rexs.parse import _number, load_cases, parse
-from bearingkit.io.rexs.parse import roles as refs_of
+from bearingkit.io.rexs.parse import _number, load_cases, parse, roles
 from bearingkit.io.rexs.parts import collected_notes, direction, q_text, section_tables, vector_mm
 from bearingkit.io.rexs.planetary import read_stage
 
@@ -132,8 +131,8 @@ def read_rexs(path) -> dict:
     parts = {}
     for r in m["relations"]:
         if r["type"] == "assembly":
-            roles = refs_of(r)
-            parts.setdefault(roles.get("assembly"), []).append(roles.get("part"))
+            ro = roles(r)
+            parts.setdefault(ro.get("assembly"), []).append(ro.get("part"))
     joined = set()  # parts of a relation besides their own sections: bearings, couplings, gears, loads
     for r in m["relations"]:
         if r["type"] not in ("assembly", "ordered_assembly", "reference"):  # a material joins nothing
@@ -162,8 +161,8 @@ def read_rexs(path) -> dict:
     materials = {}
     for r in m["relations"]:
         if r["type"] == "reference":
-            roles = refs_of(r)
-            materials[roles.get("origin")] = roles.get("referenced")
+            ro = roles(r)
+            materials[ro.get("origin")] = ro.get("referenced")
     names = {i: comps[i]["name"] or f"shaft {i}" for i in shafts}
     out_shafts, gear_names, gear_shaft = [], {}, {}
     for i in shafts:
@@ -213,8 +212,8 @@ def read_rexs(path) -> dict:
     flank = {}
     for r in m["relations"]:
         if r["type"] == "flank":
-            roles = refs_of(r)
-            flank[roles.get("gear")] = roles.get("left") or roles.get("right")
+            ro = roles(r)
+            flank[ro.get("gear")] = ro.get("left") or ro.get("right")
     for gid, sid in gear_shaft.items():
         a = comps[gid]["attrs"]
         gw = f"{src}: cylindrical_gear {gid} ({gear_names[gid]})"
@@ -247,25 +246,25 @@ def read_rexs(path) -> dict:
     meshes = []
     for r in m["relations"]:
         if r["type"] == "stage":
-            roles = refs_of(r)
-            g1, g2 = roles.get("gear_1"), roles.get("gear_2")
-            if roles.get("stage") in taken:  # a planetary stage's mesh: the stage makes its own
+            ro = roles(r)
+            g1, g2 = ro.get("gear_1"), ro.get("gear_2")
+            if ro.get("stage") in taken:  # a planetary stage's mesh: the stage makes its own
                 continue
             if g1 not in gear_names or g2 not in gear_names:
                 raise InputError(
-                    f"{src}: stage {roles.get('stage')}: gears {g1}, {g2} are not cylindrical gears on shafts"
+                    f"{src}: stage {ro.get('stage')}: gears {g1}, {g2} are not cylindrical gears on shafts"
                 )
             meshes.append(
                 {
-                    "name": comps[roles["stage"]]["name"] or f"stage {roles['stage']}",
+                    "name": comps[ro["stage"]]["name"] or f"stage {ro['stage']}",
                     "gears": [gear_names[g1], gear_names[g2]],
                 }
             )
     for r in m["relations"]:
         if r["type"] != "side":
             continue
-        roles = refs_of(r)
-        bid, inner, outer = roles.get("assembly"), roles.get("inner_part"), roles.get("outer_part")
+        ro = roles(r)
+        bid, inner, outer = ro.get("assembly"), ro.get("inner_part"), ro.get("outer_part")
         if bid in taken:  # a planet bearing, or a coupling of a planetary stage's carrier or ring
             continue
         c = comps[bid]

@@ -392,10 +392,7 @@ def _seat(i: int, b: BearingSpec, base: Path, confine: bool = False) -> BearingS
                     "give them in one place"
                 )
             tables["bearing"] = {**header, **rated}
-        try:
-            source = from_dict(tables, source=f"{where}.bearing")
-        except InputError as exc:  # from_dict names the source itself
-            raise InputError(str(exc)) from None
+        source = from_dict(tables, source=f"{where}.bearing")  # its errors name the source
         bearing = source.model
     elif b.designation is not None:
         from bearingkit.io.loader import from_dict
