@@ -124,6 +124,8 @@ def rating_table(c: dict) -> Table:
     lines = [iso281, ts] if s.get("headline", {}).get("method") == "ISO 281" else [ts, iso281]
     if s.get("life_difference"):
         lines.append(f"why they differ: {s['life_difference']}")
+    if s.get("static_safety_difference"):
+        lines.append(f"static safety: {s['static_safety_difference']}")
     caption = "\n".join(line for line in lines if line)
     # as wide as its title and caption lines (up to 120 columns): a narrow table wraps them mid-phrase
     width = min(max(len(line) for line in (title, *caption.split("\n"))) + 2, 120)

@@ -199,6 +199,8 @@ def _rating_html(rating, case: int, n: int) -> str:
     system = iso_html + system if first else system + iso_html
     if s.get("life_difference"):
         system += f"<p>Why they differ: {_e(s['life_difference'])}.</p>"
+    if s.get("static_safety_difference"):
+        system += f"<p>Static safety: {_e(s['static_safety_difference'])}.</p>"
     return (
         f"<h4>{n}. Ratings and static safety</h4>"
         f"<p>Rotating ring: {_e(d['rotating'])}; speed {speed} r/min; reliability "

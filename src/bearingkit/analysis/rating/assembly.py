@@ -33,7 +33,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from bearingkit import checks
-from bearingkit.analysis.rating.compare import compare, headline
+from bearingkit.analysis.rating.compare import compare, headline, static_safety_difference
 from bearingkit.analysis.rating.iso281 import (
     Iso281Life,
     bearing_life,
@@ -305,6 +305,9 @@ class RatingResult:
         }
         diff = self.comparison[case] if case < len(self.comparison) else None
         system["life_difference"] = None if diff is None else diff["text"]
+        system["static_safety_difference"] = static_safety_difference(
+            system.get("s0_iso76"), system["static_safety"]
+        )
         return {"headline": headline(system), **system}
 
     def _iso281_dict(self, val) -> dict:

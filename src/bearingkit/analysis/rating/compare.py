@@ -25,7 +25,7 @@ import numpy as np
 
 from bearingkit.physics.life import iso16281
 
-__all__ = ["HEADLINE_METHODS", "compare", "headline"]
+__all__ = ["HEADLINE_METHODS", "S0_SAME", "compare", "headline", "static_safety_difference"]
 
 #: Headline life by availability: ISO 281 when it rates the bearing, else ISO/TS 16281.
 HEADLINE_METHODS = ("ISO 281", "ISO/TS 16281")
@@ -164,3 +164,30 @@ def headline(system: dict) -> dict:
         "Lnmh_h": system.get("Lnmr_h"),
         "why": f"ISO/TS 16281 reference rating life from the load distribution ({note})",
     }
+
+
+#: Two static safeties within this relative difference [-] are the same for the report (no line).
+S0_SAME = 0.05
+
+
+def static_safety_difference(s0_iso76, s0_rows) -> str | None:
+    """The line saying why ISO 76's s0 = C0/P0 and the rows' s0 from p_max differ, and which governs;
+    None when either is missing or they agree within :data:`S0_SAME`.
+
+    ISO 76:2006 clause 10 rates the bearing by C0/P0: its C0 assumes the static load distribution of the
+    nominal bearing under P0. The rows' s0 = (p_limit / p_max)^n (ISO 76's limit contact pressures, n = 3
+    for point and 2 for line contact) reads the largest contact pressure of the load distribution solved:
+    clearance, tilt, the roller profile and edge stress, the operating contact angle. Both check the same
+    permanent deformation (about 1e-4 of the element diameter); the smaller governs.
+    """
+    if s0_iso76 is None or s0_rows is None or not (s0_iso76 > 0 and s0_rows > 0):
+        return None
+    if abs(s0_rows / s0_iso76 - 1.0) <= S0_SAME:
+        return None
+    lower = "the rows' s0 from p_max" if s0_rows < s0_iso76 else "ISO 76's s0 = C0/P0"
+    return (
+        f"ISO 76 s0 = C0/P0 = {s0_iso76:.4g} (the catalogue method: its C0 assumes the nominal load "
+        f"distribution under P0) and the rows' s0 = {s0_rows:.4g} from the largest contact pressure of the "
+        "load distribution solved (clearance, tilt, roller profile and edge stress) check the same "
+        f"permanent deformation; the smaller, {lower}, governs"
+    )
