@@ -4,6 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.installed-docs
+ROSS_STAMP := $(VENV)/.installed-ross
 #: Test processes (pytest-xdist): one per core.
 JOBS   ?= auto
 # Python writes the byte code of what it imports (__pycache__, ignored by git): the installed packages are
@@ -14,19 +15,24 @@ unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: run test test-slow bench lint validate docs compile wheel clean fuzz ross3
 
-# One pip run installs everything `make run` and `make test` need: the tests and the optional
-# rotordynamics extra (ross-rotordynamics; the ROSS export test, tests/systems/test_ross_export.py, runs in
-# make test). The docs site's packages come with `make docs` (a second run, 16 s; 14 s less for make test:
-# 48 s instead of 62 s with a warm cache, measured on 2 cores). --no-compile: pip byte-compiles every
+# One pip run installs everything `make run` and `make test` need: the package and its tests. The
+# rotordynamics extra (ross-rotordynamics: plotly, scikit-learn, CoolProp, ...) comes with `make test-slow`,
+# which runs the ROSS tests (marked `ross` and slow), and the docs site's packages with `make docs`: each a
+# second pip run, so that `make test` installs 29 s instead of 48 s (warm cache, 2 cores, measured).
+# --no-compile: pip byte-compiles every
 # module it installs, ~70 of its ~120 s here (measured with a warm cache, 2 cores); Python compiles the
 # modules a run imports on first use instead, a small part of them.
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q --no-compile -e '.[dev,ross]'
+	$(BIN)/python -m pip install -q --no-compile -e '.[dev]'
 	touch $(STAMP)
 
-$(DOCS_STAMP): $(STAMP)
+$(ROSS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install -q --no-compile -e '.[dev,ross]'
+	touch $(ROSS_STAMP)
+
+$(DOCS_STAMP): $(ROSS_STAMP)
 	$(BIN)/python -m pip install -q --no-compile -e '.[dev,docs,ross]'
 	touch $(DOCS_STAMP)
 
@@ -38,7 +44,7 @@ run: compile
 	$(BIN)/bearingkit run-flagship
 
 # ruff; the compiled core built once before the parallel tests (their processes then load it); the tests
-# on every core (the ROSS export among them), except the cases marked slow (make test-slow; .ci/run runs
+# on every core, except the cases marked slow (make test-slow; .ci/run runs
 # both); every published number; 300 fuzz mutants.
 test: $(STAMP)
 	$(BIN)/ruff check .
@@ -69,8 +75,8 @@ ross3:
 	BEARINGKIT_BACKEND=numpy .venv-ross3/bin/python -m pytest -p no:cacheprovider -m ross tests/systems
 
 # The cases marked slow: larger repeats of what `make test` checks, process kills, every workbench page in
-# Chromium, the ROSS drivetrain rotors (each marker's comment says why it is slow and what stays fast).
-test-slow: $(STAMP)
+# Chromium, the ROSS rotors (each marker's comment says why it is slow and what stays fast).
+test-slow: $(ROSS_STAMP)
 	$(BIN)/bearingkit compile
 	bash scripts/ensure_chromium.sh
 	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -m slow

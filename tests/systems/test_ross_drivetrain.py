@@ -4,7 +4,7 @@ and a drivetrain's shaft gives the critical speeds of the same shaft exported by
 The same shaft (a 40 mm bar on a 6208 and an NU 208, a 6 kg disc of 120 mm, a force at mid-span) is
 written once as a shaft file and once as a one-shaft drivetrain; two load cases at 1000 and 6000 rpm give
 speed-indexed bearing elements. Marked ``slow`` (``make test-slow``, CI): ~35 s with ROSS's start-up;
-tests/systems/test_ross_export.py, which runs in ``make test``, checks the export's critical speeds.
+tests/systems/test_ross_export.py (also slow) checks the export of one shaft's critical speeds.
 """
 
 from __future__ import annotations
@@ -75,7 +75,7 @@ def _ross():
         return import_ross()
     except InputError:
         if os.environ.get("CI"):
-            pytest.fail("ross-rotordynamics must be installed in CI (make test installs the [ross] extra)")
+            pytest.fail("ross-rotordynamics must be installed in CI (make test-slow installs [ross])")
         pytest.skip("ross-rotordynamics not installed (pip install 'bearingkit[ross]')")
 
 
@@ -83,7 +83,7 @@ def _critical(rotor):
     return np.sort(rotor.run_critical_speed(num_modes=6).wn())[:2]
 
 
-@pytest.mark.slow  # ROSS's start-up and two rotors: ~24 s; test_ross_export.py checks the export in make test
+@pytest.mark.slow  # ROSS's start-up and two rotors: ~24 s; test_ross_export.py checks the export of one shaft
 def test_system_ross_rotors_load_and_match_the_shaft_export(tmp_path):
     rs = _ross()
     (tmp_path / "shaft.toml").write_text(SHAFT, encoding="utf-8")

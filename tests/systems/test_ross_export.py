@@ -22,9 +22,11 @@ from bearingkit.systems.shaft.solver import solve
 from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tables
 
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
-# One test process runs every ROSS test (`make test`: --dist loadgroup): importing ROSS takes 12-20 s, paid
-# once instead of once per process.
-pytestmark = [pytest.mark.ross, pytest.mark.xdist_group("ross")]
+# One test process runs every ROSS test (--dist loadgroup): importing ROSS takes 12-20 s, paid once instead of
+# once per process. Slow (make test-slow, which installs the [ross] extra): ROSS's start-up and eight rotors,
+# ~33 s of `make test`'s ~300 s. What make test keeps: the stiffness tables these rotors are built from
+# (tests/systems/test_stiffness_export.py) and the one-line error without the extra (tests/test_extras.py).
+pytestmark = [pytest.mark.ross, pytest.mark.slow, pytest.mark.xdist_group("ross")]
 
 
 def _ross():
@@ -34,7 +36,7 @@ def _ross():
         return import_ross()
     except InputError:
         if os.environ.get("CI"):
-            pytest.fail("ross-rotordynamics must be installed in CI (make test installs the [ross] extra)")
+            pytest.fail("ross-rotordynamics must be installed in CI (make test-slow installs [ross])")
         pytest.skip("ross-rotordynamics not installed (pip install 'bearingkit[ross]')")
 
 
