@@ -4,7 +4,8 @@ numba compiles a function the first time it is called with a type signature and 
 code on disk (:mod:`bearingkit.rows.numba_cache`). The compiled core has two entry points (one case
 on the calling thread, a batch on every core) and four row kinds (ball, cylindrical with its coarse
 stage, tapered, threaded); :func:`build` calls each entry point with a bearing of each kind and of
-two kinds together, then marks the cache built, after which the solver's ``auto`` backend may load the
+two kinds together, and the threaded rollers' tooth load sharing of the PTRB design studies, then
+marks the cache built, after which the solver's ``auto`` backend may load the
 compiled core for a large job (:mod:`bearingkit.analysis.solver.backend`).
 
 A build takes about a minute on an idle 2-core machine. One build runs at a time per cache directory
@@ -58,6 +59,19 @@ def warmup_bearings() -> dict[str, tuple]:
     }  # fmt: skip
 
 
+def warm_tooth_sharing() -> bool:
+    """Compile the threaded rollers' tooth load sharing (:mod:`bearingkit.rows.threaded.compiled_sharing`,
+    the PTRB design optimisation's kernel) on two small designs; whether both converged."""
+    from bearingkit.rows.threaded import compiled_sharing
+
+    ones = np.ones(2)
+    fa, conv = compiled_sharing.max_tooth_share(
+        np.array([500.0, 2000.0]), np.array([4, 6]), 1e-7 * ones, 1.2e-7 * ones, 1e-9 * ones, 1e-9 * ones,
+        1e-9 * ones, 2e-9 * ones, 3e-9 * ones, "opposite", 60, 1e-10,
+    )  # fmt: skip
+    return bool(conv.all() and np.all(fa >= 1.0))
+
+
 #: What ``bearingkit compile`` says when another process holds the build (exit code 1).
 BUSY = (
     "the compiled solver core is being built by another process; give --wait SECONDS to wait for it or "
@@ -101,5 +115,10 @@ def build(wait: float = 600.0, echo: Callable[[str], None] | None = None) -> str
                     raise RuntimeError(f"compile warm-up: {name} did not converge ({res.reason})")
             if echo is not None:
                 echo(f"  {name}: {time.perf_counter() - t0:.1f} s")
+        t0 = time.perf_counter()
+        if not warm_tooth_sharing():
+            raise RuntimeError("compile warm-up: the threaded tooth load sharing did not converge")
+        if echo is not None:
+            echo(f"  threaded tooth load sharing (PTRB designs): {time.perf_counter() - t0:.1f} s")
         numba_cache.mark_built()
     return "built"

@@ -35,6 +35,7 @@ COMPILED_SOURCES = (
     "rows/ball/compiled.py",
     "rows/cylindrical/compiled.py",
     "rows/threaded/compiled.py",
+    "rows/threaded/compiled_sharing.py",
     "rows/tapered/compiled.py",
     "analysis/solver/compiled_linalg.py",
     "analysis/solver/compiled_newton.py",

@@ -109,6 +109,27 @@ def design_geometry(
     return ptrb_prototype(**changes)
 
 
+def _share_solver(n_designs: int):
+    """The tooth load sharing's solver: the compiled one where the solver core runs compiled, else None
+    (numpy).
+
+    The solver core's rules (:mod:`bearingkit.analysis.solver.backend`): ``BEARINGKIT_BACKEND=numpy``
+    keeps numpy, ``compiled`` asks for the compiled one, ``auto`` takes it where the core is loaded in
+    this process (a study's chunks load it: one core for every chunk, so results do not depend on the
+    chunking) or the job pays for loading it. The two agree to 1e-10 (tests/rows/test_compiled_sharing.py).
+    """
+    from bearingkit.analysis.solver import backend
+
+    name = backend.requested(None)
+    if name == "numpy" or (name == "auto" and not backend.wants_compiled(n_designs)):
+        return None
+    if backend.compiled_module() is None:  # numba unusable: warned once, numpy answers
+        return None
+    from bearingkit.rows.threaded import compiled_sharing
+
+    return compiled_sharing.max_tooth_share
+
+
 def ptrb_objectives(
     alpha,
     n,
@@ -209,6 +230,7 @@ def _objectives(alpha, n, R_rr, d_R, case, load, speed, n_elements, lubricant, t
         youngs_modulus=base.youngs_modulus,
         poisson_ratio=base.poisson_ratio,
         body_compliance_factor=pr.BODY_COMPLIANCE_FACTOR,
+        solver=_share_solver(d_r.size),
     )
     gamma = d_r / PROTOTYPE_PITCH_DIAMETER
     dw = d_r / np.cos(alpha)

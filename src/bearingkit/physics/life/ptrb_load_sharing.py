@@ -205,13 +205,32 @@ def _shares(f_roller, n, ai, ao, ci, co, lr, li, lo, support, max_iter, tol):
     return fi, fo, fa_max, converged
 
 
-def max_tooth_share(roller_load, n_teeth, **coefficients):
+def _grouped_shares(f_roller, n_all, ai, ao, ci, co, lr, li, lo, support, max_iter, tol):
+    """f_amax (C,) and converged (C,) of designs with any tooth counts: :func:`_shares` per group of equal
+    n (the numpy solver of :func:`max_tooth_share`; the oracle of the compiled one)."""
+    fa = np.empty(f_roller.size)
+    conv = np.empty(f_roller.size, dtype=bool)
+    coefs = (ai, ao, ci, co, lr, li, lo)
+    for n in np.unique(n_all):
+        sel = n_all == n
+        _, _, fa[sel], conv[sel] = _shares(
+            f_roller[sel], int(n), *(v[sel] for v in coefs), support, max_iter, tol
+        )
+    return fa, conv
+
+
+def max_tooth_share(roller_load, n_teeth, *, solver=None, **coefficients):
     """f_amax [1] (C,) of designs that may differ in n: :func:`tooth_load_shares` per group of equal n.
 
     Parameters
     ----------
     roller_load : array_like (C,) [N]
     n_teeth : array_like (C,) int
+    solver : callable, optional
+        What solves the checked arrays: ``solver(f_roller, n_teeth, a_H,I, a_H,O, c_I, c_O, λ_R, λ_I, λ_O,
+        support, max_iter, tol) -> (f_amax, converged)``. Default: the numpy Newton per tooth count;
+        :func:`bearingkit.rows.threaded.compiled_sharing.max_tooth_share` is the compiled one (the
+        same equations, agreeing to 1e-10: tests/rows/test_compiled_sharing.py).
     **coefficients
         The (C,) coefficient arrays of :func:`tooth_load_shares` (and ``support``).
     """
@@ -225,26 +244,19 @@ def max_tooth_share(roller_load, n_teeth, **coefficients):
         )
     # The checks of tooth_load_shares, made once for all designs (a group passes them iff all do).
     checks.one_of("support", support, SUPPORTS)
-    f_roller = _arr(checks.positive("roller_load", _arr(roller_load, c), "N"), c)
-    coefs = dict(zip(_COEFFICIENTS, _checked(coefficients, c), strict=True))
-    out = np.empty(c)
     for n in np.unique(n_all):
-        sel = n_all == n
-        _, _, fa, conv = _shares(
-            f_roller[sel],
-            checks.integer("n_teeth", int(n), low=1),
-            *(coefs[k][sel] for k in _COEFFICIENTS),
-            support,
-            max_iter,
-            tol,
+        checks.integer("n_teeth", int(n), low=1)
+    f_roller = _arr(checks.positive("roller_load", _arr(roller_load, c), "N"), c)
+    coefs = _checked(coefficients, c)
+    fa, conv = (solver or _grouped_shares)(f_roller, n_all, *coefs, support, max_iter, tol)
+    if not conv.all():
+        bad = np.unique(n_all[~conv])
+        raise checks.InputError(
+            f"the tooth load sharing of {int((~conv).sum())} design(s) with n = "
+            f"{', '.join(str(int(n)) for n in bad)} did not converge; check the geometry (positive "
+            "stiffnesses and areas)"
         )
-        if not conv.all():
-            raise checks.InputError(
-                f"the tooth load sharing of {int((~conv).sum())} design(s) with n = {n} "
-                "did not converge; check the geometry (positive stiffnesses and areas)"
-            )
-        out[sel] = fa
-    return out
+    return fa
 
 
 #: Timoshenko shear coefficient of a rectangular tooth section [1] (as rows.threaded_distribution).
@@ -280,6 +292,7 @@ def design_f_amax(
     poisson_ratio,
     body_compliance_factor=1.0,
     support="opposite",
+    solver=None,
 ):
     """f_amax [1] of PTRB designs (arrays broadcast to (C,)) under the bearing axial load ``axial_load``.
 
@@ -306,6 +319,8 @@ def design_f_amax(
     body_compliance_factor : array_like [1]
         Multiplier of the core compliances P/(E A) (1: the bare core sections).
     support : {"opposite", "same"}
+    solver : callable, optional
+        :func:`max_tooth_share`'s ``solver`` (default: numpy).
 
     Notes
     -----
@@ -378,4 +393,5 @@ def design_f_amax(
         body_inner=kb * z * p / (e * area_i),
         body_outer=kb * z * p / (e * area_o),
         support=support,
+        solver=solver,
     )
