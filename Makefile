@@ -17,7 +17,7 @@ unexport PYTHONDONTWRITEBYTECODE
 
 # One pip run installs everything `make run` and `make test` need: the package and its tests. The
 # rotordynamics extra (ross-rotordynamics: plotly, scikit-learn, CoolProp, ...) comes with `make test-slow`,
-# which runs the ROSS tests (marked `ross` and slow), and the docs site's packages with `make docs`: each a
+# which runs the tests that load ROSS (marked `ross` and slow), and the docs site's packages with `make docs`: each a
 # second pip run, so that `make test` installs 29 s instead of 48 s (warm cache, 2 cores, measured).
 # --no-compile: pip byte-compiles every
 # module it installs, ~70 of its ~120 s here (measured with a warm cache, 2 cores); Python compiles the
@@ -32,8 +32,8 @@ $(ROSS_STAMP): $(STAMP)
 	$(BIN)/python -m pip install -q --no-compile -e '.[dev,ross]'
 	touch $(ROSS_STAMP)
 
-$(DOCS_STAMP): $(ROSS_STAMP)
-	$(BIN)/python -m pip install -q --no-compile -e '.[dev,docs,ross]'
+$(DOCS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install -q --no-compile -e '.[dev,docs]'
 	touch $(DOCS_STAMP)
 
 # The compiled solver core, once per installed copy and version (about a minute; then cached).

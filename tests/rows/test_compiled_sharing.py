@@ -100,10 +100,12 @@ def test_a_design_that_does_not_converge_is_refused_naming_its_tooth_count(solve
 
 
 def test_the_optimisation_uses_the_core_the_solver_backend_names(monkeypatch):
-    """BEARINGKIT_BACKEND=numpy keeps numpy, compiled takes the compiled sharing; a study's chunks (the core
-    loaded by backend.for_batches) take the compiled one under auto."""
+    """BEARINGKIT_BACKEND=numpy keeps numpy, compiled takes the compiled sharing; under auto a study's
+    chunks (the core loaded by backend.for_batches) take the compiled one, and a process that has not
+    loaded the core takes it only for a large population with the core built, loading nothing itself."""
     from bearingkit.analysis.solver import backend
     from bearingkit.papers.zheng2022 import design
+    from bearingkit.rows import numba_cache
 
     monkeypatch.setenv(backend.BACKEND_ENV, "numpy")
     assert design._share_solver(100) is None
@@ -112,3 +114,10 @@ def test_the_optimisation_uses_the_core_the_solver_backend_names(monkeypatch):
     monkeypatch.setenv(backend.BACKEND_ENV, "auto")
     backend.for_batches()
     assert design._share_solver(1) is compiled_sharing.max_tooth_share
+    monkeypatch.setattr(backend, "loaded", lambda: False)
+    state = dict(backend._STATE)
+    compiled = compiled_sharing.max_tooth_share
+    for built, n, expected in ((True, 1000, compiled), (True, 100, None), (False, 1000, None)):
+        monkeypatch.setattr(numba_cache, "is_built", lambda built=built: built)
+        assert design._share_solver(n) is expected, (built, n)
+    assert backend._STATE == state  # no note logged, no core loaded or built for it

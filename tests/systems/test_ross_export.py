@@ -1,9 +1,9 @@
 """ROSS export: a rotor with bearingkit's exported stiffness has the critical speeds of the same rotor
 with that stiffness typed in by hand.
 
-Needs ross-rotordynamics (the ``[ross]`` extra, ROSS 2.3+ or 3). ``make test`` installs it and runs this
-file in its parallel run (ROSS's start-up, numba compilation included, takes 12-20 s, once per test
-process). Under CI a missing ROSS is a failure, not a skip; elsewhere it is skipped.
+Needs ross-rotordynamics (the ``[ross]`` extra, ROSS 2.3+ or 3). ``make test-slow`` installs it and runs
+this file (ROSS's start-up, numba compilation included, takes 12-20 s, once per test process). Under CI a
+missing ROSS is a failure, not a skip; elsewhere it is skipped.
 """
 
 from __future__ import annotations
@@ -24,8 +24,9 @@ from bearingkit.systems.shaft.stiffness import shaft_stiffness_table, write_tabl
 SPINDLE = Path(__file__).resolve().parents[2] / "examples" / "shaft_spindle.toml"
 # One test process runs every ROSS test (--dist loadgroup): importing ROSS takes 12-20 s, paid once instead of
 # once per process. Slow (make test-slow, which installs the [ross] extra): ROSS's start-up and eight rotors,
-# ~33 s of `make test`'s ~300 s. What make test keeps: the stiffness tables these rotors are built from
-# (tests/systems/test_stiffness_export.py) and the one-line error without the extra (tests/test_extras.py).
+# ~33 s (a ninth of `make test`'s parallel run when it ran there). What make test keeps: the stiffness
+# tables these rotors are built from (tests/systems/test_stiffness_export.py) and the one-line error
+# without the extra (tests/test_extras.py).
 pytestmark = [pytest.mark.ross, pytest.mark.slow, pytest.mark.xdist_group("ross")]
 
 

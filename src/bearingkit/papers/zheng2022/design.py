@@ -113,17 +113,24 @@ def _share_solver(n_designs: int):
     """The tooth load sharing's solver: the compiled one where the solver core runs compiled, else None
     (numpy).
 
-    The solver core's rules (:mod:`bearingkit.analysis.solver.backend`): ``BEARINGKIT_BACKEND=numpy``
-    keeps numpy, ``compiled`` asks for the compiled one, ``auto`` takes it where the core is loaded in
-    this process (a study's chunks load it: one core for every chunk, so results do not depend on the
-    chunking) or the job pays for loading it. The two agree to 1e-10 (tests/rows/test_compiled_sharing.py).
+    The solver core's switch (:mod:`bearingkit.analysis.solver.backend`): ``BEARINGKIT_BACKEND=numpy``
+    keeps numpy, ``compiled`` asks for the compiled one; ``auto`` takes it where the solver core is
+    loaded in this process (a study's chunks load it: one core for every chunk, so results do not depend
+    on the chunking) or built (``bearingkit compile`` caches this kernel too) and the population is larger
+    than :data:`~bearingkit.analysis.solver.backend.SMALL_JOB_CASES`; it neither loads nor builds the
+    solver core itself. The two agree to 1e-10 (tests/rows/test_compiled_sharing.py).
     """
     from bearingkit.analysis.solver import backend
+    from bearingkit.rows import numba_cache
 
     name = backend.requested(None)
-    if name == "numpy" or (name == "auto" and not backend.wants_compiled(n_designs)):
+    if name == "numpy":
         return None
-    if backend.compiled_module() is None:  # numba unusable: warned once, numpy answers
+    if name == "auto":
+        built_and_large = n_designs > backend.SMALL_JOB_CASES and numba_cache.is_built()
+        if not (backend.loaded() or built_and_large) or not numba_cache.numba_installed():
+            return None
+    elif backend.compiled_module() is None:  # "compiled" without a usable numba: warned once, numpy answers
         return None
     from bearingkit.rows.threaded import compiled_sharing
 

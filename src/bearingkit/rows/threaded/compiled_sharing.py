@@ -15,7 +15,7 @@ S_I,k = Σ_{j<k} F_I,j, S_O,k = Σ_{j<k} F_O,j (the tail sums are F_r − S, F_r
 equations):
 
 .. math::
-    g_I(F_{I,k}) - g_I(F_{I,k-1}) &= -λ_I (F_r - S_{I,k}) + λ_R (S_{I,k} - S_{O,k}) \\
+    g_I(F_{I,k}) - g_I(F_{I,k-1}) &= -λ_I (F_r - S_{I,k}) + λ_R (S_{I,k} - S_{O,k}) \\\\
     g_O(F_{O,k}) - g_O(F_{O,k-1}) &= -λ_R (S_{I,k} - S_{O,k}) + λ_O S_{O,k}
         \\quad (\\text{same support: } - λ_O (F_r - S_{O,k}))
 
