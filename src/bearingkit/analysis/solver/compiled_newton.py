@@ -440,20 +440,6 @@ def _flat(mp: ModelPack) -> tuple:
     )  # fmt: skip
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
-def _solve_serial(
-    q0, load, free, mp, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner,
-    out_x,
-):  # fmt: skip
-    """Every case on the calling thread; returns the number of cases that did not converge."""
-    ws = _workspace(mp)
-    bad = 0
-    for c in range(load.shape[0]):
-        bad += _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
-                           out_q, out_f, out_k, out_b, out_n, out_r, inner[c], out_x)  # fmt: skip
-    return bad
-
-
 @njit(cache=True, nogil=True)
 def _held(mp):
     """The pack in a one-item typed list (:func:`_solve_held`): built once per model and plan."""
@@ -467,14 +453,23 @@ def _solve_held(
     q0, load, free, held, scale, idx, p, fracs, cone, given, out_q, out_f, out_k, out_b, out_n, out_r, inner,
     out_x,
 ):  # fmt: skip
-    """:func:`_solve_serial` with the pack held in a typed list (:func:`_held`).
+    """Every case on the calling thread, the pack held in a typed list (:func:`_held`); returns the number
+    of cases that did not converge.
 
     Entering a compiled function converts every array argument (~0.1 µs each, a memory block per
     array); the pack holds 48 of them, 5 µs of a single 6209 solve's ~30 µs in the compiled core
     (issue 34). A typed list is converted as one object, and its item is the pack already converted.
+    The loop is written here, not in a serial driver this one calls: numba optimises each function's
+    module again with its callees linked in, and that extra level cost ~10 s of the core's compile
+    (the first solve's entry point 99 → 90 s, measured on the 2-core machine).
     """
-    return _solve_serial(q0, load, free, held[0], scale, idx, p, fracs, cone, given, out_q, out_f, out_k,
-                         out_b, out_n, out_r, inner, out_x)  # fmt: skip
+    mp = held[0]
+    ws = _workspace(mp)
+    bad = 0
+    for c in range(load.shape[0]):
+        bad += _solve_case(c, q0[c], load[c], free, mp, ws, scale, idx, p, fracs, cone, given,
+                           out_q, out_f, out_k, out_b, out_n, out_r, inner[c], out_x)  # fmt: skip
+    return bad
 
 
 def _constants(mp: ModelPack, free, max_step, limit, options, cone) -> dict:
