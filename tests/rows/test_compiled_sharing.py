@@ -99,6 +99,12 @@ def test_a_design_that_does_not_converge_is_refused_naming_its_tooth_count(solve
         pls.max_tooth_share([800.0, 900.0, 1e4], [7, 9, 9], solver=solver, max_iter=1, **coefs)
 
 
+def test_the_compiled_solver_called_directly_refuses_an_unknown_support():
+    ones = np.ones(1)
+    with pytest.raises(InputError, match="support"):
+        compiled_sharing.max_tooth_share(ones, [3], *(1e-9 * ones,) * 7, "middle", 60, 1e-10)
+
+
 def test_the_optimisation_uses_the_core_the_solver_backend_names(monkeypatch):
     """BEARINGKIT_BACKEND=numpy keeps numpy, compiled takes the compiled sharing; under auto a study's
     chunks (the core loaded by backend.for_batches) take the compiled one, and a process that has not

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from bearingkit import checks
 from bearingkit.rows.numba_cache import configure
 
 configure()  # before numba reads its configuration: the cache follows the compiled sources
@@ -169,6 +170,7 @@ def max_tooth_share(f_roller, n_teeth, ai, ao, ci, co, lr, li, lo, support, max_
     ("opposite" or "same"), the iteration cap and the tolerance on the relative Newton step of
     y = F^(1/3) — as :func:`~bearingkit.physics.life.ptrb_load_sharing.tooth_load_shares`.
     """
+    checks.one_of("support", support, ("opposite", "same"))  # a misspelt one would solve as "opposite"
     arrays = [np.ascontiguousarray(a, dtype=float) for a in (f_roller, ai, ao, ci, co, lr, li, lo)]
     n = np.ascontiguousarray(n_teeth, dtype=np.int64)
     f, a_i, a_o, c_i, c_o, l_r, l_i, l_o = arrays
