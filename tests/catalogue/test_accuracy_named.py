@@ -10,8 +10,9 @@ pitch 1.205, RULES) and the 32008 X (roller end allowance 1.0 mm, ROLLER_END_ALL
 published roller against NSK's C0); the 34 sizes 7204-7220 of the 72 series (72B and 72C; 72A shares
 72B's bearings; 7221-7240, rated later, are predictions) are the calibration set of the angular contact
 ball size and cage pitches (k_w = 0.317, pressed steel 1.145, machined 1.227: the medians of the geometry
-NSK's C and C0 imply). Every other size is a prediction of rules chosen before or elsewhere (73, 70, 719,
-QJ: the same rule).
+NSK's C and C0 imply); the 41 sizes of the spherical 230 series and the 16 EA sizes 22208-22226 are the
+calibration sets of the radial spherical roller rules (catalogue.internal.SPHERICAL_RULES, the same method).
+Every other size is a prediction of rules chosen before or elsewhere (73, 70, 719, QJ: the same rule).
 """
 
 from __future__ import annotations
@@ -262,51 +263,30 @@ EXCEPTIONS = {
     "C0 by −11…−22 % on the 812 series": [
         "81109", "81117", "81212", "81216", "81222", "81224", "81230", "81234",
     ],
-    "spherical 22205-22207: NSK's design C (B178, lower capacity) against rules of today's E designs; "
-    "SKF's E design of the same sizes is within −3…−7 % (test_estimate_kinds)": ["22205", "22206", "22207"],
-    "spherical: C0 +10…+16 % at C within ±10 %: the osculation 0.98 and L_we = 0.80 B/2 of the rule are "
-    "not NSK's": [
-        "22211", "22228", "22236", "22238", "22330", "22332", "22334", "22336", "22338", "22340",
+    "spherical 22205-22207: NSK's design C (B178-B180, lower capacity), C +5…+14 %, C0 +14…+24 %: the "
+    "standard rule rates them between NSK's design C and SKF's E design (test_estimate_kinds)": [
+        "22205", "22206", "22207",
     ],
-    "spherical 213 C, CD and CA designs (21304-21307 CD, 21319, 21320 C, 21322 CA; NSK B180-B184): C "
-    "-1…+30 %, C0 +23…+54 % (21304, d = 20 mm, the most): NSK's designs other than EA (B178: 'Type EA has "
-    "especially high load capacity'), while the rule (k_w 0.24, L_we 0.80 B/2) is one for every design; why "
-    "C0 is off more than C: cause not found": [
-        "21304", "21305", "21306", "21307", "21319", "21320", "21322",
+    "spherical 223 EA (22309, 22315-22324) and 22226 EA (NSK B180-B186): C -6…-10 %, C0 -10…-13 %: the "
+    "EA rule is the 222 EA sizes' median (L_we 0.753 B/2); NSK's 223 EA ratings imply longer rollers "
+    "(median 0.807 B/2) and 22226, the largest 222 EA size, the longest of its set; the rule is not split "
+    "by series": [
+        "22309", "22315", "22316", "22317", "22318", "22319", "22320", "22322", "22324", "22226",
     ],
-    "spherical 23012 (NSK 23012CE4, design C, B182; the one 230 size NSK prints below 100 mm): C +14 %, C0 "
-    "+20 %: cause not found (NSK's design C, as 22205-22207, which the same rules rate 17-26 % above NSK "
-    "and within 3-7 % of SKF's E design; no SKF value of the 23012 was compared)": ["23012"],
-    "spherical 213 EA, NSK's uneven steps (B180-B182): 21311 is rated as the smaller 21310 (142 kN, 174 kN; "
-    "estimate C +6 %, C0 +17 %), 21314 as the larger 21315 (250 kN, 325 kN; C -12 %), 21312's 190 kN lies "
-    "between 142 and 212 kN (C -10 %); the estimate steps evenly": ["21311", "21312", "21314"],
+    "spherical 213 CD (21304-21307; NSK B180): C +12…+29 %, C0 +8…+28 % (21304, d = 20 mm, the most): "
+    "NSK's ratings of these small designs imply shorter, thinner rollers (D_we 0.22-0.23 (D - d), L_we "
+    "0.52-0.64 B/2) than the standard rule's (0.247, 0.716; calibrated on the 230 series)": [
+        "21304", "21305", "21306", "21307",
+    ],
+    "spherical 213 EA (NSK B180-B184): NSK's ratings imply rollers thinner than the EA rule's (D_we median "
+    "0.203 against 0.261 (D - d)), so C runs above NSK's and C0 below: 21317, 21318 C +10…+15 %; NSK's "
+    "uneven steps make the rest: 21311 is rated as the smaller 21310 (142 kN, 174 kN; C +19 %), 21314 as "
+    "the larger 21315 (250 kN, 325 kN; C0 -16 %), 21312's 190 kN lies between 142 and 212 kN (C0 -10.2 %; "
+    "D_we held by the centre plane, as at 21309, 21310, 21313)": [
+        "21311", "21312", "21314", "21317", "21318",
+    ],
     "spherical 24120: NSK prints the CA design and rates it at the C of the narrower 23120 C (345 kN each, "
-    "B = 65 against 52 mm; B184); the estimate follows the width (C +22 %, C0 +32 %)": ["24120"],
-    "spherical 230, 231, 232, 240, 241 at 100-200 mm and 21317, 21318 (NSK B182-B190): C0 +10…+17 % at C "
-    "+1…+10 % (23020 C +10.1 %): the estimate's C0 runs 3-6 points further above NSK's than its C in each of "
-    "these series (the same pattern as the 222/223 sizes above); cause not found": [
-        "21317", "21318", "23020", "23022", "23024", "23034", "23036", "23038", "23124", "23222", "24020",
-        "24036", "24126", "24136", "24138", "24140",
-    ],
-    "spherical sizes added from NSK B184-B200 (23219; 239 from 160 mm; 222, 223, 230, 231, 232, 240, 241 "
-    "above 200 mm; design CA, machined brass cage, but 24144 C): C0 +10…+16 % at C +2…+10 %: the pattern of "
-    "the 100-200 mm sizes above (C0 3-6 points further above NSK's than C); cause not found": [
-        "22248", "22252", "22256", "22260", "22264", "22344", "22356", "23068", "23084", "23088", "23092",
-        "230/530", "230/630", "230/750", "230/800", "230/850", "230/900", "230/950", "230/1000", "23152",
-        "23156", "23164", "23192", "23196", "231/530", "231/600", "231/670", "23219", "23252", "23256",
-        "23276", "23296", "232/500", "232/530", "232/560", "232/630", "232/670", "232/710", "232/750",
-        "23932", "23948", "23956", "23960", "23988", "23992", "239/560", "239/600", "239/630", "239/670",
-        "239/710", "239/750", "239/800", "239/850", "239/900", "239/1060", "24060", "24072", "24080",
-        "240/500", "240/530", "240/560", "240/600", "240/670", "240/710", "240/850", "240/900", "240/950",
-        "240/1060", "24144", "24164", "24168", "24172", "24176", "241/630", "241/710",
-    ],
-    "spherical 22348, 230/1060, 23934 (NSK design BCA), 23938, 23940, 239/500, 239/1000, 24192, "
-    "240/1250-240/1400 (NSK B188-B200): C +10…+16 %, C0 +10…+21 % (240/1250 C0 +9.6 %), where the "
-    "neighbouring sizes of each series are within 10 % in C: cause not found (23938: NSK rates it 460 kN, "
-    "below the smaller 23936's 470 kN, B188)": [
-        "22348", "230/1060", "23934", "23938", "23940", "239/500", "239/1000", "24192", "240/1250",
-        "240/1320", "240/1400",
-    ],
+    "B = 65 against 52 mm; B184); the estimate follows the width (C +12 %, C0 +16 %)": ["24120"],
     "needle: the needle size grows with the section (NA49 small bores +10…+16 %, NA4926/28 and large NA48 "
     "−10…−12 %): the needle count and size are not the real ones": [
         "NA4900", "NA4902", "NA4903", "NA4905", "NA49/28", "NA4907", "NA4909", "NA4926", "NA4928",

@@ -90,9 +90,6 @@ MACHINED_CAGE_PITCH = 1.227
 #: Largest bore codes with a pressed steel cage per angular contact series (NSK E1102 B48 Table 1: 70A
 #: 7000–7018, 72A/B 7200–7222, 73A/B 7300–7320; 70C, 72C, 79A5/C machined brass throughout).
 PRESSED_STEEL_CAGE_UP_TO = {"70": 18, "72": 22, "73": 20}
-#: Spherical rollers no thicker than this times their length (D_we ≤ L_we): narrow sections (213) take
-#: slimmer rollers rather than rollers that cross into the other row.
-SPHERICAL_ROLLER_ASPECT = 1.0
 #: Spherical roller thrust bearings (292, 293, 294): tan α of every size. NSK E1102 B225-B229 print one
 #: dynamic equivalent load for all, P = 1.2 F_r + F_a, which is ISO 281 8.2's P = tan α F_r + F_a of a
 #: thrust roller bearing at tan α = 1.2 (α = 50.2°); the static P0 = 2.8 F_r + F_a (ISO 76: 2.3 tan α =
@@ -141,6 +138,19 @@ SPHERICAL_THRUST_RULES = {
     "E": Rule(k_w=0.445, pitch=1.15, length=0.580),
     "": Rule(k_w=0.368, pitch=1.15, length=0.518),
 }
+#: Radial spherical roller bearings by design (the ``design`` column: ``EA`` NSK's high-capacity design,
+#: ``""`` every other: CA, CD, C, BCA): D_we = k_w (D − d), L_we = length · B/2 per row, Z per row from the
+#: cage pitch 1.15 (chosen before, by C over the 222/223 tables). CALIBRATED: k_w and length are the
+#: medians of the geometry NSK's C and C0 imply (ISO 281 eq. (9) and ISO 76 eq. (7) solved for D_we and
+#: L_we at the printed e's α, d_m = (d + D)/2, Z = π d_m/(1.15 D_we)): over the 230 series (41 sizes, NSK
+#: E1102 B182-B196, all but one CA/CD/C) for the standard rule (0.2470, 0.7162), over the 16 EA sizes of the
+#: 222 series (22208-22226 EA, B178-B180) for the EA rule (0.2607, 0.7528). The other series and 223 EA and
+#: 213 EA are predictions (docs/catalogue.md). Before issue 33's third part: one rule, 0.24 and 0.80 chosen
+#: by C alone, which put C0 +8…+12 % above NSK's in every series.
+SPHERICAL_RULES = {
+    "EA": Rule(k_w=0.261, pitch=1.15, length=0.753, rows=2),
+    "": Rule(k_w=0.247, pitch=1.15, length=0.716, rows=2),
+}
 #: The one place where the rule constants live (module docstring: where they come from).
 RULES: dict[str, Rule] = {
     "deep_groove_ball": Rule(k_w=0.31, k_b=0.70),
@@ -161,7 +171,8 @@ RULES: dict[str, Rule] = {
     "tapered_roller": Rule(k_w=0.23, pitch=1.14, length=0.72),
     "thrust_ball": Rule(k_w=0.70, pitch=1.05, k_b=0.36),
     "thrust_cylindrical_roller": Rule(k_w=0.42, pitch=1.40, length=0.45),
-    "spherical_roller": Rule(k_w=0.24, pitch=1.15, length=0.80, rows=2),
+    # by design: SPHERICAL_RULES (estimate() picks the row's)
+    "spherical_roller": SPHERICAL_RULES[""],
     # by design: SPHERICAL_THRUST_RULES (estimate() picks the row's)
     "spherical_roller_thrust": SPHERICAL_THRUST_RULES["E"],
     # NN30 (diameter series 0): the roller of the NU10 rule (same diameter series) and the single-row
@@ -289,8 +300,10 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
             "(ISO 281 8.2: X = tan alpha)"
         )
     elif fam == "spherical_roller":
+        design = "EA" if entry.extra.get("design") == "EA" else ""
+        rule = SPHERICAL_RULES[design]
         length = rule.length * 0.5 * width
-        d_w = min(rule.k_w * (big_d - d), SPHERICAL_ROLLER_ASPECT * length)
+        d_w = rule.k_w * (big_d - d)
         z = _pitch_count(d_m, d_w, rule.pitch)
         if contact_angle is None and not entry.extra.get("e"):
             alpha = spherical_angle_filling_width(entry, d_w, length, d_m)
@@ -312,9 +325,20 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
         else:
             alpha = _nominal_angle(entry, contact_angle)
             how = f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}"
+            # the two rows cannot overlap: at a steep printed e in a narrow section (213) the rule's roller
+            # would reach across the centre plane, so it is held to the largest diameter that stays on its
+            # side (its inner end 0.5 d_m tan α − (L_we cos α + D_we sin α)/2 ≥ margin · D_we)
+            d_fit = (0.5 * d_m * math.tan(alpha) - 0.5 * length * math.cos(alpha)) / (
+                0.5 * math.sin(alpha) + CENTRE_PLANE_MARGIN
+            )
+            if 0.0 < d_fit < d_w:
+                d_w = d_fit
+                z = _pitch_count(d_m, d_w, rule.pitch)
+                how += f"; D_we held to {d_w * 1e3:.3g} mm (the row stays on its side of the centre plane)"
         extra["row_offset"] = 0.5 * d_m * math.tan(alpha)
         notes.append(
-            f"two rows: D_we = {rule.k_w} (D - d), L_we = {rule.length} B/2, Z per row from cage pitch "
+            f"two rows ({'NSK EA design' if design else 'standard design'}): D_we = {rule.k_w} (D - d), "
+            f"L_we = {rule.length} B/2, Z per row from cage pitch "
             f"{rule.pitch} D_we, d_m = (d + D)/2, {how}"
         )
     elif fam == "needle_roller":
