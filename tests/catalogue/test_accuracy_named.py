@@ -10,9 +10,12 @@ pitch 1.205, RULES) and the 32008 X (roller end allowance 1.0 mm, ROLLER_END_ALL
 published roller against NSK's C0); the 34 sizes 7204-7220 of the 72 series (72B and 72C; 72A shares
 72B's bearings; 7221-7240, rated later, are predictions) are the calibration set of the angular contact
 ball size and cage pitches (k_w = 0.317, pressed steel 1.145, machined 1.227: the medians of the geometry
-NSK's C and C0 imply); the 41 sizes of the spherical 230 series and the 16 EA sizes 22208-22226 are the
-calibration sets of the radial spherical roller rules (catalogue.internal.SPHERICAL_RULES, the same method).
-Every other size is a prediction of rules chosen before or elsewhere (73, 70, 719, QJ: the same rule).
+NSK's C and C0 imply); the 23 sizes 7000C-7022C of NSK's 70 C are the calibration set of the light
+angular contact sections' ball (0.295 (D - d), 70 and 719); the 41 sizes of the spherical 230 series and
+the 16 EA sizes 22208-22226 are the calibration sets of the radial spherical roller rules
+(catalogue.internal.SPHERICAL_RULES, the same method).
+Every other size is a prediction of rules chosen before or elsewhere (73, QJ: the 72 rule; 70 A/AC/B and
+719: the light-section rule).
 """
 
 from __future__ import annotations
@@ -130,30 +133,25 @@ EXCEPTIONS = {
     "within 10 %": [
         "7228A", "7228B", "7230A", "7230B", "7234A", "7234B", "7236A", "7236B",
     ],
-    "spindle series 70 (A, C) 10-60 mm and 719 (C, AC) 10-160 mm (NSK B50-B62): C up to +33 %, C0 up to "
-    "+26 %, every one above +10 % in C or C0: NSK's C and C0 imply a ball of 0.26-0.31 (D - d) (the rule: "
-    "0.317, the 72 series' median) and, for the machined-cage C and AC rows, a cage pitch of 1.22-1.45 "
-    "(the rule: 1.227); the other 70 and 719 sizes are within 10 %. Why NSK's ball is smaller in these "
-    "sizes than in the 72 series: cause not found (NSK prints no ball size)": [
-        "7000C", "7001C", "7002C", "7003C", "7004C", "7005C", "7006C", "7008C", "7009C",
-        "7002A", "7003A", "7004A", "7005A", "7006A", "7007A", "7008A", "7009A", "7010A", "7012A",
-        "71900C", "71901C", "71902C", "71903C", "71904C", "71905C", "71906C", "71907C", "71908C", "71909C",
-        "71910C", "71911C", "71912C", "71913C", "71914C", "71915C", "71916C", "71917C", "71920C", "71921C",
-        "71922C", "71926C", "71928C", "71930C", "71932C",
-        "71900AC", "71901AC", "71902AC", "71903AC", "71904AC", "71905AC", "71906AC", "71907AC", "71908AC",
-        "71909AC", "71910AC", "71911AC", "71912AC", "71913AC", "71914AC", "71915AC", "71916AC", "71917AC",
-        "71920AC", "71921AC", "71922AC", "71926AC", "71928AC", "71930AC",
+    "spindle series 70 and 719, small sizes (NSK B50-B62, KOYO B2001RUS; 7000B-7005x, 71900-71916): C "
+    "+4…+23 %, C0 +8…+21 %: the light-section ball 0.295 (D - d) is the median of NSK's 70 C; the "
+    "ratings of these sizes imply smaller balls (0.26-0.30 (D - d)) at wider cage pitches (1.22-1.45) "
+    "than the rule's (machined 1.227, pressed steel 1.145), i.e. fewer, smaller balls than the estimate; "
+    "NSK prints no ball size": [
+        "7000B", "7002A", "7002B", "7003A", "7003B", "7003C", "7004B", "7005A", "7005B", "7005C",
+        "71900C", "71900AC", "71901C", "71901AC", "71902C", "71904C", "71904AC", "71905C", "71905AC",
+        "71906C", "71906AC", "71909C", "71909AC", "71911C", "71911AC", "71912C", "71912AC", "71915C",
+        "71916C",
     ],
-    "NTN's 70 AC (NTN ULTAGE table p. 4, NTN's ratings): C +10…+17 %, C0 up to +12 % at the small 70 "
-    "sizes, the pattern of NSK's 70 C/A rows of the same bores (above); from 7007AC within 10 %. NTN prints "
-    "no ball size or count: cause not found": [
-        "7000AC", "7001AC", "7002AC", "7004AC", "7005AC", "7006AC",
+    "70 series from 55 mm, NTN's AC (ULTAGE p. 4) 7011AC-7021AC, KOYO's 7021B, 7024B and NSK's 7038A: C "
+    "-7…-11 %, C0 -10…-14 %: their ratings imply the rule's ball (0.294-0.303 (D - d)) at a tighter cage "
+    "pitch (1.12-1.18) than the rule's machined 1.227, so more balls than the estimate's": [
+        "7011AC", "7014AC", "7015AC", "7016AC", "7017AC", "7018AC", "7019AC", "7020AC", "7021AC",
+        "7021B", "7024B", "7038A",
     ],
-    "KOYO's 70 B (KOYO B2001RUS, machined cages only): C +11…+27 %, C0 +8…+19 %: the estimate's cage rule "
-    "(NSK's: 70 pressed steel to 7018) gives 7000B-7018B pressed steel cages; with KOYO's machined cage "
-    "7000B-7010B stay above +10 %, the small-70 pattern of NSK's 70 A/C: cause not found": [
-        "7000B", "7001B", "7002B", "7003B", "7004B", "7005B", "7006B", "7007B", "7008B", "7009B", "7010B",
-        "7011B", "7012B", "7013B",
+    "NSK's 7022A, 7022C, 7024A (B56): C -10…-14 %, C0 -8…-13 %: NSK's ratings imply the 72 series' ball "
+    "(0.317 (D - d)) at a cage pitch of 1.17-1.21: larger balls, and more, than the light-section rule's": [
+        "7022A", "7022C", "7024A",
     ],
     "KOYO's 73 C and 72 C (machined cage): 7304C +10 %; 7310C, 7311C C0 -10 %; 7228C, 7230C (the bores of "
     "NSK's 72 A/B deviation) C0 -11…-15 %; 7328C-7332C C0 -12 %: cause not found": [

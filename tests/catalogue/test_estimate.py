@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from bearingkit.catalogue import RULES, entries, estimate, fill_angle, ratings
+from bearingkit.catalogue import RULES, entries, estimate, fill_angle, internal, ratings
 from bearingkit.catalogue.internal import CONRAD_FILL_ANGLE, envelope_margins
 from bearingkit.physics.life import iso76, iso281
 
@@ -163,6 +163,33 @@ def test_double_row_ratings_imply_conrad_assembled_rows():
         z, d_w, d_m = _implied_geometry(e, alpha, 2, "angular_contact_ball")
         z_fill = 1 + CONRAD_FILL_ANGLE * d_m / (2 * d_w)
         assert 0.85 < z / z_fill < 1.06, e.designation
+
+
+def test_light_angular_contact_ball_is_the_median_over_nsk_70c():
+    """The calibration of the light sections' ball (internal.SERIES_RULES, 70 and 719), recomputed: over
+    NSK's 70 C (23 sizes 7000C-7022C, machined brass) the ball NSK's C and C0 imply has the median 0.2952
+    (D - d) at the median cage pitch 1.227 (the machined pitch of the 72 C set, internal.MACHINED_CAGE_PITCH);
+    the 72 series' ball is larger (0.317, RULES), and so is the ball AKE's 718 rows imply (0.313-0.317),
+    which keeps the 72 rule."""
+    rows = [
+        e for e in entries("angular_contact_ball").values()
+        if e.series == "70" and e.designation.endswith("C") and not e.designation.endswith("AC")
+        and e.source.startswith("NSK")
+    ]  # fmt: skip
+    assert len(rows) == 23
+    implied = []
+    for e in rows:
+        z, d_w, d_m = _implied_geometry(e, 15 * math.pi / 180, 1, "angular_contact_ball")
+        implied.append((d_w / (e.outer_diameter - e.bore), math.pi * d_m / (z * d_w)))
+    k_w, pitch = np.median(implied, axis=0)
+    for series in ("70", "719"):
+        assert internal.SERIES_RULES[("angular_contact_ball", series)].k_w == pytest.approx(k_w, abs=6e-4)
+    assert pitch == pytest.approx(internal.MACHINED_CAGE_PITCH, abs=1e-3)
+    for e in entries("angular_contact_ball").values():
+        if e.series == "718" and e.C is not None:
+            alpha = float(e.extra["contact_angle_deg"]) * math.pi / 180
+            _, d_w, _ = _implied_geometry(e, alpha, 1, "angular_contact_ball")
+            assert 0.31 < d_w / (e.outer_diameter - e.bore) < 0.32, e.designation
 
 
 def test_thrust_cylindrical_roller_diameter_against_published():

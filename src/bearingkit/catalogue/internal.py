@@ -197,6 +197,13 @@ SERIES_RULES: dict[tuple[str, str], Rule] = {
     # (stock balls: 3/32 in = 2.381 mm at B = 5, 3.5 mm at B = 7); 0.55 B chosen by C over the 618 table
     # (median C -1 %, it was +14 % with the 0.70 B cap), C0 follows (docs/catalogue.md)
     ("deep_groove_ball", "618"): Rule(k_w=0.31, k_b=0.55),
+    # light angular contact sections (ISO diameter series 0 and 9: the spindle series 70 and 719): the ball
+    # CALIBRATED on NSK's 70 C (23 sizes, machined brass, B50-B56): the median of the ball NSK's C and C0
+    # imply there, 0.2952 (D - d) (their cage pitch: 1.227, the machined pitch of the 72 C set); the cage
+    # pitches are the angular contact rule's. 70 A/AC/B (NSK, NTN, KOYO) and 719 C/AC are predictions.
+    # Diameter series 8 (718) keeps the family rule: AKE's two 71822 rows imply 0.313-0.317 (D - d).
+    ("angular_contact_ball", "70"): Rule(k_w=0.295, pitch=1.145, k_b=0.80),
+    ("angular_contact_ball", "719"): Rule(k_w=0.295, pitch=1.145, k_b=0.80),
 }
 
 
