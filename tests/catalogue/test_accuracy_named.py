@@ -135,8 +135,8 @@ EXCEPTIONS = {
     ],
     "spindle series 70 and 719, small sizes (NSK B50-B62, KOYO B2001RUS; 7000B-7005x, 71900-71916): C "
     "+4…+23 %, C0 +8…+21 %: the light-section ball 0.295 (D - d) is the median of NSK's 70 C; the "
-    "ratings of these sizes imply smaller balls (0.26-0.30 (D - d)) at wider cage pitches (1.22-1.45) "
-    "than the rule's (machined 1.227, pressed steel 1.145), i.e. fewer, smaller balls than the estimate; "
+    "ratings of these sizes imply balls of 0.26-0.30 (D - d) at wider cage pitches (1.22-1.45) than the "
+    "rule's (machined 1.227, pressed steel 1.145), i.e. fewer, mostly smaller balls than the estimate; "
     "NSK prints no ball size": [
         "7000B", "7002A", "7002B", "7003A", "7003B", "7003C", "7004B", "7005A", "7005B", "7005C",
         "71900C", "71900AC", "71901C", "71901AC", "71902C", "71904C", "71904AC", "71905C", "71905AC",
@@ -150,7 +150,7 @@ EXCEPTIONS = {
         "7021B", "7024B", "7038A",
     ],
     "NSK's 7022A, 7022C, 7024A (B56): C -10…-14 %, C0 -8…-13 %: NSK's ratings imply the 72 series' ball "
-    "(0.317 (D - d)) at a cage pitch of 1.17-1.21: larger balls, and more, than the light-section rule's": [
+    "(0.317 (D - d)) at a cage pitch of 1.17-1.21: larger balls, about as many as the estimate's": [
         "7022A", "7022C", "7024A",
     ],
     "KOYO's 73 C and 72 C (machined cage): 7304C +10 %; 7310C, 7311C C0 -10 %; 7228C, 7230C (the bores of "

@@ -197,25 +197,38 @@ def test_spherical_rows_fit_radially_and_axially():
             assert inner > 0, e.designation
 
 
+def test_spherical_given_angle_keeps_the_rule_roller():
+    """The centre-plane trim of D_we serves the printed e only: at an angle the user gives, the rule's roller
+    stays (a review found that at 8.2° on a 22208 the trim left a 0.5 mm roller, 315 per row)."""
+    e = entries("spherical_roller")["22208"]
+    rule = internal.SPHERICAL_RULES["EA"]
+    for deg in (8.0, 8.2, 9.0, 12.0):
+        est = estimate(e, contact_angle=math.radians(deg))
+        assert est.element_diameter == pytest.approx(rule.k_w * (e.outer_diameter - e.bore), rel=1e-12)
+        assert est.contact_angle == pytest.approx(math.radians(deg)) and "(given)" in est.notes[-1]
+
+
 def test_spherical_small_sizes_are_nsk_older_c_design():
     """NSK E1102 lists 22205-22207 in its design C (B178: "type EA has especially high load capacity"); the
     standard rule (calibrated on the 230 series, NSK's CA/CD designs) rates them between NSK's design C and
     SKF's E design of the same size (SKF 6000 p. 716: 49, 64, 86.5 kN): C +5…+14 % over NSK's, −13…−16 %
-    under SKF's. That is the stated mechanism of these three deviations; no constant was changed for them."""
+    under SKF's (the old single rule, EA-like, was 17-26 % over NSK's and within 10 % of SKF's). That is
+    the stated mechanism of these three deviations; no constant was changed for them."""
     skf = reference_ratings("spherical_roller_skf")
     rows = entries("spherical_roller")
     for name in ["22205", "22206", "22207"]:
         e = rows[name]
         assert e.extra["design"] == "C"
         c, _ = ratings(estimate(e))
-        assert e.C < c < skf[name][0], name
-    # for the sizes NSK makes in its high-capacity EA design the two makers differ by SKF Explorer's
-    # uplift only (SKF/NSK 1.05-1.16), and the estimate (the EA rule) follows NSK: nearer NSK's C than SKF's
+        assert 0.05 < c / e.C - 1 < 0.15 and -0.17 < c / skf[name][0] - 1 < -0.12, name
+    # for the sizes NSK makes in its high-capacity EA design the two makers differ by SKF Explorer's uplift
+    # only (SKF/NSK 1.05-1.16), and the estimate (the EA rule) follows NSK: −6.0…+2.0 % (the 223 EA run low,
+    # Known deviations; 22309 −6.0 %, 22310 −5.7 %, so this is no longer the 5 % it was with the old rule)
     for name in ["22208", "22209", "22210", "22211", "22308", "22309", "22310", "22311"]:
         e = rows[name]
         c, _ = ratings(estimate(e))
         assert e.extra["design"] == "EA" and 1.0 < skf[name][0] / e.C < 1.17
-        assert abs(c / e.C - 1) < abs(c / skf[name][0] - 1), name
+        assert -0.06 < c / e.C - 1 < 0.03, name
 
 
 # --- needle roller -----------------------------------------------------------------------------------------

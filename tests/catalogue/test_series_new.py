@@ -118,22 +118,26 @@ def test_self_aligning_e_rule_against_the_printed_e():
 
 def test_spherical_width_rule_against_the_printed_e():
     """Rows without a printed e: the rows fill the width less the chamfer (geometry of the existing rule,
-    nothing chosen). With the calibrated roller rules it gives, over the 59 rows of 222/223 that print e
-    (NSK B180-B192), e within −10…+3 % (mean −3 %); over the 239 rows of 213, 230-232, 239-241 (B180-B200)
-    within −22…+13 %, 213 the lowest (−22…−2 %). Every spherical row of the tables now prints e, so the rule
-    serves sizes without one."""
+    nothing chosen), with the rule's own rollers (internal.SPHERICAL_RULES; a row without e never gets the
+    centre-plane trim). Over the 59 rows of 222/223 that print e (NSK B180-B192) it gives e within −10…+3 %
+    (mean −3 %; −8 % and ±15 % with the rollers before issue 33's third part); over the 239 rows of 213,
+    230-232, 239-241 (B180-B200) within −22…+13 % (−21…+5 % before: the calibrated rollers are shorter,
+    0.716 against 0.80 B/2, so in the wide 240 sections they reach the faces at a larger α, 24036, 24038
+    and 240/1250 +12…+13 %), 213 the lowest (−22…−5 %). Every spherical row of the tables prints e, so the
+    rule serves sizes without one."""
     err = {}
     for e in entries("spherical_roller").values():
-        est = estimate(e)
+        rule = internal.SPHERICAL_RULES["EA" if e.extra["design"] == "EA" else ""]
+        d_m = 0.5 * (e.bore + e.outer_diameter)
         alpha = internal.spherical_angle_filling_width(
-            e, est.element_diameter, est.effective_length, est.pitch_diameter
+            e, rule.k_w * (e.outer_diameter - e.bore), rule.length * 0.5 * e.width, d_m
         )
         err.setdefault(e.series, []).append(1.5 * math.tan(alpha) / float(e.extra["e"]) - 1)
     base = np.array(err["222"] + err["223"])
     assert base.size == 59 and -0.10 < base.min() and base.max() < 0.04 and -0.04 < base.mean() < -0.02
     rest = np.array([x for s in ("213", "230", "231", "232", "239", "240", "241") for x in err[s]])
     assert rest.size == 239 and -0.22 < rest.min() and rest.max() < 0.14
-    assert -0.22 < min(err["213"]) and max(err["213"]) < -0.01
+    assert -0.22 < min(err["213"]) and max(err["213"]) < -0.03
 
 
 def test_narrow_213_rows_meet_at_the_centre_plane():

@@ -31,7 +31,8 @@ The rules are the bearing-design rules of the textbooks, with their constants in
   p. 452: "contact angle 35°"); double-row 32/33 as printed by the source (NSK e = 0.68 → 25°);
 - self-aligning ball and spherical roller rows: α = atan(e/1.5) from the e the catalogue prints per
   bearing (ISO 281 Table 3 and cl. 7.2: e = 1.5 tan α for both kinds);
-- spherical roller: two rows of barrel rollers, D_we = k_w (D − d), L_we = k_L B/2 per row, d_m = (d + D)/2;
+- spherical roller: two rows of barrel rollers, D_we = k_w (D − d), L_we = k_L B/2 per row, d_m = (d + D)/2,
+  k_w and k_L per design (NSK's EA or the standard one, :data:`SPHERICAL_RULES`);
 - spherical roller thrust: one row, α = atan 1.2 from the equivalent load NSK prints (ISO 281 8.2:
   X = tan α), D_we = k_w T and L_we = k_L T per design (NSK's E design or the standard one), Z from the
   cage pitch, d_m = (d + D)/2 (:data:`SPHERICAL_THRUST_RULES`);
@@ -143,10 +144,10 @@ SPHERICAL_THRUST_RULES = {
 #: cage pitch 1.15 (chosen before, by C over the 222/223 tables). CALIBRATED: k_w and length are the
 #: medians of the geometry NSK's C and C0 imply (ISO 281 eq. (9) and ISO 76 eq. (7) solved for D_we and
 #: L_we at the printed e's α, d_m = (d + D)/2, Z = π d_m/(1.15 D_we)): over the 230 series (41 sizes, NSK
-#: E1102 B182-B196, all but one CA/CD/C) for the standard rule (0.2470, 0.7162), over the 16 EA sizes of the
-#: 222 series (22208-22226 EA, B178-B180) for the EA rule (0.2607, 0.7528). The other series and 223 EA and
+#: E1102 B182-B200: 31 CA, 9 CD, 1 C) for the standard rule (0.2470, 0.7162), over the 16 EA sizes of the
+#: 222 series (22208-22226 EA, B180-B186) for the EA rule (0.2607, 0.7528). The other series and 223 EA and
 #: 213 EA are predictions (docs/catalogue.md). Before issue 33's third part: one rule, 0.24 and 0.80 chosen
-#: by C alone, which put C0 +8…+12 % above NSK's in every series.
+#: by C alone, which put C0 +8…+11 % above NSK's in the 222 and 230-241 series (mean per series).
 SPHERICAL_RULES = {
     "EA": Rule(k_w=0.261, pitch=1.15, length=0.753, rows=2),
     "": Rule(k_w=0.247, pitch=1.15, length=0.716, rows=2),
@@ -331,14 +332,19 @@ def estimate(entry: Entry, contact_angle: float | None = None) -> Estimate:
                 )
         else:
             alpha = _nominal_angle(entry, contact_angle)
-            how = f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}"
-            # the two rows cannot overlap: at a steep printed e in a narrow section (213) the rule's roller
-            # would reach across the centre plane, so it is held to the largest diameter that stays on its
-            # side (its inner end 0.5 d_m tan α − (L_we cos α + D_we sin α)/2 ≥ margin · D_we)
+            if contact_angle is not None:
+                how = f"alpha = {math.degrees(alpha):.1f} deg (given)"
+            else:
+                how = f"alpha = atan(e/1.5) from the published e = {entry.extra['e']}"
+            # the two rows cannot overlap: at a shallow printed e in a narrow section (213 EA) the rule's
+            # roller would reach across the centre plane, so it is held to the largest diameter that stays
+            # on its side (its inner end 0.5 d_m tan α − (L_we cos α + D_we sin α)/2 ≥ margin · D_we). Only
+            # for the printed e and only a trim (at least half the rule's roller): a given angle is the
+            # user's, and a row that crosses by more is not one this rule describes.
             d_fit = (0.5 * d_m * math.tan(alpha) - 0.5 * length * math.cos(alpha)) / (
                 0.5 * math.sin(alpha) + CENTRE_PLANE_MARGIN
             )
-            if 0.0 < d_fit < d_w:
+            if contact_angle is None and 0.5 * d_w <= d_fit < d_w:
                 d_w = d_fit
                 z = _pitch_count(d_m, d_w, rule.pitch)
                 how += f"; D_we held to {d_w * 1e3:.3g} mm (the row stays on its side of the centre plane)"
@@ -508,8 +514,8 @@ def spherical_angle_filling_width(entry: Entry, d_we: float, l_we: float, d_m: f
 
     A row's roller centre sits at z = (d_m/2) tan α and its end reaches z + (L_we cos α + D_we sin α)/2
     (:func:`axial_margin`); the rows are set as wide as the rings allow: that reach equals B/2 less the
-    chamfer r_s min (the ring face's own edge). Geometry only: over the 49 sizes of the 222/223 tables
-    (whose e is printed) it gives e = 1.5 tan α −8 % on average (within ±15 %,
+    chamfer r_s min (the ring face's own edge). Geometry only: with the rule's rollers, over the 59 sizes
+    of the 222/223 tables (whose e is printed) it gives e = 1.5 tan α −3 % on average (−10…+3 %,
     tests/catalogue/test_series_new.py).
     """
     target = 0.5 * entry.width - entry.chamfer
