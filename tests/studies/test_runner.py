@@ -6,7 +6,12 @@ import pytest
 
 from bearingkit.errors import InputError
 from bearingkit.studies.definition import load as sd
-from bearingkit.studies.run.executors import DaskExecutor, InProcessExecutor, ProcessPoolExecutor
+from bearingkit.studies.run.executors import (
+    QUIET_SCHEDULER,
+    DaskExecutor,
+    InProcessExecutor,
+    ProcessPoolExecutor,
+)
 from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[2] / "examples" / "studies"
@@ -56,7 +61,13 @@ def test_process_pool_gives_identical_results(reference):
 def test_dask_local_cluster_gives_identical_results(reference):
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with LocalCluster(
+        n_workers=2,
+        threads_per_worker=1,
+        processes=False,
+        dashboard_address=None,
+        scheduler_kwargs=dict(QUIET_SCHEDULER),
+    ) as cluster:
         with Client(cluster) as client:
             ex = DaskExecutor(client=client)
             res = run_study(sd.from_dict(STATICS), executor=ex, progress=False)

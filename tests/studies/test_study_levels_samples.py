@@ -17,7 +17,7 @@ from bearingkit.studies.definition import load as sd
 from bearingkit.studies.designs import generators
 from bearingkit.studies.evaluators import Evaluator, Factor
 from bearingkit.studies.results import analysis
-from bearingkit.studies.run.executors import InProcessExecutor
+from bearingkit.studies.run.executors import QUIET_SCHEDULER, InProcessExecutor
 from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "studies"
@@ -257,7 +257,13 @@ def test_dask_gives_the_in_process_results():
 
     d = study(per_point=10, chunk_size=16)
     ref = run_study(d, progress=False)
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with LocalCluster(
+        n_workers=2,
+        threads_per_worker=1,
+        processes=False,
+        dashboard_address=None,
+        scheduler_kwargs=dict(QUIET_SCHEDULER),
+    ) as cluster:
         with Client(cluster) as client:
             res = run_study(d, executor=DaskExecutor(client=client), progress=False)
     pd.testing.assert_frame_equal(res.results, ref.results)

@@ -54,7 +54,13 @@ def test_dask_task_on_a_worker_sees_one_solver_thread(clean_env):
     from distributed import Client, LocalCluster
 
     full = solver_threads()
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with LocalCluster(
+        n_workers=2,
+        threads_per_worker=1,
+        processes=False,
+        dashboard_address=None,
+        scheduler_kwargs=dict(ex.QUIET_SCHEDULER),
+    ) as cluster:
         with Client(cluster) as client:
             dask_ex = ex.DaskExecutor(client=client)
             workers = list(client.scheduler_info()["workers"])
@@ -73,7 +79,13 @@ def test_dask_task_on_a_worker_sees_one_solver_thread(clean_env):
 def test_dask_executor_can_leave_workers_alone(clean_env):
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with LocalCluster(
+        n_workers=1,
+        threads_per_worker=1,
+        processes=False,
+        dashboard_address=None,
+        scheduler_kwargs=dict(ex.QUIET_SCHEDULER),
+    ) as cluster:
         with Client(cluster) as client:
             ex.DaskExecutor(client=client, solver_threads=None)
             assert client.submit(solver_threads, pure=False).result() == (os.cpu_count() or 1)

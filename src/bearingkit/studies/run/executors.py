@@ -60,6 +60,10 @@ from bearingkit.studies.run.workers import (  # noqa: F401 (their home before is
 
 #: The interface a LocalCluster started by :class:`DaskExecutor` listens on.
 LOOPBACK = "127.0.0.1"
+#: Scheduler keyword arguments of a LocalCluster without a dashboard: Dask's scheduler binds its HTTP server
+#: to 8787 even with ``dashboard_address=None``, so two clusters on one machine collide (a warning, and the
+#: second one moves to a random port); a random loopback port from the start avoids both.
+QUIET_SCHEDULER = {"dashboard": False, "dashboard_address": f"{LOOPBACK}:0"}
 
 #: Variables of Dask's default ``distributed.nanny.pre-spawn-environ`` that a LocalCluster started by
 #: :class:`DaskExecutor` does NOT pass on. ``MALLOC_TRIM_THRESHOLD_=65536`` makes glibc hand freed
@@ -323,7 +327,7 @@ class DaskExecutor(InProcessExecutor):
                     config.update(
                         {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": []}
                     )
-                    http = {"scheduler_kwargs": {"dashboard": False, "dashboard_address": f"{LOOPBACK}:0"}}
+                    http = {"scheduler_kwargs": dict(QUIET_SCHEDULER)}
                 with dask.config.set(config):
                     self._cluster = LocalCluster(
                         n_workers=int(workers or 2),
