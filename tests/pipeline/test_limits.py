@@ -151,3 +151,79 @@ def test_studies_read_the_limits_as_flags(spindle):
     composite = bk.analyze(EXAMPLES / "seed000_composite.toml")
     flag = quantities.catalogue(composite.input)["above_limiting_speed"]
     assert np.isnan(quantities.extract(composite, 1, [flag])["above_limiting_speed"][0])
+
+
+# --- precision angular contact bearings (NSK's 70 C limiting speeds) ---------------------------------------
+def _nsk_70c():
+    """The transcription's columns (designation and numbers) as a pandas frame."""
+    import pandas as pd
+
+    from bearingkit.physics import tables
+
+    name = "nsk_70c_limiting_speeds.csv"
+    cols = ("d_mm", "D_mm", "C_N", "C0_N", "single_grease", "single_oil", "matched_grease", "matched_oil")
+    frame = {c: tables.column(name, c) for c in cols}
+    return pd.DataFrame({"designation": tables.text_column(name, "designation"), **frame})
+
+
+def test_nsk_70c_transcription_matches_the_catalogue_rows_and_gives_the_precision_row():
+    """The 23 rows of data/nsk_70c_limiting_speeds.csv (NSK E1102 B50-B61) carry the d, D, C_r, C_0r of the
+    catalogue's 70 C rows (a misread line would not), and the precision row of speed_limits.csv is the
+    median n·d_m of their single-bearing oil limits; the matched-set factor is the median ratio of the
+    matched-set and single oil limits (0.79-0.87, median 0.8235)."""
+    import numpy as np
+
+    from bearingkit.catalogue import tables
+
+    t = _nsk_70c()
+    rows = tables.entries("angular_contact_ball")
+    assert len(t) == 23
+    for r in t.itertuples():
+        e = rows[r.designation]
+        assert (e.bore * 1e3, e.outer_diameter * 1e3, e.C, e.C0) == pytest.approx(
+            (r.d_mm, r.D_mm, r.C_N, r.C0_N), rel=1e-12
+        ), r.designation
+    n_dm = t.single_oil * 0.5 * (t.d_mm + t.D_mm)
+    row = limits.speed_limit_row("angular_contact_ball_precision")
+    assert row["n_dm_limit"] == float(np.median(n_dm)) and row["tag"] == "N1"
+    ratio = t.matched_oil / t.single_oil
+    assert limits.MATCHED_SET_SPEED_FACTOR == pytest.approx(float(np.median(ratio)), abs=0.005)
+    assert 0.78 < ratio.min() and ratio.max() < 0.87
+
+
+@pytest.mark.parametrize(
+    ("designation", "published"),
+    [
+        # NSK E1102's single-bearing oil limiting speeds [r/min] of 15° rows outside the 70 C set: predictions
+        ("71904 C", 38000),  # B52: 7904 C, d 20, D 37
+        ("71914 C", 13000),  # B56: 7914 C, d 70, D 100
+        ("71920 C", 9000),  # B60: 7920 C, d 100, D 140
+        ("7200 C", 56000),  # B50: d 10, D 30
+        ("7212 C", 13000),  # B56: d 60, D 110
+        ("7220 C", 8000),  # B60: d 100, D 180
+    ],
+)
+def test_precision_row_predicts_nsk_limits_of_other_15_degree_series(designation, published):
+    """A 15° (or 25°) catalogue angular contact bearing takes the precision row; its limiting speed against
+    NSK's printed value of series the row was not taken from (719 C, 72 C): within the 70 C set's own
+    spread (n·d_m 1.067-1.140e6, ± 4 %) plus 5 %."""
+    a = bk.analyze(designation, load={"F_x": "1 kN", "F_z": "0.5 kN"}, speed="1000 rpm")
+    assert "[N1]" in a.limits.limiting_source
+    assert abs(a.limits.limiting_speed / RPM / published - 1) < 0.09, a.limits.limiting_speed / RPM
+
+
+def test_matched_set_runs_at_the_nsk_factor_and_40_degree_rows_keep_the_skf_row():
+    """7014 C DB: (n·d_m)_lim / d_m × 0.82 = 10 068 r/min against NSK's printed 10 000 (B56); a 40° 7209 B
+    keeps SKF's 72 BECBP row, and as a DB set gets the same matched factor (the README's spindle example
+    at 12 000 r/min is above both NSK's and bearingkit's limit)."""
+    single = bk.analyze("7014 C", load={"F_x": "1 kN"}, speed="1000 rpm")
+    pair = bk.analyze("7014 C DB", load={"F_x": "1 kN"}, speed="1000 rpm")
+    assert pair.limits.limiting_speed == pytest.approx(
+        single.limits.limiting_speed * limits.MATCHED_SET_SPEED_FACTOR, rel=1e-12
+    )
+    assert abs(pair.limits.limiting_speed / RPM / 10000 - 1) < 0.02
+    assert "matched set (DB" in pair.limits.limiting_source
+    b = bk.analyze("7209 B", load={"F_z": "2 kN"}, speed="1000 rpm")
+    assert "[S1]" in b.limits.limiting_source
+    fast = bk.analyze("7014 C DB", load={"F_x": "1 kN"}, speed="12000 rpm")
+    assert any("above the limiting speed" in w for w in fast.warnings[0])

@@ -26,11 +26,14 @@ from bearingkit.physics import tables
 __all__ = [
     "CAGE_FACTOR",
     "LUBRICATION_FACTOR",
+    "MATCHED_SET_SPEED_FACTOR",
+    "PRECISION_ANGLE_MAX_DEG",
     "SEAL_LIP_SPEED_LIMIT",
     "limiting_speed",
     "minimum_load",
     "minimum_load_row",
     "seal_lip_speed",
+    "speed_limit_key",
     "speed_limit_row",
     "speed_limit_types",
 ]
@@ -59,11 +62,40 @@ CAGE_FACTOR = {"standard": 1.0, "steel": 1.0, "polyamide": 1.0, "brass": 1.0}
 #: 31.8 and 49.8 mm → 12.5 and 13.0 m/s); 12 m/s keeps below both. Low-friction (RSL) and non-contact
 #: seals run at the open bearing's speed (SKF: "can be operated at the same speeds as shields").
 SEAL_LIP_SPEED_LIMIT = 12.0  # [m/s]
+#: Factor on the limiting speed of a matched set (DB, DF, DT) of angular contact ball bearings [-]: the
+#: median of the matched-set to single-bearing oil limiting speeds NSK prints for every size of its 70 C
+#: (data/nsk_70c_limiting_speeds.csv, NSK E1102 B50-B61: 0.79-0.87 over 23 sizes, median 0.8235; 0.800 for
+#: grease) — two preloaded bearings side by side run hotter, so NSK rates the set slower.
+MATCHED_SET_SPEED_FACTOR = 0.82
+#: Largest nominal contact angle of the angular contact catalogue bearings that take the precision row of
+#: ``speed_limits.csv`` [deg]: NSK prints precision limiting speeds for its 15° (C) and 25° (A5) rows (B47).
+PRECISION_ANGLE_MAX_DEG = 25.0
 
 
 def speed_limit_types() -> tuple[str, ...]:
     """Bearing types with a limiting-speed row in ``data/speed_limits.csv``."""
     return tables.text_column(_SPEED_FILE, "bearing_type")
+
+
+def speed_limit_key(bearing_type: str, contact_angle_deg: float | None = None) -> str:
+    """The row of ``data/speed_limits.csv`` a bearing takes: its type's, or for an angular contact ball
+    bearing of nominal contact angle ≤ :data:`PRECISION_ANGLE_MAX_DEG` (a 15° or 25° catalogue spindle
+    bearing) the precision row ``angular_contact_ball_precision`` (NSK's 70 C limits).
+
+    Parameters
+    ----------
+    bearing_type : str
+        An engineering bearing type.
+    contact_angle_deg : float, optional [deg]
+        Nominal contact angle of a catalogue row (None: unknown, the type's row).
+    """
+    if (
+        bearing_type == "angular_contact_ball"
+        and contact_angle_deg is not None
+        and contact_angle_deg <= PRECISION_ANGLE_MAX_DEG
+    ):
+        return "angular_contact_ball_precision"
+    return bearing_type
 
 
 def speed_limit_row(bearing_type: str) -> dict:

@@ -198,6 +198,15 @@ def _minimum_load(analysis, facts):
     return np.broadcast_to(np.asarray(f_min, float), (op.n_cases,)).copy(), compared, text
 
 
+def _catalogue_contact_angle_deg(facts) -> float | None:
+    """Nominal contact angle [deg] of a catalogue angular contact row (None without one)."""
+    entry = facts.entry
+    if entry is None or getattr(entry, "family", None) != "angular_contact_ball":
+        return None
+    value = entry.extra.get("contact_angle_deg")
+    return float(value) if value not in (None, "") else None
+
+
 def operating_limits(analysis) -> OperatingLimits | None:
     """The :class:`OperatingLimits` of an analysis; None for a bearing the catalogue models do not know."""
     from bearingkit.pipeline.bearing_facts import bearing_facts
@@ -210,12 +219,19 @@ def operating_limits(analysis) -> OperatingLimits | None:
     if etype not in physics.speed_limit_types():
         return None
     op = analysis.operating
-    row = physics.speed_limit_row(etype)
+    angle = _catalogue_contact_angle_deg(facts)
+    row = physics.speed_limit_row(physics.speed_limit_key(etype, angle))
     n_lim = float(physics.limiting_speed(row["n_dm_limit"], facts.pitch_diameter, facts.lubrication))
     grease = (
         f"; × {physics.LUBRICATION_FACTOR['grease']:g} for grease" if facts.lubrication == "grease" else ""
     )
-    source = f"n·d_m ≤ {row['n_dm_limit']:.3g} mm·r/min, {row['note']} [{row['tag']}]{grease}"
+    matched = ""
+    if facts.arrangement is not None and etype == "angular_contact_ball":
+        # a matched set runs slower than its single bearings (NSK prints both for every size)
+        n_lim *= physics.MATCHED_SET_SPEED_FACTOR
+        factor = physics.MATCHED_SET_SPEED_FACTOR
+        matched = f"; × {factor:g} for a matched set ({facts.arrangement}, NSK E1102)"
+    source = f"n·d_m ≤ {row['n_dm_limit']:.3g} mm·r/min, {row['note']} [{row['tag']}]{grease}{matched}"
     notes = []
     seal, lip = None, None
     if facts.seal is not None and facts.seal.construction == "contact" and facts.seal_diameter is not None:
