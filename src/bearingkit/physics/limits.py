@@ -28,6 +28,7 @@ __all__ = [
     "LUBRICATION_FACTOR",
     "MATCHED_SET_SPEED_FACTOR",
     "PRECISION_ANGLE_MAX_DEG",
+    "PRECISION_GREASE_FACTOR",
     "SEAL_LIP_SPEED_LIMIT",
     "limiting_speed",
     "minimum_load",
@@ -67,9 +68,14 @@ SEAL_LIP_SPEED_LIMIT = 12.0  # [m/s]
 #: (data/nsk_70c_limiting_speeds.csv, NSK E1102 B50-B61: 0.79-0.87 over 23 sizes, median 0.8235; 0.800 for
 #: grease) — two preloaded bearings side by side run hotter, so NSK rates the set slower.
 MATCHED_SET_SPEED_FACTOR = 0.82
-#: Largest nominal contact angle of the angular contact catalogue bearings that take the precision row of
-#: ``speed_limits.csv`` [deg]: NSK prints precision limiting speeds for its 15° (C) and 25° (A5) rows (B47).
-PRECISION_ANGLE_MAX_DEG = 25.0
+#: Largest nominal contact angle of the angular contact bearings that take the precision row of
+#: ``speed_limits.csv`` [deg]: the row is NSK's 15° (C) limits. NSK prints precision limits for its 25° (A5)
+#: rows too (B47), but about 0.85 of the C ones (a review over the 79 A5 sizes: the C row would overstate
+#: them by 15-23 %), so 25° bearings keep their type's row (SKF's 72 BECBP, below NSK's A5: conservative).
+PRECISION_ANGLE_MAX_DEG = 15.0
+#: Factor for grease on the precision row [-], instead of :data:`LUBRICATION_FACTOR`'s 0.85: the median ratio
+#: of NSK's grease and oil limits over the 23 sizes of its 70 C (data/nsk_70c_limiting_speeds.csv, 0.731).
+PRECISION_GREASE_FACTOR = 0.73
 
 
 def speed_limit_types() -> tuple[str, ...]:
@@ -79,15 +85,15 @@ def speed_limit_types() -> tuple[str, ...]:
 
 def speed_limit_key(bearing_type: str, contact_angle_deg: float | None = None) -> str:
     """The row of ``data/speed_limits.csv`` a bearing takes: its type's, or for an angular contact ball
-    bearing of nominal contact angle ≤ :data:`PRECISION_ANGLE_MAX_DEG` (a 15° or 25° catalogue spindle
-    bearing) the precision row ``angular_contact_ball_precision`` (NSK's 70 C limits).
+    bearing of nominal contact angle ≤ :data:`PRECISION_ANGLE_MAX_DEG` (a 15° spindle bearing) the precision
+    row ``angular_contact_ball_precision`` (NSK's 70 C limits).
 
     Parameters
     ----------
     bearing_type : str
         An engineering bearing type.
     contact_angle_deg : float, optional [deg]
-        Nominal contact angle of a catalogue row (None: unknown, the type's row).
+        Nominal contact angle of the bearing's rows (None: unknown, the type's row).
     """
     if (
         bearing_type == "angular_contact_ball"

@@ -32,8 +32,9 @@ from bearingkit.physics import limits as physics
 __all__ = ["REFERENCE_CHECK_SHARE", "THRUST_TYPES", "OperatingLimits", "operating_limits"]
 
 #: The thermal reference speed is computed when a case runs above this share of the limiting speed [-]
-#: (module docstring; SKF's reference speeds lie above 0.5 n_lim for the types of speed_limits.csv).
-REFERENCE_CHECK_SHARE = 0.3
+#: (module docstring; SKF's reference speeds lie above 0.5 n_lim for the SKF types of speed_limits.csv, and
+#: at 0.29-0.39 of the precision row's n_lim for 15° spindle bearings — a review found the 718 C at 0.288).
+REFERENCE_CHECK_SHARE = 0.2
 #: Bearing types whose minimum load is an axial one.
 THRUST_TYPES = ("thrust_ball", "cylindrical_roller_thrust")
 _RPM = 30.0 / np.pi
@@ -198,13 +199,18 @@ def _minimum_load(analysis, facts):
     return np.broadcast_to(np.asarray(f_min, float), (op.n_cases,)).copy(), compared, text
 
 
-def _catalogue_contact_angle_deg(facts) -> float | None:
-    """Nominal contact angle [deg] of a catalogue angular contact row (None without one)."""
-    entry = facts.entry
-    if entry is None or getattr(entry, "family", None) != "angular_contact_ball":
+def _contact_angle_deg(analysis) -> float | None:
+    """Nominal contact angle [deg] of the bearing's rows — the model's own (a designation's suffix or a
+    file's ``contact_angle``, not a catalogue row found by its dimensions); None for rows without one or
+    rows of different angles."""
+    angles = set()
+    for r in analysis.input.model.rows:
+        value = np.asarray(getattr(r, "contact_angle", np.nan), dtype=float).ravel()
+        angles.update(np.round(np.abs(np.degrees(value)), 6).tolist())
+    if len(angles) != 1:
         return None
-    value = entry.extra.get("contact_angle_deg")
-    return float(value) if value not in (None, "") else None
+    angle = angles.pop()
+    return None if np.isnan(angle) else angle
 
 
 def operating_limits(analysis) -> OperatingLimits | None:
@@ -219,19 +225,24 @@ def operating_limits(analysis) -> OperatingLimits | None:
     if etype not in physics.speed_limit_types():
         return None
     op = analysis.operating
-    angle = _catalogue_contact_angle_deg(facts)
-    row = physics.speed_limit_row(physics.speed_limit_key(etype, angle))
+    angle = _contact_angle_deg(analysis) if etype == "angular_contact_ball" else None
+    key = physics.speed_limit_key(etype, angle)
+    row = physics.speed_limit_row(key)
     n_lim = float(physics.limiting_speed(row["n_dm_limit"], facts.pitch_diameter, facts.lubrication))
-    grease = (
-        f"; × {physics.LUBRICATION_FACTOR['grease']:g} for grease" if facts.lubrication == "grease" else ""
-    )
+    grease = ""
+    if facts.lubrication == "grease":
+        f_grease = physics.LUBRICATION_FACTOR["grease"]
+        if key == "angular_contact_ball_precision":  # NSK's own grease/oil ratio of these rows
+            n_lim *= physics.PRECISION_GREASE_FACTOR / f_grease
+            f_grease = physics.PRECISION_GREASE_FACTOR
+        grease = f"; × {f_grease:g} for grease"
     matched = ""
     if facts.arrangement is not None and etype == "angular_contact_ball":
         # a matched set runs slower than its single bearings (NSK prints both for every size)
         n_lim *= physics.MATCHED_SET_SPEED_FACTOR
         factor = physics.MATCHED_SET_SPEED_FACTOR
         matched = f"; × {factor:g} for a matched set ({facts.arrangement}, NSK E1102)"
-    source = f"n·d_m ≤ {row['n_dm_limit']:.3g} mm·r/min, {row['note']} [{row['tag']}]{grease}{matched}"
+    source = f"n·d_m ≤ {row['n_dm_limit']:.4g} mm·r/min, {row['note']} [{row['tag']}]{grease}{matched}"
     notes = []
     seal, lip = None, None
     if facts.seal is not None and facts.seal.construction == "contact" and facts.seal_diameter is not None:
