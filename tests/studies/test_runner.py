@@ -7,7 +7,6 @@ import pytest
 from bearingkit.errors import InputError
 from bearingkit.studies.definition import load as sd
 from bearingkit.studies.run.executors import (
-    QUIET_SCHEDULER,
     DaskExecutor,
     InProcessExecutor,
     ProcessPoolExecutor,
@@ -58,16 +57,10 @@ def test_process_pool_gives_identical_results(reference):
     pd.testing.assert_frame_equal(res.results, reference.results)
 
 
-def test_dask_local_cluster_gives_identical_results(reference):
-    from distributed import Client, LocalCluster
+def test_dask_local_cluster_gives_identical_results(reference, thread_cluster):
+    from distributed import Client
 
-    with LocalCluster(
-        n_workers=2,
-        threads_per_worker=1,
-        processes=False,
-        dashboard_address=None,
-        scheduler_kwargs=dict(QUIET_SCHEDULER),
-    ) as cluster:
+    with thread_cluster(2) as cluster:
         with Client(cluster) as client:
             ex = DaskExecutor(client=client)
             res = run_study(sd.from_dict(STATICS), executor=ex, progress=False)

@@ -17,7 +17,7 @@ from bearingkit.studies.definition import load as sd
 from bearingkit.studies.designs import generators
 from bearingkit.studies.evaluators import Evaluator, Factor
 from bearingkit.studies.results import analysis
-from bearingkit.studies.run.executors import QUIET_SCHEDULER, InProcessExecutor
+from bearingkit.studies.run.executors import InProcessExecutor
 from bearingkit.studies.run.runner import build_cases, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "studies"
@@ -250,20 +250,14 @@ def test_chunks_carry_point_and_draw_and_a_crash_resumes(tmp_path, monkeypatch):
         run_study(study(per_point=21, chunk_size=25), store=store, resume=True, progress=False)
 
 
-def test_dask_gives_the_in_process_results():
-    from distributed import Client, LocalCluster
+def test_dask_gives_the_in_process_results(thread_cluster):
+    from distributed import Client
 
     from bearingkit.studies.run.executors import DaskExecutor
 
     d = study(per_point=10, chunk_size=16)
     ref = run_study(d, progress=False)
-    with LocalCluster(
-        n_workers=2,
-        threads_per_worker=1,
-        processes=False,
-        dashboard_address=None,
-        scheduler_kwargs=dict(QUIET_SCHEDULER),
-    ) as cluster:
+    with thread_cluster(2) as cluster:
         with Client(cluster) as client:
             res = run_study(d, executor=DaskExecutor(client=client), progress=False)
     pd.testing.assert_frame_equal(res.results, ref.results)

@@ -50,17 +50,11 @@ def test_limit_and_restore_are_counted_per_process(clean_env):
     assert THREADS_ENV not in os.environ
 
 
-def test_dask_task_on_a_worker_sees_one_solver_thread(clean_env):
-    from distributed import Client, LocalCluster
+def test_dask_task_on_a_worker_sees_one_solver_thread(clean_env, thread_cluster):
+    from distributed import Client
 
     full = solver_threads()
-    with LocalCluster(
-        n_workers=2,
-        threads_per_worker=1,
-        processes=False,
-        dashboard_address=None,
-        scheduler_kwargs=dict(ex.QUIET_SCHEDULER),
-    ) as cluster:
+    with thread_cluster(2) as cluster:
         with Client(cluster) as client:
             dask_ex = ex.DaskExecutor(client=client)
             workers = list(client.scheduler_info()["workers"])
@@ -76,16 +70,10 @@ def test_dask_task_on_a_worker_sees_one_solver_thread(clean_env):
     assert THREADS_ENV not in os.environ and solver_threads() == full
 
 
-def test_dask_executor_can_leave_workers_alone(clean_env):
-    from distributed import Client, LocalCluster
+def test_dask_executor_can_leave_workers_alone(clean_env, thread_cluster):
+    from distributed import Client
 
-    with LocalCluster(
-        n_workers=1,
-        threads_per_worker=1,
-        processes=False,
-        dashboard_address=None,
-        scheduler_kwargs=dict(ex.QUIET_SCHEDULER),
-    ) as cluster:
+    with thread_cluster(1) as cluster:
         with Client(cluster) as client:
             ex.DaskExecutor(client=client, solver_threads=None)
             assert client.submit(solver_threads, pure=False).result() == (os.cpu_count() or 1)
