@@ -28,7 +28,6 @@ __all__ = [
     "LUBRICATION_FACTOR",
     "MATCHED_SET_SPEED_FACTOR",
     "PRECISION_ANGLE_MAX_DEG",
-    "PRECISION_GREASE_FACTOR",
     "SEAL_LIP_SPEED_LIMIT",
     "limiting_speed",
     "minimum_load",
@@ -73,9 +72,6 @@ MATCHED_SET_SPEED_FACTOR = 0.82
 #: rows too (B47), but about 0.85 of the C ones (a review over the 79 A5 sizes: the C row would overstate
 #: them by 15-23 %), so 25° bearings keep their type's row (SKF's 72 BECBP, below NSK's A5: conservative).
 PRECISION_ANGLE_MAX_DEG = 15.0
-#: Factor for grease on the precision row [-], instead of :data:`LUBRICATION_FACTOR`'s 0.85: the median ratio
-#: of NSK's grease and oil limits over the 23 sizes of its 70 C (data/nsk_70c_limiting_speeds.csv, 0.731).
-PRECISION_GREASE_FACTOR = 0.73
 
 
 def speed_limit_types() -> tuple[str, ...]:
@@ -105,7 +101,8 @@ def speed_limit_key(bearing_type: str, contact_angle_deg: float | None = None) -
 
 
 def speed_limit_row(bearing_type: str) -> dict:
-    """The row of ``data/speed_limits.csv`` for ``bearing_type``: n·d_m limit [mm·r/min], tag, note.
+    """The row of ``data/speed_limits.csv`` for ``bearing_type``: n·d_m limit [mm·r/min], tag, note and the
+    factor for grease [-] (the row's own where it has one, else :data:`LUBRICATION_FACTOR`'s).
 
     Parameters
     ----------
@@ -115,14 +112,18 @@ def speed_limit_row(bearing_type: str) -> dict:
     types = speed_limit_types()
     checks.one_of("bearing_type (speed limits)", bearing_type, types)
     i = types.index(bearing_type)
+    grease = tables.column(_SPEED_FILE, "grease_factor")
     return {
         "n_dm_limit": float(tables.column(_SPEED_FILE, "n_dm_limit")[i]),
+        "grease_factor": float(np.nan_to_num(grease[i], nan=LUBRICATION_FACTOR["grease"])),
         "tag": tables.text_column(_SPEED_FILE, "tag")[i],
         "note": tables.text_column(_SPEED_FILE, "note")[i],
     }
 
 
-def limiting_speed(n_dm_limit, pitch_diameter, lubrication: str = "oil_bath", cage: str = "standard"):
+def limiting_speed(
+    n_dm_limit, pitch_diameter, lubrication: str = "oil_bath", cage: str = "standard", grease_factor=None
+):
     """Kinematic limiting speed [rad/s].
 
     .. math:: n_{lim} = \\frac{(n d_m)_{lim}}{d_m} f_{lub} f_{cage}
@@ -137,6 +138,8 @@ def limiting_speed(n_dm_limit, pitch_diameter, lubrication: str = "oil_bath", ca
         A key of :data:`LUBRICATION_FACTOR`.
     cage : str
         A key of :data:`CAGE_FACTOR`.
+    grease_factor : float, optional [-]
+        f_lub for grease of this bearing's row (:func:`speed_limit_row`); None: :data:`LUBRICATION_FACTOR`'s.
 
     Returns
     -------
@@ -151,7 +154,10 @@ def limiting_speed(n_dm_limit, pitch_diameter, lubrication: str = "oil_bath", ca
     checks.positive("n_dm_limit", n_dm_limit, "mm r/min")
     checks.positive("pitch_diameter", pitch_diameter, "m")
     dm_mm = np.asarray(pitch_diameter, dtype=float) * _M_TO_MM
-    rpm = np.asarray(n_dm_limit, dtype=float) / dm_mm * LUBRICATION_FACTOR[lubrication] * CAGE_FACTOR[cage]
+    f_lub = LUBRICATION_FACTOR[lubrication]
+    if lubrication == "grease" and grease_factor is not None:
+        f_lub = checks.positive("grease_factor", grease_factor, "")
+    rpm = np.asarray(n_dm_limit, dtype=float) / dm_mm * f_lub * CAGE_FACTOR[cage]
     return rpm / _RAD_S_TO_RPM
 
 

@@ -228,14 +228,12 @@ def operating_limits(analysis) -> OperatingLimits | None:
     angle = _contact_angle_deg(analysis) if etype == "angular_contact_ball" else None
     key = physics.speed_limit_key(etype, angle)
     row = physics.speed_limit_row(key)
-    n_lim = float(physics.limiting_speed(row["n_dm_limit"], facts.pitch_diameter, facts.lubrication))
-    grease = ""
-    if facts.lubrication == "grease":
-        f_grease = physics.LUBRICATION_FACTOR["grease"]
-        if key == "angular_contact_ball_precision":  # NSK's own grease/oil ratio of these rows
-            n_lim *= physics.PRECISION_GREASE_FACTOR / f_grease
-            f_grease = physics.PRECISION_GREASE_FACTOR
-        grease = f"; × {f_grease:g} for grease"
+    n_lim = float(
+        physics.limiting_speed(
+            row["n_dm_limit"], facts.pitch_diameter, facts.lubrication, grease_factor=row["grease_factor"]
+        )
+    )
+    grease = f"; × {row['grease_factor']:g} for grease" if facts.lubrication == "grease" else ""
     matched = ""
     if facts.arrangement is not None and etype == "angular_contact_ball":
         # a matched set runs slower than its single bearings (NSK prints both for every size)
