@@ -183,6 +183,9 @@ RULES: dict[str, Rule] = {
     # needle share of the section k_w chosen by C over the NA table
     "needle_roller": Rule(k_w=0.65, pitch=1.80, length=0.80),
 }
+#: The light angular contact sections' rule (SERIES_RULES: 70 and 719): the ball of NSK's 70 C, the family's
+#: pitches and width cap (the calibration is described where the rule is used).
+LIGHT_ANGULAR_CONTACT_RULE = Rule(k_w=0.295, pitch=1.145, k_b=0.80)
 #: Series whose proportions differ from their family's (light, narrow sections).
 SERIES_RULES: dict[tuple[str, str], Rule] = {
     # chosen by C over the NU10 table with the roller end allowance (0.20, 0.38 B before it)
@@ -203,8 +206,8 @@ SERIES_RULES: dict[tuple[str, str], Rule] = {
     # imply there, 0.2952 (D - d) (their cage pitch: 1.227, the machined pitch of the 72 C set); the cage
     # pitches are the angular contact rule's. 70 A/AC/B (NSK, NTN, KOYO) and 719 C/AC are predictions.
     # Diameter series 8 (718) keeps the family rule: AKE's two 71822 rows imply 0.313-0.317 (D - d).
-    ("angular_contact_ball", "70"): Rule(k_w=0.295, pitch=1.145, k_b=0.80),
-    ("angular_contact_ball", "719"): Rule(k_w=0.295, pitch=1.145, k_b=0.80),
+    ("angular_contact_ball", "70"): LIGHT_ANGULAR_CONTACT_RULE,
+    ("angular_contact_ball", "719"): LIGHT_ANGULAR_CONTACT_RULE,
 }
 
 
